@@ -1,0 +1,32 @@
+// Twin of rtl/active_edge_list.sv: the edges crossing the current scan line, kept in X order.
+// Edges enter at their first scan line, are stepped by the edge_incrementer after each line and
+// retire after n lines. Order is (X, edge id): ids are unique, so the order is total and the
+// RTL's insertion sort reproduces it exactly.
+#pragma once
+
+#include <vector>
+
+#include "edge_incrementer.hpp"
+
+namespace watkins {
+
+class ActiveEdgeList {
+ public:
+  explicit ActiveEdgeList(int capacity) : capacity_(capacity) {}
+
+  // Adds an edge on its first scan line. Returns false (and drops nothing) when full.
+  bool insert(const EdgeRecord& rec);
+  // After a scan line: step every edge, retire the finished ones, restore X order.
+  void advance();
+
+  const std::vector<ActiveEdge>& edges() const { return edges_; }  // in (X, id) order
+  int size() const { return static_cast<int>(edges_.size()); }
+  int capacity() const { return capacity_; }
+
+ private:
+  void sort();
+  int capacity_;
+  std::vector<ActiveEdge> edges_;
+};
+
+}  // namespace watkins

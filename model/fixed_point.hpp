@@ -1,0 +1,72 @@
+// Fixed-point helpers shared by every model stage. All shifts here are defined for negative
+// numbers (C++17 leaves >> of a negative value implementation-defined before C++20, so we
+// divide by powers of two through floor_shift, which is exact and portable).
+#pragma once
+
+#include <cstdint>
+
+namespace watkins {
+
+using i64 = std::int64_t;
+using i128 = __int128;
+
+// floor(v / 2^s) for any sign of v; s in [0, 126].
+constexpr i128 floor_shift(i128 v, int s) {
+  if (s == 0) return v;
+  const i128 d = static_cast<i128>(1) << s;
+  i128 q = v / d;
+  if ((v % d) != 0 && v < 0) --q;  // C++ division truncates toward zero; floor instead.
+  return q;
+}
+
+// round(v / 2^s), ties toward +infinity: floor((v + 2^(s-1)) / 2^s). Same rule as the RTL's
+// "add half, arithmetic shift right".
+constexpr i128 round_shift(i128 v, int s) {
+  if (s == 0) return v;
+  return floor_shift(v + (static_cast<i128>(1) << (s - 1)), s);
+}
+
+// round(a / b) for b > 0, ties toward +infinity; exact for any a.
+constexpr i128 round_div(i128 a, i128 b) {
+  i128 n = 2 * a + b;
+  const i128 d = 2 * b;
+  i128 q = n / d;
+  if ((n % d) != 0 && n < 0) --q;
+  return q;
+}
+
+// Keep the low `bits` bits and sign-extend them: what a signed register of that width holds.
+constexpr i64 wrap_signed(i128 v, int bits) {
+  const i128 m = (static_cast<i128>(1) << bits) - 1;
+  i128 u = v & m;
+  if (u >> (bits - 1)) u -= static_cast<i128>(1) << bits;
+  return static_cast<i64>(u);
+}
+
+// Keep the low `bits` bits as an unsigned value.
+constexpr std::uint64_t wrap_unsigned(i128 v, int bits) {
+  const i128 m = (static_cast<i128>(1) << bits) - 1;
+  return static_cast<std::uint64_t>(v & m);
+}
+
+constexpr i128 clamp_i(i128 v, i128 lo, i128 hi) { return v < lo ? lo : (v > hi ? hi : v); }
+
+// Saturate to a signed register of `bits` bits.
+constexpr i64 saturate_signed(i128 v, int bits) {
+  const i128 hi = (static_cast<i128>(1) << (bits - 1)) - 1;
+  return static_cast<i64>(clamp_i(v, -hi - 1, hi));
+}
+
+constexpr bool fits_signed(i128 v, int bits) {
+  const i128 hi = (static_cast<i128>(1) << (bits - 1)) - 1;
+  return v >= -hi - 1 && v <= hi;
+}
+
+// Index of the most significant set bit of v > 0 (floor(log2 v)).
+constexpr int msb_index(std::uint64_t v) {
+  int p = -1;
+  while (v) { v >>= 1; ++p; }
+  return p;
+}
+
+}  // namespace watkins

@@ -1,0 +1,97 @@
+#include "float_reference.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/glm.hpp>
+
+namespace watkins {
+namespace {
+
+using Attr = glm::dvec4;  // depth, R, G, B
+
+struct Crossing {
+  double x;
+  Attr a;
+  int edge;  // index within the polygon: breaks X ties
+};
+
+struct FloatSegment {
+  int poly;
+  double xe, xf;
+  Attr ae, af;
+};
+
+Attr attributes(const ScreenVertex& v) { return Attr(v.depth, v.rgb[0], v.rgb[1], v.rgb[2]); }
+
+}  // namespace
+
+Image render_float_reference(const BuiltScene& scene, FloatReferenceStats* stats) {
+  const int W = scene.width, H = scene.height;
+  Image img(W, H);
+  // Bucket polygons by the scan lines they may cross.
+  std::vector<std::vector<int>> bucket(H);
+  for (std::size_t p = 0; p < scene.polygons.size(); ++p) {
+    double lo = 1e300, hi = -1e300;
+    for (const auto& v : scene.polygons[p].v) lo = std::min(lo, v.y), hi = std::max(hi, v.y);
+    const int y0 = std::max(0, int(std::ceil(lo - 0.5)));
+    const int y1 = std::min(H, int(std::ceil(hi - 0.5)));
+    for (int y = y0; y < y1; ++y) bucket[y].push_back(int(p));
+  }
+  std::vector<double> depth(W);
+  std::vector<Attr> colour(W);
+  std::vector<char> written(W);
+  std::vector<Crossing> xs;
+  std::vector<FloatSegment> segs;
+  long long fragments = 0;
+  for (int y = 0; y < H; ++y) {
+    const double yc = y + 0.5;
+    segs.clear();
+    for (int p : bucket[y]) {
+      const auto& v = scene.polygons[p].v;
+      xs.clear();
+      for (std::size_t i = 0; i < v.size(); ++i) {
+        const ScreenVertex* a = &v[i];
+        const ScreenVertex* b = &v[(i + 1) % v.size()];
+        if (a->y == b->y) continue;
+        if (a->y > b->y) std::swap(a, b);  // top first, as the edge setup does
+        if (!(a->y <= yc && yc < b->y)) continue;
+        const double t = (yc - a->y) / (b->y - a->y);
+        xs.push_back({glm::mix(a->x, b->x, t), glm::mix(attributes(*a), attributes(*b), t), int(i)});
+      }
+      std::sort(xs.begin(), xs.end(), [](const Crossing& l, const Crossing& r) {
+        return l.x != r.x ? l.x < r.x : l.edge < r.edge;
+      });
+      for (std::size_t i = 0; i + 1 < xs.size(); i += 2)
+        segs.push_back({p, xs[i].x, xs[i + 1].x, xs[i].a, xs[i + 1].a});
+    }
+    // Same arrival order as the segment former: by closing X.
+    std::stable_sort(segs.begin(), segs.end(),
+                     [](const FloatSegment& l, const FloatSegment& r) { return l.xf < r.xf; });
+    std::fill(written.begin(), written.end(), 0);
+    for (const auto& s : segs) {
+      const int x0 = std::max(0, int(std::ceil(s.xe - 0.5)));
+      const int x1 = std::min(W, int(std::ceil(s.xf - 0.5)));
+      for (int x = x0; x < x1; ++x) {
+        const double alpha = (x + 0.5 - s.xe) / (s.xf - s.xe);
+        const Attr a = (1.0 - alpha) * s.ae + alpha * s.af;  // Gouraud: S = (1 − α)S_E + αS_F
+        ++fragments;
+        if (written[x] && !(a.x < depth[x])) continue;
+        written[x] = 1;
+        depth[x] = a.x;
+        colour[x] = a;
+      }
+    }
+    for (int x = 0; x < W; ++x) {
+      std::uint8_t* px = img.at(x, y);
+      img.covered[std::size_t(y) * W + x] = written[x];
+      for (int c = 0; c < 3; ++c) {
+        const double v = written[x] ? colour[x][c + 1] : scene.background[c];
+        px[c] = static_cast<std::uint8_t>(std::clamp(std::lround(v), 0L, 255L));
+      }
+    }
+  }
+  if (stats) stats->fragments = fragments;
+  return img;
+}
+
+}  // namespace watkins

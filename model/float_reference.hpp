@@ -1,0 +1,18 @@
+// Double-precision reference of the same algorithm (GLM): the same edges, the same pixel-centre
+// coverage rule, even-odd pairing into segments, Gouraud's α interpolation evaluated directly
+// (S = (1 − α)S_E + αS_F, no stepping, no quantization), the same depth test and tie rule.
+// The fixed-point model's difference from it is the cost of quantization alone.
+#pragma once
+
+#include "image.hpp"
+#include "scene.hpp"
+
+namespace watkins {
+
+struct FloatReferenceStats {
+  long long fragments = 0;
+};
+
+Image render_float_reference(const BuiltScene& scene, FloatReferenceStats* stats = nullptr);
+
+}  // namespace watkins

@@ -1,0 +1,49 @@
+// Fixed-point formats of the Watkins pipeline: the one source of every width and fraction.
+// rtl/watkins_pkg.sv is generated from this list by `watkins_gen_pkg` (tests/test_formats.cpp
+// fails when the committed package and this header differ), so C++ and SystemVerilog agree.
+//
+// Every interpolated quantity is a *channel*: X (pixels), Z (depth), R, G, B (8-bit levels), and
+// next Nx, Ny, Nz. A channel value and its slope are signed two's complement words of ChannelBits
+// bits with FracBits fraction bits, one format for all, so one incrementer and one interpolator
+// serve every channel. The integer part each channel needs is listed beside it.
+#pragma once
+
+// X(name, value, comment). Order matters only for the generated package's readability.
+#define WATKINS_FORMATS(X)                                                                       \
+  X(ScreenBits, 12, "screen width and height <= 2^ScreenBits pixels (4096)")                     \
+  X(LineBits, 13, "scan-line index and edge line count, 0..2^ScreenBits inclusive")              \
+  X(SubPixelBits, 4, "vertex X, Y fraction bits: 1/16 pixel")                                    \
+  X(VertexIntBits, 14, "vertex X, Y signed integer bits: guard band [-8192, 8192) pixels")       \
+  X(FracBits, 16, "fraction bits of every channel value and slope")                              \
+  X(ChannelBits, 42, "signed word of every channel value and slope")                             \
+  X(DepthBits, 24, "depth integer part: depth in [0,1) maps to [0, 2^DepthBits)")                \
+  X(ShadeBits, 8, "shade integer part: 8-bit levels 0..255")                                     \
+  X(NumChannels, 5, "channels per edge record: X, Z, R, G, B")                                   \
+  X(ChanX, 0, "channel index of X")                                                              \
+  X(ChanZ, 1, "channel index of depth")                                                          \
+  X(ChanR, 2, "channel index of red")                                                            \
+  X(ChanG, 3, "channel index of green")                                                          \
+  X(ChanB, 4, "channel index of blue")                                                           \
+  X(RecipBits, 24, "span reciprocal: mantissa bits of 1/(X_F - X_E), relative error < 2^-23")    \
+  X(AlphaBits, 24, "fraction bits of the prestep coefficient alpha0 = (x_c - X_E)/(X_F - X_E)")  \
+  X(PolyIdBits, 16, "polygon id bits: at most 65536 polygons per frame")                         \
+  X(EdgeIdBits, 18, "edge id bits: position in the edge stream (4 edges per polygon at most)")   \
+  X(MaxActiveEdges, 64, "default capacity of the active-edge list")
+
+namespace watkins::fmt {
+#define WATKINS_DECLARE_FORMAT(name, value, comment) constexpr int name = value;
+WATKINS_FORMATS(WATKINS_DECLARE_FORMAT)
+#undef WATKINS_DECLARE_FORMAT
+
+// Derived values (also emitted into the package as localparams by the generator).
+constexpr int MaxScreen = 1 << ScreenBits;
+constexpr int ShadeMax = (1 << ShadeBits) - 1;
+constexpr long long DepthMax = (1LL << DepthBits) - 1;  // "farthest" representable depth
+constexpr int SubPixelToFrac = FracBits - SubPixelBits;  // shift from 1/16 pixel to X channel
+constexpr int ShadeChannels = 3;                         // R, G, B after X and Z
+
+static_assert(FracBits >= SubPixelBits, "X channel must hold the vertex sub-pixel bits");
+static_assert(DepthBits + FracBits + 2 <= ChannelBits, "depth (plus sign and guard) must fit");
+static_assert(VertexIntBits + FracBits + 1 <= ChannelBits, "X must fit a channel word");
+static_assert(ChannelBits + RecipBits + 1 <= 127, "span products must fit 128-bit model math");
+}  // namespace watkins::fmt

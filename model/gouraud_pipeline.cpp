@@ -1,0 +1,50 @@
+#include "gouraud_pipeline.hpp"
+
+#include "active_edge_list.hpp"
+#include "segment_former.hpp"
+
+namespace watkins {
+
+Image GouraudPipeline::render(const PreparedScene& scene, const FragmentObserver& observe) {
+  stats_ = PipelineStats{};
+  Image img(scene.width, scene.height);
+  ActiveEdgeList active(max_active_edges_);
+  ScanlineBuffer line(scene.width, scene.background);
+  std::vector<Segment> segments;
+  std::size_t next = 0;
+  for (int y = 0; y < scene.height; ++y) {
+    while (next < scene.edges.size() && scene.edges[next].y0 == y) {
+      if (!active.insert(scene.edges[next]))
+        throw SceneError("active-edge list overflow on scan line " + std::to_string(y) +
+                         " (capacity " + std::to_string(max_active_edges_) + ")");
+      ++next;
+      ++stats_.edges;
+    }
+    stats_.max_active_edges = std::max(stats_.max_active_edges, active.size());
+    segments.clear();
+    SegmentFormer::form(active.edges(), segments);
+    stats_.segments += static_cast<long long>(segments.size());
+    line.clear();
+    for (const auto& s : segments) {
+      const SpanSetup span = SegmentInterpolator::setup(s, scene.width);
+      ChannelVector v = span.value;
+      for (int x = span.x_start; x < span.x_end; ++x) {
+        const Fragment f = SegmentInterpolator::fragment(span, x, v);
+        const bool won = line.write(f);
+        ++stats_.fragments;
+        stats_.visible += won;
+        if (observe) observe(y, f, won);
+        SegmentInterpolator::step(span, v);
+      }
+    }
+    for (int x = 0; x < scene.width; ++x) {
+      const auto p = line.pixel(x);
+      std::copy(p.begin(), p.end(), img.at(x, y));
+      img.covered[std::size_t(y) * scene.width + x] = line.covered(x);
+    }
+    active.advance();
+  }
+  return img;
+}
+
+}  // namespace watkins

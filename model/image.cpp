@@ -1,0 +1,60 @@
+#include "image.hpp"
+
+#include <stb_image_write.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <stdexcept>
+
+namespace watkins {
+
+void write_png(const Image& img, const std::string& path) {
+  if (!stbi_write_png(path.c_str(), img.width, img.height, 3, img.rgb.data(), img.width * 3))
+    throw std::runtime_error(path + ": cannot write PNG");
+}
+
+ImageError compare_images(const Image& a, const Image& b) {
+  if (a.width != b.width || a.height != b.height)
+    throw std::invalid_argument("compare_images: images differ in size");
+  ImageError e;
+  long long sum = 0;
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x) {
+      const std::uint8_t *pa = a.at(x, y), *pb = b.at(x, y);
+      if (!std::equal(pa, pa + 3, pb)) ++e.differing;
+      if (a.is_covered(x, y) != b.is_covered(x, y)) {
+        ++e.coverage_differs;
+        continue;
+      }
+      if (!a.is_covered(x, y)) continue;
+      ++e.compared;
+      int worst = 0;
+      for (int c = 0; c < 3; ++c) {
+        const int d = std::abs(int(pa[c]) - int(pb[c]));
+        sum += d;
+        worst = std::max(worst, d);
+      }
+      e.max_abs = std::max(e.max_abs, worst);
+      if (worst > 1) ++e.over_one;
+    }
+  e.mean_abs = e.compared ? double(sum) / (3.0 * e.compared) : 0.0;
+  return e;
+}
+
+Image diff_image(const Image& a, const Image& b, int gain) {
+  Image d(a.width, a.height);
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x) {
+      std::uint8_t* pd = d.at(x, y);
+      if (a.is_covered(x, y) != b.is_covered(x, y)) {
+        pd[0] = 255, pd[1] = 0, pd[2] = 255;
+        continue;
+      }
+      for (int c = 0; c < 3; ++c)
+        pd[c] = static_cast<std::uint8_t>(
+            std::min(255, gain * std::abs(int(a.at(x, y)[c]) - int(b.at(x, y)[c]))));
+    }
+  return d;
+}
+
+}  // namespace watkins

@@ -1,0 +1,181 @@
+// Scene preparation: quantization, edge setup with sub-pixel prestep, y-sort, capacity checks.
+#include "prepare.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "active_edge_list.hpp"
+#include "segment_former.hpp"
+#include "segment_interpolator.hpp"
+
+namespace watkins {
+namespace {
+
+constexpr i64 kSub = 1 << fmt::SubPixelBits;               // 16 sub-pixel steps per pixel
+constexpr i64 kHalfPixelSub = kSub / 2;                     // pixel centre offset in 1/16 pixel
+constexpr double kVertexLimit = double(1 << (fmt::VertexIntBits - 1));  // 8192 pixels
+
+i64 quantize(double v, int frac_bits) { return std::llround(std::ldexp(v, frac_bits)); }
+
+// ceil(a / kSub) for any sign of a.
+i64 ceil_sub(i64 a) { return static_cast<i64>(floor_shift(a + kSub - 1, fmt::SubPixelBits)); }
+
+std::string where(int poly, int vertex) {
+  std::ostringstream s;
+  s << "polygon " << poly << " vertex " << vertex;
+  return s.str();
+}
+
+}  // namespace
+
+QuantizedVertex quantize_vertex(const ScreenVertex& v) {
+  QuantizedVertex q;
+  auto in_range = [](double c) { return std::isfinite(c) && c >= -kVertexLimit && c < kVertexLimit; };
+  if (!in_range(v.x) || !in_range(v.y))
+    throw SceneError("vertex (" + std::to_string(v.x) + ", " + std::to_string(v.y) +
+                     ") is outside the representable range [-8192, 8192) pixels");
+  if (!(v.depth >= 0.0 && v.depth < 1.0))
+    throw SceneError("vertex depth " + std::to_string(v.depth) + " is outside [0, 1)");
+  q.x16 = quantize(v.x, fmt::SubPixelBits);
+  q.y16 = quantize(v.y, fmt::SubPixelBits);
+  if (q.x16 >= static_cast<i64>(kVertexLimit) * kSub || q.y16 >= static_cast<i64>(kVertexLimit) * kSub)
+    throw SceneError("vertex rounds to the edge of the representable range [-8192, 8192) pixels");
+  q.ch[fmt::ChanX] = q.x16 * (i64{1} << fmt::SubPixelToFrac);
+  q.ch[fmt::ChanZ] = std::min<i64>(quantize(v.depth, fmt::DepthBits + fmt::FracBits),
+                                   (fmt::DepthMax << fmt::FracBits) | ((i64{1} << fmt::FracBits) - 1));
+  for (int c = 0; c < fmt::ShadeChannels; ++c) {
+    if (!(v.rgb[c] >= 0.0 && v.rgb[c] <= fmt::ShadeMax))
+      throw SceneError("vertex shade " + std::to_string(v.rgb[c]) + " is outside [0, 255]");
+    q.ch[fmt::ChanR + c] = quantize(v.rgb[c], fmt::FracBits);
+  }
+  return q;
+}
+
+bool make_edge_record(const QuantizedVertex& a, const QuantizedVertex& b, int poly, int height,
+                      EdgeRecord& out) {
+  if (a.y16 == b.y16) return false;  // horizontal: its polygon's other edges bound the span
+  // Canonical order, top vertex first, so two polygons sharing the edge step identical X.
+  const QuantizedVertex& top = a.y16 < b.y16 ? a : b;
+  const QuantizedVertex& bot = a.y16 < b.y16 ? b : a;
+  // Scan line y is crossed when top <= y + 1/2 < bottom (half-open: no double hits).
+  i64 y_first = ceil_sub(top.y16 - kHalfPixelSub);
+  const i64 y_end = std::min<i64>(ceil_sub(bot.y16 - kHalfPixelSub), height);
+  y_first = std::max<i64>(y_first, 0);
+  if (y_end <= y_first) return false;
+
+  const i64 dy = bot.y16 - top.y16;
+  const i64 y_centre = y_first * kSub + kHalfPixelSub;  // first scan line's centre, 1/16 pixel
+  out.y0 = static_cast<int>(y_first);
+  out.n = static_cast<int>(y_end - y_first);
+  out.poly = poly;
+  for (int c = 0; c < fmt::NumChannels; ++c) {
+    const i128 delta = static_cast<i128>(bot.ch[c]) - top.ch[c];
+    // ΔS = (S2 − S1)/n per scan line (Gouraud), here per unit of y so sub-pixel vertices step
+    // exactly; rounded once. The prestep to the first centre is computed exactly, rounded once.
+    out.slope[c] = wrap_signed(round_div(delta * kSub, dy), fmt::ChannelBits);
+    out.value[c] = wrap_signed(top.ch[c] + round_div(delta * (y_centre - top.y16), dy),
+                               fmt::ChannelBits);
+  }
+  return true;
+}
+
+int SceneNeeds::bits_for_value(int channel) const {
+  auto bits = [](i64 v) {
+    int b = 1;
+    while (!fits_signed(v, b)) ++b;
+    return b;
+  };
+  return std::max({bits(value_min[channel]), bits(value_max[channel]), bits(slope_min[channel]),
+                   bits(slope_max[channel])});
+}
+
+PreparedScene prepare(const BuiltScene& scene, const PrepareOptions& opt) {
+  if (scene.width < 1 || scene.width > fmt::MaxScreen || scene.height < 1 ||
+      scene.height > fmt::MaxScreen)
+    throw SceneError("screen " + std::to_string(scene.width) + "x" + std::to_string(scene.height) +
+                     " exceeds the pipeline's limit of " + std::to_string(fmt::MaxScreen) + "x" +
+                     std::to_string(fmt::MaxScreen));
+  const std::size_t max_polys = std::size_t{1} << fmt::PolyIdBits;
+  if (scene.polygons.size() > max_polys)
+    throw SceneError("scene has " + std::to_string(scene.polygons.size()) +
+                     " polygons; the polygon id is " + std::to_string(fmt::PolyIdBits) +
+                     " bits (at most " + std::to_string(max_polys) + ")");
+
+  PreparedScene out;
+  out.width = scene.width;
+  out.height = scene.height;
+  for (int c = 0; c < 3; ++c)
+    out.background[c] = static_cast<std::uint8_t>(
+        std::clamp<long>(std::lround(scene.background[c]), 0, fmt::ShadeMax));
+  out.polygons = static_cast<int>(scene.polygons.size());
+
+  for (std::size_t p = 0; p < scene.polygons.size(); ++p) {
+    const auto& poly = scene.polygons[p];
+    std::vector<QuantizedVertex> q;
+    for (std::size_t i = 0; i < poly.v.size(); ++i) {
+      try {
+        q.push_back(quantize_vertex(poly.v[i]));
+      } catch (const SceneError& e) {
+        throw SceneError(where(static_cast<int>(p), static_cast<int>(i)) + ": " + e.what());
+      }
+    }
+    for (std::size_t i = 0; i < q.size(); ++i) {
+      EdgeRecord e;
+      if (make_edge_record(q[i], q[(i + 1) % q.size()], static_cast<int>(p), scene.height, e))
+        out.edges.push_back(e);
+    }
+  }
+  // The hardware reads edges in order of their first scan line; polygon order breaks ties.
+  std::stable_sort(out.edges.begin(), out.edges.end(),
+                   [](const EdgeRecord& a, const EdgeRecord& b) { return a.y0 < b.y0; });
+  for (std::size_t i = 0; i < out.edges.size(); ++i) out.edges[i].id = static_cast<int>(i);
+
+  SceneNeeds& needs = out.needs;
+  needs.polygons = out.polygons;
+  needs.edges = static_cast<int>(out.edges.size());
+  for (int c = 0; c < fmt::NumChannels; ++c) {
+    needs.value_min[c] = needs.slope_min[c] = INT64_MAX;
+    needs.value_max[c] = needs.slope_max[c] = INT64_MIN;
+  }
+  for (const auto& e : out.edges) {
+    needs.max_edge_lines = std::max(needs.max_edge_lines, e.n);
+    for (int c = 0; c < fmt::NumChannels; ++c) {
+      needs.value_min[c] = std::min(needs.value_min[c], e.value[c]);
+      needs.value_max[c] = std::max(needs.value_max[c], e.value[c]);
+      needs.slope_min[c] = std::min(needs.slope_min[c], e.slope[c]);
+      needs.slope_max[c] = std::max(needs.slope_max[c], e.slope[c]);
+    }
+  }
+  if (out.edges.empty())
+    for (int c = 0; c < fmt::NumChannels; ++c)
+      needs.value_min[c] = needs.value_max[c] = needs.slope_min[c] = needs.slope_max[c] = 0;
+
+  // Walk the scan lines with the pipeline's own front half to measure the active-edge list
+  // and the widest span (the same code the model renders with, so the numbers agree).
+  ActiveEdgeList active(1 << 30);
+  std::size_t next = 0;
+  std::vector<Segment> segments;
+  for (int y = 0; y < out.height; ++y) {
+    while (next < out.edges.size() && out.edges[next].y0 == y) active.insert(out.edges[next++]);
+    if (active.size() > needs.max_active_edges) {
+      needs.max_active_edges = active.size();
+      needs.max_active_line = y;
+    }
+    segments.clear();
+    SegmentFormer::form(active.edges(), segments);
+    for (const auto& s : segments) {
+      const SpanSetup span = SegmentInterpolator::setup(s, out.width);
+      needs.max_segment_pixels = std::max(needs.max_segment_pixels, span.x_end - span.x_start);
+    }
+    active.advance();
+  }
+  if (needs.max_active_edges > opt.max_active_edges)
+    throw SceneError("scene needs " + std::to_string(needs.max_active_edges) +
+                     " active edges on scan line " + std::to_string(needs.max_active_line) +
+                     "; the active-edge list holds " + std::to_string(opt.max_active_edges) +
+                     " (raise --max-active-edges, and the RTL's MaxActiveEdges, to match)");
+  return out;
+}
+
+}  // namespace watkins

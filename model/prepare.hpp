@@ -1,0 +1,56 @@
+// Scene preparation, the software preprocessor of Watkins' scheme: quantize screen-space
+// polygons to fixed point and build the y-sorted edge-record stream the pipeline reads.
+// All arithmetic after quantization is integer, so the stream is deterministic and bit-exact.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "edge_record.hpp"
+#include "scene.hpp"
+
+namespace watkins {
+
+// A vertex in the pipeline's fixed-point formats.
+struct QuantizedVertex {
+  i64 x16 = 0, y16 = 0;  // position in 1/16 pixel (SubPixelBits)
+  ChannelVector ch{};    // channel values at the vertex (X = x16 << SubPixelToFrac)
+};
+
+// What the scene needs from the hardware: capacities and ranges, so the hardware can be sized
+// to the scene instead of a worst case.
+struct SceneNeeds {
+  int polygons = 0;
+  int edges = 0;              // edge records after dropping horizontal and off-screen edges
+  int max_active_edges = 0;   // largest active-edge list on any scan line
+  int max_active_line = -1;   // the scan line where it occurs
+  int max_edge_lines = 0;     // largest n of an edge record
+  int max_segment_pixels = 0; // widest span, in pixels (after clipping to the screen)
+  ChannelVector value_min{}, value_max{};  // ranges of edge-record channel values
+  ChannelVector slope_min{}, slope_max{};  // and of their per-scan-line slopes
+  int bits_for_value(int channel) const;   // signed bits the channel's values and slopes need
+};
+
+struct PrepareOptions {
+  int max_active_edges = fmt::MaxActiveEdges;  // capacity of the active-edge list
+};
+
+struct PreparedScene {
+  int width = 0, height = 0;
+  std::array<std::uint8_t, 3> background{};
+  int polygons = 0;
+  std::vector<EdgeRecord> edges;  // sorted by (y0, id)
+  SceneNeeds needs;
+};
+
+QuantizedVertex quantize_vertex(const ScreenVertex& v);  // throws SceneError when out of range
+
+// Edge record of the edge from a to b for a screen of `height` lines; false when it crosses no
+// pixel centre on screen (horizontal, between two centres, or above/below the screen).
+bool make_edge_record(const QuantizedVertex& a, const QuantizedVertex& b, int poly, int height,
+                      EdgeRecord& out);
+
+// Throws SceneError when a capacity limit is exceeded (naming the limit, the need and the line).
+PreparedScene prepare(const BuiltScene& scene, const PrepareOptions& opt = {});
+
+}  // namespace watkins

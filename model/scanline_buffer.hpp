@@ -1,0 +1,35 @@
+// Twin of rtl/scanline_buffer.sv: the scan-line depth buffer that resolves visibility per pixel
+// (Watkins' "hidden-parts computation" done per pixel, so intersecting polygons are exact to the
+// pixel). A fragment is kept when the pixel is empty or its depth is strictly smaller: on a tie
+// the fragment that arrived first stays (segments arrive in the segment former's order).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "segment_interpolator.hpp"
+
+namespace watkins {
+
+class ScanlineBuffer {
+ public:
+  ScanlineBuffer(int width, std::array<std::uint8_t, 3> background)
+      : background_(background), depth_(width), rgb_(width), written_(width, 0) {}
+
+  void clear() { std::fill(written_.begin(), written_.end(), 0); }
+  // Depth test and write. Returns true when the fragment won the pixel.
+  bool write(const Fragment& f);
+  // The finished line's pixel at x (background where nothing was written).
+  std::array<std::uint8_t, 3> pixel(int x) const { return written_[x] ? rgb_[x] : background_; }
+  bool covered(int x) const { return written_[x] != 0; }
+  int width() const { return static_cast<int>(depth_.size()); }
+
+ private:
+  std::array<std::uint8_t, 3> background_;
+  std::vector<std::uint32_t> depth_;
+  std::vector<std::array<std::uint8_t, 3>> rgb_;
+  std::vector<std::uint8_t> written_;
+};
+
+}  // namespace watkins

@@ -1,0 +1,60 @@
+// Scene front end: JSON scene files (documented in README), OBJ meshes, analytic surfaces,
+// cameras, lights and the vertex shading rules. Produces screen-space polygons for prepare.cpp.
+// Every error names the file, and the line/column or the JSON field, and what is wrong.
+#pragma once
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "screen_polygon.hpp"
+
+namespace watkins {
+
+// Bad input of any kind. what() is the full user-facing message, e.g.
+// "scenes/x.json: objects[2].radius: expected a positive number, got -1".
+class SceneError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+enum class ShadingRule { Gouraud, Lambert, Warnock, Romney };
+enum class DepthMode { InverseZ, Z };  // Gouraud's eq. (1): interpolate 1/Z; eq. (2): interpolate Z
+
+const char* to_string(ShadingRule r);
+const char* to_string(DepthMode m);
+std::optional<ShadingRule> parse_shading_rule(const std::string& s);  // "gouraud", "lambert", ...
+std::optional<DepthMode> parse_depth_mode(const std::string& s);      // "inverse-z", "z"
+
+struct Scene;  // parsed scene, defined in scene_types.hpp
+
+// Options given on the command line override the scene file's own settings.
+struct BuildOptions {
+  std::optional<ShadingRule> rule;
+  std::optional<DepthMode> depth;
+  std::optional<bool> cull_backfaces;
+};
+
+// The scene as the pipeline sees it: screen size, background and screen-space polygons.
+struct BuiltScene {
+  std::string name;
+  int width = 0, height = 0;
+  double background[3] = {0, 0, 0};  // 8-bit levels
+  ShadingRule rule = ShadingRule::Gouraud;
+  DepthMode depth = DepthMode::InverseZ;
+  std::vector<ScreenPolygon> polygons;
+  int culled_backfaces = 0;   // dropped by back-face culling
+  int near_clipped = 0;       // dropped: a vertex behind the camera's near plane
+  int degenerate = 0;         // dropped: zero projected area (e.g. the pole quads of a sphere)
+};
+
+// Load and validate a scene file (JSON). Relative OBJ paths are resolved against its folder.
+BuiltScene load_scene(const std::string& path, const BuildOptions& opt = {});
+// Same, from text; `name` is used in messages and `base_dir` for OBJ paths.
+BuiltScene load_scene_text(const std::string& text, const std::string& name,
+                           const std::string& base_dir, const BuildOptions& opt = {});
+// The scene compiled into the binary, used when `watkins render` gets no file.
+const std::string& default_scene_text();
+
+}  // namespace watkins

@@ -1,0 +1,441 @@
+// JSON -> Scene with strict validation: unknown keys, wrong types, missing keys, out-of-range
+// and non-finite numbers are all errors naming the file and the JSON field, so a typo in a
+// scene never silently renders something else.
+#include <cmath>
+#include <filesystem>
+#include <initializer_list>
+#include <map>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "scene_types.hpp"
+
+namespace watkins {
+namespace {
+
+using nlohmann::json;
+
+constexpr double kCoordLimit = 8192.0;  // screen-space vertices: [-8192, 8192) pixels
+
+// A short rendering of an offending value for messages.
+std::string show(const json& j) {
+  std::string s = j.dump();
+  if (s.size() > 40) s = s.substr(0, 37) + "...";
+  return s;
+}
+
+std::string fmt(double x) {
+  std::ostringstream os;
+  os << x;
+  return os.str();
+}
+
+// Field-path aware accessors. `name` is the scene name used as the message prefix.
+class Reader {
+ public:
+  explicit Reader(std::string name) : name_(std::move(name)) {}
+
+  [[noreturn]] void fail(const std::string& field, const std::string& what) const {
+    throw SceneError(name_ + ": " + (field.empty() ? "" : field + ": ") + what);
+  }
+
+  void expect_object(const json& j, const std::string& field) const {
+    if (!j.is_object()) fail(field, "expected an object, got " + show(j));
+  }
+
+  void check_keys(const json& j, const std::string& field,
+                  std::initializer_list<const char*> allowed) const {
+    for (auto it = j.begin(); it != j.end(); ++it) {
+      bool ok = false;
+      for (const char* a : allowed) ok = ok || it.key() == a;
+      if (!ok) fail(field, "unknown key \"" + it.key() + "\"");
+    }
+  }
+
+  static std::string sub(const std::string& field, const std::string& key) {
+    return field.empty() ? key : field + "." + key;
+  }
+
+  const json& required(const json& j, const std::string& field, const char* key) const {
+    auto it = j.find(key);
+    if (it == j.end()) fail(field, std::string("missing required key \"") + key + "\"");
+    return *it;
+  }
+
+  double number(const json& v, const std::string& field) const {
+    if (!v.is_number()) fail(field, "expected a number, got " + show(v));
+    double x = v.get<double>();
+    if (!std::isfinite(x)) fail(field, "expected a finite number, got " + show(v));
+    return x;
+  }
+
+  // [lo, hi] inclusive; hi_open makes it [lo, hi).
+  double number_in(const json& v, const std::string& field, double lo, double hi,
+                   bool hi_open = false) const {
+    double x = number(v, field);
+    if (x < lo || x > hi || (hi_open && x == hi))
+      fail(field, "expected a number in [" + fmt(lo) + ", " + fmt(hi) + (hi_open ? ")" : "]") +
+                      ", got " + show(v));
+    return x;
+  }
+
+  double positive(const json& v, const std::string& field) const {
+    double x = number(v, field);
+    if (!(x > 0)) fail(field, "expected a positive number, got " + show(v));
+    return x;
+  }
+
+  int integer_in(const json& v, const std::string& field, int lo, int hi) const {
+    bool integral = v.is_number_integer() ||
+                    (v.is_number_float() && std::isfinite(v.get<double>()) &&
+                     std::floor(v.get<double>()) == v.get<double>());
+    if (!integral) fail(field, "expected an integer, got " + show(v));
+    double x = v.get<double>();
+    if (x < lo || x > hi)
+      fail(field, "expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                      "], got " + show(v));
+    return static_cast<int>(x);
+  }
+
+  bool boolean(const json& v, const std::string& field) const {
+    if (!v.is_boolean()) fail(field, "expected true or false, got " + show(v));
+    return v.get<bool>();
+  }
+
+  std::string string(const json& v, const std::string& field) const {
+    if (!v.is_string()) fail(field, "expected a string, got " + show(v));
+    return v.get<std::string>();
+  }
+
+  const json& array(const json& v, const std::string& field) const {
+    if (!v.is_array()) fail(field, "expected an array, got " + show(v));
+    return v;
+  }
+
+  glm::dvec3 vec3(const json& v, const std::string& field) const {
+    if (!v.is_array() || v.size() != 3) fail(field, "expected an array of 3 numbers, got " + show(v));
+    return {number(v[0], field + "[0]"), number(v[1], field + "[1]"), number(v[2], field + "[2]")};
+  }
+
+  glm::dvec3 vec3_in(const json& v, const std::string& field, double lo, double hi) const {
+    if (!v.is_array() || v.size() != 3) fail(field, "expected an array of 3 numbers, got " + show(v));
+    return {number_in(v[0], field + "[0]", lo, hi), number_in(v[1], field + "[1]", lo, hi),
+            number_in(v[2], field + "[2]", lo, hi)};
+  }
+
+ private:
+  std::string name_;
+};
+
+// Optional-key helpers: call f(value, field) only when the key is present.
+template <typename F>
+void opt(const json& j, const std::string& field, const char* key, F f) {
+  auto it = j.find(key);
+  if (it != j.end()) f(*it, Reader::sub(field, key));
+}
+
+void parse_screen(const Reader& r, const json& j, Scene& s) {
+  const std::string f = "screen";
+  r.expect_object(j, f);
+  r.check_keys(j, f, {"width", "height", "background"});
+  s.width = r.integer_in(r.required(j, f, "width"), "screen.width", 1, 4096);
+  s.height = r.integer_in(r.required(j, f, "height"), "screen.height", 1, 4096);
+  opt(j, f, "background", [&](const json& v, const std::string& ff) {
+    glm::dvec3 b = r.vec3_in(v, ff, 0, 255);
+    for (int c = 0; c < 3; ++c) s.background[c] = b[c];
+  });
+}
+
+void parse_camera(const Reader& r, const json& j, Camera& cam) {
+  const std::string f = "camera";
+  r.expect_object(j, f);
+  std::string type = r.string(r.required(j, f, "type"), "camera.type");
+  if (type == "gouraud") {
+    cam.type = Camera::Type::Gouraud;
+    r.check_keys(j, f, {"type", "focal", "near", "far"});
+    opt(j, f, "focal", [&](const json& v, const std::string& ff) { cam.focal = r.positive(v, ff); });
+  } else if (type == "lookat") {
+    cam.type = Camera::Type::LookAt;
+    r.check_keys(j, f, {"type", "eye", "target", "up", "fov_deg", "near", "far"});
+    cam.eye = r.vec3(r.required(j, f, "eye"), "camera.eye");
+    cam.target = r.vec3(r.required(j, f, "target"), "camera.target");
+    opt(j, f, "up", [&](const json& v, const std::string& ff) { cam.up = r.vec3(v, ff); });
+    double fov = 40;
+    opt(j, f, "fov_deg", [&](const json& v, const std::string& ff) {
+      fov = r.number_in(v, ff, 1, 179);
+    });
+    cam.focal = 1.0 / std::tan(fov * M_PI / 360.0);
+    glm::dvec3 fwd = cam.target - cam.eye;
+    double fl = std::sqrt(fwd.x * fwd.x + fwd.y * fwd.y + fwd.z * fwd.z);
+    if (!(fl > 1e-12)) r.fail("camera.target", "must differ from camera.eye");
+    fwd /= fl;
+    glm::dvec3 up = cam.up;
+    double ul = std::sqrt(up.x * up.x + up.y * up.y + up.z * up.z);
+    if (!(ul > 1e-12)) r.fail("camera.up", "must be a non-zero vector");
+    double cosang = (fwd.x * up.x + fwd.y * up.y + fwd.z * up.z) / ul;
+    if (std::fabs(cosang) > 0.9999) r.fail("camera.up", "must not be parallel to the viewing direction");
+  } else {
+    r.fail("camera.type", "expected \"gouraud\" or \"lookat\", got " + show(j["type"]));
+  }
+  opt(j, f, "near", [&](const json& v, const std::string& ff) { cam.near = r.positive(v, ff); });
+  opt(j, f, "far", [&](const json& v, const std::string& ff) { cam.far = r.positive(v, ff); });
+  if (!(cam.far > cam.near)) r.fail("camera.far", "must be greater than camera.near (" + fmt(cam.near) + ")");
+  // 1 - near/Z must stay distinguishable from 1 in double precision, with a wide margin.
+  if (cam.far / cam.near > 1e7) r.fail("camera.far", "far/near ratio above 1e7");
+}
+
+void parse_light(const Reader& r, const json& j, Light& l) {
+  const std::string f = "light";
+  r.expect_object(j, f);
+  std::string type = r.string(r.required(j, f, "type"), "light.type");
+  if (type == "eye") {
+    l.type = Light::Type::Eye;
+    r.check_keys(j, f, {"type"});
+  } else if (type == "directional") {
+    l.type = Light::Type::Directional;
+    r.check_keys(j, f, {"type", "direction"});
+    glm::dvec3 d = r.vec3(r.required(j, f, "direction"), "light.direction");
+    double len = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+    if (!(len > 1e-12)) r.fail("light.direction", "must be a non-zero vector");
+    l.towards = d / len;
+  } else {
+    r.fail("light.type", "expected \"directional\" or \"eye\", got " + show(j["type"]));
+  }
+}
+
+void parse_shading(const Reader& r, const json& j, Shading& s) {
+  const std::string f = "shading";
+  r.expect_object(j, f);
+  r.check_keys(j, f, {"rule", "depth", "cull_backfaces", "specular_m"});
+  opt(j, f, "rule", [&](const json& v, const std::string& ff) {
+    auto rule = parse_shading_rule(r.string(v, ff));
+    if (!rule) r.fail(ff, "expected \"gouraud\", \"lambert\", \"warnock\" or \"romney\", got " + show(v));
+    s.rule = *rule;
+  });
+  opt(j, f, "depth", [&](const json& v, const std::string& ff) {
+    auto d = parse_depth_mode(r.string(v, ff));
+    if (!d) r.fail(ff, "expected \"inverse-z\" or \"z\", got " + show(v));
+    s.depth = *d;
+  });
+  opt(j, f, "cull_backfaces", [&](const json& v, const std::string& ff) { s.cull_backfaces = r.boolean(v, ff); });
+  opt(j, f, "specular_m", [&](const json& v, const std::string& ff) { s.specular_m = r.number_in(v, ff, 1, 1000); });
+}
+
+std::map<std::string, Material> parse_materials(const Reader& r, const json& j) {
+  const std::string f = "materials";
+  r.expect_object(j, f);
+  std::map<std::string, Material> out;
+  for (auto it = j.begin(); it != j.end(); ++it) {
+    const std::string mf = f + "." + it.key();
+    const json& m = it.value();
+    r.expect_object(m, mf);
+    r.check_keys(m, mf, {"color", "d", "W", "n"});
+    Material mat;
+    mat.color = r.vec3_in(r.required(m, mf, "color"), mf + ".color", 0, 1);
+    opt(m, mf, "d", [&](const json& v, const std::string& ff) { mat.d = r.number_in(v, ff, 0, 1); });
+    opt(m, mf, "W", [&](const json& v, const std::string& ff) { mat.W = r.number_in(v, ff, 0, 1); });
+    opt(m, mf, "n", [&](const json& v, const std::string& ff) { mat.n = r.number_in(v, ff, 1, 1000); });
+    out[it.key()] = mat;
+  }
+  return out;
+}
+
+void parse_transform(const Reader& r, const json& j, const std::string& f, Transform& t) {
+  opt(j, f, "translate", [&](const json& v, const std::string& ff) { t.translate = r.vec3(v, ff); });
+  opt(j, f, "rotate_deg", [&](const json& v, const std::string& ff) { t.rotate_deg = r.vec3(v, ff); });
+  opt(j, f, "scale", [&](const json& v, const std::string& ff) {
+    if (v.is_number()) {
+      double s = r.positive(v, ff);
+      t.scale = glm::dvec3(s);
+    } else {
+      t.scale = r.vec3(v, ff);
+      for (int c = 0; c < 3; ++c)
+        if (!(t.scale[c] > 0)) r.fail(ff + "[" + std::to_string(c) + "]", "expected a positive number, got " + fmt(t.scale[c]));
+    }
+  });
+}
+
+ScreenPolygon parse_screen_polygon(const Reader& r, const json& j, const std::string& f) {
+  r.expect_object(j, f);
+  r.check_keys(j, f, {"vertices"});
+  const json& vs = r.array(r.required(j, f, "vertices"), f + ".vertices");
+  if (vs.size() < 3 || vs.size() > 4)
+    r.fail(f, "a polygon has 3 or 4 vertices, got " + std::to_string(vs.size()));
+  ScreenPolygon p;
+  for (size_t k = 0; k < vs.size(); ++k) {
+    const std::string vf = f + ".vertices[" + std::to_string(k) + "]";
+    const json& v = vs[k];
+    r.expect_object(v, vf);
+    r.check_keys(v, vf, {"x", "y", "depth", "rgb"});
+    ScreenVertex sv;
+    for (const char* key : {"x", "y"}) {
+      const std::string cf = vf + "." + key;
+      double x = r.number(r.required(v, vf, key), cf);
+      if (x < -kCoordLimit || x >= kCoordLimit)
+        r.fail(cf, fmt(x) + " is outside the representable range [-8192, 8192) pixels");
+      (key[0] == 'x' ? sv.x : sv.y) = x;
+    }
+    sv.depth = r.number_in(r.required(v, vf, "depth"), vf + ".depth", 0, 1, true);
+    glm::dvec3 c = r.vec3_in(r.required(v, vf, "rgb"), vf + ".rgb", 0, 255);
+    for (int ch = 0; ch < 3; ++ch) sv.rgb[ch] = c[ch];
+    p.v.push_back(sv);
+  }
+  double a2 = 0;  // twice the signed area (shoelace)
+  for (size_t k = 0; k < p.v.size(); ++k) {
+    const ScreenVertex& a = p.v[k];
+    const ScreenVertex& b = p.v[(k + 1) % p.v.size()];
+    a2 += a.x * b.y - b.x * a.y;
+  }
+  if (std::fabs(a2) * 0.5 < 1e-9) r.fail(f, "polygon has zero area");
+  return p;
+}
+
+SceneObject parse_object(const Reader& r, const json& j, const std::string& f, int index,
+                         const std::map<std::string, Material>& mats, const std::string& base_dir) {
+  r.expect_object(j, f);
+  SceneObject o;
+  o.field = f;
+  const std::string type = r.string(r.required(j, f, "type"), f + ".type");
+  // Keys every camera-space object accepts.
+  auto common = [&](std::initializer_list<const char*> extra) {
+    std::vector<const char*> keys = {"type", "material", "translate", "rotate_deg", "scale", "triangles"};
+    keys.insert(keys.end(), extra.begin(), extra.end());
+    for (auto it = j.begin(); it != j.end(); ++it) {
+      bool ok = false;
+      for (const char* a : keys) ok = ok || it.key() == a;
+      if (!ok) r.fail(f, "unknown key \"" + it.key() + "\"");
+    }
+    opt(j, f, "material", [&](const json& v, const std::string& ff) {
+      std::string name = r.string(v, ff);
+      auto m = mats.find(name);
+      if (m == mats.end()) r.fail(ff, "unknown material \"" + name + "\"");
+      o.material = m->second;
+    });
+    parse_transform(r, j, f, o.transform);
+    opt(j, f, "triangles", [&](const json& v, const std::string& ff) { o.triangles = r.boolean(v, ff); });
+  };
+  auto uv = [&](int umin, int udef, int vmin, int vdef) {
+    o.u = udef;
+    o.v = vdef;
+    opt(j, f, "u", [&](const json& v, const std::string& ff) { o.u = r.integer_in(v, ff, umin, 1024); });
+    opt(j, f, "v", [&](const json& v, const std::string& ff) { o.v = r.integer_in(v, ff, vmin, 1024); });
+  };
+
+  if (type == "sphere") {
+    o.type = ObjectType::Sphere;
+    common({"center", "radius", "u", "v"});
+    opt(j, f, "center", [&](const json& v, const std::string& ff) { o.center = r.vec3(v, ff); });
+    o.radius = r.positive(r.required(j, f, "radius"), f + ".radius");
+    uv(3, 24, 2, 12);
+  } else if (type == "cone") {
+    o.type = ObjectType::Cone;
+    common({"center", "radius", "height", "u", "v", "cap"});
+    opt(j, f, "center", [&](const json& v, const std::string& ff) { o.center = r.vec3(v, ff); });
+    o.radius = r.positive(r.required(j, f, "radius"), f + ".radius");
+    o.height = r.positive(r.required(j, f, "height"), f + ".height");
+    opt(j, f, "cap", [&](const json& v, const std::string& ff) { o.cap = r.boolean(v, ff); });
+    uv(3, 12, 1, 1);
+  } else if (type == "quarter_torus") {
+    o.type = ObjectType::QuarterTorus;
+    common({"major_radius", "minor_radius", "u", "v"});
+    o.major_radius = r.positive(r.required(j, f, "major_radius"), f + ".major_radius");
+    o.minor_radius = r.positive(r.required(j, f, "minor_radius"), f + ".minor_radius");
+    if (!(o.minor_radius < o.major_radius))
+      r.fail(f + ".minor_radius", "must be smaller than major_radius (" + fmt(o.major_radius) + ")");
+    uv(2, 12, 3, 16);
+  } else if (type == "hyperbolic_paraboloid") {
+    o.type = ObjectType::HyperbolicParaboloid;
+    common({"c", "size", "u", "v"});
+    o.c = r.number(r.required(j, f, "c"), f + ".c");
+    if (o.c == 0) r.fail(f + ".c", "must be non-zero");
+    o.size = r.positive(r.required(j, f, "size"), f + ".size");
+    uv(2, 12, 2, 12);
+  } else if (type == "bezier_patch") {
+    o.type = ObjectType::BezierPatch;
+    common({"control_points", "u", "v"});
+    const std::string cf = f + ".control_points";
+    const json& cp = r.array(r.required(j, f, "control_points"), cf);
+    if (cp.size() != 16) r.fail(cf, "expected 16 points (4 rows of 4), got " + std::to_string(cp.size()));
+    for (size_t k = 0; k < 16; ++k) o.control_points.push_back(r.vec3(cp[k], cf + "[" + std::to_string(k) + "]"));
+    uv(2, 12, 2, 12);
+  } else if (type == "mesh") {
+    o.type = ObjectType::Mesh;
+    common({"file", "normals"});
+    std::string file = r.string(r.required(j, f, "file"), f + ".file");
+    if (file.empty()) r.fail(f + ".file", "must not be empty");
+    std::filesystem::path p(file);
+    o.file = p.is_absolute() || base_dir.empty() ? p.string() : (std::filesystem::path(base_dir) / p).string();
+    opt(j, f, "normals", [&](const json& v, const std::string& ff) {
+      std::string n = r.string(v, ff);
+      if (n == "file") o.normals = MeshNormals::File;
+      else if (n == "average") o.normals = MeshNormals::Average;
+      else r.fail(ff, "expected \"file\" or \"average\", got " + show(v));
+    });
+  } else if (type == "polygons") {
+    o.type = ObjectType::Polygons;
+    r.check_keys(j, f, {"type", "polygons"});
+    const std::string pf = f + ".polygons";
+    const json& ps = r.array(r.required(j, f, "polygons"), pf);
+    for (size_t k = 0; k < ps.size(); ++k) {
+      ScreenPolygon p = parse_screen_polygon(r, ps[k], pf + "[" + std::to_string(k) + "]");
+      p.object = index;
+      o.polygons.push_back(std::move(p));
+    }
+  } else {
+    r.fail(f + ".type",
+           "unknown object type " + show(j["type"]) +
+               " (expected sphere, cone, quarter_torus, hyperbolic_paraboloid, bezier_patch, mesh or polygons)");
+  }
+  return o;
+}
+
+// nlohmann reports a byte offset; turn it into the line:column editors show.
+std::string parse_error_message(const std::string& name, const std::string& text,
+                                const json::parse_error& e) {
+  // e.byte is 1-based: the offending character is text[e.byte - 1].
+  size_t idx = std::min<size_t>(e.byte > 0 ? e.byte - 1 : 0, text.size());
+  int line = 1, col = 1;
+  for (size_t i = 0; i < idx; ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      col = 1;
+    } else {
+      ++col;
+    }
+  }
+  std::string detail = e.what();
+  auto pos = detail.find(": ");  // drop "[json.exception.parse_error.101] parse error at line 1, column 2"
+  if (pos != std::string::npos) detail = detail.substr(pos + 2);
+  return name + ":" + std::to_string(line) + ":" + std::to_string(col) + ": malformed JSON: " + detail;
+}
+
+}  // namespace
+
+Scene parse_scene(const std::string& text, const std::string& name, const std::string& base_dir) {
+  json root;
+  try {
+    // Comments are allowed so shipped scenes can explain themselves.
+    root = json::parse(text, nullptr, true, /*ignore_comments=*/true);
+  } catch (const json::parse_error& e) {
+    throw SceneError(parse_error_message(name, text, e));
+  }
+  Reader r(name);
+  Scene s;
+  s.name = name;
+  r.expect_object(root, "");
+  r.check_keys(root, "", {"screen", "camera", "light", "shading", "materials", "objects"});
+  parse_screen(r, r.required(root, "", "screen"), s);
+  opt(root, "", "camera", [&](const json& v, const std::string&) { parse_camera(r, v, s.camera); });
+  opt(root, "", "light", [&](const json& v, const std::string&) { parse_light(r, v, s.light); });
+  opt(root, "", "shading", [&](const json& v, const std::string&) { parse_shading(r, v, s.shading); });
+  std::map<std::string, Material> mats;
+  opt(root, "", "materials", [&](const json& v, const std::string&) { mats = parse_materials(r, v); });
+  const json& objs = r.array(r.required(root, "", "objects"), "objects");
+  for (size_t i = 0; i < objs.size(); ++i)
+    s.objects.push_back(parse_object(r, objs[i], "objects[" + std::to_string(i) + "]",
+                                     static_cast<int>(i), mats, base_dir));
+  return s;
+}
+
+}  // namespace watkins

@@ -1,0 +1,89 @@
+// The parsed, validated scene (scene_parse.cpp fills it, scene_build.cpp consumes it).
+// Everything here is already range-checked, so the builder never has to re-validate input.
+// World coordinates are left-handed: +X right, +Y up, +Z away from the observer, which is
+// the frame of Watkins and Gouraud ("observer at the origin looking in the Z direction").
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "scene.hpp"
+#include "screen_polygon.hpp"
+
+namespace watkins {
+
+// Object -> world: scale, then rotate about X, then Y, then Z, then translate.
+struct Transform {
+  glm::dvec3 translate{0.0};
+  glm::dvec3 rotate_deg{0.0};
+  glm::dvec3 scale{1.0};  // every component > 0 (a mirror would flip the winding)
+};
+
+// Reflectance in [0,1] per channel; d, W, n are Phong's coefficients, validated and carried
+// for later shading rules.
+struct Material {
+  glm::dvec3 color{1.0};
+  double d = 0.2, W = 0.5, n = 10.0;
+};
+
+struct Camera {
+  enum class Type { Gouraud, LookAt } type = Type::Gouraud;
+  double focal = 1.0;  // f in x_s = W/2 + f*(W/2)*X/Z; for lookat, 1/tan(fov/2)
+  glm::dvec3 eye{0.0}, target{0.0, 0.0, 1.0}, up{0.0, 1.0, 0.0};  // lookat only
+  double near = 0.1, far = 1000.0;
+};
+
+struct Light {
+  enum class Type { Directional, Eye } type = Type::Eye;
+  glm::dvec3 towards{0.0, 0.0, -1.0};  // directional: unit vector from the scene to the light (world)
+};
+
+struct Shading {
+  ShadingRule rule = ShadingRule::Gouraud;
+  DepthMode depth = DepthMode::InverseZ;
+  bool cull_backfaces = true;
+  double specular_m = 8.0;
+};
+
+enum class ObjectType { Sphere, Cone, QuarterTorus, HyperbolicParaboloid, BezierPatch, Mesh, Polygons };
+
+enum class MeshNormals { File, Average };
+
+struct SceneObject {
+  ObjectType type = ObjectType::Sphere;
+  std::string field;  // "objects[3]", used in messages
+  Material material;
+  Transform transform;
+  bool triangles = false;  // split every quad into two triangles
+  int u = 24, v = 12;      // tessellation
+
+  glm::dvec3 center{0.0};         // sphere centre; cone base centre
+  double radius = 1.0;            // sphere; cone base radius
+  double height = 1.0;            // cone: apex at center + (0, height, 0)
+  bool cap = true;                // cone: close the base with a triangle fan
+  double major_radius = 2.0;      // quarter torus
+  double minor_radius = 0.5;
+  double c = 1.0, size = 1.0;     // hyperbolic paraboloid z = (x^2 - y^2)/c, |x|,|y| <= size
+  std::vector<glm::dvec3> control_points;  // Bezier patch: 16, row by row
+  std::string file;               // mesh: OBJ path already resolved against the scene's folder
+  MeshNormals normals = MeshNormals::File;
+  std::vector<ScreenPolygon> polygons;  // "polygons": screen-space, validated, passed through
+};
+
+struct Scene {
+  std::string name;  // file name (or given name) used in messages
+  int width = 320, height = 240;
+  double background[3] = {0, 0, 0};
+  Camera camera;
+  Light light;
+  Shading shading;
+  std::vector<SceneObject> objects;
+};
+
+// JSON text -> Scene. Throws SceneError naming `name` and the offending field.
+Scene parse_scene(const std::string& text, const std::string& name, const std::string& base_dir);
+
+}  // namespace watkins

@@ -1,0 +1,24 @@
+// Twin of rtl/segment_former.sv: pairs the active edges of each polygon into segments
+// ("edges belonging to the same polygon are paired to form segments", Gouraud 1971).
+// One pass over the X-ordered active edges: the first edge of a polygon opens a segment, the
+// next edge of the same polygon closes it (even-odd pairing, so concave and bow-tie quads with
+// four edges on a line give two segments). Segments leave in the order they close.
+#pragma once
+
+#include <vector>
+
+#include "edge_incrementer.hpp"
+
+namespace watkins {
+
+struct Segment {
+  int poly = 0;
+  ChannelVector e{};  // left end E: channel values of the opening edge on this scan line
+  ChannelVector f{};  // right end F: channel values of the closing edge
+};
+
+struct SegmentFormer {
+  static void form(const std::vector<ActiveEdge>& x_ordered, std::vector<Segment>& out);
+};
+
+}  // namespace watkins

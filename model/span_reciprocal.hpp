@@ -1,0 +1,27 @@
+// Twin of rtl/span_reciprocal.sv: 1/dx for a segment width dx > 0 (X channel units, FracBits
+// fraction) as a normalized mantissa and an exponent, the way a pipelined restoring divider
+// computes it. With p = floor(log2 dx) and m = dx scaled to exactly RecipBits bits
+// (m in [2^(R-1), 2^R), low bits truncated when dx is wider), recip = floor(2^(2R-1) / m), so
+// 1/dx ~= recip * 2^-(p + R) with relative error below 2^-(R-1).
+#pragma once
+
+#include "fixed_point.hpp"
+#include "formats.hpp"
+
+namespace watkins {
+
+struct SpanReciprocal {
+  i64 recip = 0;  // in (2^(R-1), 2^R], R = RecipBits
+  int p = 0;      // floor(log2 dx)
+
+  static SpanReciprocal of(i64 dx) {
+    constexpr int R = fmt::RecipBits;
+    SpanReciprocal r;
+    r.p = msb_index(static_cast<std::uint64_t>(dx));
+    const i64 m = r.p >= R - 1 ? (dx >> (r.p - (R - 1))) : (dx << ((R - 1) - r.p));
+    r.recip = static_cast<i64>((static_cast<i128>(1) << (2 * R - 1)) / m);
+    return r;
+  }
+};
+
+}  // namespace watkins

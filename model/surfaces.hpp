@@ -1,0 +1,34 @@
+// Analytic surfaces tessellated into Gouraud's grid elements (quads, possibly non-planar) or
+// triangles, with the EXACT surface normal at every vertex, in object space.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "scene_types.hpp"
+
+namespace watkins {
+
+// One indexed vertex array per object: polygons sharing a vertex refer to the same doubles,
+// so shared edges project to bit-identical screen coordinates (watertight rasterization).
+struct IndexedMesh {
+  struct Face {
+    int n = 0;                    // 3 or 4
+    std::array<int, 4> idx{};     // indices into position/normal
+  };
+  std::vector<glm::dvec3> position;
+  std::vector<glm::dvec3> normal;  // unit, outward (the side the face is seen from when front)
+  std::vector<Face> faces;
+
+  int add_vertex(const glm::dvec3& p, const glm::dvec3& n);
+  // Adds a face wound so that it is front-facing when seen from the side its vertex normals
+  // point to (see docs/scene-format.md, "Winding"). Quads become two triangles if `split`.
+  void add_face(std::initializer_list<int> idx, bool split);
+};
+
+// Sphere, cone, quarter_torus, hyperbolic_paraboloid, bezier_patch. Object space, untransformed.
+IndexedMesh tessellate_surface(const SceneObject& o);
+
+}  // namespace watkins
