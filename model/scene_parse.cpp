@@ -1,6 +1,7 @@
 // JSON -> Scene with strict validation: unknown keys, wrong types, missing keys, out-of-range
 // and non-finite numbers are all errors naming the file and the JSON field, so a typo in a
 // scene never silently renders something else.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <initializer_list>
@@ -165,7 +166,7 @@ void parse_camera(const Reader& r, const json& j, Camera& cam) {
     opt(j, f, "fov_deg", [&](const json& v, const std::string& ff) {
       fov = r.number_in(v, ff, 1, 179);
     });
-    cam.focal = 1.0 / std::tan(fov * M_PI / 360.0);
+    cam.focal = 1.0 / std::tan(fov * (3.14159265358979323846 / 360.0));  // horizontal fov
     glm::dvec3 fwd = cam.target - cam.eye;
     double fl = std::sqrt(fwd.x * fwd.x + fwd.y * fwd.y + fwd.z * fwd.z);
     if (!(fl > 1e-12)) r.fail("camera.target", "must differ from camera.eye");
@@ -391,10 +392,8 @@ SceneObject parse_object(const Reader& r, const json& j, const std::string& f, i
 }
 
 // nlohmann reports a byte offset; turn it into the line:column editors show.
-std::string parse_error_message(const std::string& name, const std::string& text,
-                                const json::parse_error& e) {
-  // e.byte is 1-based: the offending character is text[e.byte - 1].
-  size_t idx = std::min<size_t>(e.byte > 0 ? e.byte - 1 : 0, text.size());
+std::string located(const std::string& name, const std::string& text, size_t idx, const std::string& detail) {
+  idx = std::min(idx, text.size());
   int line = 1, col = 1;
   for (size_t i = 0; i < idx; ++i) {
     if (text[i] == '\n') {
@@ -404,10 +403,28 @@ std::string parse_error_message(const std::string& name, const std::string& text
       ++col;
     }
   }
+  return name + ":" + std::to_string(line) + ":" + std::to_string(col) + ": malformed JSON: " + detail;
+}
+
+std::string parse_error_message(const std::string& name, const std::string& text, const json::parse_error& e) {
   std::string detail = e.what();
   auto pos = detail.find(": ");  // drop "[json.exception.parse_error.101] parse error at line 1, column 2"
   if (pos != std::string::npos) detail = detail.substr(pos + 2);
-  return name + ":" + std::to_string(line) + ":" + std::to_string(col) + ": malformed JSON: " + detail;
+  // e.byte is 1-based: the offending character is text[e.byte - 1].
+  return located(name, text, e.byte > 0 ? e.byte - 1 : 0, detail);
+}
+
+// Number overflow (e.g. 1e999) carries no position; find the quoted token in the text.
+std::string overflow_message(const std::string& name, const std::string& text, const json::out_of_range& e) {
+  std::string detail = e.what();
+  auto pos = detail.find("] ");
+  if (pos != std::string::npos) detail = detail.substr(pos + 2);
+  auto q0 = detail.find('\''), q1 = detail.rfind('\'');
+  if (q0 != std::string::npos && q1 > q0) {
+    auto at = text.find(detail.substr(q0 + 1, q1 - q0 - 1));
+    if (at != std::string::npos) return located(name, text, at, detail);
+  }
+  return name + ": malformed JSON: " + detail;
 }
 
 }  // namespace
@@ -419,6 +436,10 @@ Scene parse_scene(const std::string& text, const std::string& name, const std::s
     root = json::parse(text, nullptr, true, /*ignore_comments=*/true);
   } catch (const json::parse_error& e) {
     throw SceneError(parse_error_message(name, text, e));
+  } catch (const json::out_of_range& e) {
+    throw SceneError(overflow_message(name, text, e));
+  } catch (const json::exception& e) {
+    throw SceneError(name + ": malformed JSON: " + e.what());
   }
   Reader r(name);
   Scene s;

@@ -1,0 +1,265 @@
+// Scene -> screen-space polygons: object and camera transforms, projection, near/far
+// rejection, degenerate and back-face removal, and the per-vertex shading rules.
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <sstream>
+
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+
+#include "mesh_obj.hpp"
+#include "scene.hpp"
+#include "scene_types.hpp"
+#include "surfaces.hpp"
+
+namespace watkins {
+
+const char* to_string(ShadingRule r) {
+  switch (r) {
+    case ShadingRule::Gouraud: return "gouraud";
+    case ShadingRule::Lambert: return "lambert";
+    case ShadingRule::Warnock: return "warnock";
+    case ShadingRule::Romney: return "romney";
+  }
+  return "?";
+}
+
+const char* to_string(DepthMode m) { return m == DepthMode::InverseZ ? "inverse-z" : "z"; }
+
+std::optional<ShadingRule> parse_shading_rule(const std::string& s) {
+  for (ShadingRule r : {ShadingRule::Gouraud, ShadingRule::Lambert, ShadingRule::Warnock, ShadingRule::Romney})
+    if (s == to_string(r)) return r;
+  return std::nullopt;
+}
+
+std::optional<DepthMode> parse_depth_mode(const std::string& s) {
+  for (DepthMode m : {DepthMode::InverseZ, DepthMode::Z})
+    if (s == to_string(m)) return m;
+  return std::nullopt;
+}
+
+const std::string& default_scene_text() {
+  static const std::string s =
+#include "default_scene.inc"
+      ;
+  return s;
+}
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kCoordLimit = 8192.0;
+constexpr size_t kMaxPolygons = 65536;  // the pipeline's polygon id is 16 bits
+
+std::string fmt(double x) {
+  std::ostringstream os;
+  os << x;
+  return os.str();
+}
+
+// Column-major glm: m[c][r]. Rotation applies X first, then Y, then Z.
+glm::dmat3 rotation(const glm::dvec3& deg) {
+  const glm::dvec3 a = deg * (kPi / 180.0);
+  const double cx = std::cos(a.x), sx = std::sin(a.x), cy = std::cos(a.y), sy = std::sin(a.y),
+               cz = std::cos(a.z), sz = std::sin(a.z);
+  glm::dmat3 rx(1, 0, 0, 0, cx, sx, 0, -sx, cx);
+  glm::dmat3 ry(cy, 0, -sy, 0, 1, 0, sy, 0, cy);
+  glm::dmat3 rz(cz, sz, 0, -sz, cz, 0, 0, 0, 1);
+  return rz * ry * rx;
+}
+
+// World -> camera: a rotation (rows right, up, forward) and the eye position. The lookat
+// basis uses right = up x forward so the map is a proper rotation of the left-handed world.
+struct View {
+  glm::dvec3 eye{0.0}, right{1, 0, 0}, up{0, 1, 0}, fwd{0, 0, 1};
+  glm::dvec3 point(const glm::dvec3& p) const {
+    glm::dvec3 d = p - eye;
+    return {glm::dot(d, right), glm::dot(d, up), glm::dot(d, fwd)};
+  }
+  glm::dvec3 dir(const glm::dvec3& d) const { return {glm::dot(d, right), glm::dot(d, up), glm::dot(d, fwd)}; }
+};
+
+View make_view(const Camera& c) {
+  View v;
+  if (c.type == Camera::Type::LookAt) {
+    v.eye = c.eye;
+    v.fwd = glm::normalize(c.target - c.eye);
+    v.right = glm::normalize(glm::cross(c.up, v.fwd));
+    v.up = glm::cross(v.fwd, v.right);
+  }
+  return v;
+}
+
+// An object in camera space, ready to project and shade.
+struct CamObject {
+  const SceneObject* src = nullptr;
+  int index = 0;
+  IndexedMesh mesh;                 // position/normal replaced by camera-space values
+  std::vector<char> kept;           // per face: survived near/far rejection
+};
+
+double signed_area(const ScreenPolygon& p) {
+  double a2 = 0;
+  for (size_t k = 0; k < p.v.size(); ++k) {
+    const ScreenVertex& a = p.v[k];
+    const ScreenVertex& b = p.v[(k + 1) % p.v.size()];
+    a2 += a.x * b.y - b.x * a.y;
+  }
+  return 0.5 * a2;
+}
+
+BuiltScene build(const Scene& sc, const BuildOptions& opt) {
+  BuiltScene out;
+  out.name = sc.name;
+  out.width = sc.width;
+  out.height = sc.height;
+  for (int c = 0; c < 3; ++c) out.background[c] = sc.background[c];
+  out.rule = opt.rule.value_or(sc.shading.rule);
+  out.depth = opt.depth.value_or(sc.shading.depth);
+  const bool cull = opt.cull_backfaces.value_or(sc.shading.cull_backfaces);
+  const Camera& cam = sc.camera;
+  const View view = make_view(cam);
+  const glm::dvec3 light_cam = view.dir(sc.light.towards);
+
+  // Pass 1: geometry into camera space; reject polygons reaching outside [near, far).
+  std::vector<CamObject> objs;
+  double zmin = INFINITY, rmin = INFINITY;
+  for (size_t i = 0; i < sc.objects.size(); ++i) {
+    const SceneObject& o = sc.objects[i];
+    if (o.type == ObjectType::Polygons) continue;
+    CamObject co;
+    co.src = &o;
+    co.index = static_cast<int>(i);
+    co.mesh = o.type == ObjectType::Mesh ? load_obj_mesh(o, sc.name + ": " + o.field + ".file") : tessellate_surface(o);
+    const glm::dmat3 rot = rotation(o.transform.rotate_deg);
+    const glm::dvec3 s = o.transform.scale;
+    for (size_t k = 0; k < co.mesh.position.size(); ++k) {
+      // Each vertex is transformed once, so every polygon sharing it sees the same doubles.
+      co.mesh.position[k] = view.point(rot * (s * co.mesh.position[k]) + o.transform.translate);
+      // Inverse transpose of rot*diag(s) is rot*diag(1/s).
+      co.mesh.normal[k] = glm::normalize(view.dir(rot * (co.mesh.normal[k] / s)));
+    }
+    co.kept.assign(co.mesh.faces.size(), 0);
+    for (size_t f = 0; f < co.mesh.faces.size(); ++f) {
+      const auto& face = co.mesh.faces[f];
+      bool inside = true;
+      for (int k = 0; k < face.n; ++k) {
+        double z = co.mesh.position[face.idx[k]].z;
+        inside = inside && z >= cam.near && z < cam.far;
+      }
+      if (!inside) {
+        ++out.near_clipped;
+        continue;
+      }
+      co.kept[f] = 1;
+      for (int k = 0; k < face.n; ++k) {
+        const glm::dvec3& p = co.mesh.position[face.idx[k]];
+        zmin = std::min(zmin, p.z);
+        rmin = std::min(rmin, glm::length(p));
+      }
+    }
+    objs.push_back(std::move(co));
+  }
+
+  // Pass 2: project and shade every vertex of a kept polygon, then emit the polygons.
+  const double half_w = 0.5 * sc.width, half_h = 0.5 * sc.height;
+  auto shade = [&](const glm::dvec3& p, glm::dvec3 n, const Material& mat, double rgb[3]) {
+    const double R = glm::length(p);
+    const glm::dvec3 to_eye = -p / R;
+    if (glm::dot(n, to_eye) < 0) n = -n;  // shade the side that is seen
+    const glm::dvec3 L = sc.light.type == Light::Type::Eye ? to_eye : light_cam;
+    const double cs = glm::dot(n, L);
+    double diff = 0, spec = 0;
+    switch (out.rule) {
+      case ShadingRule::Gouraud: diff = cs * cs * (zmin / p.z); break;
+      case ShadingRule::Lambert: diff = std::max(0.0, cs); break;
+      case ShadingRule::Warnock:
+        diff = std::fabs(cs) * (rmin / R);
+        spec = std::pow(std::fabs(cs), sc.shading.specular_m) * (rmin / R);
+        break;
+      case ShadingRule::Romney: diff = cs * cs * std::pow(rmin / R, 4); break;
+    }
+    for (int c = 0; c < 3; ++c) rgb[c] = std::clamp(255.0 * (mat.color[c] * diff + spec), 0.0, 255.0);
+  };
+
+  size_t next_obj = 0;
+  for (size_t i = 0; i < sc.objects.size(); ++i) {
+    const SceneObject& o = sc.objects[i];
+    if (o.type == ObjectType::Polygons) {
+      // A hardware user's command list: already in screen space, never culled or reshaded.
+      out.polygons.insert(out.polygons.end(), o.polygons.begin(), o.polygons.end());
+      continue;
+    }
+    const CamObject& co = objs[next_obj++];
+    const IndexedMesh& m = co.mesh;
+    std::vector<ScreenVertex> sv(m.position.size());
+    std::vector<char> done(m.position.size(), 0);
+    auto vertex = [&](int k) -> const ScreenVertex& {
+      if (done[k]) return sv[k];
+      const glm::dvec3& p = m.position[k];
+      ScreenVertex& v = sv[k];
+      v.x = half_w + cam.focal * half_w * p.x / p.z;
+      v.y = half_h - cam.focal * half_w * p.y / p.z;
+      for (int axis = 0; axis < 2; ++axis) {
+        const double c = axis == 0 ? v.x : v.y;
+        if (!(c >= -kCoordLimit && c < kCoordLimit))
+          throw SceneError(sc.name + ": " + o.field + ": vertex projects to " + (axis == 0 ? "x=" : "y=") + fmt(c) +
+                           ", outside the representable range [-8192, 8192) pixels; move the camera or reduce focal");
+      }
+      v.depth = out.depth == DepthMode::InverseZ ? 1.0 - cam.near / p.z : (p.z - cam.near) / (cam.far - cam.near);
+      v.depth = std::min(v.depth, std::nextafter(1.0, 0.0));  // rounding only; Z < far already holds
+      v.eye_z = p.z;
+      shade(p, m.normal[k], o.material, v.rgb);
+      done[k] = 1;
+      return v;
+    };
+    for (size_t f = 0; f < m.faces.size(); ++f) {
+      if (!co.kept[f]) continue;
+      const auto& face = m.faces[f];
+      ScreenPolygon poly;
+      poly.object = static_cast<int>(i);
+      for (int k = 0; k < face.n; ++k) poly.v.push_back(vertex(face.idx[k]));
+      // Front faces look counter-clockwise on the display; with y down that is a negative
+      // shoelace area.
+      const double a = signed_area(poly);
+      if (std::fabs(a) < 1e-9) {
+        ++out.degenerate;
+      } else if (cull && a > 0) {
+        ++out.culled_backfaces;
+      } else {
+        out.polygons.push_back(std::move(poly));
+      }
+    }
+  }
+  if (out.polygons.size() > kMaxPolygons)
+    throw SceneError(sc.name + ": scene has " + std::to_string(out.polygons.size()) +
+                     " polygons; the pipeline's polygon id is 16 bits (at most 65536)");
+  return out;
+}
+
+}  // namespace
+
+BuiltScene load_scene_text(const std::string& text, const std::string& name, const std::string& base_dir,
+                           const BuildOptions& opt) {
+  return build(parse_scene(text, name, base_dir), opt);
+}
+
+BuiltScene load_scene(const std::string& path, const BuildOptions& opt) {
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) throw SceneError(path + ": cannot open scene file: " + std::strerror(errno));
+  std::string text;
+  char buf[65536];
+  size_t n;
+  while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) text.append(buf, n);
+  const bool bad = std::ferror(f);
+  const int err = errno;
+  std::fclose(f);
+  if (bad) throw SceneError(path + ": cannot open scene file: " + std::strerror(err));
+  return load_scene_text(text, path, std::filesystem::path(path).parent_path().string(), opt);
+}
+
+}  // namespace watkins

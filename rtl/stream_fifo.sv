@@ -1,0 +1,61 @@
+// stream_fifo: first-in first-out valid/ready buffer of Depth words.
+// Latency 1 (a word written is visible at the head the next cycle); valid_o and data_o come
+// from registers, ready_o = not full (registered); no combinational path from input to output.
+module stream_fifo #(
+  parameter int unsigned DataBits = 8,
+  parameter int unsigned Depth    = 2
+) (
+  input  logic                clk_i,
+  input  logic                rst_ni,   // active-low synchronous reset
+  input  logic [DataBits-1:0] data_i,   // word to store
+  input  logic                valid_i,
+  output logic                ready_o,  // a slot is free
+  output logic [DataBits-1:0] data_o,   // oldest word
+  output logic                valid_o,  // the FIFO holds a word
+  input  logic                ready_i
+);
+  localparam int unsigned PtrBits = (Depth > 1) ? $clog2(Depth) : 1;
+  localparam int unsigned CntBits = $clog2(Depth + 1);
+
+  logic [DataBits-1:0] mem_q [Depth];
+  logic [PtrBits-1:0]  wr_q, rd_q;
+  logic [CntBits-1:0]  cnt_q;
+  logic push, pop;
+
+  assign ready_o = (cnt_q != CntBits'(Depth));
+  assign valid_o = (cnt_q != '0);
+  assign data_o  = mem_q[rd_q];
+  assign push    = valid_i && ready_o;
+  assign pop     = valid_o && ready_i;
+
+  // Pointers wrap at Depth, which need not be a power of two.
+  function automatic logic [PtrBits-1:0] next_ptr(logic [PtrBits-1:0] p);
+    next_ptr = (p == PtrBits'(Depth - 1)) ? '0 : p + 1'b1;
+  endfunction
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      wr_q  <= '0;
+      rd_q  <= '0;
+      cnt_q <= '0;
+    end else begin
+      if (push) wr_q <= next_ptr(wr_q);
+      if (pop) rd_q <= next_ptr(rd_q);
+      if (push && !pop) cnt_q <= cnt_q + 1'b1;
+      else if (pop && !push) cnt_q <= cnt_q - 1'b1;
+    end
+  end
+
+  // Storage needs no reset: a slot is read only after it has been written.
+  always_ff @(posedge clk_i) begin
+    if (push) mem_q[wr_q] <= data_i;
+  end
+
+`ifndef SYNTHESIS
+  a_in_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
+    valid_i && !ready_o |=> valid_i && $stable(data_i));
+  a_out_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
+    valid_o && !ready_i |=> valid_o && $stable(data_o));
+  c_full: cover property (@(posedge clk_i) disable iff (!rst_ni) !ready_o);
+`endif
+endmodule

@@ -1,0 +1,97 @@
+// Edge record → watkins_pkg::edge_t, bit-exact. The one place where the C++ record meets the RTL's
+// packed struct; tests/cosim/test_edge_packing.cpp checks it against rtl/watkins_pkg.sv.
+//
+// A packed struct puts its first field at the top: edge_t = {y0, n, poly, value, slope}, and
+// `logic [NumChannels-1:0][ChannelBits-1:0] value` puts value[NumChannels-1] (B) at the top of its
+// field and value[0] (X) at the bottom. So, from bit 0 up:
+//   slope[0..4] at 0 + 42c, value[0..4] at 210 + 42c, poly at 420, n at 436, y0 at 449; 462 bits.
+// Verilator stores a 462-bit port as 15 little-endian 32-bit words (VlWide<15> / sc_bv<462>).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+#include "edge_record.hpp"
+#include "fixed_point.hpp"
+#include "formats.hpp"
+
+namespace watkins::tb {
+
+namespace edge_layout {
+constexpr int SlopeLsb = 0;
+constexpr int ValueLsb = SlopeLsb + fmt::NumChannels * fmt::ChannelBits;
+constexpr int PolyLsb = ValueLsb + fmt::NumChannels * fmt::ChannelBits;
+constexpr int NLsb = PolyLsb + fmt::PolyIdBits;
+constexpr int Y0Lsb = NLsb + fmt::LineBits;
+constexpr int Bits = Y0Lsb + fmt::LineBits;  // $bits(watkins_pkg::edge_t)
+constexpr int Words = (Bits + 31) / 32;
+static_assert(Bits == 462, "edge_t layout changed: update edge_packing.hpp and its test");
+}  // namespace edge_layout
+
+using EdgeWords = std::array<std::uint32_t, edge_layout::Words>;
+
+// Writes the low `width` bits of v at [lsb, lsb + width) (width <= 64).
+inline void put_bits(EdgeWords& w, int lsb, int width, std::uint64_t v) {
+  for (int i = 0; i < width; ++i) {
+    const int b = lsb + i;
+    const std::uint32_t bit = static_cast<std::uint32_t>((v >> i) & 1u);
+    w[b / 32] = (w[b / 32] & ~(1u << (b % 32))) | (bit << (b % 32));
+  }
+}
+
+inline std::uint64_t get_bits(const EdgeWords& w, int lsb, int width) {
+  std::uint64_t v = 0;
+  for (int i = 0; i < width; ++i) {
+    const int b = lsb + i;
+    v |= static_cast<std::uint64_t>((w[b / 32] >> (b % 32)) & 1u) << i;
+  }
+  return v;
+}
+
+// Throws std::invalid_argument when a field does not fit its width (a preparation bug: the RTL
+// would silently see a different record).
+inline EdgeWords pack_edge(const EdgeRecord& e) {
+  using namespace edge_layout;
+  auto check_unsigned = [](const char* what, long long v, int bits) {
+    if (v < 0 || v >= (1LL << bits))
+      throw std::invalid_argument(std::string("pack_edge: ") + what + " = " + std::to_string(v) +
+                                  " does not fit " + std::to_string(bits) + " unsigned bits");
+  };
+  check_unsigned("y0", e.y0, fmt::LineBits);
+  check_unsigned("n", e.n, fmt::LineBits);
+  check_unsigned("poly", e.poly, fmt::PolyIdBits);
+  EdgeWords w{};
+  put_bits(w, Y0Lsb, fmt::LineBits, static_cast<std::uint64_t>(e.y0));
+  put_bits(w, NLsb, fmt::LineBits, static_cast<std::uint64_t>(e.n));
+  put_bits(w, PolyLsb, fmt::PolyIdBits, static_cast<std::uint64_t>(e.poly));
+  for (int c = 0; c < fmt::NumChannels; ++c) {
+    for (const bool is_slope : {false, true}) {
+      const i64 v = is_slope ? e.slope[c] : e.value[c];
+      if (!fits_signed(v, fmt::ChannelBits))
+        throw std::invalid_argument(std::string("pack_edge: ") + (is_slope ? "slope[" : "value[") +
+                                    std::to_string(c) + "] = " + std::to_string(v) + " does not fit " +
+                                    std::to_string(fmt::ChannelBits) + " signed bits");
+      put_bits(w, (is_slope ? SlopeLsb : ValueLsb) + c * fmt::ChannelBits, fmt::ChannelBits,
+               wrap_unsigned(v, fmt::ChannelBits));
+    }
+  }
+  return w;
+}
+
+// Inverse of pack_edge (id is not carried and comes back 0).
+inline EdgeRecord unpack_edge(const EdgeWords& w) {
+  using namespace edge_layout;
+  EdgeRecord e;
+  e.y0 = static_cast<int>(get_bits(w, Y0Lsb, fmt::LineBits));
+  e.n = static_cast<int>(get_bits(w, NLsb, fmt::LineBits));
+  e.poly = static_cast<int>(get_bits(w, PolyLsb, fmt::PolyIdBits));
+  for (int c = 0; c < fmt::NumChannels; ++c) {
+    e.value[c] = wrap_signed(get_bits(w, ValueLsb + c * fmt::ChannelBits, fmt::ChannelBits), fmt::ChannelBits);
+    e.slope[c] = wrap_signed(get_bits(w, SlopeLsb + c * fmt::ChannelBits, fmt::ChannelBits), fmt::ChannelBits);
+  }
+  return e;
+}
+
+}  // namespace watkins::tb
