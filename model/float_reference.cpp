@@ -40,6 +40,7 @@ Image render_float_reference(const BuiltScene& scene, FloatReferenceStats* stats
   std::vector<double> depth(W);
   std::vector<Attr> colour(W);
   std::vector<char> written(W);
+  std::vector<int> owner(W);
   std::vector<Crossing> xs;
   std::vector<FloatSegment> segs;
   long long fragments = 0;
@@ -79,11 +80,13 @@ Image render_float_reference(const BuiltScene& scene, FloatReferenceStats* stats
         written[x] = 1;
         depth[x] = a.x;
         colour[x] = a;
+        owner[x] = s.poly;
       }
     }
     for (int x = 0; x < W; ++x) {
       std::uint8_t* px = img.at(x, y);
       img.covered[std::size_t(y) * W + x] = written[x];
+      img.owner[std::size_t(y) * W + x] = written[x] ? owner[x] : -1;
       for (int c = 0; c < 3; ++c) {
         const double v = written[x] ? colour[x][c + 1] : scene.background[c];
         px[c] = static_cast<std::uint8_t>(std::clamp(std::lround(v), 0L, 255L));

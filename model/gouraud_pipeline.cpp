@@ -41,6 +41,7 @@ Image GouraudPipeline::render(const PreparedScene& scene, const FragmentObserver
       const auto p = line.pixel(x);
       std::copy(p.begin(), p.end(), img.at(x, y));
       img.covered[std::size_t(y) * scene.width + x] = line.covered(x);
+      img.owner[std::size_t(y) * scene.width + x] = line.owner(x);
     }
     active.advance();
   }

@@ -27,6 +27,11 @@ ImageError compare_images(const Image& a, const Image& b) {
         continue;
       }
       if (!a.is_covered(x, y)) continue;
+      const std::size_t i = std::size_t(y) * a.width + x;
+      if (a.owner[i] != b.owner[i]) {
+        ++e.visibility_differs;
+        continue;
+      }
       ++e.compared;
       int worst = 0;
       for (int c = 0; c < 3; ++c) {
@@ -46,7 +51,8 @@ Image diff_image(const Image& a, const Image& b, int gain) {
   for (int y = 0; y < a.height; ++y)
     for (int x = 0; x < a.width; ++x) {
       std::uint8_t* pd = d.at(x, y);
-      if (a.is_covered(x, y) != b.is_covered(x, y)) {
+      const std::size_t i = std::size_t(y) * a.width + x;
+      if (a.is_covered(x, y) != b.is_covered(x, y) || a.owner[i] != b.owner[i]) {
         pd[0] = 255, pd[1] = 0, pd[2] = 255;
         continue;
       }

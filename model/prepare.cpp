@@ -80,6 +80,8 @@ bool make_edge_record(const QuantizedVertex& a, const QuantizedVertex& b, int po
   return true;
 }
 
+static PreparedScene prepare_unnamed(const BuiltScene& scene, const PrepareOptions& opt);
+
 int SceneNeeds::bits_for_value(int channel) const {
   auto bits = [](i64 v) {
     int b = 1;
@@ -91,6 +93,14 @@ int SceneNeeds::bits_for_value(int channel) const {
 }
 
 PreparedScene prepare(const BuiltScene& scene, const PrepareOptions& opt) {
+  try {
+    return prepare_unnamed(scene, opt);
+  } catch (const SceneError& e) {
+    throw SceneError(scene.name + ": " + e.what());  // every message names the scene
+  }
+}
+
+static PreparedScene prepare_unnamed(const BuiltScene& scene, const PrepareOptions& opt) {
   if (scene.width < 1 || scene.width > fmt::MaxScreen || scene.height < 1 ||
       scene.height > fmt::MaxScreen)
     throw SceneError("screen " + std::to_string(scene.width) + "x" + std::to_string(scene.height) +

@@ -7,6 +7,7 @@ bool ScanlineBuffer::write(const Fragment& f) {
   written_[f.x] = 1;
   depth_[f.x] = f.depth;
   rgb_[f.x] = {f.rgb[0], f.rgb[1], f.rgb[2]};
+  poly_[f.x] = f.poly;
   return true;
 }
 

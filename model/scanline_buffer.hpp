@@ -15,7 +15,7 @@ namespace watkins {
 class ScanlineBuffer {
  public:
   ScanlineBuffer(int width, std::array<std::uint8_t, 3> background)
-      : background_(background), depth_(width), rgb_(width), written_(width, 0) {}
+      : background_(background), depth_(width), rgb_(width), poly_(width), written_(width, 0) {}
 
   void clear() { std::fill(written_.begin(), written_.end(), 0); }
   // Depth test and write. Returns true when the fragment won the pixel.
@@ -23,12 +23,14 @@ class ScanlineBuffer {
   // The finished line's pixel at x (background where nothing was written).
   std::array<std::uint8_t, 3> pixel(int x) const { return written_[x] ? rgb_[x] : background_; }
   bool covered(int x) const { return written_[x] != 0; }
+  int owner(int x) const { return written_[x] ? poly_[x] : -1; }
   int width() const { return static_cast<int>(depth_.size()); }
 
  private:
   std::array<std::uint8_t, 3> background_;
   std::vector<std::uint32_t> depth_;
   std::vector<std::array<std::uint8_t, 3>> rgb_;
+  std::vector<int> poly_;  // visible polygon per pixel, for reports (the RTL does not carry it out)
   std::vector<std::uint8_t> written_;
 };
 

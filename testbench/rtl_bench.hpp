@@ -60,7 +60,19 @@ struct RtlResult {
     for (const RtlFrame& f : frames) all = all && f.complete;
     return all && mismatches == 0 && !hang && protocol_error.empty() && assertion.empty();
   }
-  std::string summary() const;  // one line per problem (empty when ok())
+  std::string summary() const {  // one line per problem (empty when ok())
+    std::string s;
+    auto line = [&](const std::string& t) { s += (s.empty() ? "" : "\n") + t; };
+    for (std::size_t f = 0; f < frames.size(); ++f)
+      if (!frames[f].complete)
+        line("frame " + std::to_string(f) + " incomplete: " + std::to_string(frames[f].pixels) + " of " +
+             std::to_string(static_cast<long long>(frames[f].image.width) * frames[f].image.height) + " pixels");
+    if (mismatches) line(std::to_string(mismatches) + " mismatching pixels; first: " + first_mismatch);
+    if (hang) line("hang: " + hang_reason);
+    if (!protocol_error.empty()) line("protocol: " + protocol_error);
+    if (!assertion.empty()) line("assertion: " + assertion);
+    return s;
+  }
 };
 
 // Which harness this library drives ("SystemC bench (...)" or "plain C++ harness (...)").

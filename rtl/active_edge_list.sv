@@ -1,0 +1,236 @@
+// active_edge_list: the edges crossing each scan line, streamed in (X, edge id) order and
+// followed by an end-of-line marker, for lines 0..height-1 of a frame (model/active_edge_list
+// and the frame loop of model/gouraud_pipeline.cpp).
+// Two banks (ping-pong): while line y's sorted list streams out of one bank, every streamed edge
+// is also stepped by the edge_incrementer and, unless it retires, inserted into the other bank
+// for line y+1, as are the new edge records with y0 == y+1 from the y-sorted input stream. One
+// sorted insertion per clock (stepped edges first): compare (X, id) against every entry in
+// parallel and shift the tail. Edge ids count the records of the frame's stream from 0.
+// Per line: about (active + new edges + 3) cycles when nothing stalls. The output data is read
+// from the bank registers (valid/data from registers through a read mux); ready is
+// combinational. An insertion into a full bank drops the edge and sets the sticky overflow_o.
+module active_edge_list #(
+  parameter int unsigned MaxActiveEdges = watkins_pkg::MaxActiveEdges
+) (
+  input  logic                                                              clk_i,
+  input  logic                                                              rst_ni,
+  input  logic                                                              start_i,      // begin a frame (when !busy_o)
+  input  logic [watkins_pkg::LineBits-1:0]                                  height_i,     // lines of the frame, stable while busy_o
+  output logic                                                              busy_o,       // a frame is in progress (until its EOF beat is read)
+  input  watkins_pkg::edge_t                                                edge_i,       // y-sorted edge records
+  input  logic                                                              edge_eof_i,   // this beat ends the frame's stream
+  input  logic                                                              edge_valid_i,
+  output logic                                                              edge_ready_o,
+  output logic [watkins_pkg::PolyIdBits-1:0]                                out_poly_o,   // polygon of the edge
+  output logic [watkins_pkg::NumChannels-1:0][watkins_pkg::ChannelBits-1:0] out_value_o,  // channels on this line
+  output logic                                                              out_eol_o,    // end-of-line marker, no edge
+  output logic                                                              out_valid_o,
+  input  logic                                                              out_ready_i,
+  output logic                                                              overflow_o    // sticky: an edge was dropped
+);
+  localparam int unsigned N  = MaxActiveEdges;
+  localparam int unsigned IB = (N > 1) ? $clog2(N) : 1;
+  localparam int unsigned CntB = $clog2(N + 1);
+  localparam int unsigned LB = watkins_pkg::LineBits;
+  localparam int unsigned NC = watkins_pkg::NumChannels;
+  localparam int unsigned CB = watkins_pkg::ChannelBits;
+
+  typedef struct packed {
+    logic [LB-1:0]                      remaining;  // lines left including the current one
+    logic [watkins_pkg::EdgeIdBits-1:0] id;
+    logic [watkins_pkg::PolyIdBits-1:0] poly;
+    logic [NC-1:0][CB-1:0]              value;
+    logic [NC-1:0][CB-1:0]              slope;
+  } entry_t;
+
+  // (X, id) order; ids are unique, so the order is total.
+  function automatic logic xid_less(logic signed [CB-1:0] xa, logic [watkins_pkg::EdgeIdBits-1:0] ida,
+                                    logic signed [CB-1:0] xb, logic [watkins_pkg::EdgeIdBits-1:0] idb);
+    xid_less = (xa < xb) || (xa == xb && ida < idb);
+  endfunction
+
+  entry_t          bank_q [2][N];
+  logic [CntB-1:0] cnt_q  [2];
+  logic            sel_q;        // bank streamed for line line_q - 1; the other fills for line_q
+  logic            frame_q, drain_q;
+  logic [LB-1:0]   line_q;       // line being filled, 0..height
+  logic [CntB-1:0] rd_q;
+  logic            out_done_q, inc_done_q, eol_sent_q;
+  logic [watkins_pkg::EdgeIdBits-1:0] id_q;
+
+  // ------------------------------------------------------------ stream out line line_q - 1
+  logic   streaming, have_edge, out_fire, inc_valid, inc_ready, inc_fire, advance;
+  entry_t cur;
+
+  assign streaming = frame_q && !drain_q && (line_q != '0);
+  assign have_edge = streaming && (rd_q < cnt_q[sel_q]);
+  assign cur       = bank_q[sel_q][IB'(rd_q)];
+
+  assign out_valid_o = (have_edge && !out_done_q) || (streaming && !have_edge && !eol_sent_q);
+  assign out_eol_o   = !have_edge;
+  assign out_poly_o  = cur.poly;
+  assign out_value_o = cur.value;
+  assign out_fire    = out_valid_o && out_ready_i;
+
+  // Fork to the segment former and the incrementer: each side takes the edge once.
+  assign inc_valid = have_edge && !inc_done_q;
+  assign inc_fire  = inc_valid && inc_ready;
+  assign advance   = have_edge && (out_done_q || out_fire) && (inc_done_q || inc_fire);
+
+  // ------------------------------------------------------------ step to the next line
+  logic                  st_valid, st_retire;
+  logic [NC-1:0][CB-1:0] st_value, st_slope;
+  logic [LB-1:0]         st_remaining;
+  logic [watkins_pkg::EdgeIdBits + watkins_pkg::PolyIdBits - 1:0] st_payload;
+
+  edge_incrementer #(
+    .NumChannels(NC),
+    .PayloadBits(watkins_pkg::EdgeIdBits + watkins_pkg::PolyIdBits)
+  ) u_inc (
+    .clk_i, .rst_ni,
+    .value_i    (cur.value),
+    .slope_i    (cur.slope),
+    .remaining_i(cur.remaining),
+    .payload_i  ({cur.id, cur.poly}),
+    .valid_i    (inc_valid),
+    .ready_o    (inc_ready),
+    .value_o    (st_value),
+    .slope_o    (st_slope),
+    .remaining_o(st_remaining),
+    .retire_o   (st_retire),
+    .payload_o  (st_payload),
+    .valid_o    (st_valid),
+    .ready_i    (1'b1)          // an insertion is always possible (or an overflow)
+  );
+
+  // ------------------------------------------------------------ insertion into the other bank
+  logic   nsel, ins_step, take_new, drop_late, ins_valid, src_done, swap;
+  entry_t ins, fresh;
+  logic [N-1:0] lt;
+  logic   head_edge;
+
+  assign nsel      = !sel_q;
+  assign head_edge = edge_valid_i && !edge_eof_i;
+  assign ins_step  = st_valid && !st_retire;
+  assign take_new  = frame_q && !drain_q && head_edge && (line_q < height_i)
+                     && (edge_i.y0 == line_q) && !ins_step;
+  // A record behind the line being filled (unsorted stream) cannot be placed: skip it.
+  assign drop_late = frame_q && !drain_q && head_edge && (edge_i.y0 < line_q);
+  assign edge_ready_o = take_new || drop_late || (drain_q && edge_valid_i);
+  assign ins_valid = ins_step || take_new;
+
+  always_comb begin
+    fresh.remaining = edge_i.n;
+    fresh.id        = id_q;
+    fresh.poly      = edge_i.poly;
+    fresh.value     = edge_i.value;
+    fresh.slope     = edge_i.slope;
+    if (ins_step) begin
+      ins.remaining = st_remaining;
+      {ins.id, ins.poly} = st_payload;
+      ins.value = st_value;
+      ins.slope = st_slope;
+    end else begin
+      ins = fresh;
+    end
+    for (int i = 0; i < int'(N); i++)
+      lt[i] = (CntB'(i) < cnt_q[nsel]) && xid_less(bank_q[nsel][i].value[watkins_pkg::ChanX], bank_q[nsel][i].id,
+                                                    ins.value[watkins_pkg::ChanX], ins.id);
+  end
+
+  // Line line_q is complete when line_q - 1 has streamed out (marker sent), its stepped edges
+  // are in, and the input holds no more records for line_q.
+  assign src_done = (line_q == height_i)
+                 || (edge_valid_i && (edge_eof_i || edge_i.y0 > line_q));
+  assign swap = frame_q && !drain_q && ((line_q == '0) || eol_sent_q) && !st_valid && src_done;
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      frame_q    <= 1'b0;
+      drain_q    <= 1'b0;
+      sel_q      <= 1'b0;
+      line_q     <= '0;
+      rd_q       <= '0;
+      cnt_q[0]   <= '0;
+      cnt_q[1]   <= '0;
+      out_done_q <= 1'b0;
+      inc_done_q <= 1'b0;
+      eol_sent_q <= 1'b0;
+      id_q       <= '0;
+      overflow_o <= 1'b0;
+    end else if (start_i && !frame_q) begin
+      frame_q    <= 1'b1;
+      drain_q    <= 1'b0;
+      line_q     <= '0;
+      rd_q       <= '0;
+      cnt_q[0]   <= '0;
+      cnt_q[1]   <= '0;
+      out_done_q <= 1'b0;
+      inc_done_q <= 1'b0;
+      eol_sent_q <= 1'b0;
+      id_q       <= '0;
+    end else begin
+      if (advance) begin
+        rd_q       <= rd_q + 1'b1;
+        out_done_q <= 1'b0;
+        inc_done_q <= 1'b0;
+      end else begin
+        if (out_fire && have_edge) out_done_q <= 1'b1;
+        if (inc_fire) inc_done_q <= 1'b1;
+      end
+      if (out_fire && !have_edge) eol_sent_q <= 1'b1;
+      if (edge_valid_i && edge_ready_o && !edge_eof_i) id_q <= id_q + 1'b1;
+      if (ins_valid) begin
+        if (cnt_q[nsel] == CntB'(N)) overflow_o <= 1'b1;
+        else cnt_q[nsel] <= cnt_q[nsel] + 1'b1;
+      end
+      if (swap) begin
+        if (line_q == height_i) begin
+          drain_q <= 1'b1;  // read the rest of the stream up to its EOF beat
+        end else begin
+          sel_q      <= nsel;
+          cnt_q[sel_q] <= '0;
+          line_q     <= line_q + 1'b1;
+          rd_q       <= '0;
+          eol_sent_q <= 1'b0;
+        end
+      end
+      if (drain_q && edge_valid_i && edge_eof_i) begin
+        frame_q <= 1'b0;
+        drain_q <= 1'b0;
+      end
+    end
+  end
+
+  // Sorted insertion: entries before the new one stay, the one at its place takes it, the
+  // tail moves up by one (entries past the count hold don't-care values).
+  always_ff @(posedge clk_i) begin
+    if (ins_valid && cnt_q[nsel] != CntB'(N)) begin
+      for (int b = 0; b < 2; b++) begin
+        if (b[0] == nsel) begin
+          for (int i = 0; i < int'(N); i++) begin
+            if (!lt[i]) begin
+              if (i == 0) bank_q[b][i] <= ins;
+              else if (lt[i-1]) bank_q[b][i] <= ins;
+              else bank_q[b][i] <= bank_q[b][i-1];
+            end
+          end
+        end
+      end
+    end
+  end
+
+  assign busy_o = frame_q;
+
+`ifndef SYNTHESIS
+  a_in_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
+    edge_valid_i && !edge_ready_o |=> edge_valid_i && $stable({edge_i, edge_eof_i}));
+  a_out_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
+    out_valid_o && !out_ready_i |=> out_valid_o && $stable({out_poly_o, out_value_o, out_eol_o}));
+  a_no_insert_on_swap: assert property (@(posedge clk_i) disable iff (!rst_ni)
+    swap |-> !ins_valid);
+  c_overflow: cover property (@(posedge clk_i) disable iff (!rst_ni) $rose(overflow_o));
+  c_new_and_stepped: cover property (@(posedge clk_i) disable iff (!rst_ni)
+    ins_step && frame_q && head_edge && edge_i.y0 == line_q);
+`endif
+endmodule

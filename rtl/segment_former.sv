@@ -1,0 +1,93 @@
+// segment_former: pairs the X-ordered active edges of one scan line into segments per polygon
+// (model/segment_former.cpp): the first edge of a polygon opens a segment, the next edge of the
+// same polygon closes it; segments leave in closing order, the end-of-line marker follows them
+// and clears the table (an edge left open draws nothing).
+// Latency 1: output registered; ready_o = ready_i || !valid_o (combinational).
+// The open table has MaxActiveEdges entries, so it cannot fill: a line carries at most that
+// many edges.
+module segment_former #(
+  parameter int unsigned MaxActiveEdges = watkins_pkg::MaxActiveEdges
+) (
+  input  logic                                                              clk_i,
+  input  logic                                                              rst_ni,
+  input  logic [watkins_pkg::PolyIdBits-1:0]                                edge_poly_i,  // polygon of the edge
+  input  logic [watkins_pkg::NumChannels-1:0][watkins_pkg::ChannelBits-1:0] edge_value_i, // channels on this line
+  input  logic                                                              edge_eol_i,   // end-of-line marker
+  input  logic                                                              edge_valid_i,
+  output logic                                                              edge_ready_o,
+  output logic [watkins_pkg::NumChannels-1:0][watkins_pkg::ChannelBits-1:0] seg_e_o,      // opening edge
+  output logic [watkins_pkg::NumChannels-1:0][watkins_pkg::ChannelBits-1:0] seg_f_o,      // closing edge
+  output logic [watkins_pkg::PolyIdBits-1:0]                                seg_poly_o,
+  output logic                                                              seg_eol_o,
+  output logic                                                              seg_valid_o,
+  input  logic                                                              seg_ready_i
+);
+  localparam int unsigned N  = MaxActiveEdges;
+  localparam int unsigned IB = (N > 1) ? $clog2(N) : 1;
+  typedef logic [watkins_pkg::NumChannels-1:0][watkins_pkg::ChannelBits-1:0] chans_t;
+
+  logic [N-1:0]                      open_q;       // entry holds an unpaired edge
+  logic [watkins_pkg::PolyIdBits-1:0] open_poly_q [N];
+  chans_t                            open_value_q [N];
+
+  logic          fire, hit, has_free;
+  logic [IB-1:0] hit_idx, free_idx;
+
+  assign edge_ready_o = seg_ready_i || !seg_valid_o;
+  assign fire         = edge_valid_i && edge_ready_o;
+
+  // Polygon ids are unique among open entries, so at most one entry matches.
+  always_comb begin
+    hit = 1'b0;
+    hit_idx = '0;
+    has_free = 1'b0;
+    free_idx = '0;
+    for (int i = N - 1; i >= 0; i--) begin
+      if (open_q[i] && open_poly_q[i] == edge_poly_i) begin
+        hit = 1'b1;
+        hit_idx = IB'(i);
+      end
+      if (!open_q[i]) begin
+        has_free = 1'b1;
+        free_idx = IB'(i);
+      end
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      open_q      <= '0;
+      seg_valid_o <= 1'b0;
+    end else begin
+      if (edge_ready_o) seg_valid_o <= fire && (edge_eol_i || hit);
+      if (fire) begin
+        if (edge_eol_i) open_q <= '0;
+        else if (hit) open_q[hit_idx] <= 1'b0;
+        else if (has_free) open_q[free_idx] <= 1'b1;
+      end
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (fire && !edge_eol_i && !hit && has_free) begin
+      open_poly_q[free_idx]  <= edge_poly_i;
+      open_value_q[free_idx] <= edge_value_i;
+    end
+    if (fire && (edge_eol_i || hit)) begin
+      seg_e_o    <= open_value_q[hit_idx];
+      seg_f_o    <= edge_value_i;
+      seg_poly_o <= edge_poly_i;
+      seg_eol_o  <= edge_eol_i;
+    end
+  end
+
+`ifndef SYNTHESIS
+  a_in_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
+    edge_valid_i && !edge_ready_o |=> edge_valid_i && $stable({edge_poly_i, edge_value_i, edge_eol_i}));
+  a_out_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
+    seg_valid_o && !seg_ready_i |=> seg_valid_o && $stable({seg_e_o, seg_f_o, seg_poly_o, seg_eol_o}));
+  a_table_room: assert property (@(posedge clk_i) disable iff (!rst_ni)
+    fire && !edge_eol_i && !hit |-> has_free);
+  c_two_open: cover property (@(posedge clk_i) disable iff (!rst_ni) $countones(open_q) >= 2);
+`endif
+endmodule

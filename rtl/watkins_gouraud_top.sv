@@ -1,0 +1,161 @@
+// watkins_gouraud_top: the Watkins/Gouraud scan-line shading pipeline (model/gouraud_pipeline.cpp)
+// from the y-sorted edge-record stream to every pixel of the frame in raster order:
+// active_edge_list (+ edge_incrementer) -> segment_former -> segment_interpolator (span setup,
+// span_reciprocal, stepper) -> scanline_buffer. Every stage boundary is valid/ready.
+// A frame starts with the first beat of its edge stream once the previous frame's last pixel
+// has left and its stream has been read up to its EOF beat; width, height and background are
+// sampled then. Steady state: one fragment per clock; a line costs max(width, fragments +
+// setup) cycles, the active-edge list working on line y+1 while line y is drawn.
+module watkins_gouraud_top #(
+  parameter int unsigned MaxActiveEdges = watkins_pkg::MaxActiveEdges,
+  parameter int unsigned MaxWidth = 1024            // line-buffer depth in pixels
+) (
+  input  logic                               clk_i,
+  input  logic                               rst_ni,          // active-low synchronous reset
+  input  logic [watkins_pkg::LineBits-1:0]   width_i,         // frame size, stable for the whole frame (1..MaxWidth)
+  input  logic [watkins_pkg::LineBits-1:0]   height_i,        // 1..4096
+  input  logic [23:0]                        background_i,    // {R,G,B} of pixels no polygon covers
+  input  watkins_pkg::edge_t                 edge_i,          // edge records, sorted by y0 (ties in stream order)
+  input  logic                               edge_eof_i,      // with valid: this beat ends the frame's stream, carries no edge
+  input  logic                               edge_valid_i,
+  output logic                               edge_ready_o,
+  output logic [23:0]                        pixel_rgb_o,     // {R,G,B}, raster order, every pixel of the frame
+  output logic                               pixel_covered_o, // some polygon won this pixel
+  output logic                               pixel_last_o,    // last pixel of the frame
+  output logic                               pixel_valid_o,
+  input  logic                               pixel_ready_i,
+  output logic                               overflow_o       // sticky until reset: the active-edge list was full
+);
+  localparam int unsigned LB = watkins_pkg::LineBits;
+  localparam int unsigned NC = watkins_pkg::NumChannels;
+  localparam int unsigned CB = watkins_pkg::ChannelBits;
+
+  // ------------------------------------------------------------ frame control
+  logic          frame_busy_q, ael_busy, start;
+  logic [LB-1:0] width_q, height_q;
+  logic [23:0]   background_q;
+
+  assign start = edge_valid_i && !frame_busy_q && !ael_busy;
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      frame_busy_q <= 1'b0;
+    end else if (start) begin
+      frame_busy_q <= 1'b1;
+    end else if (pixel_valid_o && pixel_ready_i && pixel_last_o) begin
+      frame_busy_q <= 1'b0;
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (start) begin
+      width_q      <= width_i;
+      height_q     <= height_i;
+      background_q <= background_i;
+    end
+  end
+
+  // ------------------------------------------------------------ active edges
+  logic [watkins_pkg::PolyIdBits-1:0] ae_poly;
+  logic [NC-1:0][CB-1:0]              ae_value;
+  logic                               ae_eol, ae_valid, ae_ready;
+
+  active_edge_list #(
+    .MaxActiveEdges(MaxActiveEdges)
+  ) u_active_edge_list (
+    .clk_i, .rst_ni,
+    .start_i     (start),
+    .height_i    (height_q),
+    .busy_o      (ael_busy),
+    .edge_i,
+    .edge_eof_i,
+    .edge_valid_i,
+    .edge_ready_o,
+    .out_poly_o  (ae_poly),
+    .out_value_o (ae_value),
+    .out_eol_o   (ae_eol),
+    .out_valid_o (ae_valid),
+    .out_ready_i (ae_ready),
+    .overflow_o
+  );
+
+  // ------------------------------------------------------------ segments
+  logic [NC-1:0][CB-1:0] sg_e, sg_f;
+  logic                  sg_eol, sg_valid, sg_ready;
+  // The polygon id only pairs edges; nothing downstream needs it.
+  /* verilator lint_off UNUSEDSIGNAL */
+  logic [watkins_pkg::PolyIdBits-1:0] sg_poly;
+  /* verilator lint_on UNUSEDSIGNAL */
+
+  segment_former #(
+    .MaxActiveEdges(MaxActiveEdges)
+  ) u_segment_former (
+    .clk_i, .rst_ni,
+    .edge_poly_i (ae_poly),
+    .edge_value_i(ae_value),
+    .edge_eol_i  (ae_eol),
+    .edge_valid_i(ae_valid),
+    .edge_ready_o(ae_ready),
+    .seg_e_o     (sg_e),
+    .seg_f_o     (sg_f),
+    .seg_poly_o  (sg_poly),
+    .seg_eol_o   (sg_eol),
+    .seg_valid_o (sg_valid),
+    .seg_ready_i (sg_ready)
+  );
+
+  // ------------------------------------------------------------ fragments
+  logic [LB-1:0]                     fr_x;
+  logic [watkins_pkg::DepthBits-1:0] fr_depth;
+  logic [23:0]                       fr_rgb;
+  logic                              fr_eol, fr_valid, fr_ready;
+
+  segment_interpolator u_segment_interpolator (
+    .clk_i, .rst_ni,
+    .width_i     (width_q),
+    .seg_e_i     (sg_e),
+    .seg_f_i     (sg_f),
+    .seg_eol_i   (sg_eol),
+    .seg_valid_i (sg_valid),
+    .seg_ready_o (sg_ready),
+    .frag_x_o    (fr_x),
+    .frag_depth_o(fr_depth),
+    .frag_rgb_o  (fr_rgb),
+    .frag_eol_o  (fr_eol),
+    .frag_valid_o(fr_valid),
+    .frag_ready_i(fr_ready)
+  );
+
+  // ------------------------------------------------------------ visibility and pixels
+  scanline_buffer #(
+    .MaxWidth(MaxWidth)
+  ) u_scanline_buffer (
+    .clk_i, .rst_ni,
+    .width_i        (width_q),
+    .height_i       (height_q),
+    .background_i   (background_q),
+    .frag_x_i       (fr_x),
+    .frag_depth_i   (fr_depth),
+    .frag_rgb_i     (fr_rgb),
+    .frag_eol_i     (fr_eol),
+    .frag_valid_i   (fr_valid),
+    .frag_ready_o   (fr_ready),
+    .pixel_rgb_o,
+    .pixel_covered_o,
+    .pixel_last_o,
+    .pixel_valid_o,
+    .pixel_ready_i
+  );
+
+`ifndef SYNTHESIS
+  a_edge_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
+    edge_valid_i && !edge_ready_o |=> edge_valid_i && $stable({edge_i, edge_eof_i}));
+  a_pixel_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
+    pixel_valid_o && !pixel_ready_i |=> pixel_valid_o
+      && $stable({pixel_rgb_o, pixel_covered_o, pixel_last_o}));
+  a_overflow_sticky: assert property (@(posedge clk_i) disable iff (!rst_ni)
+    overflow_o |=> overflow_o);
+  c_frame_done: cover property (@(posedge clk_i) disable iff (!rst_ni)
+    pixel_valid_o && pixel_ready_i && pixel_last_o);
+`endif
+endmodule

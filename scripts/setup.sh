@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Installs every Debian package Watkins needs (skipping what is present) and builds it.
+#   scripts/setup.sh [--no-build]
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+
+packages=(
+  build-essential cmake pkg-config git python3
+  verilator iverilog libsystemc-dev           # simulation: Verilator + SystemC benches, Icarus for comparison
+  libglm-dev libgtest-dev googletest          # double reference, unit tests
+  libtinyobjloader-dev nlohmann-json3-dev libcli11-dev libfmt-dev libstb-dev zlib1g-dev
+  yosys nextpnr-ice40 fpga-icestorm           # synthesis (lint in CI, resources and Fmax)
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}"
+  sudo=""
+  [ "$(id -u)" -ne 0 ] && sudo="sudo"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+else
+  echo "setup: all ${#packages[@]} Debian packages present"
+fi
+
+[ "${1:-}" = "--no-build" ] && exit 0
+build="${WATKINS_BUILD:-$root/build}"
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$build" -j"${WATKINS_JOBS:-2}"

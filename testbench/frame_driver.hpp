@@ -1,0 +1,372 @@
+// The transaction-level part of the bench, shared by the SystemC bench (rtl_bench.cpp) and the
+// plain C++ harness (rtl_harness_cc.cpp): edge-record source, pixel sink, checker, watchdog and
+// cycle counting. It talks to the Verilated top only through a small `Pins` class:
+//
+//   void reset_pin(bool rst_n);
+//   void frame_pins(uint32_t width, uint32_t height, uint32_t background_rgb);
+//   void edge_pins(bool valid, bool eof, const EdgeWords& data);
+//   void ready_pin(bool pixel_ready);
+//   void settle(uint64_t t);   // clock low with the new inputs; combinational outputs valid
+//   PinsOut sample();          // outputs as settle() left them (the values the edge samples)
+//   void posedge(uint64_t t);  // rising clock edge
+//   bool trace_open(const std::string& path); void trace_close();
+//   std::string stopped();     // non-empty once an RTL assertion, $stop or $finish fired
+//
+// One clock cycle is: settle → sample → posedge. A transfer happens on the rising edge when valid
+// and ready were both high after settle (valid/ready as in AXI-Stream: a source holds valid and
+// data until the transfer; ready may come and go).
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "edge_packing.hpp"
+#include "gouraud_pipeline.hpp"
+#include "rtl_bench.hpp"
+#include "scene.hpp"
+
+namespace watkins::tb::detail {
+
+struct PinsOut {
+  bool edge_ready = false;
+  bool pixel_valid = false, pixel_last = false, pixel_covered = false;
+  std::uint32_t pixel_rgb = 0;
+  bool overflow = false;
+};
+
+// xorshift64*: cheap enough to draw twice per simulated cycle.
+class Rng {
+ public:
+  explicit Rng(std::uint64_t seed) {
+    std::uint64_t z = seed + 0x9E3779B97F4A7C15ull;  // splitmix64 of the seed
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    s_ = (z ^ (z >> 31)) | 1;
+  }
+  std::uint64_t next() {
+    s_ ^= s_ >> 12;
+    s_ ^= s_ << 25;
+    s_ ^= s_ >> 27;
+    return s_ * 0x2545F4914F6CDD1Dull;
+  }
+  // Threshold for "true with probability p" tests against next() >> 11 (53 bits).
+  static std::uint64_t threshold(double p) {
+    if (!(p > 0)) return 0;
+    if (p >= 1) return 1ull << 53;
+    return static_cast<std::uint64_t>(p * 9007199254740992.0);
+  }
+  bool chance(std::uint64_t thr) { return thr != 0 && (next() >> 11) < thr; }
+  int below(int n) { return static_cast<int>(next() % static_cast<std::uint64_t>(n)); }
+
+ private:
+  std::uint64_t s_;
+};
+
+inline std::uint32_t pack_rgb(const std::array<std::uint8_t, 3>& c) {
+  return (std::uint32_t(c[0]) << 16) | (std::uint32_t(c[1]) << 8) | c[2];
+}
+
+inline std::string rgb_text(std::uint32_t rgb, bool covered) {
+  char b[96];
+  std::snprintf(b, sizeof b, "rgb (%u, %u, %u) %s", (rgb >> 16) & 255u, (rgb >> 8) & 255u, rgb & 255u,
+                covered ? "covered" : "background");
+  return b;
+}
+
+template <class Pins>
+class FrameDriver {
+ public:
+  static constexpr int ResetCycles = 4;
+  static constexpr int DrainCycles = 32;  // cycles after the last pixel in which no pixel may appear
+
+  explicit FrameDriver(Pins& pins) : pins_(pins) {}
+
+  void run(const std::vector<const PreparedScene*>& scenes, const std::vector<const Image*>& expected,
+           const RtlOptions& opt, RtlResult& r) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const int n = static_cast<int>(scenes.size());
+    // Pack everything first so that a bad record fails before the simulation starts.
+    std::vector<std::vector<EdgeWords>> beats(n);
+    for (int f = 0; f < n; ++f) {
+      beats[f].reserve(scenes[f]->edges.size());
+      for (const EdgeRecord& e : scenes[f]->edges) beats[f].push_back(pack_edge(e));
+    }
+    r.frames.assign(n, RtlFrame{});
+    for (int f = 0; f < n; ++f) {
+      const PreparedScene& s = *scenes[f];
+      Image img(s.width, s.height);
+      for (std::size_t i = 0; i < img.rgb.size(); i += 3)
+        for (int c = 0; c < 3; ++c) img.rgb[i + c] = s.background[c];
+      r.frames[f].image = std::move(img);
+    }
+    EdgeWords poison;  // what edge_i carries when no edge is offered (the RTL must ignore it)
+    poison.fill(0xDEADBEEFu);
+    poison[edge_layout::Words - 1] &= (1u << (edge_layout::Bits % 32)) - 1;
+
+    if (opt.trace_path.size() && !pins_.trace_open(opt.trace_path))
+      throw std::runtime_error("cannot open trace file " + opt.trace_path);
+    const long long start_cycle = cycle_;
+    if (need_reset_ || opt.reset) reset(poison);
+    need_reset_ = true;  // until this run ends cleanly
+
+    Rng gap_rng(opt.seed * 2 + 1), stall_rng(opt.seed * 2 + 2);
+    const std::uint64_t gap_thr = Rng::threshold(opt.gap), stall_thr = Rng::threshold(opt.stall);
+
+    // Source: frame sf, beat sb (beats[sf].size() edges, then the end-of-frame beat).
+    int sf = 0;
+    std::size_t sb = 0;
+    bool presenting = false;
+    // Sink: frame kf, pixel kp.
+    int kf = 0;
+    long long kp = 0;
+    bool ready = false;
+    int burst_left = 0;
+    // Pixel-stream protocol check: a pixel offered and not taken must stay, unchanged.
+    bool held = false;
+    PinsOut held_out;
+    // Watchdog.
+    long long last_progress = cycle_, edge_blocked_since = -1, pixel_valid_last = cycle_;
+    long long drain_left = -1;
+    bool frame_pins_set = false;
+
+    auto frame_needs = [&](int f) {
+      const PreparedScene& s = *scenes[f];
+      return std::make_tuple(std::uint32_t(s.width), std::uint32_t(s.height), pack_rgb(s.background));
+    };
+    auto next_inputs = [&]() {
+      // Edge source.
+      if (!presenting && sf < n) {
+        const bool starts = sb == 0;
+        const bool same = frame_pins_set && frame_needs(sf) == std::make_tuple(cur_w_, cur_h_, cur_bg_);
+        const bool may_start = !starts || same || kf >= sf;  // else wait for the previous frames to drain
+        if (may_start && !gap_rng.chance(gap_thr)) {
+          if (starts && !same) {
+            std::tie(cur_w_, cur_h_, cur_bg_) = frame_needs(sf);
+            pins_.frame_pins(cur_w_, cur_h_, cur_bg_);
+            frame_pins_set = true;
+          }
+          presenting = true;
+          const bool eof = sb == beats[sf].size();
+          pins_.edge_pins(true, eof, eof ? poison : beats[sf][sb]);
+        }
+      }
+      // Pixel sink.
+      if (drain_left >= 0) {
+        ready = true;
+      } else if (burst_left > 0) {
+        ready = false;
+        --burst_left;
+      } else if (stall_rng.chance(stall_thr)) {
+        ready = false;
+        burst_left = opt.stall_burst > 1 ? stall_rng.below(opt.stall_burst) : 0;
+      } else {
+        ready = true;
+      }
+      pins_.ready_pin(ready);
+    };
+    auto protocol = [&](const std::string& what) {
+      if (r.protocol_error.empty()) r.protocol_error = what;
+    };
+
+    pins_.edge_pins(false, false, poison);
+    next_inputs();
+    for (;;) {
+      const long long c = cycle_;
+      pins_.settle(tick_time(c));
+      const PinsOut o = pins_.sample();
+      const std::string stop = pins_.stopped();
+      if (!stop.empty()) {
+        r.assertion = "RTL stopped the simulation at cycle " + std::to_string(c - start_cycle) + ": " + stop;
+        break;
+      }
+      if (o.overflow && !r.overflow) {
+        r.overflow = true;
+        r.overflow_cycle = c - start_cycle;
+      }
+      const bool edge_fire = presenting && o.edge_ready;
+      const bool pixel_fire = o.pixel_valid && ready;
+      if (held) {
+        if (!o.pixel_valid)
+          protocol("pixel output: pixel_valid_o dropped at cycle " + std::to_string(c - start_cycle) +
+                   " without a transfer");
+        else if (o.pixel_rgb != held_out.pixel_rgb || o.pixel_covered != held_out.pixel_covered ||
+                 o.pixel_last != held_out.pixel_last)
+          protocol("pixel output: pixel changed at cycle " + std::to_string(c - start_cycle) +
+                   " while stalled by pixel_ready_i");
+      }
+      held = o.pixel_valid && !ready;
+      held_out = o;
+      pins_.posedge(tick_time(c) + 5);
+      ++cycle_;
+
+      if (edge_fire) {
+        if (sb == 0) r.frames[sf].first_edge_cycle = c - start_cycle;
+        presenting = false;
+        if (++sb > beats[sf].size()) {
+          ++sf;
+          sb = 0;
+        }
+        pins_.edge_pins(false, false, poison);
+        last_progress = c;
+      }
+      if (o.pixel_valid) pixel_valid_last = c;
+      if (edge_fire || !presenting) edge_blocked_since = -1;
+      else if (edge_blocked_since < 0) edge_blocked_since = c;
+
+      if (pixel_fire) {
+        last_progress = c;
+        if (kf >= n) {
+          protocol("pixel output: pixel after the last pixel of the last frame, at cycle " +
+                   std::to_string(c - start_cycle));
+        } else {
+          RtlFrame& fr = r.frames[kf];
+          const int w = fr.image.width, h = fr.image.height;
+          const int x = static_cast<int>(kp % w), y = static_cast<int>(kp / w);
+          std::uint8_t* px = fr.image.at(x, y);
+          px[0] = static_cast<std::uint8_t>(o.pixel_rgb >> 16);
+          px[1] = static_cast<std::uint8_t>(o.pixel_rgb >> 8);
+          px[2] = static_cast<std::uint8_t>(o.pixel_rgb);
+          fr.image.covered[std::size_t(kp)] = o.pixel_covered;
+          ++fr.pixels;
+          ++r.pixels;
+          const Image* want = kf < static_cast<int>(expected.size()) ? expected[kf] : nullptr;
+          if (want) {
+            const std::uint8_t* m = want->at(x, y);
+            const std::uint32_t mrgb = (std::uint32_t(m[0]) << 16) | (std::uint32_t(m[1]) << 8) | m[2];
+            const bool mcov = want->is_covered(x, y);
+            if (mrgb != o.pixel_rgb || mcov != o.pixel_covered) {
+              ++fr.mismatches;
+              ++r.mismatches;
+              if (r.first_mismatch.empty())
+                r.first_mismatch = "pixel output: frame " + std::to_string(kf) + " pixel (" +
+                                   std::to_string(x) + ", " + std::to_string(y) + ") at cycle " +
+                                   std::to_string(c - start_cycle) + ": RTL " +
+                                   rgb_text(o.pixel_rgb, o.pixel_covered) + ", model " + rgb_text(mrgb, mcov);
+            }
+          }
+          const bool last = kp == static_cast<long long>(w) * h - 1;
+          if (o.pixel_last != last)
+            protocol("pixel output: pixel_last_o " + std::string(o.pixel_last ? "high" : "low") +
+                     " at frame " + std::to_string(kf) + " pixel (" + std::to_string(x) + ", " +
+                     std::to_string(y) + ") of a " + std::to_string(w) + "x" + std::to_string(h) + " frame");
+          if (last) {
+            fr.complete = o.pixel_last;
+            fr.last_pixel_cycle = c - start_cycle;
+            ++kf;
+            kp = 0;
+            if (kf == n) drain_left = DrainCycles;
+          } else {
+            ++kp;
+          }
+        }
+      }
+      if (drain_left >= 0 && drain_left-- == 0) break;
+      if (c - last_progress >= opt.watchdog) {
+        r.hang = true;
+        r.hang_reason = hang_reason(c, edge_blocked_since, pixel_valid_last, sf, sb, beats, kf, kp, scenes,
+                                    opt);
+        break;
+      }
+      next_inputs();
+    }
+    r.sim_cycles = cycle_ - start_cycle;
+    if (n > 0 && r.frames.front().first_edge_cycle >= 0 && r.frames.back().last_pixel_cycle >= 0)
+      r.cycles = r.frames.back().last_pixel_cycle - r.frames.front().first_edge_cycle + 1;
+    // Idle the inputs so a trace shows the end of the run cleanly.
+    pins_.edge_pins(false, false, poison);
+    pins_.ready_pin(false);
+    pins_.trace_close();
+    r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    need_reset_ = !r.ok() || r.overflow;
+  }
+
+ private:
+  std::uint64_t tick_time(long long c) const { return static_cast<std::uint64_t>(c) * 10; }
+
+  void reset(const EdgeWords& poison) {
+    pins_.reset_pin(false);
+    pins_.edge_pins(false, false, poison);
+    pins_.ready_pin(false);
+    for (int i = 0; i < ResetCycles; ++i) {
+      pins_.settle(tick_time(cycle_));
+      pins_.posedge(tick_time(cycle_) + 5);
+      ++cycle_;
+    }
+    pins_.reset_pin(true);
+    (void)pins_.stopped();  // an assertion of a previous run is forgiven by the reset
+  }
+
+  std::string hang_reason(long long c, long long edge_blocked_since, long long pixel_valid_last, int sf,
+                          std::size_t sb, const std::vector<std::vector<EdgeWords>>& beats, int kf, long long kp,
+                          const std::vector<const PreparedScene*>& scenes, const RtlOptions& opt) const {
+    const int n = static_cast<int>(scenes.size());
+    std::string where;
+    if (kf < n) {
+      const PreparedScene& s = *scenes[kf];
+      where = "frame " + std::to_string(kf) + " has " + std::to_string(kp) + " of " +
+              std::to_string(static_cast<long long>(s.width) * s.height) + " pixels (next (" +
+              std::to_string(kp % s.width) + ", " + std::to_string(kp / s.width) + "))";
+    }
+    const long long idle = c - pixel_valid_last;
+    const std::string no_pixels = "pixel_valid_o low for " + std::to_string(idle) + " cycles";
+    if (edge_blocked_since >= 0 && sf < n) {
+      std::string beat;
+      if (sb == beats[sf].size()) {
+        beat = "the end-of-frame beat";
+      } else {
+        const EdgeRecord& e = scenes[sf]->edges[sb];
+        beat = "edge " + std::to_string(sb) + " (y0 " + std::to_string(e.y0) + ", n " + std::to_string(e.n) +
+               ", poly " + std::to_string(e.poly) + ")";
+      }
+      return "edge input stalled: edge_valid_i high and edge_ready_o low for " +
+             std::to_string(c - edge_blocked_since + 1) + " cycles on frame " + std::to_string(sf) + " " + beat +
+             " of " + std::to_string(beats[sf].size() + 1) + " beats; " + no_pixels + "; " + where;
+    }
+    if (idle >= opt.watchdog)
+      return "pipeline not producing pixels: " + no_pixels + " after " +
+             (sf > kf ? "all edge beats of frame " + std::to_string(kf) + " were accepted"
+                      : std::string("the source went idle")) +
+             "; " + where;
+    return "pixel output blocked: pixel_valid_o high but pixel_ready_i held low by the sink (stall " +
+           std::to_string(opt.stall) + "); " + where;
+  }
+
+  Pins& pins_;
+  bool need_reset_ = true;
+  long long cycle_ = 0;  // cycles since the bench was built (trace time = 10 units per cycle)
+  std::uint32_t cur_w_ = 0, cur_h_ = 0, cur_bg_ = 0;
+};
+
+// What run_rtl_frames does before the driver on either harness: check that every screen fits the
+// RTL and render the model images that were not given (into `rendered`, which `use` points into).
+inline void expected_images(const std::vector<const PreparedScene*>& scenes, const RtlOptions& opt,
+                            const std::vector<const Image*>& given, std::vector<Image>& rendered,
+                            std::vector<const Image*>& use, RtlResult& r, int max_width) {
+  rendered.assign(scenes.size(), Image{});
+  use.assign(scenes.size(), nullptr);
+  for (std::size_t f = 0; f < scenes.size(); ++f) {
+    const PreparedScene& s = *scenes[f];
+    if (s.width < 1 || s.height < 1 || s.width > max_width || s.height >= (1 << fmt::LineBits))
+      throw std::invalid_argument("RTL: a " + std::to_string(s.width) + "x" + std::to_string(s.height) +
+                                  " screen does not fit the RTL (line buffer MaxWidth = " +
+                                  std::to_string(max_width) + " pixels)");
+    if (f < given.size() && given[f]) {
+      use[f] = given[f];
+    } else if (opt.compare) {
+      try {
+        GouraudPipeline pipe(fmt::MaxActiveEdges);
+        rendered[f] = pipe.render(s);
+        use[f] = &rendered[f];
+      } catch (const SceneError& e) {
+        if (r.model_error.empty()) r.model_error = "frame " + std::to_string(f) + ": " + e.what();
+      }
+    }
+  }
+}
+
+}  // namespace watkins::tb::detail

@@ -1,0 +1,197 @@
+// SystemC bench: the Verilated (--sc) watkins_gouraud_top bound to sc_signals and clocked by one
+// SC_THREAD that also runs the transaction-level source, sink and checker (frame_driver.hpp).
+//
+// Why one thread and no sc_clock: with an sc_clock and a process per interface every cycle costs
+// the kernel two clock events, a wake-up of each process and several delta cycles; here a cycle
+// is two timed waits, and the model's own SC_METHOD runs exactly once per half cycle (on the
+// clock edge, together with the inputs written in the same delta). testbench/README.md has the
+// measurement.
+#include "rtl_bench.hpp"
+
+#include <cstdlib>
+#include <functional>
+#include <memory>
+#include <stdexcept>
+
+#include <systemc.h>
+#include <verilated.h>
+#include <verilated_fst_c.h>
+
+#include "Vwatkins_gouraud_top.h"
+#include "frame_driver.hpp"
+
+// libsystemc's own main() calls sc_main; our programs have their own main() and run the kernel
+// from ordinary code (run_rtl), but the shared library still needs the symbol.
+int sc_main(int, char**) { return 0; }
+
+namespace watkins::tb {
+namespace {
+
+constexpr int MaxWidth = 1024;  // the top's MaxWidth parameter default (not overridden here)
+
+SC_MODULE(GouraudBench) {
+  sc_signal<bool> clk{"clk"}, rst_n{"rst_n"}, edge_eof{"edge_eof"}, edge_valid{"edge_valid"};
+  sc_signal<bool> edge_ready{"edge_ready"}, pixel_covered{"pixel_covered"}, pixel_last{"pixel_last"};
+  sc_signal<bool> pixel_valid{"pixel_valid"}, pixel_ready{"pixel_ready"}, overflow{"overflow"};
+  sc_signal<uint32_t> width{"width"}, height{"height"}, background{"background"}, pixel_rgb{"pixel_rgb"};
+  sc_signal<sc_bv<edge_layout::Bits>> edge{"edge"};
+  Vwatkins_gouraud_top dut{"dut"};
+
+  sc_event start;
+  std::function<void()> job;  // runs inside the thread, so it may wait()
+  bool job_done = false;
+
+  SC_CTOR(GouraudBench) {
+    dut.clk_i(clk);
+    dut.rst_ni(rst_n);
+    dut.width_i(width);
+    dut.height_i(height);
+    dut.background_i(background);
+    dut.edge_i(edge);
+    dut.edge_eof_i(edge_eof);
+    dut.edge_valid_i(edge_valid);
+    dut.edge_ready_o(edge_ready);
+    dut.pixel_rgb_o(pixel_rgb);
+    dut.pixel_covered_o(pixel_covered);
+    dut.pixel_last_o(pixel_last);
+    dut.pixel_valid_o(pixel_valid);
+    dut.pixel_ready_i(pixel_ready);
+    dut.overflow_o(overflow);
+    SC_THREAD(main);
+  }
+
+  void main() {
+    for (;;) {
+      wait(start);
+      job();
+      job_done = true;
+    }
+  }
+
+  // ---- Pins (see frame_driver.hpp) ----
+  void reset_pin(bool v) { rst_n.write(v); }
+  void frame_pins(std::uint32_t w, std::uint32_t h, std::uint32_t bg) {
+    width.write(w);
+    height.write(h);
+    background.write(bg);
+  }
+  void edge_pins(bool valid, bool eof, const EdgeWords& data) {
+    edge_valid.write(valid);
+    edge_eof.write(eof);
+    if (data != last_edge_) {  // a 462-bit sc_bv write is the costly one; skip it when unchanged
+      last_edge_ = data;
+      for (int i = 0; i < edge_layout::Words; ++i) edge_bv_.set_word(i, data[i]);
+      edge.write(edge_bv_);
+    }
+  }
+  void ready_pin(bool v) { pixel_ready.write(v); }
+  void settle(std::uint64_t t) {
+    clk.write(false);
+    wait(half_);
+    if (tfp_) tfp_->dump(t);
+  }
+  detail::PinsOut sample() {
+    detail::PinsOut o;
+    o.edge_ready = edge_ready.read();
+    o.pixel_valid = pixel_valid.read();
+    o.pixel_last = pixel_last.read();
+    o.pixel_covered = pixel_covered.read();
+    o.pixel_rgb = pixel_rgb.read();
+    o.overflow = overflow.read();
+    return o;
+  }
+  void posedge(std::uint64_t t) {
+    clk.write(true);
+    wait(half_);
+    if (tfp_) tfp_->dump(t);
+  }
+  bool trace_open(const std::string& path) {
+    tfp_ = std::make_unique<VerilatedFstC>();
+    dut.trace(tfp_.get(), 99);
+    tfp_->open(path.c_str());
+    if (!tfp_->isOpen()) tfp_.reset();
+    return tfp_ != nullptr;
+  }
+  void trace_close() {
+    if (tfp_) tfp_->close();
+    tfp_.reset();
+  }
+  std::string stopped() {
+    VerilatedContext* ctx = dut.contextp();
+    if (!ctx->gotFinish() && !ctx->gotError()) return "";
+    ctx->gotFinish(false);
+    ctx->gotError(false);
+    return "an assertion, $stop or $finish fired (Verilator's message is on stdout)";
+  }
+
+ private:
+  const sc_time half_{5, SC_NS};
+  EdgeWords last_edge_{};
+  sc_bv<edge_layout::Bits> edge_bv_;
+  std::unique_ptr<VerilatedFstC> tfp_;
+};
+
+struct Bench {
+  GouraudBench* top = nullptr;
+  detail::FrameDriver<GouraudBench>* driver = nullptr;
+  bool dead = false;
+};
+
+// Built once per process and never destroyed (SystemC cannot elaborate twice, and its kernel is
+// torn down by static destructors in an order we do not control).
+Bench& bench() {
+  static Bench* b = [] {
+    setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "1", 0);
+    Verilated::traceEverOn(true);  // tracing can then be switched on for any later run
+    Verilated::threadContextp()->fatalOnError(false);  // an assertion ends the run, not the process
+    sc_report_handler::set_actions(SC_INFO, SC_DO_NOTHING);
+    auto* x = new Bench;
+    x->top = new GouraudBench("watkins_tb");
+    x->driver = new detail::FrameDriver<GouraudBench>(*x->top);
+    sc_start(SC_ZERO_TIME);  // elaborate and park the thread on `start`
+    return x;
+  }();
+  return *b;
+}
+
+}  // namespace
+
+std::string rtl_description() {
+  return "SystemC bench (Verilated --sc watkins_gouraud_top, one SC_THREAD, SystemC " +
+         std::string(sc_release()) + ")";
+}
+
+int rtl_max_width() { return MaxWidth; }
+
+RtlResult run_rtl_frames(const std::vector<const PreparedScene*>& scenes, const RtlOptions& opt,
+                         const std::vector<const Image*>& expected) {
+  RtlResult r;
+  std::vector<Image> rendered;
+  std::vector<const Image*> use;
+  detail::expected_images(scenes, opt, expected, rendered, use, r, MaxWidth);
+  Bench& b = bench();
+  if (b.dead) throw std::runtime_error("RTL bench: the SystemC kernel stopped in an earlier run");
+  std::exception_ptr error;
+  b.top->job = [&] {
+    try {
+      b.driver->run(scenes, use, opt, r);
+    } catch (...) {
+      error = std::current_exception();
+    }
+  };
+  b.top->job_done = false;
+  b.top->start.notify(SC_ZERO_TIME);
+  sc_start();  // returns when the thread waits for the next job (nothing left to simulate)
+  if (!b.top->job_done) {
+    b.dead = true;
+    throw std::runtime_error("RTL bench: the SystemC kernel stopped before the run finished");
+  }
+  if (error) std::rethrow_exception(error);
+  return r;
+}
+
+RtlResult run_rtl(const PreparedScene& scene, const RtlOptions& opt, const Image* expected) {
+  return run_rtl_frames({&scene}, opt, {expected});
+}
+
+}  // namespace watkins::tb

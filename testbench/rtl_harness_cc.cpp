@@ -1,0 +1,115 @@
+// Plain C++ harness: the same source/sink/checker (frame_driver.hpp) on a Verilated --cc build of
+// watkins_gouraud_top, clocked by a loop (tick = clock low + eval, clock high + eval). Only for the
+// speed comparison with the SystemC bench (watkins_rtl_speed_cc); implements the same API as
+// rtl_bench.cpp, so a program links exactly one of watkins_tb and watkins_tb_cc.
+#include <memory>
+#include <stdexcept>
+
+#include <verilated.h>
+#include <verilated_fst_c.h>
+
+#include "Vwatkins_gouraud_top_cc.h"
+#include "frame_driver.hpp"
+#include "rtl_bench.hpp"
+
+namespace watkins::tb {
+namespace {
+
+constexpr int MaxWidth = 1024;
+
+class CcHarness {
+ public:
+  CcHarness() {
+    ctx_.traceEverOn(true);
+    ctx_.fatalOnError(false);
+    dut_ = std::make_unique<Vwatkins_gouraud_top_cc>(&ctx_, "watkins_tb");
+  }
+
+  // ---- Pins (see frame_driver.hpp) ----
+  void reset_pin(bool v) { dut_->rst_ni = v; }
+  void frame_pins(std::uint32_t w, std::uint32_t h, std::uint32_t bg) {
+    dut_->width_i = w;
+    dut_->height_i = h;
+    dut_->background_i = bg;
+  }
+  void edge_pins(bool valid, bool eof, const EdgeWords& data) {
+    dut_->edge_valid_i = valid;
+    dut_->edge_eof_i = eof;
+    for (int i = 0; i < edge_layout::Words; ++i) dut_->edge_i[i] = data[i];
+  }
+  void ready_pin(bool v) { dut_->pixel_ready_i = v; }
+  void settle(std::uint64_t t) {
+    dut_->clk_i = 0;
+    dut_->eval();
+    if (tfp_) tfp_->dump(t);
+  }
+  detail::PinsOut sample() {
+    detail::PinsOut o;
+    o.edge_ready = dut_->edge_ready_o;
+    o.pixel_valid = dut_->pixel_valid_o;
+    o.pixel_last = dut_->pixel_last_o;
+    o.pixel_covered = dut_->pixel_covered_o;
+    o.pixel_rgb = dut_->pixel_rgb_o;
+    o.overflow = dut_->overflow_o;
+    return o;
+  }
+  void posedge(std::uint64_t t) {
+    dut_->clk_i = 1;
+    dut_->eval();
+    if (tfp_) tfp_->dump(t);
+  }
+  bool trace_open(const std::string& path) {
+    tfp_ = std::make_unique<VerilatedFstC>();
+    dut_->trace(tfp_.get(), 99);
+    tfp_->open(path.c_str());
+    if (!tfp_->isOpen()) tfp_.reset();
+    return tfp_ != nullptr;
+  }
+  void trace_close() {
+    if (tfp_) tfp_->close();
+    tfp_.reset();
+  }
+  std::string stopped() {
+    if (!ctx_.gotFinish() && !ctx_.gotError()) return "";
+    ctx_.gotFinish(false);
+    ctx_.gotError(false);
+    return "an assertion, $stop or $finish fired (Verilator's message is on stdout)";
+  }
+
+ private:
+  VerilatedContext ctx_;
+  std::unique_ptr<Vwatkins_gouraud_top_cc> dut_;
+  std::unique_ptr<VerilatedFstC> tfp_;
+};
+
+struct Harness {
+  CcHarness pins;
+  detail::FrameDriver<CcHarness> driver{pins};
+};
+
+Harness& harness() {
+  static Harness* h = new Harness;  // never destroyed, like the SystemC bench
+  return *h;
+}
+
+}  // namespace
+
+std::string rtl_description() { return "plain C++ harness (Verilated --cc watkins_gouraud_top, eval loop)"; }
+
+int rtl_max_width() { return MaxWidth; }
+
+RtlResult run_rtl_frames(const std::vector<const PreparedScene*>& scenes, const RtlOptions& opt,
+                         const std::vector<const Image*>& expected) {
+  RtlResult r;
+  std::vector<Image> rendered;
+  std::vector<const Image*> use;
+  detail::expected_images(scenes, opt, expected, rendered, use, r, MaxWidth);
+  harness().driver.run(scenes, use, opt, r);
+  return r;
+}
+
+RtlResult run_rtl(const PreparedScene& scene, const RtlOptions& opt, const Image* expected) {
+  return run_rtl_frames({&scene}, opt, {expected});
+}
+
+}  // namespace watkins::tb

@@ -1,0 +1,59 @@
+// Simulation speed of the RTL on one harness: built twice, as watkins_rtl_speed_sc (SystemC bench)
+// and watkins_rtl_speed_cc (plain C++ harness, a second Verilated build), from this one source.
+//   watkins_rtl_speed_{sc,cc} [SCENE] [--repeat N] [--gap P] [--stall P] [--seed N]
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <string>
+
+#include "gouraud_pipeline.hpp"
+#include "prepare.hpp"
+#include "rtl_bench.hpp"
+#include "scene.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"watkins_rtl_speed: simulated cycles per second of the Verilated pipeline"};
+  std::string scene_path;
+  int repeat = 3;
+  watkins::tb::RtlOptions opt;
+  app.add_option("scene", scene_path, "scene file (JSON); the embedded default scene if none");
+  app.add_option("--repeat", repeat, "frames to run (after one warm-up frame)")->capture_default_str();
+  app.add_option("--gap", opt.gap, "edge source gap probability")->capture_default_str();
+  app.add_option("--stall", opt.stall, "pixel sink stall probability")->capture_default_str();
+  app.add_option("--seed", opt.seed, "random seed")->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+  try {
+    using namespace watkins;
+    const BuiltScene scene = scene_path.empty()
+        ? load_scene_text(default_scene_text(), "<default scene>", ".", {})
+        : load_scene(scene_path);
+    const PreparedScene prepared = prepare(scene);
+    const Image expected = GouraudPipeline().render(prepared);
+    tb::RtlResult warm = tb::run_rtl(prepared, opt, &expected);  // also builds the bench
+    long long cycles = 0;
+    double wall = 0;
+    bool ok = warm.ok();
+    for (int i = 0; i < repeat; ++i) {
+      opt.seed += 1;
+      const tb::RtlResult r = tb::run_rtl(prepared, opt, &expected);
+      cycles += r.sim_cycles;
+      wall += r.wall_seconds;
+      ok = ok && r.ok();
+      if (!r.ok()) warm = r;
+    }
+    std::printf("harness       %s\n", tb::rtl_description().c_str());
+    std::printf("scene         %s %dx%d, %zu edge records\n", scene.name.c_str(), prepared.width,
+                prepared.height, prepared.edges.size());
+    std::printf("frame cycles  %lld (gap %.2f, stall %.2f)\n", warm.cycles, opt.gap, opt.stall);
+    std::printf("speed         %.0f cycles/s over %d frames (%lld cycles in %.3f s)\n",
+                wall > 0 ? cycles / wall : 0.0, repeat, cycles, wall);
+    if (!ok) {
+      std::printf("RTL run failed:\n%s\n", warm.summary().c_str());
+      return 1;
+    }
+    return 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "watkins_rtl_speed: error: %s\n", e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,142 @@
+// Bad input through the command line: a clear message naming file/line/field, exit code 1, and
+// no image written. And the happy path: the embedded default scene renders.
+#include <gtest/gtest.h>
+
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <memory>
+#include <string>
+
+namespace {
+
+struct CliRun {
+  int exit_code;
+  std::string output;  // stdout and stderr
+};
+
+CliRun run(const std::string& args) {
+  const std::string cmd = std::string(WATKINS_CLI) + " " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  std::string out;
+  std::array<char, 4096> buf;
+  while (p && fgets(buf.data(), buf.size(), p)) out += buf.data();
+  const int status = p ? pclose(p) : -1;
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+bool exists(const std::string& path) {
+  struct stat st;
+  return stat(path.c_str(), &st) == 0;
+}
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    char tmpl[] = "/tmp/watkins_cli_XXXXXX";
+    ASSERT_NE(mkdtemp(tmpl), nullptr);
+    dir_ = tmpl;
+  }
+  void TearDown() override { std::system(("rm -rf " + dir_).c_str()); }
+  std::string write(const std::string& name, const std::string& text) {
+    const std::string path = dir_ + "/" + name;
+    std::ofstream(path) << text;
+    return path;
+  }
+  // Renders `scene_text` and expects failure with `message` in the output and no image.
+  void expect_rejected(const std::string& scene_text, const std::string& message) {
+    const std::string scene = write("scene.json", scene_text);
+    const std::string png = dir_ + "/out.png";
+    const CliRun r = run("render " + scene + " --out " + png);
+    EXPECT_EQ(r.exit_code, 1) << r.output;
+    EXPECT_NE(r.output.find(message), std::string::npos) << "expected \"" << message << "\" in:\n" << r.output;
+    EXPECT_NE(r.output.find("scene.json"), std::string::npos) << "message must name the file:\n" << r.output;
+    EXPECT_FALSE(exists(png)) << "no image may be written for bad input";
+  }
+  static std::string triangle(const std::string& v0) {
+    return R"({"screen": {"width": 16, "height": 16}, "objects": [{"type": "polygons", "polygons": [
+      {"vertices": [)" + v0 + R"(, {"x": 12, "y": 2, "depth": 0.5, "rgb": [1, 2, 3]},
+                    {"x": 8, "y": 12, "depth": 0.5, "rgb": [1, 2, 3]}]}]}]})";
+  }
+  std::string dir_;
+};
+
+TEST_F(Cli, DefaultSceneRendersAndReportsError) {
+  const std::string png = dir_ + "/default.png";
+  const CliRun r = run("render --out " + png);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(exists(png));
+  EXPECT_NE(r.output.find("fragments"), std::string::npos);
+  EXPECT_NE(r.output.find("vs double"), std::string::npos);
+  EXPECT_NE(r.output.find("0 pixels > 1 level"), std::string::npos) << r.output;
+}
+
+TEST_F(Cli, MissingFile) {
+  const CliRun r = run("render " + dir_ + "/nope.json --out " + dir_ + "/x.png");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find("nope.json: cannot open scene file"), std::string::npos) << r.output;
+  EXPECT_FALSE(exists(dir_ + "/x.png"));
+}
+
+TEST_F(Cli, MalformedJsonNamesLineAndColumn) {
+  expect_rejected("{\n  \"screen\": {\"width\": 16,\n  \"height\": }\n}", "scene.json:3:13: malformed JSON");
+}
+
+TEST_F(Cli, UnknownKey) {
+  expect_rejected(R"({"screen": {"width": 16, "height": 16, "colour": 1}, "objects": []})", "screen: unknown key \"colour\"");
+}
+
+TEST_F(Cli, WrongType) {
+  expect_rejected(R"({"screen": {"width": "wide", "height": 16}, "objects": []})", "screen.width: expected an integer");
+}
+
+TEST_F(Cli, InfiniteAndNanNumbers) {
+  expect_rejected(triangle(R"({"x": 1e999, "y": 2, "depth": 0.5, "rgb": [1, 2, 3]})"), "1e999");
+  expect_rejected(triangle(R"({"x": NaN, "y": 2, "depth": 0.5, "rgb": [1, 2, 3]})"), "malformed JSON");
+}
+
+TEST_F(Cli, DegeneratePolygon) {
+  expect_rejected(R"({"screen": {"width": 16, "height": 16}, "objects": [{"type": "polygons", "polygons": [
+      {"vertices": [{"x": 1, "y": 1, "depth": 0.5, "rgb": [0, 0, 0]}, {"x": 5, "y": 5, "depth": 0.5, "rgb": [0, 0, 0]},
+                    {"x": 9, "y": 9, "depth": 0.5, "rgb": [0, 0, 0]}]}]}]})",
+                  "objects[0].polygons[0]: polygon has zero area");
+}
+
+TEST_F(Cli, CoordinateOutsideRepresentableRange) {
+  expect_rejected(triangle(R"({"x": 9000, "y": 2, "depth": 0.5, "rgb": [1, 2, 3]})"),
+                  "objects[0].polygons[0].vertices[0].x: 9000 is outside the representable range");
+}
+
+TEST_F(Cli, ShadeOutOfRange) {
+  expect_rejected(triangle(R"({"x": 1, "y": 2, "depth": 0.5, "rgb": [1, 300, 3]})"), "objects[0].polygons[0].vertices[0].rgb");
+}
+
+TEST_F(Cli, ActiveEdgeCapacityExceeded) {
+  // 40 thin overlapping triangles on the same scan lines: 80 active edges against a capacity of 64.
+  std::string polys;
+  for (int i = 0; i < 40; ++i) {
+    const std::string x = std::to_string(2 + i), x2 = std::to_string(2.5 + i);
+    polys += std::string(i ? "," : "") + R"({"vertices": [{"x": )" + x + R"(, "y": 1, "depth": 0.5, "rgb": [9, 9, 9]},
+        {"x": )" + x2 + R"(, "y": 1, "depth": 0.5, "rgb": [9, 9, 9]}, {"x": )" + x + R"(, "y": 30, "depth": 0.5, "rgb": [9, 9, 9]}]})";
+  }
+  expect_rejected(R"({"screen": {"width": 64, "height": 32}, "objects": [{"type": "polygons", "polygons": [)" + polys + "]}]}",
+                  "scene needs 80 active edges on scan line");
+}
+
+TEST_F(Cli, ScreenTooLarge) {
+  expect_rejected(R"({"screen": {"width": 5000, "height": 16}, "objects": []})", "screen.width");
+}
+
+TEST_F(Cli, UnknownShadingRuleOnCommandLine) {
+  const CliRun r = run("render --rule phong --out " + dir_ + "/x.png");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find("--rule: unknown shading rule \"phong\""), std::string::npos) << r.output;
+  EXPECT_FALSE(exists(dir_ + "/x.png"));
+}
+
+}  // namespace
