@@ -22,7 +22,7 @@ module active_edge_list #(
   input  logic                                                              edge_valid_i,
   output logic                                                              edge_ready_o,
   output logic [watkins_pkg::PolyIdBits-1:0]                                out_poly_o,   // polygon of the edge
-  output logic [watkins_pkg::NumChannels-1:0][watkins_pkg::ChannelBits-1:0] out_value_o,  // channels on this line
+  output logic [watkins_pkg::NumChannels*watkins_pkg::ChannelBits-1:0]   out_value_o,  // channels on this line
   output logic                                                              out_eol_o,    // end-of-line marker, no edge
   output logic                                                              out_valid_o,
   input  logic                                                              out_ready_i,
@@ -34,13 +34,14 @@ module active_edge_list #(
   localparam int unsigned LB = watkins_pkg::LineBits;
   localparam int unsigned NC = watkins_pkg::NumChannels;
   localparam int unsigned CB = watkins_pkg::ChannelBits;
+  localparam int unsigned XLo = watkins_pkg::ChanX * CB;
 
   typedef struct packed {
     logic [LB-1:0]                      remaining;  // lines left including the current one
     logic [watkins_pkg::EdgeIdBits-1:0] id;
     logic [watkins_pkg::PolyIdBits-1:0] poly;
-    logic [NC-1:0][CB-1:0]              value;
-    logic [NC-1:0][CB-1:0]              slope;
+    logic [NC*CB-1:0]                   value;
+    logic [NC*CB-1:0]                   slope;
   } entry_t;
 
   // (X, id) order; ids are unique, so the order is total.
@@ -49,7 +50,13 @@ module active_edge_list #(
     xid_less = (xa < xb) || (xa == xb && ida < idb);
   endfunction
 
-  entry_t          bank_q [2][N];
+  // Bank b, entry i at b * N + i (plain vectors: yosys 0.23 mishandles arrays of structs).
+  localparam int unsigned EB = LB + watkins_pkg::EdgeIdBits + watkins_pkg::PolyIdBits + 2 * NC * CB;
+  logic [EB-1:0]   bank_q [2 * N];
+  localparam int unsigned SB = $clog2(2 * N);
+  function automatic logic [SB-1:0] slot(logic b, logic [IB-1:0] i);
+    slot = b ? SB'(N) + SB'(i) : SB'(i);
+  endfunction
   logic [CntB-1:0] cnt_q  [2];
   logic            sel_q;        // bank streamed for line line_q - 1; the other fills for line_q
   logic            frame_q, drain_q;
@@ -64,7 +71,7 @@ module active_edge_list #(
 
   assign streaming = frame_q && !drain_q && (line_q != '0);
   assign have_edge = streaming && (rd_q < cnt_q[sel_q]);
-  assign cur       = bank_q[sel_q][IB'(rd_q)];
+  assign cur       = bank_q[slot(sel_q, IB'(rd_q))];
 
   assign out_valid_o = (have_edge && !out_done_q) || (streaming && !have_edge && !eol_sent_q);
   assign out_eol_o   = !have_edge;
@@ -79,7 +86,7 @@ module active_edge_list #(
 
   // ------------------------------------------------------------ step to the next line
   logic                  st_valid, st_retire;
-  logic [NC-1:0][CB-1:0] st_value, st_slope;
+  logic [NC*CB-1:0]      st_value, st_slope;
   logic [LB-1:0]         st_remaining;
   logic [watkins_pkg::EdgeIdBits + watkins_pkg::PolyIdBits - 1:0] st_payload;
 
@@ -106,6 +113,9 @@ module active_edge_list #(
   // ------------------------------------------------------------ insertion into the other bank
   logic   nsel, ins_step, take_new, drop_late, ins_valid, src_done, swap;
   entry_t ins, fresh;
+  /* verilator lint_off UNUSEDSIGNAL */
+  entry_t nb;  // bank entry under comparison: only its X and id matter
+  /* verilator lint_on UNUSEDSIGNAL */
   logic [N-1:0] lt;
   logic   head_edge;
 
@@ -133,9 +143,10 @@ module active_edge_list #(
     end else begin
       ins = fresh;
     end
-    for (int i = 0; i < int'(N); i++)
-      lt[i] = (CntB'(i) < cnt_q[nsel]) && xid_less(bank_q[nsel][i].value[watkins_pkg::ChanX], bank_q[nsel][i].id,
-                                                    ins.value[watkins_pkg::ChanX], ins.id);
+    for (int i = 0; i < N; i++) begin
+      nb    = nsel ? bank_q[N + i] : bank_q[i];
+      lt[i] = (CntB'(i) < cnt_q[nsel]) && xid_less(nb.value[XLo +: CB], nb.id, ins.value[XLo +: CB], ins.id);
+    end
   end
 
   // Line line_q is complete when line_q - 1 has streamed out (marker sent), its stepped edges
@@ -206,15 +217,10 @@ module active_edge_list #(
   // tail moves up by one (entries past the count hold don't-care values).
   always_ff @(posedge clk_i) begin
     if (ins_valid && cnt_q[nsel] != CntB'(N)) begin
-      for (int b = 0; b < 2; b++) begin
-        if (b[0] == nsel) begin
-          for (int i = 0; i < int'(N); i++) begin
-            if (!lt[i]) begin
-              if (i == 0) bank_q[b][i] <= ins;
-              else if (lt[i-1]) bank_q[b][i] <= ins;
-              else bank_q[b][i] <= bank_q[b][i-1];
-            end
-          end
+      for (int i = 0; i < N; i++) begin
+        if (!lt[i]) begin
+          if (nsel) bank_q[N + i] <= (i == 0 || lt[(i + N - 1) % N]) ? ins : bank_q[N + (i + N - 1) % N];
+          else bank_q[i] <= (i == 0 || lt[(i + N - 1) % N]) ? ins : bank_q[(i + N - 1) % N];
         end
       end
     end

@@ -7,14 +7,14 @@ module edge_incrementer #(
 ) (
   input  logic                                                    clk_i,
   input  logic                                                    rst_ni,
-  input  logic [NumChannels-1:0][watkins_pkg::ChannelBits-1:0]    value_i,      // on this line
-  input  logic [NumChannels-1:0][watkins_pkg::ChannelBits-1:0]    slope_i,      // per line
+  input  logic [NumChannels*watkins_pkg::ChannelBits-1:0] value_i,      // on this line
+  input  logic [NumChannels*watkins_pkg::ChannelBits-1:0] slope_i,      // per line
   input  logic [watkins_pkg::LineBits-1:0]                        remaining_i,  // lines left incl. this
   input  logic [PayloadBits-1:0]                                  payload_i,
   input  logic                                                    valid_i,
   output logic                                                    ready_o,
-  output logic [NumChannels-1:0][watkins_pkg::ChannelBits-1:0]    value_o,      // on the next line
-  output logic [NumChannels-1:0][watkins_pkg::ChannelBits-1:0]    slope_o,
+  output logic [NumChannels*watkins_pkg::ChannelBits-1:0] value_o,      // on the next line
+  output logic [NumChannels*watkins_pkg::ChannelBits-1:0] slope_o,
   output logic [watkins_pkg::LineBits-1:0]                        remaining_o,  // remaining_i - 1
   output logic                                                    retire_o,     // remaining_i <= 1: edge ends
   output logic [PayloadBits-1:0]                                  payload_o,
@@ -35,7 +35,8 @@ module edge_incrementer #(
   always_ff @(posedge clk_i) begin
     if (load) begin
       // A CB-bit sum keeps the low CB bits: the model's wrap_signed(value + slope, ChannelBits).
-      for (int c = 0; c < int'(NumChannels); c++) value_o[c] <= CB'(value_i[c] + slope_i[c]);
+      for (int c = 0; c < NumChannels; c++)
+        value_o[c*CB +: CB] <= value_i[c*CB +: CB] + slope_i[c*CB +: CB];
       slope_o     <= slope_i;
       remaining_o <= remaining_i - 1'b1;
       // The model retires when the decremented count is <= 0; n = 0 (malformed) retires too.

@@ -11,12 +11,12 @@ module segment_former #(
   input  logic                                                              clk_i,
   input  logic                                                              rst_ni,
   input  logic [watkins_pkg::PolyIdBits-1:0]                                edge_poly_i,  // polygon of the edge
-  input  logic [watkins_pkg::NumChannels-1:0][watkins_pkg::ChannelBits-1:0] edge_value_i, // channels on this line
+  input  logic [watkins_pkg::NumChannels*watkins_pkg::ChannelBits-1:0]   edge_value_i, // channels on this line
   input  logic                                                              edge_eol_i,   // end-of-line marker
   input  logic                                                              edge_valid_i,
   output logic                                                              edge_ready_o,
-  output logic [watkins_pkg::NumChannels-1:0][watkins_pkg::ChannelBits-1:0] seg_e_o,      // opening edge
-  output logic [watkins_pkg::NumChannels-1:0][watkins_pkg::ChannelBits-1:0] seg_f_o,      // closing edge
+  output logic [watkins_pkg::NumChannels*watkins_pkg::ChannelBits-1:0]   seg_e_o,      // opening edge
+  output logic [watkins_pkg::NumChannels*watkins_pkg::ChannelBits-1:0]   seg_f_o,      // closing edge
   output logic [watkins_pkg::PolyIdBits-1:0]                                seg_poly_o,
   output logic                                                              seg_eol_o,
   output logic                                                              seg_valid_o,
@@ -24,7 +24,7 @@ module segment_former #(
 );
   localparam int unsigned N  = MaxActiveEdges;
   localparam int unsigned IB = (N > 1) ? $clog2(N) : 1;
-  typedef logic [watkins_pkg::NumChannels-1:0][watkins_pkg::ChannelBits-1:0] chans_t;
+  typedef logic [watkins_pkg::NumChannels*watkins_pkg::ChannelBits-1:0]   chans_t;
 
   logic [N-1:0]                      open_q;       // entry holds an unpaired edge
   logic [watkins_pkg::PolyIdBits-1:0] open_poly_q [N];

@@ -15,8 +15,8 @@ module segment_interpolator #(
   input  logic                                                             clk_i,
   input  logic                                                             rst_ni,
   input  logic [watkins_pkg::LineBits-1:0]                                 width_i,  // screen width, stable per frame
-  input  logic [watkins_pkg::NumChannels-1:0][watkins_pkg::ChannelBits-1:0] seg_e_i, // left end E
-  input  logic [watkins_pkg::NumChannels-1:0][watkins_pkg::ChannelBits-1:0] seg_f_i, // right end F
+  input  logic [watkins_pkg::NumChannels*watkins_pkg::ChannelBits-1:0]   seg_e_i, // left end E
+  input  logic [watkins_pkg::NumChannels*watkins_pkg::ChannelBits-1:0]   seg_f_i, // right end F
   input  logic                                                             seg_eol_i, // end-of-line marker, no segment
   input  logic                                                             seg_valid_i,
   output logic                                                             seg_ready_o,
@@ -38,12 +38,12 @@ module segment_interpolator #(
   localparam int unsigned PW   = DB + R + 2;                    // product width, with guard
   localparam int unsigned XCB  = CB + 1 - FB;                   // signed width of a pixel index
   localparam int unsigned DepB = watkins_pkg::DepthBits;
+  localparam int unsigned XLo  = watkins_pkg::ChanX * CB;
 
   typedef logic signed [CB-1:0] chan_t;
-  typedef logic signed [DB-1:0] delta_t;
   typedef logic signed [PW-1:0] prod_t;
-  localparam prod_t StepMax = prod_t'((PW'(1) << (CB - 1)) - 1);  // saturate_signed(., CB)
-  localparam prod_t StepMin = -prod_t'(PW'(1) << (CB - 1));
+  localparam logic signed [PW-1:0] StepMax = $signed((PW'(1) << (CB - 1)) - PW'(1));  // saturate_signed(., CB)
+  localparam logic signed [PW-1:0] StepMin = -$signed(PW'(1) << (CB - 1));
 
   // ---------------------------------------------------------------- s0: range and clipping
   typedef struct packed {
@@ -52,8 +52,8 @@ module segment_interpolator #(
     logic [LB-1:0]         xs;      // first pixel
     logic [LB-1:0]         xe;      // one past the last pixel
     logic [DB-1:0]         offset;  // x_start + 1/2 - X_E >= 0, X units
-    logic [NI-1:0][CB-1:0] e;       // E's channels Z..
-    logic [NI-1:0][DB-1:0] delta;   // F - E per channel
+    logic [NI*CB-1:0]      e;       // E's channels Z..
+    logic [NI*DB-1:0]      delta;   // F - E per channel
   } span_pre_t;
 
   // First pixel whose centre is at or right of X: ceil(X - 1/2) = (X + 1/2 - 2^-FB) >> FB.
@@ -78,8 +78,8 @@ module segment_interpolator #(
     /* verilator lint_off UNUSEDSIGNAL */
     logic signed [DB+1:0]  off;
     /* verilator lint_on UNUSEDSIGNAL */
-    fce     = first_centre(seg_e_i[watkins_pkg::ChanX]);
-    fcf     = first_centre(seg_f_i[watkins_pkg::ChanX]);
+    fce     = first_centre(seg_e_i[XLo +: CB]);
+    fcf     = first_centre(seg_f_i[XLo +: CB]);
     xs_full = (fce < 0) ? '0 : fce;
     xe_full = (fcf > $signed(XCB'(width_i))) ? $signed(XCB'(width_i)) : fcf;
     s0_d.eol   = seg_eol_i;
@@ -87,14 +87,14 @@ module segment_interpolator #(
     s0_d.xs    = LB'(xs_full);
     s0_d.xe    = LB'(xe_full);
     off        = $signed((DB + 2)'({s0_d.xs, 1'b1, (FB - 1)'(0)}))
-               - $signed({{3{seg_e_i[watkins_pkg::ChanX][CB-1]}}, seg_e_i[watkins_pkg::ChanX]});
+               - $signed({{3{seg_e_i[XLo+CB-1]}}, seg_e_i[XLo +: CB]});
     s0_d.offset = DB'(off);
-    s0_dx_d     = DB'($signed({seg_f_i[watkins_pkg::ChanX][CB-1], seg_f_i[watkins_pkg::ChanX]})
-                    - $signed({seg_e_i[watkins_pkg::ChanX][CB-1], seg_e_i[watkins_pkg::ChanX]}));
-    for (int c = 0; c < int'(NI); c++) begin
-      s0_d.e[c]     = seg_e_i[c + 1];
-      s0_d.delta[c] = DB'($signed({seg_f_i[c + 1][CB-1], seg_f_i[c + 1]})
-                        - $signed({seg_e_i[c + 1][CB-1], seg_e_i[c + 1]}));
+    s0_dx_d     = DB'($signed({seg_f_i[XLo+CB-1], seg_f_i[XLo +: CB]})
+                    - $signed({seg_e_i[XLo+CB-1], seg_e_i[XLo +: CB]}));
+    for (int c = 0; c < NI; c++) begin
+      s0_d.e[c*CB +: CB]     = seg_e_i[(c+1)*CB +: CB];
+      s0_d.delta[c*DB +: DB] = DB'($signed({seg_f_i[(c+2)*CB-1], seg_f_i[(c+1)*CB +: CB]})
+                                 - $signed({seg_e_i[(c+2)*CB-1], seg_e_i[(c+1)*CB +: CB]}));
     end
   end
 
@@ -119,7 +119,7 @@ module segment_interpolator #(
 
   span_reciprocal #(
     .DxBits     (DB),
-    .PayloadBits($bits(span_pre_t))
+    .PayloadBits($bits(s0_q))
   ) u_recip (
     .clk_i, .rst_ni,
     .dx_i     (s0_dx_q),
@@ -144,8 +144,8 @@ module segment_interpolator #(
       sa_span_q <= rc_span;
       sa_p_q    <= rc_p;
       sa_pa_q   <= PW'(rc_span.offset) * PW'(rc_recip);
-      for (int c = 0; c < int'(NI); c++)
-        sa_ps_q[c] <= $signed(rc_span.delta[c]) * $signed({1'b0, rc_recip});
+      for (int c = 0; c < NI; c++)
+        sa_ps_q[c] <= $signed(rc_span.delta[c*DB +: DB]) * $signed({1'b0, rc_recip});
     end
   end
 
@@ -165,12 +165,12 @@ module segment_interpolator #(
       ra = (sh == '0) ? sa_pa_q : ((sa_pa_q + (PW'(1) << (sh - 1))) >> sh);
       sb_alpha_q <= (ra > PW'(1 << AB)) ? (AB + 1)'(1 << AB) : (AB + 1)'(ra);
       // step = saturate(round_shift(delta*recip, p + R - FB)), shift always > 0.
-      for (int c = 0; c < int'(NI); c++) begin
+      for (int c = 0; c < NI; c++) begin
         logic [PW-1:0] s2;
         s2 = PW'(sa_p_q) + PW'(R) - PW'(FB);
         rs = (sa_ps_q[c] + $signed(PW'(1) << (s2 - 1))) >>> s2;
-        if (rs > StepMax) sb_step_q[c] <= chan_t'(StepMax);
-        else if (rs < StepMin) sb_step_q[c] <= chan_t'(StepMin);
+        if (rs > StepMax) sb_step_q[c] <= CB'(StepMax);
+        else if (rs < StepMin) sb_step_q[c] <= CB'(StepMin);
         else sb_step_q[c] <= CB'(rs);
       end
     end
@@ -187,9 +187,9 @@ module segment_interpolator #(
   always_ff @(posedge clk_i) begin
     if (tail_en) begin
       sc_span_q <= sb_span_q;
-      for (int c = 0; c < int'(NI); c++) begin
+      for (int c = 0; c < NI; c++) begin
         sc_step_q[c] <= sb_step_q[c];
-        sc_pv_q[c]   <= $signed(sb_span_q.delta[c]) * $signed({1'b0, sb_alpha_q});
+        sc_pv_q[c]   <= $signed(sb_span_q.delta[c*DB +: DB]) * $signed({1'b0, sb_alpha_q});
       end
     end
   end
@@ -211,8 +211,8 @@ module segment_interpolator #(
     logic                  eol;
     logic [LB-1:0]         xs;
     logic [LB-1:0]         xe;
-    logic [NI-1:0][CB-1:0] value;  // channels at pixel xs
-    logic [NI-1:0][CB-1:0] step;   // per-pixel increments
+    logic [NI*CB-1:0]      value;  // channels at pixel xs
+    logic [NI*CB-1:0]      step;   // per-pixel increments
   } span_t;
 
   span_t f_in, f_out;
@@ -223,15 +223,15 @@ module segment_interpolator #(
     f_in.eol = sc_span_q.eol;
     f_in.xs  = sc_span_q.xs;
     f_in.xe  = sc_span_q.xe;
-    for (int c = 0; c < int'(NI); c++) begin
+    for (int c = 0; c < NI; c++) begin
       // The wrap to CB bits drops the quotient's top bits.
       /* verilator lint_off UNUSEDSIGNAL */
       prod_t r;
       /* verilator lint_on UNUSEDSIGNAL */
       // value = wrap(E + round_shift(delta*alpha0, AB)): only the low CB bits survive.
       r = (sc_pv_q[c] + $signed(PW'(1) << (AB - 1))) >>> AB;
-      f_in.value[c] = CB'(sc_span_q.e[c] + CB'(r));
-      f_in.step[c]  = sc_step_q[c];
+      f_in.value[c*CB +: CB] = sc_span_q.e[c*CB +: CB] + CB'(r);
+      f_in.step[c*CB +: CB]  = sc_step_q[c];
     end
   end
 
@@ -241,7 +241,7 @@ module segment_interpolator #(
   assign tail_en    = !sc_valid_q || !sc_keep || f_in_ready;
 
   stream_fifo #(
-    .DataBits($bits(span_t)),
+    .DataBits($bits(f_in)),
     .Depth   (FifoDepth)
   ) u_fifo (
     .clk_i, .rst_ni,
@@ -256,11 +256,11 @@ module segment_interpolator #(
   // ---------------------------------------------------------------- stepper
   logic                  st_active_q;  // a span is being stepped from the registers below
   logic [LB-1:0]         st_x_q, st_xe_q;
-  logic [NI-1:0][CB-1:0] st_value_q, st_step_q;
+  logic [NI*CB-1:0]      st_value_q, st_step_q;
 
   logic                  out_free, from_head, emit_frag, emit_eol;
   logic [LB-1:0]         cur_x, cur_xe;
-  logic [NI-1:0][CB-1:0] cur_value, cur_step;
+  logic [NI*CB-1:0]      cur_value, cur_step;
 
   assign out_free  = !frag_valid_o || frag_ready_i;
   assign from_head = !st_active_q && f_out_valid && !f_out.eol;
@@ -299,14 +299,15 @@ module segment_interpolator #(
   always_ff @(posedge clk_i) begin
     if (emit_frag) begin
       frag_x_o     <= cur_x;
-      frag_depth_o <= level(cur_value[watkins_pkg::ChanZ - 1], DepB'((64'd1 << DepB) - 1));
+      frag_depth_o <= level(cur_value[(watkins_pkg::ChanZ - 1)*CB +: CB], DepB'((64'd1 << DepB) - 1));
       for (int c = 0; c < 3; c++)
-        frag_rgb_o[23 - 8 * c -: 8] <= 8'(level(cur_value[watkins_pkg::ChanR - 1 + c], DepB'(255)));
+        frag_rgb_o[23 - 8 * c -: 8] <= 8'(level(cur_value[(watkins_pkg::ChanR - 1 + c)*CB +: CB], DepB'(255)));
       frag_eol_o   <= 1'b0;
       st_x_q       <= cur_x + 1'b1;
       st_xe_q      <= cur_xe;
       st_step_q    <= cur_step;
-      for (int c = 0; c < int'(NI); c++) st_value_q[c] <= CB'(cur_value[c] + cur_step[c]);
+      for (int c = 0; c < NI; c++)
+        st_value_q[c*CB +: CB] <= cur_value[c*CB +: CB] + cur_step[c*CB +: CB];
     end else if (emit_eol) begin
       frag_eol_o   <= 1'b1;
     end

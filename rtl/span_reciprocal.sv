@@ -42,7 +42,7 @@ module span_reciprocal #(
   /* verilator lint_on UNUSEDSIGNAL */
   always_comb begin
     lead = '0;
-    for (int i = 0; i < int'(DxBits); i++) if (dx_i[i]) lead = PBits'(i);
+    for (int i = 0; i < DxBits; i++) if (dx_i[i]) lead = PBits'(i);
     norm = dx_i << (PBits'(DxBits - 1) - lead);
   end
 
@@ -63,7 +63,7 @@ module span_reciprocal #(
       quo_q[0]     <= '0;
       p_q[0]       <= lead;
       payload_q[0] <= payload_i;
-      for (int k = 1; k < int'(Stages); k++) begin
+      for (int k = 1; k < Stages; k++) begin
         logic [R:0] twice;
         logic       ge;
         twice = {rem_q[k-1], 1'b0};

@@ -57,7 +57,7 @@ module watkins_gouraud_top #(
 
   // ------------------------------------------------------------ active edges
   logic [watkins_pkg::PolyIdBits-1:0] ae_poly;
-  logic [NC-1:0][CB-1:0]              ae_value;
+  logic [NC*CB-1:0]                    ae_value;
   logic                               ae_eol, ae_valid, ae_ready;
 
   active_edge_list #(
@@ -80,7 +80,7 @@ module watkins_gouraud_top #(
   );
 
   // ------------------------------------------------------------ segments
-  logic [NC-1:0][CB-1:0] sg_e, sg_f;
+  logic [NC*CB-1:0]       sg_e, sg_f;
   logic                  sg_eol, sg_valid, sg_ready;
   // The polygon id only pairs edges; nothing downstream needs it.
   /* verilator lint_off UNUSEDSIGNAL */

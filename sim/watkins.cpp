@@ -1,6 +1,7 @@
 // watkins: the command line of the Watkins pipeline model.
 //   watkins render [SCENE] [--out image.png] [--model fixed|float] [--rule R] [--depth D]
 //                  [--diff d.png] [--cull|--no-cull] [--max-active-edges N]
+//                  [--rtl [--trace out.fst] [--seed N] [--gap P] [--stall P]]
 #include <CLI/CLI.hpp>
 
 #include <chrono>
@@ -13,6 +14,89 @@
 #include "gouraud_pipeline.hpp"
 #include "prepare.hpp"
 #include "scene.hpp"
+
+// ==== RTL co-simulation (--rtl): owned by the testbench; see testbench/rtl_bench.hpp ==========
+#ifdef WATKINS_HAVE_RTL
+#include "rtl_bench.hpp"
+#endif
+
+namespace {
+
+struct RtlArgs {
+  bool enabled = false;
+  std::string trace;             // FST waveform
+  unsigned long long seed = 1;   // seeds the input gaps and the output stalls
+  double gap = 0.0;              // probability of an idle cycle before each edge beat
+  double stall = 0.0;            // probability that the pixel sink holds pixel_ready_i low
+};
+
+void add_rtl_options(CLI::App* r, RtlArgs& a) {
+  r->add_flag("--rtl", a.enabled, "also run the Verilated RTL, compare it with the fixed model and write "
+                                  "the RTL image to --out (exit code 1 on any mismatch)");
+  r->add_option("--trace", a.trace, "with --rtl: write an FST waveform of the RTL run");
+  r->add_option("--seed", a.seed, "with --rtl: random seed of input gaps and output stalls")->capture_default_str();
+  r->add_option("--gap", a.gap, "with --rtl: probability of an idle cycle before each edge beat")
+      ->check(CLI::Range(0.0, 0.99))->capture_default_str();
+  r->add_option("--stall", a.stall, "with --rtl: probability that the pixel sink stalls a cycle")
+      ->check(CLI::Range(0.0, 0.99))->capture_default_str();
+}
+
+// Fails early, before any rendering, when this build cannot simulate the RTL.
+void check_rtl_args(const RtlArgs& a, const std::string& model) {
+  if (!a.enabled) {
+    if (!a.trace.empty()) throw std::runtime_error("--trace needs --rtl");
+    return;
+  }
+#ifndef WATKINS_HAVE_RTL
+#ifndef WATKINS_RTL_UNAVAILABLE_REASON
+#define WATKINS_RTL_UNAVAILABLE_REASON "the testbench was not configured"
+#endif
+  throw std::runtime_error(std::string("--rtl: this build has no RTL simulation (") +
+                           WATKINS_RTL_UNAVAILABLE_REASON +
+                           "); install Verilator and SystemC (libsystemc-dev) and re-run cmake");
+#endif
+  if (model != "fixed") throw std::runtime_error("--rtl compares with the fixed model; drop --model " + model);
+}
+
+// Runs the RTL on the prepared scene, compares with the model image, prints the statistics and
+// replaces `image` with the RTL's. Returns the exit code: 1 on mismatch, hang or protocol error.
+int run_rtl_mode(const RtlArgs& a, const watkins::PreparedScene& prepared, watkins::Image& image,
+                 long long fragments) {
+#ifdef WATKINS_HAVE_RTL
+  namespace tb = watkins::tb;
+  tb::RtlOptions opt;
+  opt.seed = a.seed;
+  opt.gap = a.gap;
+  opt.stall = a.stall;
+  opt.trace_path = a.trace;
+  const tb::RtlResult r = tb::run_rtl(prepared, opt, &image);
+  std::printf("rtl           %s\n", tb::rtl_description().c_str());
+  std::printf("rtl cycles    %lld (first edge beat to last pixel; gap %.2f, stall %.2f, seed %llu)\n", r.cycles,
+              a.gap, a.stall, a.seed);
+  std::printf("rtl pixels    %lld, fragments %lld (model), %.3f fragments/cycle, %.3f pixels/cycle\n", r.pixels,
+              fragments, r.cycles ? double(fragments) / r.cycles : 0.0, r.cycles ? double(r.pixels) / r.cycles : 0.0);
+  std::printf("rtl vs model  %lld mismatching pixels%s%s\n", r.mismatches, r.mismatches ? "; first: " : "",
+              r.first_mismatch.c_str());
+  std::printf("rtl speed     %.0f simulated cycles/s (%lld cycles in %.3f s)\n", r.cycles_per_second(),
+              r.sim_cycles, r.wall_seconds);
+  if (r.overflow) std::printf("rtl overflow  overflow_o set at cycle %lld\n", r.overflow_cycle);
+  if (!a.trace.empty()) std::printf("rtl trace     %s\n", a.trace.c_str());
+  image = r.frames.at(0).image;
+  if (!r.ok() || r.overflow) {
+    const std::string s = r.summary();
+    std::fprintf(stderr, "watkins: RTL run failed:\n%s%s\n", s.c_str(),
+                 r.overflow ? (s.empty() ? "overflow_o set" : "\noverflow_o set") : "");
+    return 1;
+  }
+  return 0;
+#else
+  (void)a, (void)prepared, (void)image, (void)fragments;
+  return 1;
+#endif
+}
+
+}  // namespace
+// ==== end of RTL co-simulation ===================================================================
 
 namespace {
 
@@ -28,6 +112,7 @@ struct RenderArgs {
   std::string rule, depth, diff;
   bool cull = false, no_cull = false;
   int max_active_edges = watkins::fmt::MaxActiveEdges;
+  RtlArgs rtl;  // --rtl and its options
 };
 
 void print_needs(const watkins::SceneNeeds& n) {
@@ -56,6 +141,7 @@ int render(const RenderArgs& a) {
   }
   if (a.cull) opt.cull_backfaces = true;
   if (a.no_cull) opt.cull_backfaces = false;
+  check_rtl_args(a.rtl, a.model);  // --rtl
 
   const auto t0 = Clock::now();
   const BuiltScene scene = a.scene.empty()
@@ -79,6 +165,7 @@ int render(const RenderArgs& a) {
   const double t_ref = seconds_since(t1);
 
   Image result;
+  int rtl_status = 0;  // --rtl: 1 when the RTL differs from the model
   if (a.model == "fixed") {
     GouraudPipeline pipe(a.max_active_edges);
     const auto t2 = Clock::now();
@@ -93,6 +180,7 @@ int render(const RenderArgs& a) {
     std::printf("vs double     max |d| %d levels, mean |d| %.4f levels, %d pixels > 1 level "
                 "(over %d pixels showing the same polygon); %d pixels change polygon, %d change coverage\n",
                 e.max_abs, e.mean_abs, e.over_one, e.compared, e.visibility_differs, e.coverage_differs);
+    if (a.rtl.enabled) rtl_status = run_rtl_mode(a.rtl, prepared, result, s.fragments);  // --rtl
   } else {
     result = reference;
     std::printf("double model  %lld fragments, %.3f s\n", fstats.fragments, t_ref);
@@ -100,7 +188,7 @@ int render(const RenderArgs& a) {
   if (!a.diff.empty()) write_png(diff_image(result, reference), a.diff);
   write_png(result, a.out);
   std::printf("wrote         %s%s%s\n", a.out.c_str(), a.diff.empty() ? "" : ", ", a.diff.c_str());
-  return 0;
+  return rtl_status;
 }
 
 }  // namespace
@@ -121,6 +209,7 @@ int main(int argc, char** argv) {
   r->add_flag("--no-cull", ra.no_cull, "keep back faces");
   r->add_option("--max-active-edges", ra.max_active_edges, "active-edge list capacity")
       ->check(CLI::Range(1, 1 << 16))->capture_default_str();
+  add_rtl_options(r, ra.rtl);  // --rtl, --trace, --seed, --gap, --stall
   CLI11_PARSE(app, argc, argv);
   try {
     if (*r) return render(ra);

@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# Lint and synthesis check of rtl/: Verilator --lint-only -Wall on every file (package first),
+# then yosys 0.23: read, hierarchy/proc/check, and a full synth_ice40 of watkins_gouraud_top with
+# small buffers (MaxWidth, MaxActiveEdges) so it finishes in a couple of minutes. Fails on any
+# warning or error. The only yosys warning tolerated is "Replacing memory ... with list of
+# registers": pipeline register arrays (span_reciprocal stages, active-edge banks) are meant to
+# be flops, and yosys says so for each one.
+# Usage: scripts/lint.sh [--no-synth]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+PKG=rtl/watkins_pkg.sv
+mapfile -t SRCS < <(ls rtl/*.sv | grep -v "^${PKG}$" | sort)
+VLT=()
+[[ -n "$(ls rtl/*.vlt 2>/dev/null)" ]] && VLT=(rtl/*.vlt)
+SYNTH_WIDTH=${SYNTH_WIDTH:-16}
+SYNTH_EDGES=${SYNTH_EDGES:-4}
+LOG=$(mktemp -d)
+trap 'rm -rf "$LOG"' EXIT
+
+echo "== verilator --lint-only -Wall"
+verilator --lint-only -Wall --top-module watkins_gouraud_top "${VLT[@]}" "$PKG" "${SRCS[@]}"
+# Every module on its own as well, so parameters the top does not use are checked too.
+for f in "${SRCS[@]}"; do
+  m=$(basename "$f" .sv)
+  verilator --lint-only -Wall --top-module "$m" "${VLT[@]}" "$PKG" "${SRCS[@]}"
+done
+echo "   clean"
+
+yosys_check() {  # $1: label, $2: script
+  local out="$LOG/$1.log"
+  if ! yosys -q -l "$out" -p "$2" >/dev/null 2>&1; then
+    echo "yosys ($1) failed:"; grep -iE "error|warning" "$out" | head -40; exit 1
+  fi
+  local bad
+  bad=$(grep -iE "^(warning|error)" "$out" | grep -vE "Replacing memory .* with list of registers|^Warnings: [0-9]+ unique messages" || true)
+  if [[ -n "$bad" ]]; then echo "yosys ($1) warnings:"; echo "$bad" | head -40; exit 1; fi
+}
+
+READ="read_verilog -sv $PKG ${SRCS[*]}"
+echo "== yosys read + hierarchy/proc/check (default parameters)"
+yosys_check elab "$READ; hierarchy -check -top watkins_gouraud_top; proc; check -assert"
+echo "   clean"
+
+if [[ "${1:-}" != "--no-synth" ]]; then
+  echo "== yosys synth_ice40 (MaxWidth=$SYNTH_WIDTH, MaxActiveEdges=$SYNTH_EDGES)"
+  yosys_check synth "$READ; hierarchy -check -top watkins_gouraud_top -chparam MaxWidth $SYNTH_WIDTH -chparam MaxActiveEdges $SYNTH_EDGES; synth_ice40 -top watkins_gouraud_top; check -assert; tee -o $LOG/stat.txt stat"
+  sed -n '/Number of cells/,/^$/p' "$LOG/stat.txt" | head -30
+  echo "   clean"
+fi
+echo "lint.sh: OK"

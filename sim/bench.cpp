@@ -1,0 +1,66 @@
+// watkins_bench: speed of the bit-exact model and of the double reference on one scene.
+// Repeats each render for at least --seconds and prints the best rate (a benchmark, not a test).
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cstdio>
+
+#include "float_reference.hpp"
+#include "gouraud_pipeline.hpp"
+#include "prepare.hpp"
+#include "scene.hpp"
+
+namespace {
+
+template <class F>
+double best_seconds(F&& body, double budget) {
+  using Clock = std::chrono::steady_clock;
+  double best = 1e300, spent = 0;
+  int runs = 0;
+  while (spent < budget || runs < 3) {
+    const auto t0 = Clock::now();
+    body();
+    const double s = std::chrono::duration<double>(Clock::now() - t0).count();
+    best = std::min(best, s);
+    spent += s;
+    ++runs;
+  }
+  return best;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"watkins_bench: fragments per second of the model and the double reference"};
+  std::string scene_path;
+  double budget = 1.0;
+  app.add_option("scene", scene_path, "scene file (default: the embedded default scene)");
+  app.add_option("--seconds", budget, "time budget per measurement")->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+  try {
+    using namespace watkins;
+    const BuiltScene scene = scene_path.empty()
+        ? load_scene_text(default_scene_text(), "<default scene>", ".")
+        : load_scene(scene_path);
+    const PreparedScene prepared = prepare(scene, PrepareOptions{1 << 20});
+    GouraudPipeline pipe(1 << 20);
+    pipe.render(prepared);
+    const long long fragments = pipe.stats().fragments;
+    const double pixels = double(scene.width) * scene.height;
+    const double t_prep = best_seconds([&] { prepare(scene, PrepareOptions{1 << 20}); }, budget);
+    const double t_fixed = best_seconds([&] { pipe.render(prepared); }, budget);
+    const double t_float = best_seconds([&] { render_float_reference(scene); }, budget);
+    std::printf("scene               %s (%dx%d, %zu polygons, %zu edge records, %lld fragments)\n",
+                scene.name.c_str(), scene.width, scene.height, scene.polygons.size(),
+                prepared.edges.size(), fragments);
+    std::printf("scene preparation   %.3f ms\n", t_prep * 1e3);
+    std::printf("fixed-point model   %.3f ms/frame  %.2f M fragments/s  %.2f M pixels/s\n", t_fixed * 1e3,
+                fragments / t_fixed / 1e6, pixels / t_fixed / 1e6);
+    std::printf("double reference    %.3f ms/frame  %.2f M fragments/s\n", t_float * 1e3,
+                fragments / t_float / 1e6);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "watkins_bench: error: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

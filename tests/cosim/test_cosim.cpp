@@ -1,0 +1,293 @@
+// Co-simulation: the Verilated watkins_gouraud_top (testbench/rtl_bench.hpp) must produce the bit-exact
+// model's image, pixel for pixel, under random input gaps and output back-pressure.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "gouraud_pipeline.hpp"
+#include "prepare.hpp"
+#include "rtl_bench.hpp"
+#include "scene.hpp"
+
+using namespace watkins;
+using namespace watkins::tb;
+
+namespace {
+
+// Everything a failing run needs to be reproduced and diagnosed, in one message.
+std::string report(const std::string& what, const RtlOptions& o, const RtlResult& r) {
+  return what + " (seed " + std::to_string(o.seed) + ", gap " + std::to_string(o.gap) + ", stall " +
+         std::to_string(o.stall) + ", stall burst " + std::to_string(o.stall_burst) + "):\n" + r.summary();
+}
+
+void expect_clean(const std::string& what, const RtlOptions& o, const RtlResult& r) {
+  EXPECT_TRUE(r.ok()) << report(what, o, r);
+  EXPECT_EQ(r.mismatches, 0) << report(what, o, r);
+  EXPECT_FALSE(r.hang) << report(what, o, r);
+  EXPECT_FALSE(r.overflow) << what;
+  EXPECT_TRUE(r.model_error.empty()) << r.model_error;
+}
+
+// ---------------------------------------------------------------- random scenes
+ScreenVertex random_vertex(std::mt19937_64& rng, double cx, double cy, double radius, double w, double h) {
+  std::uniform_real_distribution<double> u(0, 1);
+  ScreenVertex v;
+  const double a = u(rng) * 2 * M_PI, d = radius * (0.3 + 0.7 * u(rng));
+  v.x = std::clamp(cx + d * std::cos(a), -0.5 * w, 1.5 * w);
+  v.y = std::clamp(cy + d * std::sin(a), -0.5 * h, 1.5 * h);
+  v.depth = u(rng) * 0.999;
+  for (double& c : v.rgb) c = u(rng) * 255;
+  return v;
+}
+
+// Triangles and convex quads of random size, partly off screen, overlapping and (random per-vertex
+// depths) interpenetrating; now and then vertices on pixel centres and horizontal edges.
+BuiltScene random_scene(std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  BuiltScene s;
+  s.name = "random scene " + std::to_string(seed);
+  s.width = 8 + static_cast<int>(rng() % 89);   // 8..96
+  s.height = 8 + static_cast<int>(rng() % 57);  // 8..64
+  for (double& c : s.background) c = static_cast<double>(rng() % 256);
+  const int polys = 1 + static_cast<int>(rng() % 12);
+  for (int p = 0; p < polys; ++p) {
+    const double cx = (u(rng) * 1.4 - 0.2) * s.width, cy = (u(rng) * 1.4 - 0.2) * s.height;
+    const double radius = (0.05 + u(rng) * 0.7) * std::max(s.width, s.height);
+    ScreenPolygon poly;
+    poly.object = p;
+    const bool quad = rng() % 2;
+    if (quad) {  // convex: four points on an ellipse in angle order
+      std::vector<double> ang(4);
+      for (double& a : ang) a = u(rng) * 2 * M_PI;
+      std::sort(ang.begin(), ang.end());
+      const double rx = radius * (0.3 + 0.7 * u(rng)), ry = radius * (0.3 + 0.7 * u(rng));
+      for (double a : ang) {
+        ScreenVertex v = random_vertex(rng, cx, cy, radius, s.width, s.height);
+        v.x = cx + rx * std::cos(a);
+        v.y = cy + ry * std::sin(a);
+        poly.v.push_back(v);
+      }
+    } else {
+      for (int k = 0; k < 3; ++k) poly.v.push_back(random_vertex(rng, cx, cy, radius, s.width, s.height));
+    }
+    if (rng() % 5 == 0) {  // snap to pixel centres: edges through centres, horizontal edges
+      for (ScreenVertex& v : poly.v) {
+        v.x = std::floor(v.x) + 0.5;
+        v.y = std::floor(v.y) + 0.5;
+      }
+      if (poly.v.size() >= 2) poly.v[1].y = poly.v[0].y;
+    }
+    double a2 = 0;
+    for (std::size_t k = 0; k < poly.v.size(); ++k) {
+      const ScreenVertex &a = poly.v[k], &b = poly.v[(k + 1) % poly.v.size()];
+      a2 += a.x * b.y - b.x * a.y;
+    }
+    if (std::fabs(a2) < 1e-6) continue;
+    s.polygons.push_back(poly);
+  }
+  return s;
+}
+
+// Stall patterns cycle through: none, light random, heavy random, all-stall bursts.
+RtlOptions random_options(std::uint64_t seed) {
+  RtlOptions o;
+  o.seed = seed;
+  switch (seed % 4) {
+    case 0: o.gap = 0; o.stall = 0; break;
+    case 1: o.gap = 0.1; o.stall = 0.1; break;
+    case 2: o.gap = 0.5; o.stall = 0.6; break;
+    case 3: o.gap = 0.3; o.stall = 0.05; o.stall_burst = 200; break;
+  }
+  return o;
+}
+
+class RandomScenes : public ::testing::TestWithParam<int> {};
+
+constexpr int ScenesPerBatch = 25;
+
+TEST_P(RandomScenes, MatchTheModel) {
+  for (int k = 0; k < ScenesPerBatch; ++k) {
+    const std::uint64_t seed = 1000 + static_cast<std::uint64_t>(GetParam()) * ScenesPerBatch + k;
+    const BuiltScene scene = random_scene(seed);
+    PreparedScene prepared;
+    try {
+      prepared = prepare(scene);
+    } catch (const SceneError& e) {  // too many active edges for the hardware: not a co-simulation case
+      continue;
+    }
+    const RtlOptions o = random_options(seed);
+    const RtlResult r = run_rtl(prepared, o);
+    expect_clean(scene.name + " (" + std::to_string(scene.width) + "x" + std::to_string(scene.height) + ", " +
+                     std::to_string(scene.polygons.size()) + " polygons)",
+                 o, r);
+    if (!r.ok()) return;  // one report per batch is enough
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Batches, RandomScenes, ::testing::Range(0, 8));  // 8 x 25 = 200 scenes
+
+// ---------------------------------------------------------------- shipped scenes
+std::vector<std::string> shipped_scenes() {
+  std::vector<std::string> v;
+  const std::filesystem::path dir = WATKINS_SOURCE_DIR "/scenes";
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator(dir, ec))
+    if (e.path().extension() == ".json") v.push_back(e.path().filename().string());
+  std::sort(v.begin(), v.end());
+  if (v.empty()) v.push_back("<none>");
+  return v;
+}
+
+class ShippedScenes : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ShippedScenes, MatchTheModelUnderGapsAndStalls) {
+  if (GetParam() == "<none>") GTEST_SKIP() << "no scenes/*.json yet";
+  const std::string path = WATKINS_SOURCE_DIR "/scenes/" + GetParam();
+  const BuiltScene scene = load_scene(path);
+  PreparedScene prepared;
+  try {
+    prepared = prepare(scene);
+  } catch (const SceneError& e) {
+    GTEST_SKIP() << "the scene does not fit the hardware: " << e.what();
+  }
+  if (prepared.width > rtl_max_width()) GTEST_SKIP() << "wider than the RTL line buffer";
+  const Image model = GouraudPipeline().render(prepared);
+  // Full speed first, then gaps and stalls, then all-stall bursts.
+  const RtlOptions patterns[] = {{1, 0.0, 0.0}, {2, 0.25, 0.3}, {3, 0.1, 0.02, 300}};
+  for (const RtlOptions& o : patterns) {
+    const RtlResult r = run_rtl(prepared, o, &model);
+    expect_clean(GetParam(), o, r);
+    if (!r.ok()) return;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, ShippedScenes, ::testing::ValuesIn(shipped_scenes()),
+                         [](const ::testing::TestParamInfo<std::string>& i) {
+                           std::string n = i.param;
+                           for (char& c : n)
+                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                           return n;
+                         });
+
+// ---------------------------------------------------------------- corner cases
+BuiltScene two_triangles(int w, int h, double shift) {
+  BuiltScene s;
+  s.name = "two triangles";
+  s.width = w;
+  s.height = h;
+  s.background[0] = 7;
+  s.background[1] = 70;
+  s.background[2] = 170;
+  ScreenPolygon a, b;
+  a.v = {{1 + shift, 1, 0.2, 0, {255, 0, 0}}, {w - 2.0, 3 + shift, 0.6, 0, {0, 255, 0}}, {4, h - 1.5, 0.9, 0, {0, 0, 255}}};
+  b.v = {{w - 1.0, 1, 0.7, 0, {250, 250, 0}}, {w * 0.6, h - 1.0, 0.1, 0, {0, 250, 250}}, {2 + shift, h * 0.4, 0.5, 0, {250, 0, 250}}};
+  s.polygons = {a, b};
+  return s;
+}
+
+TEST(Cosim, EmptyFrameIsAllBackground) {
+  BuiltScene s;
+  s.name = "empty";
+  s.width = 13;
+  s.height = 5;
+  s.background[0] = 1;
+  s.background[1] = 2;
+  s.background[2] = 3;
+  const PreparedScene p = prepare(s);
+  ASSERT_TRUE(p.edges.empty());
+  const RtlOptions o{5, 0.3, 0.3};
+  const RtlResult r = run_rtl(p, o);
+  expect_clean("empty frame", o, r);
+  EXPECT_EQ(r.pixels, 13 * 5);
+}
+
+TEST(Cosim, FramesBackToBack) {
+  // Same size: the second frame's edges follow the first frame's end-of-frame beat at once;
+  // then a frame of another size (the source waits for the drain before changing width_i).
+  const PreparedScene a = prepare(two_triangles(40, 30, 0.0));
+  const PreparedScene b = prepare(two_triangles(40, 30, 3.3));
+  const PreparedScene c = prepare(two_triangles(23, 41, 1.7));
+  for (const RtlOptions& o : {RtlOptions{11, 0.0, 0.0}, RtlOptions{12, 0.3, 0.4}, RtlOptions{13, 0.05, 0.05, 50}}) {
+    const RtlResult r = run_rtl_frames({&a, &b, &a, &c, &b}, o);
+    expect_clean("five frames back to back", o, r);
+    ASSERT_EQ(r.frames.size(), 5u);
+    for (const RtlFrame& f : r.frames) EXPECT_TRUE(f.complete);
+    EXPECT_EQ(r.pixels, 4 * 40 * 30 + 23 * 41);
+    // With no gaps the next frame's first edge goes in within a few cycles of the previous
+    // frame's last pixel (the RTL may or may not overlap frames; it must not idle between them).
+    if (o.gap == 0 && o.stall == 0)
+      for (int f = 1; f < 3; ++f)
+        EXPECT_LE(r.frames[f].first_edge_cycle, r.frames[f - 1].last_pixel_cycle + 4)
+            << "frame " << f << " did not follow frame " << f - 1 << " at once";
+  }
+  // And separate runs one after another (no reset in between) still match.
+  for (int k = 0; k < 3; ++k) {
+    const RtlOptions o{static_cast<std::uint64_t>(20 + k), 0.2, 0.2};
+    expect_clean("consecutive run " + std::to_string(k), o, run_rtl(k % 2 ? b : a, o));
+  }
+}
+
+TEST(Cosim, ActiveEdgeListOverflowSetsOverflowO) {
+  // 40 thin slivers crossing scan line 10: 80 active edges > MaxActiveEdges (64).
+  BuiltScene s;
+  s.name = "overflow";
+  s.width = 96;
+  s.height = 20;
+  for (int k = 0; k < 40; ++k) {
+    const double x = 1 + k * 2.3;
+    ScreenPolygon p;
+    p.v = {{x, 2, 0.5, 0, {200, 100, 50}}, {x + 1.2, 18, 0.5, 0, {200, 100, 50}}, {x + 0.4, 18, 0.5, 0, {50, 100, 200}}};
+    s.polygons.push_back(p);
+  }
+  PrepareOptions popt;
+  popt.max_active_edges = 1 << 20;  // bypass the software check: the hardware must notice
+  const PreparedScene p = prepare(s, popt);
+  ASSERT_GT(p.needs.max_active_edges, fmt::MaxActiveEdges);
+  RtlOptions o;
+  o.compare = false;
+  o.watchdog = 20000;  // the RTL may drop edges or stop; either way overflow_o must be set
+  const RtlResult r = run_rtl(p, o);
+  EXPECT_TRUE(r.overflow) << "overflow_o never rose with " << p.needs.max_active_edges << " active edges\n"
+                          << r.summary();
+  // The bench resets after an overflow: a normal frame afterwards must be clean again.
+  const PreparedScene ok = prepare(two_triangles(32, 24, 0.5));
+  const RtlOptions o2{31, 0.1, 0.1};
+  expect_clean("frame after an overflow", o2, run_rtl(ok, o2));
+}
+
+TEST(Cosim, WatchdogNamesTheStuckInterface) {
+  // A sink that never takes a pixel: the run must end as a hang that names the pixel output.
+  const PreparedScene p = prepare(two_triangles(16, 8, 0.0));
+  RtlOptions o;
+  o.stall = 1.0;
+  o.watchdog = 2000;
+  const RtlResult r = run_rtl(p, o);
+  EXPECT_TRUE(r.hang);
+  EXPECT_NE(r.hang_reason.find("pixel output blocked"), std::string::npos) << r.hang_reason;
+  // And the bench recovers (reset) for the next run.
+  const RtlOptions o2{41, 0.0, 0.0};
+  expect_clean("frame after a hang", o2, run_rtl(p, o2));
+}
+
+TEST(Cosim, TraceWritesAnFst) {
+  const PreparedScene p = prepare(two_triangles(12, 6, 0.0));
+  const std::string path = (std::filesystem::temp_directory_path() / "watkins_cosim_trace.fst").string();
+  std::filesystem::remove(path);
+  RtlOptions o;
+  o.trace_path = path;
+  expect_clean("traced frame", o, run_rtl(p, o));
+  ASSERT_TRUE(std::filesystem::exists(path));
+  EXPECT_GT(std::filesystem::file_size(path), 100u);
+  // A second traced run in the same process works as well.
+  expect_clean("second traced frame", o, run_rtl(p, o));
+  EXPECT_GT(std::filesystem::file_size(path), 100u);
+  std::filesystem::remove(path);
+}
+
+}  // namespace
