@@ -153,6 +153,9 @@ module watkins_gouraud_top #(
   a_pixel_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
     pixel_valid_o && !pixel_ready_i |=> pixel_valid_o
       && $stable({pixel_rgb_o, pixel_covered_o, pixel_last_o}));
+  a_frame_size: assert property (@(posedge clk_i) disable iff (!rst_ni)
+    start |-> width_i != '0 && width_i <= LB'(MaxWidth) && height_i != '0
+      && height_i <= LB'(watkins_pkg::MaxScreen));
   a_overflow_sticky: assert property (@(posedge clk_i) disable iff (!rst_ni)
     overflow_o |=> overflow_o);
   c_frame_done: cover property (@(posedge clk_i) disable iff (!rst_ni)

@@ -201,7 +201,7 @@ class FrameDriver {
       }
       held = o.pixel_valid && !ready;
       held_out = o;
-      pins_.posedge(tick_time(c) + 5);
+      pins_.posedge(tick_time(c) + 5000);
       ++cycle_;
 
       if (edge_fire) {
@@ -286,7 +286,8 @@ class FrameDriver {
   }
 
  private:
-  std::uint64_t tick_time(long long c) const { return static_cast<std::uint64_t>(c) * 10; }
+  // Trace time in ps (Verilator's default time unit): a 10 ns clock, rising edge at +5 ns.
+  std::uint64_t tick_time(long long c) const { return static_cast<std::uint64_t>(c) * 10000; }
 
   void reset(const EdgeWords& poison) {
     pins_.reset_pin(false);
@@ -294,7 +295,7 @@ class FrameDriver {
     pins_.ready_pin(false);
     for (int i = 0; i < ResetCycles; ++i) {
       pins_.settle(tick_time(cycle_));
-      pins_.posedge(tick_time(cycle_) + 5);
+      pins_.posedge(tick_time(cycle_) + 5000);
       ++cycle_;
     }
     pins_.reset_pin(true);
@@ -338,7 +339,7 @@ class FrameDriver {
 
   Pins& pins_;
   bool need_reset_ = true;
-  long long cycle_ = 0;  // cycles since the bench was built (trace time = 10 units per cycle)
+  long long cycle_ = 0;  // cycles since the bench was built
   std::uint32_t cur_w_ = 0, cur_h_ = 0, cur_bg_ = 0;
 };
 

@@ -275,6 +275,23 @@ TEST(Cosim, WatchdogNamesTheStuckInterface) {
   expect_clean("frame after a hang", o2, run_rtl(p, o2));
 }
 
+TEST(Cosim, CheckerNamesTheFirstMismatchingPixel) {
+  // The checker itself: an expected image with two pixels changed must give exactly those two
+  // mismatches, the first one named with its (x, y) and both values.
+  const PreparedScene p = prepare(two_triangles(20, 10, 0.0));
+  Image want = GouraudPipeline().render(p);
+  want.at(7, 3)[1] ^= 0x10;
+  want.covered[std::size_t(9) * 20 + 19] ^= 1;
+  const RtlOptions o{51, 0.2, 0.2};
+  const RtlResult r = run_rtl(p, o, &want);
+  EXPECT_EQ(r.mismatches, 2);
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(r.first_mismatch.find("pixel output: frame 0 pixel (7, 3)"), std::string::npos) << r.first_mismatch;
+  EXPECT_NE(r.first_mismatch.find("model rgb"), std::string::npos) << r.first_mismatch;
+  EXPECT_TRUE(r.frames.at(0).complete);
+  EXPECT_FALSE(r.hang);
+}
+
 TEST(Cosim, TraceWritesAnFst) {
   const PreparedScene p = prepare(two_triangles(12, 6, 0.0));
   const std::string path = (std::filesystem::temp_directory_path() / "watkins_cosim_trace.fst").string();
