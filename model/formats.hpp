@@ -28,7 +28,10 @@
   X(AlphaBits, 24, "fraction bits of the prestep coefficient alpha0 = (x_c - X_E)/(X_F - X_E)")  \
   X(PolyIdBits, 16, "polygon id bits: at most 65536 polygons per frame")                         \
   X(EdgeIdBits, 18, "edge id bits: position in the edge stream (4 edges per polygon at most)")   \
-  X(MaxActiveEdges, 64, "default capacity of the active-edge list")
+  X(MaxActiveEdges, 64, "default capacity of the active-edge list")                              \
+  X(NormalInBits, 18, "normalizer input: interpolated Nx, Ny, Nz, signed, FracBits fraction bits")  \
+  X(UnitBits, 16, "unit normal component out of the normalizer: signed Q2.14")                   \
+  X(UnitFracBits, 14, "fraction bits of a unit normal component (1.0 = 16384)")
 
 namespace watkins::fmt {
 #define WATKINS_DECLARE_FORMAT(name, value, comment) constexpr int name = value;

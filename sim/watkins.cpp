@@ -71,7 +71,7 @@ int run_rtl_mode(const RtlArgs& a, const watkins::PreparedScene& prepared, watki
   opt.trace_path = a.trace;
   const tb::RtlResult r = tb::run_rtl(prepared, opt, &image);
   std::printf("rtl           %s\n", tb::rtl_description().c_str());
-  std::printf("rtl cycles    %lld (first edge beat to last pixel; gap %.2f, stall %.2f, seed %llu)\n", r.cycles,
+  std::printf("rtl cycles    %lld (first edge beat offered to last pixel; gap %.2f, stall %.2f, seed %llu)\n", r.cycles,
               a.gap, a.stall, a.seed);
   std::printf("rtl pixels    %lld, fragments %lld (model), %.3f fragments/cycle, %.3f pixels/cycle\n", r.pixels,
               fragments, r.cycles ? double(fragments) / r.cycles : 0.0, r.cycles ? double(r.pixels) / r.cycles : 0.0);

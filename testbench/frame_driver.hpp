@@ -151,6 +151,7 @@ class FrameDriver {
             frame_pins_set = true;
           }
           presenting = true;
+          if (starts) r.frames[sf].first_edge_cycle = cycle_ - start_cycle;  // the RTL starts the frame here
           const bool eof = sb == beats[sf].size();
           pins_.edge_pins(true, eof, eof ? poison : beats[sf][sb]);
         }
@@ -205,7 +206,6 @@ class FrameDriver {
       ++cycle_;
 
       if (edge_fire) {
-        if (sb == 0) r.frames[sf].first_edge_cycle = c - start_cycle;
         presenting = false;
         if (++sb > beats[sf].size()) {
           ++sf;

@@ -30,9 +30,10 @@ struct RtlOptions {
 struct RtlFrame {
   Image image;                     // as the RTL produced it (background where pixels are missing)
   long long pixels = 0;            // pixels received
-  long long first_edge_cycle = -1; // cycle of the frame's first edge beat (or its end-of-frame beat)
+  long long first_edge_cycle = -1; // cycle the frame's first beat is offered (edge_valid_i rises:
+                                   // the RTL starts the frame then and may emit empty lines early)
   long long last_pixel_cycle = -1; // cycle of its last pixel
-  long long cycles() const {       // frame cycles: first edge beat to last pixel, inclusive
+  long long cycles() const {       // frame cycles: first edge beat offered to last pixel, inclusive
     return last_pixel_cycle < 0 || first_edge_cycle < 0 ? 0 : last_pixel_cycle - first_edge_cycle + 1;
   }
   long long mismatches = 0;        // pixels whose RGB or coverage differ from the model
@@ -41,7 +42,7 @@ struct RtlFrame {
 
 struct RtlResult {
   std::vector<RtlFrame> frames;
-  long long cycles = 0;         // first edge beat of the first frame to last pixel of the last frame
+  long long cycles = 0;         // first beat offered of the first frame to last pixel of the last frame
   long long sim_cycles = 0;     // every clock of the run, including reset and drain
   long long pixels = 0;
   long long mismatches = 0;
