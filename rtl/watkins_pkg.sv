@@ -25,6 +25,16 @@ package watkins_pkg;
   localparam int NormalInBits = 18;  // normalizer input: interpolated Nx, Ny, Nz, signed, FracBits fraction bits
   localparam int UnitBits = 16;  // unit normal component out of the normalizer: signed Q2.14
   localparam int UnitFracBits = 14;  // fraction bits of a unit normal component (1.0 = 16384)
+  localparam int RsqrtMantBits = 20;  // normalizer: bits of m' in [1/4,1) fed to 1/sqrt (low bits truncated)
+  localparam int RsqrtIndexBits = 10;  // normalizer: top bits of m' indexing the 1/sqrt seed table (768 rows)
+  localparam int RsqrtSeedBits = 14;  // normalizer: fraction bits of the seed y0 ~ 1/sqrt(m') in [1,2)
+  localparam int RsqrtNrBits = 24;  // normalizer: fraction bits of m'*y0^2 in the Newton-Raphson step
+  localparam int RsqrtBits = 22;  // normalizer: fraction bits of the refined y ~ 1/sqrt(m') in [1,2]
+  localparam int PhongDotBits = 24;  // phong: fraction bits of cos(i) = N.L, N.E and L.E
+  localparam int PhongPowBits = 20;  // phong: fraction bits of cos(s) and cos(s)^n, both in [0,1]
+  localparam int MaterialBits = 9;  // phong: unsigned width of d and W (1.0 = 2^MaterialFracBits)
+  localparam int MaterialFracBits = 8;  // phong: fraction bits of d and W
+  localparam int ShininessBits = 8;  // phong: unsigned width of the specular exponent n (0..255)
   localparam int MaxScreen = 4096;  // 2^ScreenBits
   localparam int ShadeMax = 255;  // largest 8-bit level
   localparam int SubPixelToFrac = 12;  // FracBits - SubPixelBits

@@ -1,0 +1,148 @@
+// rsqrt_unit: y ~ 1/sqrt(m') for m = 2^(4-2j) * m', m' in [1/4, 1) (the normalizer's "very fast
+// mechanism for obtaining square roots", Phong 1975 p. 317): even-shift normalization, a 768-row
+// seed table, one Newton-Raphson step. Bit-exact twin of Normalizer::normalize_mantissa and
+// Normalizer::rsqrt_mant (model/normalizer.hpp). Latency 5, every stage registered; no
+// handshake: en_i advances every stage at once (the parent owns valid/ready and the stall).
+module rsqrt_unit #(
+  localparam int MBits = 2 * watkins_pkg::NormalInBits,  // m = Nx^2 + Ny^2 + Nz^2, exact
+  localparam int F     = watkins_pkg::RsqrtBits
+) (
+  input  logic             clk_i,
+  input  logic             en_i,    // advance the whole pipe (global stall when low)
+  input  logic [MBits-1:0] m_i,     // squared length, 2*FracBits fraction bits
+  output logic [F+1:0]     y_o,     // 1/sqrt(m'c) with F fraction bits, in [1, 2]; 0 if null_o
+  output logic [4:0]       j_o,     // 1/sqrt(m) = y * 2^(j-2); 0 if null_o
+  output logic             null_o   // m == 0
+);
+  localparam int W   = watkins_pkg::RsqrtMantBits;   // mantissa bits of m'
+  localparam int P   = watkins_pkg::RsqrtIndexBits;  // seed index bits
+  localparam int T   = watkins_pkg::RsqrtSeedBits;   // seed fraction bits
+  localparam int G   = watkins_pkg::RsqrtNrBits;     // fraction bits of m'c * y0^2
+  localparam int Rows = (1 << P) - (1 << (P - 2));   // m' >= 1/4: rows 2^(P-2) .. 2^P-1
+  localparam int Sh4 = (W + 1) + 2 * T - G;          // m'c * y0^2 down to G fraction bits
+  localparam int Sh5 = T + G + 1 - F;                // y0 * u / 2 down to F fraction bits
+
+  // floor(sqrt(v)) bit by bit, exactly Normalizer::isqrt.
+  function automatic logic [63:0] isqrt(input logic [63:0] v);
+    logic [63:0] rem, root, b;
+    rem  = v;
+    root = '0;
+    for (int i = 31; i >= 0; i--) begin
+      b = 64'd1 << (2 * i);
+      if (rem >= root + b) begin
+        rem  = rem - (root + b);
+        root = (root >> 1) + b;
+      end else begin
+        root = root >> 1;
+      end
+    end
+    isqrt = root;
+  endfunction
+
+  // Seed row idx: round(2^T / sqrt(c)), c = (2 idx + 1) / 2^(P+1) the centre of the row's
+  // interval of m' (Normalizer::seed): round(sqrt(x)) = (floor(sqrt(4x)) + 1) / 2.
+  /* verilator lint_off UNUSEDSIGNAL */
+  function automatic logic [T:0] seed_fn(input int idx);
+    logic [63:0] q, r;  // r < 2^(T+1): its top bits are zero
+    q = (64'd1 << (2 * T + P + 3)) / 64'(2 * idx + 1);
+    r = (isqrt(q) + 64'd1) >> 1;
+    seed_fn = r[T:0];
+  endfunction
+  /* verilator lint_on UNUSEDSIGNAL */
+
+  // The ROM: one constant per row, evaluated at elaboration (yosys and Verilator alike).
+  logic [Rows*(T+1)-1:0] seed_rom;  // row r at [r*(T+1) +: T+1]
+  for (genvar g = 0; g < Rows; g++) begin : g_seed
+    localparam [T:0] Seed = seed_fn(g + (1 << (P - 2)));
+    assign seed_rom[g*(T+1) +: T+1] = Seed;
+  end
+
+  // ---- stage 1: even-shift normalization m' = (m << 2j) / 2^MBits in [1/4, 1) -------------
+  logic [5:0]       lead;
+  logic [4:0]       j1;
+  /* verilator lint_off UNUSEDSIGNAL */
+  logic [MBits-1:0] shifted;  // only the top W bits are kept (truncation, as the model)
+  /* verilator lint_on UNUSEDSIGNAL */
+  always_comb begin
+    lead = '0;
+    for (int i = 0; i < MBits; i++) if (m_i[i]) lead = 6'(i);
+    j1      = (m_i == '0) ? 5'd0 : 5'((6'(MBits - 1) - lead) >> 1);
+    shifted = m_i << {j1, 1'b0};
+  end
+
+  logic [W-1:0] mant_q;
+  logic [4:0]   j_q   [2:5];
+  logic         nul_q [2:5];  // stage-1 result travels as index 1 (mant_q) / j_q[2] onwards
+  logic [4:0]   j1_q;
+  logic         nul1_q;
+  always_ff @(posedge clk_i) if (en_i) begin
+    mant_q <= shifted[MBits-1 -: W];  // 0 for m = 0: reads ROM default 0 below
+    j1_q   <= j1;
+    nul1_q <= (m_i == '0);
+  end
+
+  // ---- stage 2: seed y0 ---------------------------------------------------------------------
+  logic [P-1:0] idx;
+  logic [T:0]   y0;
+  logic [T:0]   y0_q  [2:4];
+  logic [W:0]   mc_q  [2:3];  // m'c = mant + half an ulp: {mant, 1}, W+1 fraction bits
+  assign idx = mant_q[W-1 -: P];
+  logic [P-1:0] row;
+  assign row = idx - P'(1 << (P - 2));
+  assign y0  = (idx >= P'(1 << (P - 2))) ? seed_rom[row*(T+1) +: T+1] : '0;
+  always_ff @(posedge clk_i) if (en_i) begin
+    y0_q[2]  <= y0;
+    mc_q[2]  <= {mant_q, 1'b1};
+    j_q[2]   <= j1_q;
+    nul_q[2] <= nul1_q;
+  end
+
+  // ---- stage 3: y0^2, exact (2T fraction bits) --------------------------------------------
+  logic [2*T+1:0] y0sq_q;
+  always_ff @(posedge clk_i) if (en_i) begin
+    y0sq_q   <= (2*T+2)'(y0_q[2]) * (2*T+2)'(y0_q[2]);
+    y0_q[3]  <= y0_q[2];
+    mc_q[3]  <= mc_q[2];
+    j_q[3]   <= j_q[2];
+    nul_q[3] <= nul_q[2];
+  end
+
+  // ---- stage 4: u = 3 - round(m'c * y0^2), G fraction bits (|m'c y0^2 - 1| < 2^-9) ---------
+  localparam int PW4 = (W + 1) + (2 * T + 2) + 1;  // product plus one bit for the rounding add
+  logic [PW4-1:0] prod4;
+  logic [G+1:0]   u_q;
+  /* verilator lint_off UNUSEDSIGNAL */
+  logic [PW4-1:0] t4;  // m'c * y0^2 < 2: the top bits are zero
+  /* verilator lint_on UNUSEDSIGNAL */
+  always_comb begin
+    prod4 = PW4'(mc_q[3]) * PW4'(y0sq_q);
+    t4    = (prod4 + (PW4'(1) << (Sh4 - 1))) >> Sh4;
+  end
+  always_ff @(posedge clk_i) if (en_i) begin
+    u_q      <= (G+2)'(3 << G) - t4[G+1:0];
+    y0_q[4]  <= y0_q[3];
+    j_q[4]   <= j_q[3];
+    nul_q[4] <= nul_q[3];
+  end
+
+  // ---- stage 5: y = round(y0 * u / 2), F fraction bits: y <- y (3 - m' y^2) / 2 ------------
+  localparam int PW5 = (T + 1) + (G + 2) + 1;
+  logic [PW5-1:0] prod5;
+  /* verilator lint_off UNUSEDSIGNAL */
+  logic [PW5-1:0] y5;  // y <= 2: the top bits are zero
+  /* verilator lint_on UNUSEDSIGNAL */
+  logic [F+1:0]   y_q;
+  always_comb begin
+    prod5 = PW5'(y0_q[4]) * PW5'(u_q);
+    y5    = (prod5 + (PW5'(1) << (Sh5 - 1))) >> Sh5;
+  end
+  always_ff @(posedge clk_i) if (en_i) begin
+    y_q      <= y5[F+1:0];
+    j_q[5]   <= j_q[4];
+    nul_q[5] <= nul_q[4];
+  end
+
+  assign y_o    = y_q;
+  assign j_o    = j_q[5];
+  assign null_o = nul_q[5];
+endmodule
