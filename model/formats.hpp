@@ -31,7 +31,17 @@
   X(MaxActiveEdges, 64, "default capacity of the active-edge list")                              \
   X(NormalInBits, 18, "normalizer input: interpolated Nx, Ny, Nz, signed, FracBits fraction bits")  \
   X(UnitBits, 16, "unit normal component out of the normalizer: signed Q2.14")                   \
-  X(UnitFracBits, 14, "fraction bits of a unit normal component (1.0 = 16384)")
+  X(UnitFracBits, 14, "fraction bits of a unit normal component (1.0 = 16384)")             \
+  X(RsqrtMantBits, 20, "normalizer: bits of m' in [1/4,1) fed to 1/sqrt (low bits truncated)")   \
+  X(RsqrtIndexBits, 10, "normalizer: top bits of m' indexing the 1/sqrt seed table (768 rows)")  \
+  X(RsqrtSeedBits, 14, "normalizer: fraction bits of the seed y0 ~ 1/sqrt(m') in [1,2)")         \
+  X(RsqrtNrBits, 24, "normalizer: fraction bits of m'*y0^2 in the Newton-Raphson step")          \
+  X(RsqrtBits, 22, "normalizer: fraction bits of the refined y ~ 1/sqrt(m') in [1,2]")           \
+  X(PhongDotBits, 24, "phong: fraction bits of cos(i) = N.L, N.E and L.E")                       \
+  X(PhongPowBits, 20, "phong: fraction bits of cos(s) and cos(s)^n, both in [0,1]")              \
+  X(MaterialBits, 9, "phong: unsigned width of d and W (1.0 = 2^MaterialFracBits)")              \
+  X(MaterialFracBits, 8, "phong: fraction bits of d and W")                                      \
+  X(ShininessBits, 8, "phong: unsigned width of the specular exponent n (0..255)")
 
 namespace watkins::fmt {
 #define WATKINS_DECLARE_FORMAT(name, value, comment) constexpr int name = value;
