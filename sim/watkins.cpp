@@ -49,7 +49,7 @@ void check_rtl_args(const RtlArgs& a, const std::string& model) {
   }
 #ifndef WATKINS_HAVE_RTL
 #ifndef WATKINS_RTL_UNAVAILABLE_REASON
-#define WATKINS_RTL_UNAVAILABLE_REASON "the testbench was not configured"
+#define WATKINS_RTL_UNAVAILABLE_REASON "configured without the RTL: -DWATKINS_RTL=OFF or no testbench/"
 #endif
   throw std::runtime_error(std::string("--rtl: this build has no RTL simulation (") +
                            WATKINS_RTL_UNAVAILABLE_REASON +

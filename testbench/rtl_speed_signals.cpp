@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <ctime>
 #include <vector>
 
 #include <systemc.h>
@@ -141,14 +142,16 @@ int main(int argc, char** argv) {
     b->height.write(prepared.height);
     b->background.write((prepared.background[0] << 16) | (prepared.background[1] << 8) | prepared.background[2]);
     const auto t0 = std::chrono::steady_clock::now();
+    const std::clock_t cpu0 = std::clock();
     sc_start();
+    const double cpu = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const double cycles = b->done_at.to_seconds() / 10e-9;
     std::printf("harness       SystemC per-signal bench (sc_clock, SC_METHOD source and sink)\n");
     std::printf("scene         %s %dx%d, %zu edge records\n", scene.name.c_str(), prepared.width,
                 prepared.height, prepared.edges.size());
-    std::printf("speed         %.0f cycles/s over %d frames (%.0f cycles in %.3f s)%s\n", cycles / wall, repeat,
-                cycles, wall, b->sink_frame == repeat && !b->bad_last ? "" : "  [FRAMES INCOMPLETE OR BAD pixel_last]");
+    std::printf("speed         %.0f cycles/s over %d frames (%.0f cycles in %.3f s wall, %.3f s CPU: %.0f cycles/CPU s)%s\n",
+                cycles / wall, repeat, cycles, wall, cpu, cpu > 0 ? cycles / cpu : 0.0, b->sink_frame == repeat && !b->bad_last ? "" : "  [FRAMES INCOMPLETE OR BAD pixel_last]");
     return b->sink_frame == repeat && !b->bad_last ? 0 : 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "watkins_rtl_speed_signals: error: %s\n", e.what());
