@@ -6,6 +6,12 @@
 namespace watkins {
 
 Image GouraudPipeline::render(const PreparedScene& scene, const FragmentObserver& observe) {
+  PipelineObserver o;
+  o.fragment = observe;
+  return render(scene, o);
+}
+
+Image GouraudPipeline::render(const PreparedScene& scene, const PipelineObserver& observe) {
   stats_ = PipelineStats{};
   Image img(scene.width, scene.height);
   ActiveEdgeList active(max_active_edges_);
@@ -21,9 +27,15 @@ Image GouraudPipeline::render(const PreparedScene& scene, const FragmentObserver
       ++stats_.edges;
     }
     stats_.max_active_edges = std::max(stats_.max_active_edges, active.size());
+    if (observe.active_edge)
+      for (const ActiveEdge& e : active.edges()) observe.active_edge(y, e);
+    if (observe.active_edges_end) observe.active_edges_end(y);
     segments.clear();
     SegmentFormer::form(active.edges(), segments);
     stats_.segments += static_cast<long long>(segments.size());
+    if (observe.segment)
+      for (const Segment& s : segments) observe.segment(y, s);
+    if (observe.segments_end) observe.segments_end(y);
     line.clear();
     for (const auto& s : segments) {
       const SpanSetup span = SegmentInterpolator::setup(s, scene.width);
@@ -33,10 +45,11 @@ Image GouraudPipeline::render(const PreparedScene& scene, const FragmentObserver
         const bool won = line.write(f);
         ++stats_.fragments;
         stats_.visible += won;
-        if (observe) observe(y, f, won);
+        if (observe.fragment) observe.fragment(y, f, won);
         SegmentInterpolator::step(span, v);
       }
     }
+    if (observe.fragments_end) observe.fragments_end(y);
     for (int x = 0; x < scene.width; ++x) {
       const auto p = line.pixel(x);
       std::copy(p.begin(), p.end(), img.at(x, y));

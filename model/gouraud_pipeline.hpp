@@ -7,6 +7,7 @@
 
 #include "image.hpp"
 #include "prepare.hpp"
+#include "active_edge_list.hpp"
 #include "scanline_buffer.hpp"
 
 namespace watkins {
@@ -22,12 +23,30 @@ struct PipelineStats {
 // Called for every fragment in pipeline order: scan line, fragment, whether it won the depth test.
 using FragmentObserver = std::function<void(int y, const Fragment& f, bool won)>;
 
+// Every internal stage stream of the pipeline, item by item, in each stage's own output order
+// (the streams of rtl/watkins_gouraud_top.sv between its stages; the co-simulation bench compares
+// them to the RTL's). Every callback is optional; per stage, the items of scan line y come first,
+// then its end-of-line marker, for y = 0 .. height-1.
+struct PipelineObserver {
+  // active_edge_list output: the active edges of line y in (X, edge id) order, channels on line y.
+  std::function<void(int y, const ActiveEdge& e)> active_edge;
+  std::function<void(int y)> active_edges_end;
+  // segment_former output: the segments of line y in closing order (empty spans included).
+  std::function<void(int y, const Segment& s)> segment;
+  std::function<void(int y)> segments_end;
+  // segment_interpolator output: the fragments of line y in order, and whether each won its pixel.
+  std::function<void(int y, const Fragment& f, bool won)> fragment;
+  std::function<void(int y)> fragments_end;
+};
+
 class GouraudPipeline {
  public:
   explicit GouraudPipeline(int max_active_edges = fmt::MaxActiveEdges)
       : max_active_edges_(max_active_edges) {}
   // Renders the frame. Throws SceneError if the active-edge list would overflow.
   Image render(const PreparedScene& scene, const FragmentObserver& observe = nullptr);
+  // The same, reporting every stage stream to `observe`.
+  Image render(const PreparedScene& scene, const PipelineObserver& observe);
   const PipelineStats& stats() const { return stats_; }
 
  private:

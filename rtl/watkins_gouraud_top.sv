@@ -56,9 +56,13 @@ module watkins_gouraud_top #(
   end
 
   // ------------------------------------------------------------ active edges
-  logic [watkins_pkg::PolyIdBits-1:0] ae_poly;
-  logic [NC*CB-1:0]                    ae_value;
-  logic                               ae_eol, ae_valid, ae_ready;
+  // The three internal stage streams are readable from the Verilated model (the co-simulation
+  // bench compares them item by item with the model's, testbench/stage_checker.hpp).
+  logic [watkins_pkg::PolyIdBits-1:0] ae_poly  /*verilator public_flat_rd*/;
+  logic [NC*CB-1:0]                    ae_value /*verilator public_flat_rd*/;
+  logic                               ae_eol   /*verilator public_flat_rd*/;
+  logic                               ae_valid /*verilator public_flat_rd*/;
+  logic                               ae_ready /*verilator public_flat_rd*/;
 
   active_edge_list #(
     .MaxActiveEdges(MaxActiveEdges)
@@ -80,11 +84,14 @@ module watkins_gouraud_top #(
   );
 
   // ------------------------------------------------------------ segments
-  logic [NC*CB-1:0]       sg_e, sg_f;
-  logic                  sg_eol, sg_valid, sg_ready;
-  // The polygon id only pairs edges; nothing downstream needs it.
+  logic [NC*CB-1:0]       sg_e     /*verilator public_flat_rd*/;
+  logic [NC*CB-1:0]       sg_f     /*verilator public_flat_rd*/;
+  logic                  sg_eol   /*verilator public_flat_rd*/;
+  logic                  sg_valid /*verilator public_flat_rd*/;
+  logic                  sg_ready /*verilator public_flat_rd*/;
+  // The polygon id only pairs edges; nothing downstream needs it (the bench reads it).
   /* verilator lint_off UNUSEDSIGNAL */
-  logic [watkins_pkg::PolyIdBits-1:0] sg_poly;
+  logic [watkins_pkg::PolyIdBits-1:0] sg_poly /*verilator public_flat_rd*/;
   /* verilator lint_on UNUSEDSIGNAL */
 
   segment_former #(
@@ -105,10 +112,12 @@ module watkins_gouraud_top #(
   );
 
   // ------------------------------------------------------------ fragments
-  logic [LB-1:0]                     fr_x;
-  logic [watkins_pkg::DepthBits-1:0] fr_depth;
-  logic [23:0]                       fr_rgb;
-  logic                              fr_eol, fr_valid, fr_ready;
+  logic [LB-1:0]                     fr_x     /*verilator public_flat_rd*/;
+  logic [watkins_pkg::DepthBits-1:0] fr_depth /*verilator public_flat_rd*/;
+  logic [23:0]                       fr_rgb   /*verilator public_flat_rd*/;
+  logic                              fr_eol   /*verilator public_flat_rd*/;
+  logic                              fr_valid /*verilator public_flat_rd*/;
+  logic                              fr_ready /*verilator public_flat_rd*/;
 
   segment_interpolator u_segment_interpolator (
     .clk_i, .rst_ni,

@@ -76,7 +76,10 @@ int run_rtl_mode(const RtlArgs& a, const watkins::PreparedScene& prepared, watki
   std::printf("rtl pixels    %lld, fragments %lld (model), %.3f fragments/cycle, %.3f pixels/cycle\n", r.pixels,
               fragments, r.cycles ? double(fragments) / r.cycles : 0.0, r.cycles ? double(r.pixels) / r.cycles : 0.0);
   std::printf("rtl vs model  %lld mismatching pixels%s%s\n", r.mismatches, r.mismatches ? "; first: " : "",
-              r.first_mismatch.c_str());
+              r.first_pixel_mismatch.c_str());
+  std::printf("rtl stages    %lld stage transfers compared, %zu diverging stage(s)%s%s\n", r.stage_items,
+              r.stage_mismatches.size(), r.stage_mismatches.empty() ? "" : "; first: ",
+              r.stage_mismatches.empty() ? "" : r.stage_mismatches.front().c_str());
   std::printf("rtl speed     %.0f simulated cycles/s (%lld cycles in %.3f s)\n", r.cycles_per_second(),
               r.sim_cycles, r.wall_seconds);
   if (r.overflow) std::printf("rtl overflow  overflow_o set at cycle %lld\n", r.overflow_cycle);

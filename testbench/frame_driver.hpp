@@ -11,10 +11,12 @@
 //   void posedge(uint64_t t);  // rising clock edge
 //   bool trace_open(const std::string& path); void trace_close();
 //   std::string stopped();     // non-empty once an RTL assertion, $stop or $finish fired
+//   const StageTaps& stage_taps();  // the internal stage streams (stage_checker.hpp)
 //
 // One clock cycle is: settle → sample → posedge. A transfer happens on the rising edge when valid
 // and ready were both high after settle (valid/ready as in AXI-Stream: a source holds valid and
-// data until the transfer; ready may come and go).
+// data until the transfer; ready may come and go). The internal stage streams are checked on the
+// same clocks (stage_checker.hpp), the pixels after them.
 #pragma once
 
 #include <chrono>
@@ -29,6 +31,7 @@
 #include "gouraud_pipeline.hpp"
 #include "rtl_bench.hpp"
 #include "scene.hpp"
+#include "stage_checker.hpp"
 
 namespace watkins::tb::detail {
 
@@ -86,8 +89,9 @@ class FrameDriver {
 
   explicit FrameDriver(Pins& pins) : pins_(pins) {}
 
+  // `stages`: the model's stage streams of every frame (empty: stages not checked).
   void run(const std::vector<const PreparedScene*>& scenes, const std::vector<const Image*>& expected,
-           const RtlOptions& opt, RtlResult& r) {
+           const std::vector<StageStreams>& stages, const RtlOptions& opt, RtlResult& r) {
     const auto t0 = std::chrono::steady_clock::now();
     const int n = static_cast<int>(scenes.size());
     // Pack everything first so that a bad record fails before the simulation starts.
@@ -174,6 +178,9 @@ class FrameDriver {
       if (r.protocol_error.empty()) r.protocol_error = what;
     };
 
+    StageChecker stage_check;
+    stage_check.begin(&pins_.stage_taps(), &stages, &r, start_cycle);
+
     pins_.edge_pins(false, false, poison);
     next_inputs();
     for (;;) {
@@ -202,6 +209,7 @@ class FrameDriver {
       }
       held = o.pixel_valid && !ready;
       held_out = o;
+      stage_check.clock(c);
       pins_.posedge(tick_time(c) + 5000);
       ++cycle_;
 
@@ -242,11 +250,17 @@ class FrameDriver {
             if (mrgb != o.pixel_rgb || mcov != o.pixel_covered) {
               ++fr.mismatches;
               ++r.mismatches;
-              if (r.first_mismatch.empty())
-                r.first_mismatch = "pixel output: frame " + std::to_string(kf) + " pixel (" +
-                                   std::to_string(x) + ", " + std::to_string(y) + ") at cycle " +
-                                   std::to_string(c - start_cycle) + ": RTL " +
-                                   rgb_text(o.pixel_rgb, o.pixel_covered) + ", model " + rgb_text(mrgb, mcov);
+              if (r.first_pixel_mismatch.empty()) {
+                r.first_pixel_mismatch = "pixel output: frame " + std::to_string(kf) + " pixel (" +
+                                         std::to_string(x) + ", " + std::to_string(y) + ") at cycle " +
+                                         std::to_string(c - start_cycle) + ": RTL " +
+                                         rgb_text(o.pixel_rgb, o.pixel_covered) + ", model " +
+                                         rgb_text(mrgb, mcov);
+                if (r.first_mismatch.empty()) {
+                  r.first_mismatch = r.first_pixel_mismatch;
+                  r.first_stage = "pixel output";
+                }
+              }
             }
           }
           const bool last = kp == static_cast<long long>(w) * h - 1;
@@ -274,6 +288,7 @@ class FrameDriver {
       }
       next_inputs();
     }
+    stage_check.end();
     r.sim_cycles = cycle_ - start_cycle;
     if (n > 0 && r.frames.front().first_edge_cycle >= 0 && r.frames.back().last_pixel_cycle >= 0)
       r.cycles = r.frames.back().last_pixel_cycle - r.frames.front().first_edge_cycle + 1;
@@ -345,29 +360,41 @@ class FrameDriver {
 
 // What run_rtl_frames does before the driver on either harness: check that every screen fits the
 // RTL and render the model images that were not given (into `rendered`, which `use` points into).
+// With opt.compare and opt.check_stages, also record the model's stage streams of every frame
+// into `stages` (left empty when any frame's model fails: the stages are then not checked).
 inline void expected_images(const std::vector<const PreparedScene*>& scenes, const RtlOptions& opt,
                             const std::vector<const Image*>& given, std::vector<Image>& rendered,
-                            std::vector<const Image*>& use, RtlResult& r, int max_width) {
+                            std::vector<const Image*>& use, std::vector<StageStreams>& stages, RtlResult& r,
+                            int max_width) {
   rendered.assign(scenes.size(), Image{});
   use.assign(scenes.size(), nullptr);
+  stages.clear();
+  const bool want_stages = opt.compare && opt.check_stages;
+  if (want_stages) stages.resize(scenes.size());
+  bool stages_failed = false;
   for (std::size_t f = 0; f < scenes.size(); ++f) {
     const PreparedScene& s = *scenes[f];
     if (s.width < 1 || s.height < 1 || s.width > max_width || s.height >= (1 << fmt::LineBits))
       throw std::invalid_argument("RTL: a " + std::to_string(s.width) + "x" + std::to_string(s.height) +
                                   " screen does not fit the RTL (line buffer MaxWidth = " +
                                   std::to_string(max_width) + " pixels)");
-    if (f < given.size() && given[f]) {
-      use[f] = given[f];
-    } else if (opt.compare) {
-      try {
-        GouraudPipeline pipe(fmt::MaxActiveEdges);
-        rendered[f] = pipe.render(s);
-        use[f] = &rendered[f];
-      } catch (const SceneError& e) {
-        if (r.model_error.empty()) r.model_error = "frame " + std::to_string(f) + ": " + e.what();
+    const bool have = f < given.size() && given[f];
+    if (have) use[f] = given[f];
+    if (!want_stages && (have || !opt.compare)) continue;
+    try {
+      if (want_stages) {
+        stages[f] = model_stage_streams(s, have ? nullptr : &rendered[f]);
+        if (opt.edit_stage_streams) opt.edit_stage_streams(static_cast<int>(f), stages[f]);
+      } else {
+        rendered[f] = GouraudPipeline(fmt::MaxActiveEdges).render(s);
       }
+      if (!have) use[f] = &rendered[f];
+    } catch (const SceneError& e) {
+      stages_failed = true;
+      if (!have && r.model_error.empty()) r.model_error = "frame " + std::to_string(f) + ": " + e.what();
     }
   }
+  if (stages_failed) stages.clear();
 }
 
 }  // namespace watkins::tb::detail

@@ -19,6 +19,7 @@
 #include <verilated_fst_c.h>
 
 #include "Vwatkins_gouraud_top.h"
+#include "Vwatkins_gouraud_top___024root.h"  // the public internal stage signals
 #include "frame_driver.hpp"
 
 // libsystemc's own main() calls sc_main; our programs have their own main() and run the kernel
@@ -117,6 +118,10 @@ SC_MODULE(GouraudBench) {
     if (tfp_) tfp_->close();
     tfp_.reset();
   }
+  const detail::StageTaps& stage_taps() {
+    if (!taps_.ae_valid) taps_ = detail::stage_taps(*dut.rootp);
+    return taps_;
+  }
   std::string stopped() {
     VerilatedContext* ctx = dut.contextp();
     if (!ctx->gotFinish() && !ctx->gotError()) return "";
@@ -130,6 +135,7 @@ SC_MODULE(GouraudBench) {
   EdgeWords last_edge_{};
   sc_bv<edge_layout::Bits> edge_bv_;
   std::unique_ptr<VerilatedFstC> tfp_;
+  detail::StageTaps taps_;
 };
 
 struct Bench {
@@ -169,13 +175,14 @@ RtlResult run_rtl_frames(const std::vector<const PreparedScene*>& scenes, const 
   RtlResult r;
   std::vector<Image> rendered;
   std::vector<const Image*> use;
-  detail::expected_images(scenes, opt, expected, rendered, use, r, MaxWidth);
+  std::vector<StageStreams> stages;
+  detail::expected_images(scenes, opt, expected, rendered, use, stages, r, MaxWidth);
   Bench& b = bench();
   if (b.dead) throw std::runtime_error("RTL bench: the SystemC kernel stopped in an earlier run");
   std::exception_ptr error;
   b.top->job = [&] {
     try {
-      b.driver->run(scenes, use, opt, r);
+      b.driver->run(scenes, use, stages, opt, r);
     } catch (...) {
       error = std::current_exception();
     }

@@ -8,13 +8,46 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
+#include "edge_record.hpp"
 #include "image.hpp"
 #include "prepare.hpp"
 
 namespace watkins::tb {
+
+// The model's internal stage streams of one frame, item by item (GouraudPipeline's
+// PipelineObserver), as the bench expects them at the three internal stage boundaries of
+// watkins_gouraud_top. Per stage, the items of line y are followed by an end-of-line marker
+// (eol, no payload), for y = 0 .. height-1. `index` numbers the items of a line from 0 (the
+// marker gets the number of items before it).
+struct StageEdge {      // active_edge_list -> segment_former (ae_*)
+  int line = 0, index = 0;
+  bool eol = false;
+  int poly = 0;
+  ChannelVector value{};
+};
+struct StageSegment {   // segment_former -> segment_interpolator (sg_*)
+  int line = 0, index = 0;
+  bool eol = false;
+  int poly = 0;
+  ChannelVector e{}, f{};
+};
+struct StageFragment {  // segment_interpolator -> scanline_buffer (fr_*)
+  int line = 0, index = 0;
+  bool eol = false;
+  int x = 0;
+  std::uint32_t depth = 0;
+  std::uint32_t rgb = 0;  // {R, G, B}
+};
+struct StageStreams {
+  int width = 0;          // screen width of the frame (to name the pixels a mismatch affects)
+  std::vector<StageEdge> edges;
+  std::vector<StageSegment> segments;
+  std::vector<StageFragment> fragments;
+};
 
 struct RtlOptions {
   std::uint64_t seed = 1;
@@ -25,6 +58,12 @@ struct RtlOptions {
   long long watchdog = 100000;  // cycles without any handshake before the run counts as hung
   bool compare = true;     // render the model (unless given the expected images) and compare
   bool reset = false;      // reset before the run (always done first and after a failed run)
+  // Compare the three internal stage streams (active edges, segments, fragments) with the
+  // model's, transfer by transfer (needs `compare`); the first difference names its stage.
+  bool check_stages = true;
+  // Test hook for the checker itself: called with each frame's model stage streams before the
+  // run (a test corrupts one item and checks that the report names that stage).
+  std::function<void(int frame, StageStreams&)> edit_stage_streams;
 };
 
 struct RtlFrame {
@@ -45,8 +84,19 @@ struct RtlResult {
   long long cycles = 0;         // first beat offered of the first frame to last pixel of the last frame
   long long sim_cycles = 0;     // every clock of the run, including reset and drain
   long long pixels = 0;
-  long long mismatches = 0;
-  std::string first_mismatch;   // "pixel output: frame 0 pixel (x, y): RTL ... model ..." or empty
+  long long mismatches = 0;     // mismatching pixels
+  // The first difference from the model, in simulation order: a stage stream's
+  // ("segment_former output: frame 0 line 37 segment 2 at cycle C: RTL ..., model ...; affects
+  // pixels (..)") or, when every stage stream agreed up to then, a pixel's ("pixel output: frame 0
+  // pixel (x, y) at cycle C: RTL ... model ..."); empty when there is none.
+  std::string first_mismatch;
+  std::string first_stage;          // the stage of first_mismatch ("active_edge_list",
+                                    // "segment_former", "segment_interpolator" or "pixel output")
+  std::string first_pixel_mismatch; // the first mismatching pixel, or empty
+  // Per stage that diverged, its first mismatch, in the order found (a stage is no longer
+  // compared after its first mismatch: its stream may have lost step with the model's).
+  std::vector<std::string> stage_mismatches;
+  long long stage_items = 0;        // internal stage transfers compared with the model
   bool hang = false;            // the watchdog fired
   std::string hang_reason;      // names the stuck interface
   bool overflow = false;        // overflow_o was seen high
@@ -56,10 +106,11 @@ struct RtlResult {
   std::string model_error;      // the model could not render the scene (so nothing was compared)
   double wall_seconds = 0;      // simulation wall time of the run
   double cycles_per_second() const { return wall_seconds > 0 ? sim_cycles / wall_seconds : 0; }
-  bool ok() const {             // every frame complete, no mismatch, hang, protocol error, assertion
+  bool ok() const {  // every frame complete, no pixel or stage mismatch, hang, protocol error, assertion
     bool all = !frames.empty();
     for (const RtlFrame& f : frames) all = all && f.complete;
-    return all && mismatches == 0 && !hang && protocol_error.empty() && assertion.empty();
+    return all && mismatches == 0 && stage_mismatches.empty() && !hang && protocol_error.empty() &&
+           assertion.empty();
   }
   std::string summary() const {  // one line per problem (empty when ok())
     std::string s;
@@ -68,7 +119,12 @@ struct RtlResult {
       if (!frames[f].complete)
         line("frame " + std::to_string(f) + " incomplete: " + std::to_string(frames[f].pixels) + " of " +
              std::to_string(static_cast<long long>(frames[f].image.width) * frames[f].image.height) + " pixels");
-    if (mismatches) line(std::to_string(mismatches) + " mismatching pixels; first: " + first_mismatch);
+    if (!stage_mismatches.empty()) {
+      line("stage streams diverge from the model; first: " + first_mismatch);
+      for (const std::string& m : stage_mismatches)
+        if (m != first_mismatch) line("  and: " + m);
+    }
+    if (mismatches) line(std::to_string(mismatches) + " mismatching pixels; first: " + first_pixel_mismatch);
     if (hang) line("hang: " + hang_reason);
     if (!protocol_error.empty()) line("protocol: " + protocol_error);
     if (!assertion.empty()) line("assertion: " + assertion);

@@ -9,6 +9,7 @@
 #include <verilated_fst_c.h>
 
 #include "Vwatkins_gouraud_top_cc.h"
+#include "Vwatkins_gouraud_top_cc___024root.h"  // the public internal stage signals
 #include "frame_driver.hpp"
 #include "rtl_bench.hpp"
 
@@ -69,6 +70,10 @@ class CcHarness {
     if (tfp_) tfp_->close();
     tfp_.reset();
   }
+  const detail::StageTaps& stage_taps() {
+    if (!taps_.ae_valid) taps_ = detail::stage_taps(*dut_->rootp);
+    return taps_;
+  }
   std::string stopped() {
     if (!ctx_.gotFinish() && !ctx_.gotError()) return "";
     ctx_.gotFinish(false);
@@ -80,6 +85,7 @@ class CcHarness {
   VerilatedContext ctx_;
   std::unique_ptr<Vwatkins_gouraud_top_cc> dut_;
   std::unique_ptr<VerilatedFstC> tfp_;
+  detail::StageTaps taps_;
 };
 
 struct Harness {
@@ -103,8 +109,9 @@ RtlResult run_rtl_frames(const std::vector<const PreparedScene*>& scenes, const 
   RtlResult r;
   std::vector<Image> rendered;
   std::vector<const Image*> use;
-  detail::expected_images(scenes, opt, expected, rendered, use, r, MaxWidth);
-  harness().driver.run(scenes, use, opt, r);
+  std::vector<StageStreams> stages;
+  detail::expected_images(scenes, opt, expected, rendered, use, stages, r, MaxWidth);
+  harness().driver.run(scenes, use, stages, opt, r);
   return r;
 }
 

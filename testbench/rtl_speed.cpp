@@ -1,6 +1,6 @@
 // Simulation speed of the RTL on one harness: built twice, as watkins_rtl_speed_sc (SystemC bench)
 // and watkins_rtl_speed_cc (plain C++ harness, a second Verilated build), from this one source.
-//   watkins_rtl_speed_{sc,cc} [SCENE] [--repeat N] [--gap P] [--stall P] [--seed N]
+//   watkins_rtl_speed_{sc,cc} [SCENE] [--repeat N] [--gap P] [--stall P] [--seed N] [--no-stage-check]
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
@@ -22,7 +22,10 @@ int main(int argc, char** argv) {
   app.add_option("--gap", opt.gap, "edge source gap probability")->capture_default_str();
   app.add_option("--stall", opt.stall, "pixel sink stall probability")->capture_default_str();
   app.add_option("--seed", opt.seed, "random seed")->capture_default_str();
+  bool no_stages = false;
+  app.add_flag("--no-stage-check", no_stages, "compare the pixels only, not the internal stage streams");
   CLI11_PARSE(app, argc, argv);
+  opt.check_stages = !no_stages;
   try {
     using namespace watkins;
     const BuiltScene scene = scene_path.empty()
@@ -48,6 +51,8 @@ int main(int argc, char** argv) {
     std::printf("scene         %s %dx%d, %zu edge records\n", scene.name.c_str(), prepared.width,
                 prepared.height, prepared.edges.size());
     std::printf("frame cycles  %lld (gap %.2f, stall %.2f)\n", warm.cycles, opt.gap, opt.stall);
+    std::printf("stage check   %s (%lld stage transfers compared per frame)\n", opt.check_stages ? "on" : "off",
+                warm.stage_items);
     std::printf("speed         %.0f cycles/s over %d frames (%lld cycles in %.3f s wall, %.3f s CPU: %.0f cycles/CPU s)\n",
                 wall > 0 ? cycles / wall : 0.0, repeat, cycles, wall, cpu, cpu > 0 ? cycles / cpu : 0.0);
     if (!ok) {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <random>
 #include <string>
 #include <vector>
@@ -305,6 +306,152 @@ TEST(Cosim, TraceWritesAnFst) {
   expect_clean("second traced frame", o, run_rtl(p, o));
   EXPECT_GT(std::filesystem::file_size(path), 100u);
   std::filesystem::remove(path);
+}
+
+// ---------------------------------------------------------------- stage checker
+// The bench compares the three internal stage streams (active_edge_list -> segment_former ->
+// segment_interpolator -> scanline_buffer) with the model's, transfer by transfer.
+
+// Items of each model stage stream (every end-of-line marker included).
+long long model_stage_items(const PreparedScene& p) {
+  long long n = 0;
+  PipelineObserver o;
+  o.active_edge = [&](int, const ActiveEdge&) { ++n; };
+  o.active_edges_end = [&](int) { ++n; };
+  o.segment = [&](int, const Segment&) { ++n; };
+  o.segments_end = [&](int) { ++n; };
+  o.fragment = [&](int, const Fragment&, bool) { ++n; };
+  o.fragments_end = [&](int) { ++n; };
+  GouraudPipeline().render(p, o);
+  return n;
+}
+
+TEST(Cosim, StageCheckerComparesEveryStageTransfer) {
+  const PreparedScene p = prepare(two_triangles(40, 30, 0.0));
+  const RtlOptions o{61, 0.3, 0.3};
+  const RtlResult r = run_rtl(p, o);
+  expect_clean("stage-checked frame", o, r);
+  EXPECT_TRUE(r.stage_mismatches.empty());
+  EXPECT_EQ(r.stage_items, model_stage_items(p));  // every item of every stream, none twice
+  // Back to back: the stages of frame f+1 start while frame f drains; each stage keeps its frame.
+  const PreparedScene b = prepare(two_triangles(23, 41, 1.7));
+  const RtlResult r2 = run_rtl_frames({&p, &b, &p}, o);
+  expect_clean("stage-checked frames", o, r2);
+  EXPECT_EQ(r2.stage_items, 2 * model_stage_items(p) + model_stage_items(b));
+  // Off: nothing compared.
+  RtlOptions off = o;
+  off.check_stages = false;
+  const RtlResult r3 = run_rtl(p, off);
+  expect_clean("frame without the stage check", off, r3);
+  EXPECT_EQ(r3.stage_items, 0);
+}
+
+// The checker itself: the model's expected stream of one stage, corrupted in one item, must give
+// exactly one diverging stage -- that one, named with frame, line, item and both values -- while
+// the other stages and every pixel still agree (their expected streams are the model's own).
+struct Corruption {
+  const char* stage;
+  std::function<std::string(StageStreams&)> corrupt;  // returns the report text it must produce
+};
+
+RtlResult run_corrupted(const std::vector<const PreparedScene*>& frames, int frame, const RtlOptions& base,
+                        const std::function<std::string(StageStreams&)>& corrupt, std::string& want) {
+  RtlOptions o = base;
+  o.edit_stage_streams = [&](int f, StageStreams& s) {
+    if (f == frame) want = corrupt(s);
+  };
+  return run_rtl_frames(frames, o);
+}
+
+template <class Item>
+std::size_t middle_item(const std::vector<Item>& v) {  // a payload item about half way down
+  std::size_t k = v.size() / 2;
+  while (k < v.size() && v[k].eol) ++k;
+  return k;
+}
+
+TEST(Cosim, StageCheckerNamesTheDivergingStage) {
+  using ::testing::Test;
+  const PreparedScene p = prepare(two_triangles(40, 30, 0.0));
+  const std::vector<Corruption> cases = {
+      {"active_edge_list",
+       [](StageStreams& s) {
+         StageEdge& e = s.edges.at(middle_item(s.edges));
+         e.value[fmt::ChanX] += 1;
+         return "active_edge_list output: frame 0 line " + std::to_string(e.line) + " edge " +
+                std::to_string(e.index) + " at cycle ";
+       }},
+      {"segment_former",
+       [](StageStreams& s) {
+         StageSegment& g = s.segments.at(middle_item(s.segments));
+         g.f[fmt::ChanZ] -= 3;
+         return "segment_former output: frame 0 line " + std::to_string(g.line) + " segment " +
+                std::to_string(g.index) + " at cycle ";
+       }},
+      {"segment_interpolator",
+       [](StageStreams& s) {
+         StageFragment& f = s.fragments.at(middle_item(s.fragments));
+         f.rgb ^= 0x000100;  // green, lowest bit
+         return "segment_interpolator output: frame 0 line " + std::to_string(f.line) + " fragment " +
+                std::to_string(f.index) + " at cycle ";
+       }},
+  };
+  const char* differs[] = {"(differs in x)", "(differs in F.z)", "(differs in rgb)"};
+  const char* affects[] = {"; affects line ", "; affects pixels (", "; pixel ("};
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    std::string want;
+    const RtlOptions o{71 + k, 0.2, 0.2};
+    const RtlResult r = run_corrupted({&p}, 0, o, cases[k].corrupt, want);
+    SCOPED_TRACE(cases[k].stage);
+    Test::RecordProperty(cases[k].stage, r.first_mismatch);  // the report, in --gtest_output=xml
+    ASSERT_FALSE(want.empty());
+    EXPECT_FALSE(r.ok());
+    EXPECT_EQ(r.first_stage, cases[k].stage) << r.summary();
+    ASSERT_EQ(r.stage_mismatches.size(), 1u) << r.summary();
+    EXPECT_EQ(r.first_mismatch, r.stage_mismatches[0]);
+    EXPECT_EQ(r.first_mismatch.rfind(want, 0), 0u) << "want: " << want << "\ngot:  " << r.first_mismatch;
+    EXPECT_NE(r.first_mismatch.find(": RTL "), std::string::npos) << r.first_mismatch;
+    EXPECT_NE(r.first_mismatch.find(", model "), std::string::npos) << r.first_mismatch;
+    EXPECT_NE(r.first_mismatch.find(differs[k]), std::string::npos) << r.first_mismatch;
+    EXPECT_NE(r.first_mismatch.find(affects[k]), std::string::npos) << r.first_mismatch;
+    EXPECT_EQ(r.mismatches, 0) << r.summary();  // the pixels themselves agree with the model
+    EXPECT_TRUE(r.frames.at(0).complete);
+    EXPECT_FALSE(r.hang);
+    EXPECT_NE(r.summary().find("stage streams diverge from the model; first: " + want), std::string::npos)
+        << r.summary();
+  }
+}
+
+TEST(Cosim, StageCheckerFollowsFramesAndLostItems) {
+  // A fragment missing from frame 1's expected stream: the first fragment after it no longer
+  // matches (the RTL's is the missing one), reported in frame 1 at that position.
+  const PreparedScene a = prepare(two_triangles(40, 30, 0.0));
+  const PreparedScene b = prepare(two_triangles(40, 30, 3.3));
+  std::string want;
+  const RtlOptions o{81, 0.1, 0.1};
+  const RtlResult r = run_corrupted({&a, &b}, 1, o, [](StageStreams& s) {
+    const std::size_t k = middle_item(s.fragments);
+    const StageFragment f = s.fragments.at(k);
+    s.fragments.erase(s.fragments.begin() + static_cast<long>(k));
+    return "segment_interpolator output: frame 1 line " + std::to_string(f.line) + " ";
+  }, want);
+  EXPECT_EQ(r.first_stage, "segment_interpolator") << r.summary();
+  EXPECT_EQ(r.first_mismatch.rfind(want, 0), 0u) << "want: " << want << "\ngot:  " << r.first_mismatch;
+  EXPECT_EQ(r.stage_mismatches.size(), 1u) << r.summary();
+  EXPECT_EQ(r.mismatches, 0);
+  // An end-of-line marker where the model has an edge (an active edge the RTL would have lost).
+  std::string want2;
+  const RtlResult r2 = run_corrupted({&a}, 0, o, [](StageStreams& s) {
+    const std::size_t k = middle_item(s.edges);
+    StageEdge e = s.edges.at(k);
+    s.edges.insert(s.edges.begin() + static_cast<long>(k), e);  // the model "has" one edge more
+    return "active_edge_list output: frame 0 line " + std::to_string(e.line) + " ";
+  }, want2);
+  EXPECT_EQ(r2.first_stage, "active_edge_list") << r2.summary();
+  EXPECT_EQ(r2.first_mismatch.rfind(want2, 0), 0u) << "want: " << want2 << "\ngot:  " << r2.first_mismatch;
+  EXPECT_NE(r2.first_mismatch.find("model poly"), std::string::npos) << r2.first_mismatch;
+  // And a clean run afterwards (the bench resets after the failed runs).
+  expect_clean("frame after stage mismatches", o, run_rtl(a, o));
 }
 
 }  // namespace
