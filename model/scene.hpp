@@ -56,5 +56,7 @@ BuiltScene load_scene_text(const std::string& text, const std::string& name,
                            const std::string& base_dir, const BuildOptions& opt = {});
 // The scene compiled into the binary, used when `watkins render` gets no file.
 const std::string& default_scene_text();
+// load_scene(path), or the embedded default scene when path is empty.
+BuiltScene load_scene_or_default(const std::string& path, const BuildOptions& opt = {});
 
 }  // namespace watkins

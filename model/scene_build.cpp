@@ -49,6 +49,11 @@ const std::string& default_scene_text() {
   return s;
 }
 
+BuiltScene load_scene_or_default(const std::string& path, const BuildOptions& opt) {
+  return path.empty() ? load_scene_text(default_scene_text(), "<default scene>", ".", opt)
+                      : load_scene(path, opt);
+}
+
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;

@@ -39,9 +39,7 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   try {
     using namespace watkins;
-    const BuiltScene scene = scene_path.empty()
-        ? load_scene_text(default_scene_text(), "<default scene>", ".")
-        : load_scene(scene_path);
+    const BuiltScene scene = load_scene_or_default(scene_path);
     const PreparedScene prepared = prepare(scene, PrepareOptions{1 << 20});
     GouraudPipeline pipe(1 << 20);
     pipe.render(prepared);

@@ -37,9 +37,7 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   try {
     using namespace watkins;
-    const BuiltScene scene = scene_path.empty()
-        ? load_scene_text(default_scene_text(), "<default scene>", ".")
-        : load_scene(scene_path);
+    const BuiltScene scene = load_scene_or_default(scene_path);
     const PreparedScene p = prepare(scene);
     const Image img = GouraudPipeline().render(p);
     std::ofstream edges(dir + "/edges.hex"), pixels(dir + "/pixels.hex"), frame(dir + "/frame.hex");

@@ -147,9 +147,7 @@ int render(const RenderArgs& a) {
   check_rtl_args(a.rtl, a.model);  // --rtl
 
   const auto t0 = Clock::now();
-  const BuiltScene scene = a.scene.empty()
-      ? load_scene_text(default_scene_text(), "<default scene>", ".", opt)
-      : load_scene(a.scene, opt);
+  const BuiltScene scene = load_scene_or_default(a.scene, opt);
   PrepareOptions popt;
   popt.max_active_edges = a.max_active_edges;
   const PreparedScene prepared = prepare(scene, popt);

@@ -28,9 +28,7 @@ int main(int argc, char** argv) {
   opt.check_stages = !no_stages;
   try {
     using namespace watkins;
-    const BuiltScene scene = scene_path.empty()
-        ? load_scene_text(default_scene_text(), "<default scene>", ".", {})
-        : load_scene(scene_path);
+    const BuiltScene scene = load_scene_or_default(scene_path);
     const PreparedScene prepared = prepare(scene);
     const Image expected = GouraudPipeline().render(prepared);
     tb::RtlResult warm = tb::run_rtl(prepared, opt, &expected);  // also builds the bench

@@ -124,9 +124,7 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   try {
     setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "1", 0);
-    const BuiltScene scene = scene_path.empty()
-        ? load_scene_text(default_scene_text(), "<default scene>", ".", {})
-        : load_scene(scene_path);
+    const BuiltScene scene = load_scene_or_default(scene_path);
     const PreparedScene prepared = prepare(scene);
     auto* b = new SignalBench("signal_bench");  // never destroyed (SystemC teardown order)
     for (const EdgeRecord& e : prepared.edges) {

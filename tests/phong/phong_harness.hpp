@@ -1,29 +1,9 @@
-// Clocking a Verilated Phong block (clk_i / rst_ni) and random valid gaps / ready back-pressure.
+// The Phong block benches clock their units with the RTL unit benches' harness.
 #pragma once
 
-#include <cstdint>
-#include <random>
+#include "rtl_harness.hpp"
 
 namespace watkins::phong {
-
-template <class V>
-struct Harness {
-  V dut;
-  std::uint64_t cycles = 0;
-  void tick() {
-    dut.clk_i = 0;
-    dut.eval();
-    dut.clk_i = 1;
-    dut.eval();
-    ++cycles;
-  }
-};
-
-// A percentage of cycles with valid low (source) or ready low (sink).
-struct Stalls {
-  std::mt19937_64& rng;
-  int pct;
-  bool stall() { return pct > 0 && static_cast<int>(rng() % 100) < pct; }
-};
-
+using rtl::Harness;
+using rtl::Stalls;
 }  // namespace watkins::phong
