@@ -5,7 +5,7 @@
 # warning or error. The only yosys warning tolerated is "Replacing memory ... with list of
 # registers": pipeline register arrays (span_reciprocal stages, active-edge banks) are meant to
 # be flops, and yosys says so for each one.
-# Usage: scripts/lint.sh [--no-synth]
+# Usage: scripts/lint.sh [--synth]   (the synthesis takes ~3 minutes; CI runs it via scripts/test.sh)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -42,7 +42,7 @@ echo "== yosys read + hierarchy/proc/check (default parameters)"
 yosys_check elab "$READ; hierarchy -check -top watkins_gouraud_top; proc; check -assert"
 echo "   clean"
 
-if [[ "${1:-}" != "--no-synth" ]]; then
+if [[ "${1:-}" == "--synth" ]]; then
   echo "== yosys synth_ice40 (MaxWidth=$SYNTH_WIDTH, MaxActiveEdges=$SYNTH_EDGES)"
   # synth_ice40 up to its final check step, whose first command (autoname, cosmetic renaming)
   # is quadratic in yosys 0.23 and alone takes over 10 minutes here; the rest of that step is

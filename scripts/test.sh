@@ -6,7 +6,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 build="${WATKINS_BUILD:-$root/build}"
 "$root/scripts/setup.sh"
 if [ -x "$root/scripts/lint.sh" ]; then
-  "$root/scripts/lint.sh"
+  "$root/scripts/lint.sh" --synth
 fi
 cd "$build"
 ctest -j"${WATKINS_JOBS:-2}" --output-on-failure

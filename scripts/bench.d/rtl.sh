@@ -8,11 +8,11 @@ build="${WATKINS_BUILD:-$root/build}"
 [ -x "$build/testbench/watkins_rtl_speed_sc" ] || { echo "rtl: not built (needs Verilator and SystemC)"; exit 0; }
 for scene in "" "$root/scenes/overdraw.json"; do
   out=$("$build/watkins" render $scene --rtl --out "$(mktemp -u).png")
-  name=$(echo "$out" | sed -n 's/^scene *\([^ ]*\).*/\1/p')
+  name=$(basename "${scene:-default}" .json)
   frag=$(echo "$out" | sed -n 's/^rtl pixels.*fragments \([0-9]*\) (model), \([0-9.]*\) fragments\/cycle, \([0-9.]*\) pixels\/cycle/\1 fragments, \2 fragments\/cycle, \3 pixels\/cycle/p')
   cyc=$(echo "$out" | sed -n 's/^rtl cycles *\([0-9]*\).*/\1/p')
   mism=$(echo "$out" | sed -n "s/^rtl vs model *\([0-9]*\) mismatching.*/\1/p")
-  printf "rtl %-16s %s cycles, %s; %s mismatches\n" "${name:-default}" "$cyc" "$frag" "$mism"
+  printf "rtl %-16s %s cycles, %s; %s mismatches\n" "$name" "$cyc" "$frag" "$mism"
 done
 for h in sc cc; do
   exe="$build/testbench/watkins_rtl_speed_$h"
