@@ -8,7 +8,7 @@ packages=(
   build-essential cmake pkg-config git python3
   verilator iverilog libsystemc-dev           # simulation: Verilator + SystemC benches, Icarus for comparison
   libglm-dev libgtest-dev googletest          # double reference, unit tests
-  libtinyobjloader-dev nlohmann-json3-dev libcli11-dev libfmt-dev libstb-dev zlib1g-dev
+  libtinyobjloader-dev nlohmann-json3-dev libcli11-dev libstb-dev zlib1g-dev
   yosys nextpnr-ice40 fpga-icestorm           # synthesis (lint in CI, resources and Fmax)
 )
 missing=()
