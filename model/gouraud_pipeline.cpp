@@ -5,6 +5,24 @@
 
 namespace watkins {
 
+std::vector<SparseBeat> sparse_stream(const Image& img) {
+  std::vector<SparseBeat> out;
+  bool last_line_covered = false;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x)
+      if (img.is_covered(x, y)) {
+        const std::uint8_t* p = img.at(x, y);
+        out.push_back(SparseBeat{x, y, {p[0], p[1], p[2]}, true, false});
+        last_line_covered = y == img.height - 1;
+      }
+  if (!last_line_covered && img.width > 0 && img.height > 0) {
+    const std::uint8_t* p = img.at(img.width - 1, img.height - 1);  // background: not covered
+    out.push_back(SparseBeat{img.width - 1, img.height - 1, {p[0], p[1], p[2]}, false, false});
+  }
+  if (!out.empty()) out.back().last = true;
+  return out;
+}
+
 Image GouraudPipeline::render(const PreparedScene& scene, const FragmentObserver& observe) {
   PipelineObserver o;
   o.fragment = observe;

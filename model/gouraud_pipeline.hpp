@@ -3,7 +3,10 @@
 // segment_interpolator → scanline_buffer → pixels in raster order (every pixel of the screen).
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <functional>
+#include <vector>
 
 #include "image.hpp"
 #include "prepare.hpp"
@@ -38,6 +41,19 @@ struct PipelineObserver {
   std::function<void(int y, const Fragment& f, bool won)> fragment;
   std::function<void(int y)> fragments_end;
 };
+
+// One beat of the sparse pixel stream (watkins_gouraud_top with sparse_i = 1): the covered pixels
+// of the frame in raster order; `last` on the frame's last beat. When the last line has no
+// covered pixel (e.g. a frame that covers nothing) a terminating beat follows, not covered, with
+// the background colour at (width-1, height-1), and carries `last` instead.
+struct SparseBeat {
+  int x = 0, y = 0;
+  std::array<std::uint8_t, 3> rgb{};
+  bool covered = true;
+  bool last = false;
+};
+// The sparse stream of a rendered frame (its covered pixels, plus the terminator when needed).
+std::vector<SparseBeat> sparse_stream(const Image& img);
 
 class GouraudPipeline {
  public:

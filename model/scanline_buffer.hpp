@@ -23,6 +23,12 @@ class ScanlineBuffer {
   // The finished line's pixel at x (background where nothing was written).
   std::array<std::uint8_t, 3> pixel(int x) const { return written_[x] ? rgb_[x] : background_; }
   bool covered(int x) const { return written_[x] != 0; }
+  // Sparse read-out (the RTL's find-next-written search): the first covered x >= x, or width()
+  // when there is none.
+  int next_covered(int x) const {
+    while (x < width() && !written_[x]) ++x;
+    return x;
+  }
   int owner(int x) const { return written_[x] ? poly_[x] : -1; }
   int width() const { return static_cast<int>(depth_.size()); }
 

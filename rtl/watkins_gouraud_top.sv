@@ -4,8 +4,14 @@
 // span_reciprocal, stepper) -> scanline_buffer. Every stage boundary is valid/ready.
 // A frame starts with the first beat of its edge stream once the previous frame's last pixel
 // has left and its stream has been read up to its EOF beat; width, height and background are
-// sampled then. Steady state: one fragment per clock; a line costs max(width, fragments +
+// sampled then (and sparse_i). Steady state: one fragment per clock; a line costs max(width, fragments +
 // setup) cycles, the active-edge list working on line y+1 while line y is drawn.
+// Sparse mode (sparse_i = 1 for the frame): the pixel stream carries only the covered pixels, in
+// raster order, each with pixel_x_o/pixel_y_o; a line then costs max(1, covered pixels,
+// fragments + setup) cycles. pixel_last_o marks the frame's last beat: its last covered pixel when
+// the last line has one, otherwise a terminating beat with pixel_covered_o = 0 (background rgb)
+// at (width-1, height-1) -- so a frame covering no pixel is exactly that one beat. The consumer
+// keeps the background elsewhere (e.g. a framebuffer cleared once). sparse_i = 0: every pixel.
 module watkins_gouraud_top #(
   parameter int unsigned MaxActiveEdges = watkins_pkg::MaxActiveEdges,
   parameter int unsigned MaxWidth = 1024            // line-buffer depth in pixels
@@ -15,12 +21,15 @@ module watkins_gouraud_top #(
   input  logic [watkins_pkg::LineBits-1:0]   width_i,         // frame size, stable for the whole frame (1..MaxWidth)
   input  logic [watkins_pkg::LineBits-1:0]   height_i,        // 1..4096
   input  logic [23:0]                        background_i,    // {R,G,B} of pixels no polygon covers
+  input  logic                               sparse_i,        // frame configuration: covered pixels only
   input  watkins_pkg::edge_t                 edge_i,          // edge records, sorted by y0 (ties in stream order)
   input  logic                               edge_eof_i,      // with valid: this beat ends the frame's stream, carries no edge
   input  logic                               edge_valid_i,
   output logic                               edge_ready_o,
-  output logic [23:0]                        pixel_rgb_o,     // {R,G,B}, raster order, every pixel of the frame
+  output logic [23:0]                        pixel_rgb_o,     // {R,G,B}, raster order, every pixel (or covered only)
   output logic                               pixel_covered_o, // some polygon won this pixel
+  output logic [watkins_pkg::LineBits-1:0]   pixel_x_o,       // position of the pixel (both modes)
+  output logic [watkins_pkg::LineBits-1:0]   pixel_y_o,
   output logic                               pixel_last_o,    // last pixel of the frame
   output logic                               pixel_valid_o,
   input  logic                               pixel_ready_i,
@@ -34,6 +43,7 @@ module watkins_gouraud_top #(
   logic          frame_busy_q, ael_busy, start;
   logic [LB-1:0] width_q, height_q;
   logic [23:0]   background_q;
+  logic          sparse_q;
 
   assign start = edge_valid_i && !frame_busy_q && !ael_busy;
 
@@ -52,6 +62,7 @@ module watkins_gouraud_top #(
       width_q      <= width_i;
       height_q     <= height_i;
       background_q <= background_i;
+      sparse_q     <= sparse_i;
     end
   end
 
@@ -143,6 +154,7 @@ module watkins_gouraud_top #(
     .width_i        (width_q),
     .height_i       (height_q),
     .background_i   (background_q),
+    .sparse_i       (sparse_q),
     .frag_x_i       (fr_x),
     .frag_depth_i   (fr_depth),
     .frag_rgb_i     (fr_rgb),
@@ -151,6 +163,8 @@ module watkins_gouraud_top #(
     .frag_ready_o   (fr_ready),
     .pixel_rgb_o,
     .pixel_covered_o,
+    .pixel_x_o,
+    .pixel_y_o,
     .pixel_last_o,
     .pixel_valid_o,
     .pixel_ready_i
@@ -161,7 +175,7 @@ module watkins_gouraud_top #(
     edge_valid_i && !edge_ready_o |=> edge_valid_i && $stable({edge_i, edge_eof_i}));
   a_pixel_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
     pixel_valid_o && !pixel_ready_i |=> pixel_valid_o
-      && $stable({pixel_rgb_o, pixel_covered_o, pixel_last_o}));
+      && $stable({pixel_rgb_o, pixel_covered_o, pixel_last_o, pixel_x_o, pixel_y_o}));
   a_frame_size: assert property (@(posedge clk_i) disable iff (!rst_ni)
     start |-> width_i != '0 && width_i <= LB'(MaxWidth) && height_i != '0
       && height_i <= LB'(watkins_pkg::MaxScreen));

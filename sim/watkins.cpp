@@ -1,7 +1,7 @@
 // watkins: the command line of the Watkins pipeline model.
 //   watkins render [SCENE] [--out image.png] [--model fixed|float] [--rule R] [--depth D]
 //                  [--diff d.png] [--cull|--no-cull] [--max-active-edges N]
-//                  [--rtl [--trace out.fst] [--seed N] [--gap P] [--stall P]]
+//                  [--rtl [--sparse] [--trace out.fst] [--seed N] [--gap P] [--stall P]]
 #include <CLI/CLI.hpp>
 
 #include <chrono>
@@ -28,6 +28,7 @@ struct RtlArgs {
   unsigned long long seed = 1;   // seeds the input gaps and the output stalls
   double gap = 0.0;              // probability of an idle cycle before each edge beat
   double stall = 0.0;            // probability that the pixel sink holds pixel_ready_i low
+  bool sparse = false;           // sparse output mode: only covered pixels, with (x, y)
 };
 
 void add_rtl_options(CLI::App* r, RtlArgs& a) {
@@ -39,12 +40,15 @@ void add_rtl_options(CLI::App* r, RtlArgs& a) {
       ->check(CLI::Range(0.0, 0.99))->capture_default_str();
   r->add_option("--stall", a.stall, "with --rtl: probability that the pixel sink stalls a cycle")
       ->check(CLI::Range(0.0, 0.99))->capture_default_str();
+  r->add_flag("--sparse", a.sparse, "with --rtl: sparse output mode (sparse_i = 1): the RTL emits only the "
+                                    "covered pixels with their coordinates");
 }
 
 // Fails early, before any rendering, when this build cannot simulate the RTL.
 void check_rtl_args(const RtlArgs& a, const std::string& model) {
   if (!a.enabled) {
     if (!a.trace.empty()) throw std::runtime_error("--trace needs --rtl");
+    if (a.sparse) throw std::runtime_error("--sparse needs --rtl");
     return;
   }
 #ifndef WATKINS_HAVE_RTL
@@ -69,10 +73,11 @@ int run_rtl_mode(const RtlArgs& a, const watkins::PreparedScene& prepared, watki
   opt.gap = a.gap;
   opt.stall = a.stall;
   opt.trace_path = a.trace;
+  opt.sparse = a.sparse;
   const tb::RtlResult r = tb::run_rtl(prepared, opt, &image);
   std::printf("rtl           %s\n", tb::rtl_description().c_str());
-  std::printf("rtl cycles    %lld (first edge beat offered to last pixel; gap %.2f, stall %.2f, seed %llu)\n", r.cycles,
-              a.gap, a.stall, a.seed);
+  std::printf("rtl cycles    %lld (first edge beat offered to last pixel; %s output; gap %.2f, stall %.2f, seed %llu)\n",
+              r.cycles, a.sparse ? "sparse" : "full-frame", a.gap, a.stall, a.seed);
   std::printf("rtl pixels    %lld, fragments %lld (model), %.3f fragments/cycle, %.3f pixels/cycle\n", r.pixels,
               fragments, r.cycles ? double(fragments) / r.cycles : 0.0, r.cycles ? double(r.pixels) / r.cycles : 0.0);
   std::printf("rtl vs model  %lld mismatching pixels%s%s\n", r.mismatches, r.mismatches ? "; first: " : "",

@@ -3,7 +3,7 @@
 // cycle counting. It talks to the Verilated top only through a small `Pins` class:
 //
 //   void reset_pin(bool rst_n);
-//   void frame_pins(uint32_t width, uint32_t height, uint32_t background_rgb);
+//   void frame_pins(uint32_t width, uint32_t height, uint32_t background_rgb, bool sparse);
 //   void edge_pins(bool valid, bool eof, const EdgeWords& data);
 //   void ready_pin(bool pixel_ready);
 //   void settle(uint64_t t);   // clock low with the new inputs; combinational outputs valid
@@ -39,6 +39,7 @@ struct PinsOut {
   bool edge_ready = false;
   bool pixel_valid = false, pixel_last = false, pixel_covered = false;
   std::uint32_t pixel_rgb = 0;
+  std::uint32_t pixel_x = 0, pixel_y = 0;
   bool overflow = false;
 };
 
@@ -101,12 +102,18 @@ class FrameDriver {
       for (const EdgeRecord& e : scenes[f]->edges) beats[f].push_back(pack_edge(e));
     }
     r.frames.assign(n, RtlFrame{});
+    std::vector<std::vector<SparseBeat>> sparse_want(n);  // sparse frames: the model's beats
     for (int f = 0; f < n; ++f) {
       const PreparedScene& s = *scenes[f];
       Image img(s.width, s.height);
       for (std::size_t i = 0; i < img.rgb.size(); i += 3)
         for (int c = 0; c < 3; ++c) img.rgb[i + c] = s.background[c];
       r.frames[f].image = std::move(img);
+      r.frames[f].sparse = f < static_cast<int>(opt.sparse_frames.size()) ? opt.sparse_frames[f] : opt.sparse;
+      if (r.frames[f].sparse && f < static_cast<int>(expected.size()) && expected[f]) {
+        sparse_want[f] = sparse_stream(*expected[f]);
+        r.frames[f].expected_beats = static_cast<long long>(sparse_want[f].size());
+      }
     }
     EdgeWords poison;  // what edge_i carries when no edge is offered (the RTL must ignore it)
     poison.fill(0xDEADBEEFu);
@@ -140,18 +147,19 @@ class FrameDriver {
 
     auto frame_needs = [&](int f) {
       const PreparedScene& s = *scenes[f];
-      return std::make_tuple(std::uint32_t(s.width), std::uint32_t(s.height), pack_rgb(s.background));
+      return std::make_tuple(std::uint32_t(s.width), std::uint32_t(s.height), pack_rgb(s.background),
+                             bool(r.frames[f].sparse));
     };
     auto next_inputs = [&]() {
       // Edge source.
       if (!presenting && sf < n) {
         const bool starts = sb == 0;
-        const bool same = frame_pins_set && frame_needs(sf) == std::make_tuple(cur_w_, cur_h_, cur_bg_);
+        const bool same = frame_pins_set && frame_needs(sf) == std::make_tuple(cur_w_, cur_h_, cur_bg_, cur_sparse_);
         const bool may_start = !starts || same || kf >= sf;  // else wait for the previous frames to drain
         if (may_start && !gap_rng.chance(gap_thr)) {
           if (starts && !same) {
-            std::tie(cur_w_, cur_h_, cur_bg_) = frame_needs(sf);
-            pins_.frame_pins(cur_w_, cur_h_, cur_bg_);
+            std::tie(cur_w_, cur_h_, cur_bg_, cur_sparse_) = frame_needs(sf);
+            pins_.frame_pins(cur_w_, cur_h_, cur_bg_, cur_sparse_);
             frame_pins_set = true;
           }
           presenting = true;
@@ -203,7 +211,8 @@ class FrameDriver {
           protocol("pixel output: pixel_valid_o dropped at cycle " + std::to_string(c - start_cycle) +
                    " without a transfer");
         else if (o.pixel_rgb != held_out.pixel_rgb || o.pixel_covered != held_out.pixel_covered ||
-                 o.pixel_last != held_out.pixel_last)
+                 o.pixel_last != held_out.pixel_last || o.pixel_x != held_out.pixel_x ||
+                 o.pixel_y != held_out.pixel_y)
           protocol("pixel output: pixel changed at cycle " + std::to_string(c - start_cycle) +
                    " while stalled by pixel_ready_i");
       }
@@ -231,10 +240,22 @@ class FrameDriver {
         if (kf >= n) {
           protocol("pixel output: pixel after the last pixel of the last frame, at cycle " +
                    std::to_string(c - start_cycle));
+        } else if (r.frames[kf].sparse) {
+          if (sparse_beat(o, c - start_cycle, kf, kp, sparse_want[kf], r)) {
+            ++kf;
+            kp = 0;
+            if (kf == n) drain_left = DrainCycles;
+          } else {
+            ++kp;
+          }
         } else {
           RtlFrame& fr = r.frames[kf];
           const int w = fr.image.width, h = fr.image.height;
           const int x = static_cast<int>(kp % w), y = static_cast<int>(kp / w);
+          if (o.pixel_x != std::uint32_t(x) || o.pixel_y != std::uint32_t(y))
+            protocol("pixel output: pixel_x_o/pixel_y_o (" + std::to_string(o.pixel_x) + ", " +
+                     std::to_string(o.pixel_y) + ") on frame " + std::to_string(kf) + " pixel (" +
+                     std::to_string(x) + ", " + std::to_string(y) + ")");
           std::uint8_t* px = fr.image.at(x, y);
           px[0] = static_cast<std::uint8_t>(o.pixel_rgb >> 16);
           px[1] = static_cast<std::uint8_t>(o.pixel_rgb >> 8);
@@ -301,6 +322,86 @@ class FrameDriver {
   }
 
  private:
+  // One beat of a sparse frame: assemble it into the frame's image and check it against the
+  // model's sparse stream (beat k of `want`, when the model was rendered). Returns true when the
+  // beat ends the frame (pixel_last_o).
+  bool sparse_beat(const PinsOut& o, long long cycle, int kf, long long k, const std::vector<SparseBeat>& want,
+                   RtlResult& r) {
+    RtlFrame& fr = r.frames[kf];
+    const int w = fr.image.width, h = fr.image.height;
+    auto protocol = [&](const std::string& what) {
+      if (r.protocol_error.empty()) r.protocol_error = what;
+    };
+    const std::string at = "frame " + std::to_string(kf) + " beat " + std::to_string(k) + " pixel (" +
+                           std::to_string(o.pixel_x) + ", " + std::to_string(o.pixel_y) + ") at cycle " +
+                           std::to_string(cycle);
+    ++fr.pixels;
+    ++r.pixels;
+    const bool inside = o.pixel_x < std::uint32_t(w) && o.pixel_y < std::uint32_t(h);
+    const long long pos = inside ? static_cast<long long>(o.pixel_y) * w + o.pixel_x : -1;
+    if (!inside)
+      protocol("pixel output: sparse " + at + " outside the " + std::to_string(w) + "x" + std::to_string(h) +
+               " frame");
+    else if (pos <= sparse_pos_ && k > 0)
+      protocol("pixel output: sparse " + at + " not after the previous beat in raster order");
+    sparse_pos_ = pos;
+    if (inside && o.pixel_covered) {
+      std::uint8_t* px = fr.image.at(o.pixel_x, o.pixel_y);
+      px[0] = static_cast<std::uint8_t>(o.pixel_rgb >> 16);
+      px[1] = static_cast<std::uint8_t>(o.pixel_rgb >> 8);
+      px[2] = static_cast<std::uint8_t>(o.pixel_rgb);
+      fr.image.covered[std::size_t(pos)] = 1;
+    }
+    if (!o.pixel_covered && !o.pixel_last)
+      protocol("pixel output: sparse " + at + " not covered and not the frame's last beat");
+    const bool have_model = fr.expected_beats >= 0;
+    if (have_model) {
+      const bool beyond = k >= static_cast<long long>(want.size());
+      const SparseBeat m = beyond ? SparseBeat{} : want[std::size_t(k)];
+      const std::uint32_t mrgb = pack_rgb(m.rgb);
+      const bool same = !beyond && o.pixel_x == std::uint32_t(m.x) && o.pixel_y == std::uint32_t(m.y) &&
+                        o.pixel_rgb == mrgb && o.pixel_covered == m.covered && o.pixel_last == m.last;
+      if (!same) {
+        ++fr.mismatches;
+        ++r.mismatches;
+        if (r.first_pixel_mismatch.empty()) {
+          r.first_pixel_mismatch =
+              "pixel output: sparse " + at + ": RTL " + rgb_text(o.pixel_rgb, o.pixel_covered) +
+              (o.pixel_last ? " last" : "") + ", model " +
+              (beyond ? std::string("no beat (its stream has ") + std::to_string(want.size()) + " beats)"
+                      : "pixel (" + std::to_string(m.x) + ", " + std::to_string(m.y) + ") " +
+                            rgb_text(mrgb, m.covered) + (m.last ? " last" : ""));
+          if (r.first_mismatch.empty()) {
+            r.first_mismatch = r.first_pixel_mismatch;
+            r.first_stage = "pixel output";
+          }
+        }
+      }
+    }
+    if (o.pixel_last) {
+      fr.complete = !have_model || k + 1 == fr.expected_beats;
+      fr.last_pixel_cycle = cycle;
+      if (have_model && k + 1 < fr.expected_beats) {
+        ++fr.mismatches;  // beats the RTL never sent
+        ++r.mismatches;
+        if (r.first_pixel_mismatch.empty()) {
+          const SparseBeat& m = want[std::size_t(k + 1)];
+          r.first_pixel_mismatch = "pixel output: sparse frame " + std::to_string(kf) + " ended after " +
+                                   std::to_string(k + 1) + " beats at cycle " + std::to_string(cycle) +
+                                   "; model beat " + std::to_string(k + 1) + " pixel (" + std::to_string(m.x) +
+                                   ", " + std::to_string(m.y) + ") " + rgb_text(pack_rgb(m.rgb), m.covered) +
+                                   " missing";
+          if (r.first_mismatch.empty()) {
+            r.first_mismatch = r.first_pixel_mismatch;
+            r.first_stage = "pixel output";
+          }
+        }
+      }
+      return true;
+    }
+    return false;
+  }
+
   // Trace time in ps (Verilator's default time unit): a 10 ns clock, rising edge at +5 ns.
   std::uint64_t tick_time(long long c) const { return static_cast<std::uint64_t>(c) * 10000; }
 
@@ -356,6 +457,8 @@ class FrameDriver {
   bool need_reset_ = true;
   long long cycle_ = 0;  // cycles since the bench was built
   std::uint32_t cur_w_ = 0, cur_h_ = 0, cur_bg_ = 0;
+  bool cur_sparse_ = false;
+  long long sparse_pos_ = -1;  // raster position of the previous sparse beat
 };
 
 // What run_rtl_frames does before the driver on either harness: check that every screen fits the

@@ -35,6 +35,8 @@ SC_MODULE(GouraudBench) {
   sc_signal<bool> clk{"clk"}, rst_n{"rst_n"}, edge_eof{"edge_eof"}, edge_valid{"edge_valid"};
   sc_signal<bool> edge_ready{"edge_ready"}, pixel_covered{"pixel_covered"}, pixel_last{"pixel_last"};
   sc_signal<bool> pixel_valid{"pixel_valid"}, pixel_ready{"pixel_ready"}, overflow{"overflow"};
+  sc_signal<bool> sparse{"sparse"};
+  sc_signal<uint32_t> pixel_x{"pixel_x"}, pixel_y{"pixel_y"};
   sc_signal<uint32_t> width{"width"}, height{"height"}, background{"background"}, pixel_rgb{"pixel_rgb"};
   sc_signal<sc_bv<edge_layout::Bits>> edge{"edge"};
   Vwatkins_gouraud_top dut{"dut"};
@@ -49,12 +51,15 @@ SC_MODULE(GouraudBench) {
     dut.width_i(width);
     dut.height_i(height);
     dut.background_i(background);
+    dut.sparse_i(sparse);
     dut.edge_i(edge);
     dut.edge_eof_i(edge_eof);
     dut.edge_valid_i(edge_valid);
     dut.edge_ready_o(edge_ready);
     dut.pixel_rgb_o(pixel_rgb);
     dut.pixel_covered_o(pixel_covered);
+    dut.pixel_x_o(pixel_x);
+    dut.pixel_y_o(pixel_y);
     dut.pixel_last_o(pixel_last);
     dut.pixel_valid_o(pixel_valid);
     dut.pixel_ready_i(pixel_ready);
@@ -72,10 +77,11 @@ SC_MODULE(GouraudBench) {
 
   // ---- Pins (see frame_driver.hpp) ----
   void reset_pin(bool v) { rst_n.write(v); }
-  void frame_pins(std::uint32_t w, std::uint32_t h, std::uint32_t bg) {
+  void frame_pins(std::uint32_t w, std::uint32_t h, std::uint32_t bg, bool sp) {
     width.write(w);
     height.write(h);
     background.write(bg);
+    sparse.write(sp);
   }
   void edge_pins(bool valid, bool eof, const EdgeWords& data) {
     edge_valid.write(valid);
@@ -99,6 +105,8 @@ SC_MODULE(GouraudBench) {
     o.pixel_last = pixel_last.read();
     o.pixel_covered = pixel_covered.read();
     o.pixel_rgb = pixel_rgb.read();
+    o.pixel_x = pixel_x.read();
+    o.pixel_y = pixel_y.read();
     o.overflow = overflow.read();
     return o;
   }

@@ -61,6 +61,12 @@ struct RtlOptions {
   // Compare the three internal stage streams (active edges, segments, fragments) with the
   // model's, transfer by transfer (needs `compare`); the first difference names its stage.
   bool check_stages = true;
+  // Sparse output mode (sparse_i = 1): the RTL emits only the covered pixels with their (x, y);
+  // the sink assembles the image from them (background elsewhere) and checks every beat, in
+  // order, against the model's sparse stream (sparse_stream() in model/gouraud_pipeline.hpp).
+  bool sparse = false;
+  // Per-frame mode for run_rtl_frames (frame f uses sparse_frames[f] when f < size, else sparse).
+  std::vector<bool> sparse_frames;
   // Test hook for the checker itself: called with each frame's model stage streams before the
   // run (a test corrupts one item and checks that the report names that stage).
   std::function<void(int frame, StageStreams&)> edit_stage_streams;
@@ -68,7 +74,9 @@ struct RtlOptions {
 
 struct RtlFrame {
   Image image;                     // as the RTL produced it (background where pixels are missing)
-  long long pixels = 0;            // pixels received
+  bool sparse = false;             // the frame ran in sparse output mode
+  long long pixels = 0;            // pixels (beats, in sparse mode) received
+  long long expected_beats = -1;   // sparse mode: beats of the model's sparse stream (-1: unknown)
   long long first_edge_cycle = -1; // cycle the frame's first beat is offered (edge_valid_i rises:
                                    // the RTL starts the frame then and may emit empty lines early)
   long long last_pixel_cycle = -1; // cycle of its last pixel
@@ -76,7 +84,8 @@ struct RtlFrame {
     return last_pixel_cycle < 0 || first_edge_cycle < 0 ? 0 : last_pixel_cycle - first_edge_cycle + 1;
   }
   long long mismatches = 0;        // pixels whose RGB or coverage differ from the model
-  bool complete = false;           // all width*height pixels arrived, pixel_last_o on the last
+  bool complete = false;           // all width*height pixels (sparse: all expected beats) arrived,
+                                   // pixel_last_o on the last
 };
 
 struct RtlResult {
@@ -118,7 +127,9 @@ struct RtlResult {
     for (std::size_t f = 0; f < frames.size(); ++f)
       if (!frames[f].complete)
         line("frame " + std::to_string(f) + " incomplete: " + std::to_string(frames[f].pixels) + " of " +
-             std::to_string(static_cast<long long>(frames[f].image.width) * frames[f].image.height) + " pixels");
+             std::to_string(frames[f].sparse ? frames[f].expected_beats
+                                             : static_cast<long long>(frames[f].image.width) * frames[f].image.height) +
+             (frames[f].sparse ? " sparse beats" : " pixels"));
     if (!stage_mismatches.empty()) {
       line("stage streams diverge from the model; first: " + first_mismatch);
       for (const std::string& m : stage_mismatches)

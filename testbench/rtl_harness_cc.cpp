@@ -28,10 +28,11 @@ class CcHarness {
 
   // ---- Pins (see frame_driver.hpp) ----
   void reset_pin(bool v) { dut_->rst_ni = v; }
-  void frame_pins(std::uint32_t w, std::uint32_t h, std::uint32_t bg) {
+  void frame_pins(std::uint32_t w, std::uint32_t h, std::uint32_t bg, bool sparse) {
     dut_->width_i = w;
     dut_->height_i = h;
     dut_->background_i = bg;
+    dut_->sparse_i = sparse;
   }
   void edge_pins(bool valid, bool eof, const EdgeWords& data) {
     dut_->edge_valid_i = valid;
@@ -51,6 +52,8 @@ class CcHarness {
     o.pixel_last = dut_->pixel_last_o;
     o.pixel_covered = dut_->pixel_covered_o;
     o.pixel_rgb = dut_->pixel_rgb_o;
+    o.pixel_x = dut_->pixel_x_o;
+    o.pixel_y = dut_->pixel_y_o;
     o.overflow = dut_->overflow_o;
     return o;
   }

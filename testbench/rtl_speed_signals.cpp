@@ -25,7 +25,8 @@ SC_MODULE(SignalBench) {
   sc_clock clk{"clk", 10, SC_NS};
   sc_signal<bool> rst_n{"rst_n"}, edge_eof{"edge_eof"}, edge_valid{"edge_valid"}, edge_ready{"edge_ready"};
   sc_signal<bool> pixel_covered{"pixel_covered"}, pixel_last{"pixel_last"}, pixel_valid{"pixel_valid"};
-  sc_signal<bool> pixel_ready{"pixel_ready"}, overflow{"overflow"};
+  sc_signal<bool> pixel_ready{"pixel_ready"}, overflow{"overflow"}, sparse{"sparse"};
+  sc_signal<uint32_t> pixel_x{"pixel_x"}, pixel_y{"pixel_y"};
   sc_signal<uint32_t> width{"width"}, height{"height"}, background{"background"}, pixel_rgb{"pixel_rgb"};
   sc_signal<sc_bv<tb::edge_layout::Bits>> edge{"edge"};
   Vwatkins_gouraud_top dut{"dut"};
@@ -51,6 +52,9 @@ SC_MODULE(SignalBench) {
     dut.edge_ready_o(edge_ready);
     dut.pixel_rgb_o(pixel_rgb);
     dut.pixel_covered_o(pixel_covered);
+    dut.pixel_x_o(pixel_x);
+    dut.pixel_y_o(pixel_y);
+    dut.sparse_i(sparse);
     dut.pixel_last_o(pixel_last);
     dut.pixel_valid_o(pixel_valid);
     dut.pixel_ready_i(pixel_ready);

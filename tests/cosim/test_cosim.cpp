@@ -124,10 +124,21 @@ TEST_P(RandomScenes, MatchTheModel) {
     }
     const RtlOptions o = random_options(seed);
     const RtlResult r = run_rtl(prepared, o);
-    expect_clean(scene.name + " (" + std::to_string(scene.width) + "x" + std::to_string(scene.height) + ", " +
-                     std::to_string(scene.polygons.size()) + " polygons)",
-                 o, r);
+    const std::string name = scene.name + " (" + std::to_string(scene.width) + "x" +
+                             std::to_string(scene.height) + ", " + std::to_string(scene.polygons.size()) +
+                             " polygons)";
+    expect_clean(name, o, r);
     if (!r.ok()) return;  // one report per batch is enough
+    // Every other scene again in sparse output mode, under the next stall pattern.
+    if (k % 2 == 0) {
+      RtlOptions so = random_options(seed + 1);
+      so.sparse = true;
+      const RtlResult sr = run_rtl(prepared, so);
+      expect_clean(name + " sparse", so, sr);
+      if (!sr.ok()) return;
+      EXPECT_EQ(sr.frames.at(0).image.rgb, r.frames.at(0).image.rgb) << name << " sparse image";
+      EXPECT_EQ(sr.frames.at(0).image.covered, r.frames.at(0).image.covered) << name << " sparse coverage";
+    }
   }
 }
 
@@ -160,11 +171,15 @@ TEST_P(ShippedScenes, MatchTheModelUnderGapsAndStalls) {
   if (prepared.width > rtl_max_width()) GTEST_SKIP() << "wider than the RTL line buffer";
   const Image model = GouraudPipeline().render(prepared);
   // Full speed first, then gaps and stalls, then all-stall bursts.
-  const RtlOptions patterns[] = {{1, 0.0, 0.0}, {2, 0.25, 0.3}, {3, 0.1, 0.02, 300}};
+  // Then sparse output mode at full speed and under gaps and stalls.
+  RtlOptions patterns[] = {{1, 0.0, 0.0}, {2, 0.25, 0.3}, {3, 0.1, 0.02, 300}, {4, 0.0, 0.0}, {5, 0.2, 0.3, 20}};
+  patterns[3].sparse = patterns[4].sparse = true;
   for (const RtlOptions& o : patterns) {
     const RtlResult r = run_rtl(prepared, o, &model);
-    expect_clean(GetParam(), o, r);
+    expect_clean(GetParam() + (o.sparse ? " sparse" : ""), o, r);
     if (!r.ok()) return;
+    EXPECT_EQ(r.frames.at(0).image.rgb, model.rgb) << GetParam() << (o.sparse ? " sparse" : "");
+    EXPECT_EQ(r.frames.at(0).image.covered, model.covered) << GetParam() << (o.sparse ? " sparse" : "");
   }
 }
 
@@ -206,6 +221,115 @@ TEST(Cosim, EmptyFrameIsAllBackground) {
   const RtlResult r = run_rtl(p, o);
   expect_clean("empty frame", o, r);
   EXPECT_EQ(r.pixels, 13 * 5);
+}
+
+TEST(Cosim, SparseEmptyFrameIsOneTerminatingBeat) {
+  // Sparse mode, nothing covered: one beat, not covered, background, at (width-1, height-1),
+  // with pixel_last_o (the model's sparse_stream says the same).
+  BuiltScene s;
+  s.name = "empty";
+  s.width = 40;
+  s.height = 60;
+  s.background[0] = 9;
+  s.background[1] = 8;
+  s.background[2] = 7;
+  const PreparedScene p = prepare(s);
+  const Image model = GouraudPipeline().render(p);
+  const std::vector<SparseBeat> beats = sparse_stream(model);
+  ASSERT_EQ(beats.size(), 1u);
+  EXPECT_EQ(beats[0].x, 39);
+  EXPECT_EQ(beats[0].y, 59);
+  EXPECT_FALSE(beats[0].covered);
+  EXPECT_TRUE(beats[0].last);
+  for (const RtlOptions& base : {RtlOptions{5, 0.0, 0.0}, RtlOptions{6, 0.3, 0.5, 8}}) {
+    RtlOptions o = base;
+    o.sparse = true;
+    const RtlResult r = run_rtl(p, o);
+    expect_clean("empty frame, sparse", o, r);
+    EXPECT_EQ(r.pixels, 1);
+    EXPECT_TRUE(r.frames.at(0).complete);
+    EXPECT_EQ(r.frames.at(0).image.rgb, model.rgb);
+    // An empty line costs a few cycles (the active-edge list's per-line overhead; the line
+    // buffer's read-out of it takes one), far below the width: 40x60 in well under 5 per line.
+    if (o.gap == 0 && o.stall == 0) EXPECT_LT(r.cycles, 5 * 60 + 50) << r.cycles << " cycles";
+  }
+}
+
+TEST(Cosim, SparseLastLineUncovered) {
+  // A triangle well inside the frame: the last line has no covered pixel, so the stream ends
+  // with the terminating (uncovered) beat; and the first lines are empty too.
+  BuiltScene s;
+  s.name = "inner triangle";
+  s.width = 30;
+  s.height = 20;
+  ScreenPolygon t;
+  t.v = {{5, 4, 0.3, 0, {200, 10, 10}}, {25, 6, 0.5, 0, {10, 200, 10}}, {12, 14, 0.7, 0, {10, 10, 200}}};
+  s.polygons = {t};
+  const PreparedScene p = prepare(s);
+  const Image model = GouraudPipeline().render(p);
+  const std::vector<SparseBeat> beats = sparse_stream(model);
+  ASSERT_GE(beats.size(), 2u);
+  EXPECT_FALSE(beats.back().covered);
+  EXPECT_EQ(beats.back().x, 29);
+  EXPECT_EQ(beats.back().y, 19);
+  for (std::size_t i = 0; i + 1 < beats.size(); ++i) EXPECT_TRUE(beats[i].covered && !beats[i].last);
+  for (const RtlOptions& base : {RtlOptions{7, 0.0, 0.0}, RtlOptions{8, 0.2, 0.4}, RtlOptions{9, 0.1, 0.05, 40}}) {
+    RtlOptions o = base;
+    o.sparse = true;
+    const RtlResult r = run_rtl(p, o, &model);
+    expect_clean("inner triangle, sparse", o, r);
+    EXPECT_EQ(r.pixels, static_cast<long long>(beats.size()));
+    EXPECT_EQ(r.frames.at(0).image.rgb, model.rgb);
+    EXPECT_EQ(r.frames.at(0).image.covered, model.covered);
+  }
+}
+
+TEST(Cosim, SparseCheckerNamesTheFirstMismatchingBeat) {
+  const PreparedScene p = prepare(two_triangles(20, 10, 0.0));
+  Image want = GouraudPipeline().render(p);
+  int fx = -1, fy = -1;  // the first covered pixel from (7, 3) on
+  for (int k = 3 * 20 + 7; k < 20 * 10 && fx < 0; ++k)
+    if (want.covered[std::size_t(k)]) fx = k % 20, fy = k / 20;
+  ASSERT_GE(fx, 0);
+  want.at(fx, fy)[1] ^= 0x10;
+  RtlOptions o{52, 0.2, 0.2};
+  o.sparse = true;
+  const RtlResult r = run_rtl(p, o, &want);
+  EXPECT_EQ(r.mismatches, 1);
+  EXPECT_FALSE(r.ok());
+  const std::string at = "pixel (" + std::to_string(fx) + ", " + std::to_string(fy) + ")";
+  EXPECT_NE(r.first_mismatch.find("pixel output: sparse frame 0"), std::string::npos) << r.first_mismatch;
+  EXPECT_NE(r.first_mismatch.find(at), std::string::npos) << r.first_mismatch;
+  EXPECT_NE(r.first_mismatch.find("model " + at), std::string::npos) << r.first_mismatch;
+  EXPECT_TRUE(r.frames.at(0).complete);
+}
+
+TEST(Cosim, FramesBackToBackSwitchingModes) {
+  const PreparedScene a = prepare(two_triangles(40, 30, 0.0));
+  const PreparedScene b = prepare(two_triangles(40, 30, 3.3));
+  const PreparedScene c = prepare(two_triangles(23, 41, 1.7));
+  BuiltScene e;
+  e.name = "empty";
+  e.width = 40;
+  e.height = 30;
+  const PreparedScene empty = prepare(e);
+  const std::vector<const PreparedScene*> scenes = {&a, &b, &a, &c, &b, &empty, &a, &empty};
+  const std::vector<bool> modes = {false, true, true, false, true, true, false, false};
+  for (const RtlOptions& base : {RtlOptions{61, 0.0, 0.0}, RtlOptions{62, 0.3, 0.4}, RtlOptions{63, 0.05, 0.05, 50}}) {
+    RtlOptions o = base;
+    o.sparse_frames = modes;
+    const RtlResult r = run_rtl_frames(scenes, o);
+    expect_clean("eight frames back to back, switching modes", o, r);
+    ASSERT_EQ(r.frames.size(), scenes.size());
+    for (std::size_t f = 0; f < scenes.size(); ++f) {
+      EXPECT_TRUE(r.frames[f].complete) << "frame " << f;
+      EXPECT_EQ(r.frames[f].sparse, modes[f]) << "frame " << f;
+      const Image m = GouraudPipeline().render(*scenes[f]);
+      EXPECT_EQ(r.frames[f].image.rgb, m.rgb) << "frame " << f;
+      EXPECT_EQ(r.frames[f].image.covered, m.covered) << "frame " << f;
+      if (modes[f]) EXPECT_EQ(r.frames[f].pixels, static_cast<long long>(sparse_stream(m).size())) << "frame " << f;
+    }
+  }
 }
 
 TEST(Cosim, FramesBackToBack) {

@@ -1,6 +1,8 @@
 // rtl/scanline_buffer.sv against ScanlineBuffer: random fragment streams per line (same x back
 // to back, equal depths, empty lines, full lines), end-of-line markers, several frames, under
-// random valid gaps and pixel back-pressure; every pixel, its coverage and the last flag.
+// random valid gaps and pixel back-pressure; every pixel, its coverage, position and the last
+// flag. Sparse mode (sparse_i): only the covered pixels (ScanlineBuffer::next_covered), plus the
+// terminating uncovered beat at (width-1, height-1) when the last line has no covered pixel.
 #include <gtest/gtest.h>
 
 #include <deque>
@@ -23,9 +25,11 @@ struct In {
 struct Px {
   std::uint32_t rgb;
   bool covered, last;
+  int x, y;
 };
 
-void run(int frames, int gap_pct, int bp_pct, std::uint64_t seed) {
+// sparse: 0 full frames, 1 sparse frames, 2 alternating (frame by frame).
+void run(int frames, int gap_pct, int bp_pct, std::uint64_t seed, int sparse = 0) {
   Harness<Vscanline_buffer> h;
   std::mt19937_64 rng(seed);
   Stalls gaps{rng, gap_pct}, bp{rng, bp_pct};
@@ -38,6 +42,9 @@ void run(int frames, int gap_pct, int bp_pct, std::uint64_t seed) {
     h.dut.width_i = width;
     h.dut.height_i = height;
     h.dut.background_i = (bg[0] << 16) | (bg[1] << 8) | bg[2];
+    const bool sp = sparse == 1 || (sparse == 2 && fr % 2 == 1);
+    h.dut.sparse_i = sp;
+    bool last_line_covered = false;
     // Stimulus and expected pixels of the whole frame, line by line, from the model.
     std::deque<In> in;
     std::deque<Px> want;
@@ -58,10 +65,21 @@ void run(int frames, int gap_pct, int bp_pct, std::uint64_t seed) {
         in.push_back({false, f});
       }
       in.push_back({true, Fragment{}});
-      for (int px = 0; px < width; ++px) {
-        const auto p = model.pixel(px);
-        want.push_back({(std::uint32_t(p[0]) << 16) | (std::uint32_t(p[1]) << 8) | p[2], model.covered(px),
-                        y == height - 1 && px == width - 1});
+      auto pack = [](const std::array<std::uint8_t, 3>& p) {
+        return (std::uint32_t(p[0]) << 16) | (std::uint32_t(p[1]) << 8) | p[2];
+      };
+      if (sp) {
+        for (int px = model.next_covered(0); px < width; px = model.next_covered(px + 1)) {
+          want.push_back({pack(model.pixel(px)), true, false, px, y});
+          last_line_covered = y == height - 1;
+        }
+        if (y == height - 1) {
+          if (!last_line_covered) want.push_back({pack(bg), false, false, width - 1, y});
+          want.back().last = true;
+        }
+      } else {
+        for (int px = 0; px < width; ++px)
+          want.push_back({pack(model.pixel(px)), model.covered(px), y == height - 1 && px == width - 1, px, y});
       }
     }
     h.dut.frag_valid_i = 0;
@@ -80,11 +98,14 @@ void run(int frames, int gap_pct, int bp_pct, std::uint64_t seed) {
       const bool in_fire = h.dut.frag_valid_i && h.dut.frag_ready_o;
       if (h.dut.pixel_valid_o && h.dut.pixel_ready_i) {
         const Px& w = want.front();
-        if ((h.dut.pixel_rgb_o != w.rgb || h.dut.pixel_covered_o != w.covered || h.dut.pixel_last_o != w.last) &&
+        if ((h.dut.pixel_rgb_o != w.rgb || h.dut.pixel_covered_o != w.covered || h.dut.pixel_last_o != w.last ||
+             int(h.dut.pixel_x_o) != w.x || int(h.dut.pixel_y_o) != w.y) &&
             bad++ < 8)
-          ADD_FAILURE() << "frame " << fr << " pixel " << checked << ": rtl " << std::hex << h.dut.pixel_rgb_o << " cov "
-                        << int(h.dut.pixel_covered_o) << " last " << int(h.dut.pixel_last_o) << "; model " << w.rgb
-                        << " cov " << w.covered << " last " << w.last;
+          ADD_FAILURE() << "frame " << fr << (sp ? " (sparse)" : "") << " pixel " << checked << ": rtl ("
+                        << h.dut.pixel_x_o << ", " << h.dut.pixel_y_o << ") " << std::hex << h.dut.pixel_rgb_o
+                        << " cov " << int(h.dut.pixel_covered_o) << " last " << int(h.dut.pixel_last_o) << "; model ("
+                        << std::dec << w.x << ", " << w.y << ") " << std::hex << w.rgb << " cov " << w.covered
+                        << " last " << w.last;
         want.pop_front();
         ++checked;
       }
@@ -107,3 +128,7 @@ void run(int frames, int gap_pct, int bp_pct, std::uint64_t seed) {
 TEST(RtlScanlineBuffer, FullRate) { run(60, 0, 0, 1); }
 TEST(RtlScanlineBuffer, GapsAndBackPressure) { run(60, 40, 40, 2); }
 TEST(RtlScanlineBuffer, HeavyBackPressure) { run(30, 5, 80, 3); }
+TEST(RtlScanlineBuffer, SparseFullRate) { run(60, 0, 0, 4, 1); }
+TEST(RtlScanlineBuffer, SparseGapsAndBackPressure) { run(60, 40, 40, 5, 1); }
+TEST(RtlScanlineBuffer, SparseHeavyBackPressure) { run(30, 5, 80, 6, 1); }
+TEST(RtlScanlineBuffer, AlternatingModes) { run(60, 20, 30, 7, 2); }

@@ -84,16 +84,20 @@ struct Top {
   }
   // Streams one frame; compares to `ref` unless null. Returns the cycles from the first edge
   // beat offered to the last pixel taken.
-  std::uint64_t frame(const PreparedScene& p, const Image* ref, int gap_pct, int bp_pct) {
+  // sparse: sparse_i = 1, the beats compared with sparse_stream(*ref) (ref needed).
+  std::uint64_t frame(const PreparedScene& p, const Image* ref, int gap_pct, int bp_pct, bool sparse = false) {
     Stalls gaps{rng, gap_pct}, bp{rng, bp_pct};
     auto& d = h.dut;
     d.width_i = p.width;
     d.height_i = p.height;
     d.background_i = (p.background[0] << 16) | (p.background[1] << 8) | p.background[2];
+    d.sparse_i = sparse;
+    std::vector<SparseBeat> beats;
+    if (sparse) beats = sparse_stream(*ref);
     std::size_t next = 0;
     bool eof_sent = false;
     long long pix = 0;
-    const long long total = static_cast<long long>(p.width) * p.height;
+    const long long total = sparse ? static_cast<long long>(beats.size()) : static_cast<long long>(p.width) * p.height;
     const std::uint64_t start = h.cycles;
     int bad = 0;
     while (pix < total || !eof_sent) {
@@ -107,9 +111,30 @@ struct Top {
       const bool efire = d.edge_valid_i && d.edge_ready_o;
       if (d.pixel_valid_o && d.pixel_ready_i) {
         EXPECT_LT(pix, total) << "pixel beyond the frame";
+        if (sparse && pix < total) {
+          const SparseBeat& b = beats[std::size_t(pix)];
+          const std::uint32_t rgb = (std::uint32_t(b.rgb[0]) << 16) | (std::uint32_t(b.rgb[1]) << 8) | b.rgb[2];
+          if ((d.pixel_rgb_o != rgb || bool(d.pixel_covered_o) != b.covered || bool(d.pixel_last_o) != b.last ||
+               int(d.pixel_x_o) != b.x || int(d.pixel_y_o) != b.y) &&
+              bad++ < 8)
+            ADD_FAILURE() << "sparse beat " << pix << ": rtl (" << d.pixel_x_o << "," << d.pixel_y_o << ") " << std::hex
+                          << d.pixel_rgb_o << " cov " << int(d.pixel_covered_o) << " last " << int(d.pixel_last_o)
+                          << ", model (" << std::dec << b.x << "," << b.y << ") " << std::hex << rgb << " cov "
+                          << b.covered << " last " << b.last;
+          ++pix;
+          h.tick();
+          if (efire) {
+            if (d.edge_eof_i) eof_sent = true;
+            else ++next;
+            d.edge_valid_i = 0;
+          }
+          continue;
+        }
         const int x = static_cast<int>(pix % p.width), y = static_cast<int>(pix / p.width);
         const bool last = pix == total - 1;
         EXPECT_EQ(bool(d.pixel_last_o), last) << "pixel " << x << "," << y;
+        EXPECT_EQ(int(d.pixel_x_o), x);
+        EXPECT_EQ(int(d.pixel_y_o), y);
         if (ref) {
           const std::uint8_t* r = ref->at(x, y);
           const std::uint32_t rgb = (std::uint32_t(r[0]) << 16) | (std::uint32_t(r[1]) << 8) | r[2];
@@ -196,6 +221,45 @@ TEST(RtlTop, CyclesPerFrame) {
                 p.edges.size(), pipe.stats().fragments, static_cast<unsigned long long>(cycles), p.width * p.height);
     // Plus the last line's read-out and the pipeline's fill latency.
     EXPECT_LT(cycles, bound + p.width + 2ull * p.height + 100) << "per-line bound " << bound;
+  }
+}
+
+TEST(RtlTop, SparseRandomScenesAndModeSwitches) {
+  Top t;
+  std::mt19937_64 rng(15);
+  int frames = 0;
+  while (frames < 24) {
+    const int w = 1 + static_cast<int>(rng() % MaxWidth), h = 1 + static_cast<int>(rng() % 70);
+    PreparedScene p;
+    if (!prepare_ok(random_scene(w, h, static_cast<int>(rng() % 7), rng), p)) continue;
+    GouraudPipeline pipe(MaxActiveEdges);
+    const Image ref = pipe.render(p);
+    t.frame(p, &ref, frames % 2 ? 40 : 10, frames % 3 ? 40 : 0, frames % 4 != 3);
+    ++frames;
+  }
+  EXPECT_FALSE(t.h.dut.overflow_o);
+}
+
+// Sparse mode: a line costs max(1, covered pixels, fragments + marker) cycles, not the width.
+TEST(RtlTop, SparseCyclesPerFrame) {
+  Top t;
+  std::mt19937_64 rng(16);
+  for (int i = 0; i < 4; ++i) {
+    PreparedScene p;
+    if (!prepare_ok(random_scene(MaxWidth, 48, 1 + i, rng), p)) continue;
+    GouraudPipeline pipe(MaxActiveEdges);
+    std::vector<std::uint64_t> per_line(p.height, 0);
+    const Image ref = pipe.render(p, [&](int y, const Fragment&, bool) { ++per_line[y]; });
+    std::uint64_t bound = 0;
+    for (int y = 0; y < p.height; ++y) {
+      std::uint64_t cov = 0;
+      for (int x = 0; x < p.width; ++x) cov += ref.is_covered(x, y);
+      bound += std::max<std::uint64_t>({1, cov, per_line[y] + 1});
+    }
+    const std::uint64_t cycles = t.frame(p, &ref, 0, 0, true);
+    std::printf("top sparse: %dx%d, %lld fragments, %llu cycles (bound %llu)\n", p.width, p.height,
+                pipe.stats().fragments, static_cast<unsigned long long>(cycles), static_cast<unsigned long long>(bound));
+    EXPECT_LT(cycles, bound + p.width + 3ull * p.height + 100) << "per-line bound " << bound;
   }
 }
 
