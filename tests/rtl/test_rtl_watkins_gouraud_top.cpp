@@ -172,9 +172,12 @@ bool prepare_ok(const BuiltScene& s, PreparedScene& p, bool verbose = false) {
 
 }  // namespace
 
-TEST(RtlTop, RandomScenesGapsAndBackPressure) {
+// 24 random frames back to back with alternating gap and back-pressure rates; `sparse(frame)`
+// picks the output mode of each frame.
+template <class SparseOf>
+void random_frames(std::uint64_t seed, SparseOf sparse) {
   Top t;
-  std::mt19937_64 rng(11);
+  std::mt19937_64 rng(seed);
   int frames = 0;
   while (frames < 24) {
     const int w = 1 + static_cast<int>(rng() % MaxWidth), h = 1 + static_cast<int>(rng() % 70);
@@ -182,10 +185,14 @@ TEST(RtlTop, RandomScenesGapsAndBackPressure) {
     if (!prepare_ok(random_scene(w, h, static_cast<int>(rng() % 7), rng), p)) continue;
     GouraudPipeline pipe(MaxActiveEdges);
     const Image ref = pipe.render(p);
-    t.frame(p, &ref, frames % 2 ? 40 : 10, frames % 3 ? 40 : 0);
+    t.frame(p, &ref, frames % 2 ? 40 : 10, frames % 3 ? 40 : 0, sparse(frames));
     ++frames;
   }
   EXPECT_FALSE(t.h.dut.overflow_o);
+}
+
+TEST(RtlTop, RandomScenesGapsAndBackPressure) {
+  random_frames(11, [](int) { return false; });
 }
 
 TEST(RtlTop, SharedEdgeMesh) {
@@ -225,19 +232,7 @@ TEST(RtlTop, CyclesPerFrame) {
 }
 
 TEST(RtlTop, SparseRandomScenesAndModeSwitches) {
-  Top t;
-  std::mt19937_64 rng(15);
-  int frames = 0;
-  while (frames < 24) {
-    const int w = 1 + static_cast<int>(rng() % MaxWidth), h = 1 + static_cast<int>(rng() % 70);
-    PreparedScene p;
-    if (!prepare_ok(random_scene(w, h, static_cast<int>(rng() % 7), rng), p)) continue;
-    GouraudPipeline pipe(MaxActiveEdges);
-    const Image ref = pipe.render(p);
-    t.frame(p, &ref, frames % 2 ? 40 : 10, frames % 3 ? 40 : 0, frames % 4 != 3);
-    ++frames;
-  }
-  EXPECT_FALSE(t.h.dut.overflow_o);
+  random_frames(15, [](int frame) { return frame % 4 != 3; });
 }
 
 // Sparse mode: a line costs max(1, covered pixels, fragments + marker) cycles, not the width.
