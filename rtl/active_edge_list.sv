@@ -156,21 +156,10 @@ module active_edge_list #(
   assign swap = frame_q && !drain_q && ((line_q == '0) || eol_sent_q) && !st_valid && src_done;
 
   always_ff @(posedge clk_i) begin
-    if (!rst_ni) begin
-      frame_q    <= 1'b0;
-      drain_q    <= 1'b0;
-      sel_q      <= 1'b0;
-      line_q     <= '0;
-      rd_q       <= '0;
-      cnt_q[0]   <= '0;
-      cnt_q[1]   <= '0;
-      out_done_q <= 1'b0;
-      inc_done_q <= 1'b0;
-      eol_sent_q <= 1'b0;
-      id_q       <= '0;
-      overflow_o <= 1'b0;
-    end else if (start_i && !frame_q) begin
-      frame_q    <= 1'b1;
+    if (!rst_ni || (start_i && !frame_q)) begin
+      // Reset and frame start clear the same per-frame state; only reset also clears the bank
+      // select and the sticky overflow flag, and a frame start leaves frame_q set.
+      frame_q    <= rst_ni;
       drain_q    <= 1'b0;
       line_q     <= '0;
       rd_q       <= '0;
@@ -180,6 +169,10 @@ module active_edge_list #(
       inc_done_q <= 1'b0;
       eol_sent_q <= 1'b0;
       id_q       <= '0;
+      if (!rst_ni) begin
+        sel_q      <= 1'b0;
+        overflow_o <= 1'b0;
+      end
     end else begin
       if (advance) begin
         rd_q       <= rd_q + 1'b1;

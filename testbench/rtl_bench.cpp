@@ -20,6 +20,7 @@
 
 #include "Vwatkins_gouraud_top.h"
 #include "Vwatkins_gouraud_top___024root.h"  // the public internal stage signals
+#include "fst_trace.hpp"
 #include "frame_driver.hpp"
 
 // libsystemc's own main() calls sc_main; our programs have their own main() and run the kernel
@@ -96,7 +97,7 @@ SC_MODULE(GouraudBench) {
   void settle(std::uint64_t t) {
     clk.write(false);
     wait(half_);
-    if (tfp_) tfp_->dump(t);
+    trace_.dump(t);
   }
   detail::PinsOut sample() {
     detail::PinsOut o;
@@ -113,18 +114,13 @@ SC_MODULE(GouraudBench) {
   void posedge(std::uint64_t t) {
     clk.write(true);
     wait(half_);
-    if (tfp_) tfp_->dump(t);
+    trace_.dump(t);
   }
   bool trace_open(const std::string& path) {
-    tfp_ = std::make_unique<VerilatedFstC>();
-    dut.trace(tfp_.get(), 99);
-    tfp_->open(path.c_str());
-    if (!tfp_->isOpen()) tfp_.reset();
-    return tfp_ != nullptr;
+    return trace_.open(dut, path);
   }
   void trace_close() {
-    if (tfp_) tfp_->close();
-    tfp_.reset();
+    trace_.close();
   }
   const detail::StageTaps& stage_taps() {
     if (!taps_.ae_valid) taps_ = detail::stage_taps(*dut.rootp);
@@ -142,7 +138,7 @@ SC_MODULE(GouraudBench) {
   const sc_time half_{5, SC_NS};
   EdgeWords last_edge_{};
   sc_bv<edge_layout::Bits> edge_bv_;
-  std::unique_ptr<VerilatedFstC> tfp_;
+  FstTrace trace_;
   detail::StageTaps taps_;
 };
 

@@ -10,6 +10,7 @@
 
 #include "Vwatkins_gouraud_top_cc.h"
 #include "Vwatkins_gouraud_top_cc___024root.h"  // the public internal stage signals
+#include "fst_trace.hpp"
 #include "frame_driver.hpp"
 #include "rtl_bench.hpp"
 
@@ -43,7 +44,7 @@ class CcHarness {
   void settle(std::uint64_t t) {
     dut_->clk_i = 0;
     dut_->eval();
-    if (tfp_) tfp_->dump(t);
+    trace_.dump(t);
   }
   detail::PinsOut sample() {
     detail::PinsOut o;
@@ -60,18 +61,13 @@ class CcHarness {
   void posedge(std::uint64_t t) {
     dut_->clk_i = 1;
     dut_->eval();
-    if (tfp_) tfp_->dump(t);
+    trace_.dump(t);
   }
   bool trace_open(const std::string& path) {
-    tfp_ = std::make_unique<VerilatedFstC>();
-    dut_->trace(tfp_.get(), 99);
-    tfp_->open(path.c_str());
-    if (!tfp_->isOpen()) tfp_.reset();
-    return tfp_ != nullptr;
+    return trace_.open(*dut_, path);
   }
   void trace_close() {
-    if (tfp_) tfp_->close();
-    tfp_.reset();
+    trace_.close();
   }
   const detail::StageTaps& stage_taps() {
     if (!taps_.ae_valid) taps_ = detail::stage_taps(*dut_->rootp);
@@ -87,7 +83,7 @@ class CcHarness {
  private:
   VerilatedContext ctx_;
   std::unique_ptr<Vwatkins_gouraud_top_cc> dut_;
-  std::unique_ptr<VerilatedFstC> tfp_;
+  FstTrace trace_;
   detail::StageTaps taps_;
 };
 
