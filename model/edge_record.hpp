@@ -2,7 +2,7 @@
 // pipeline. Gouraud 1971 lists what Watkins keeps per edge — first scan line, number of scan
 // lines, X and Z at the highest point and their slopes — plus the shade S and its slope
 // ΔS = (S2 − S1)/n. We keep a channel vector instead of named fields so the same record carries
-// X, Z, R, G, B now and Nx, Ny, Nz later. rtl/watkins_pkg.sv has the same layout.
+// X, Z and R, G, B (Gouraud) or Nx, Ny, Nz (Phong). rtl/watkins_pkg.sv has the same layout.
 #pragma once
 
 #include <array>
@@ -19,6 +19,7 @@ struct EdgeRecord {
   int y0 = 0;          // first scan line whose pixel centre the edge crosses (already clipped to >= 0)
   int n = 0;           // number of scan lines it crosses (>= 1; clipped to the screen)
   int poly = 0;        // polygon id (PolyIdBits): segments pair the edges of one polygon
+  int material = 0;    // material id (MaterialIdBits) of the polygon; Phong shades with it
   int id = 0;          // position in the y-sorted stream; breaks ties in X order deterministically
   ChannelVector value{};  // channel values at the centre of scan line y0 (prestepped)
   ChannelVector slope{};  // per-scan-line increments, rounded to nearest

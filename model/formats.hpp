@@ -2,9 +2,11 @@
 // rtl/watkins_pkg.sv is generated from this list by `watkins_gen_pkg` (tests/test_formats.cpp
 // fails when the committed package and this header differ), so C++ and SystemVerilog agree.
 //
-// Every interpolated quantity is a *channel*: X (pixels), Z (depth), R, G, B (8-bit levels), and
-// next Nx, Ny, Nz. A channel value and its slope are signed two's complement words of ChannelBits
-// bits with FracBits fraction bits, one format for all, so one incrementer and one interpolator
+// Every interpolated quantity is a *channel*: X (pixels), Z (depth), and R, G, B (8-bit levels)
+// for Gouraud shading or Nx, Ny, Nz (the vertex normal, |N| = 1) for Phong shading, in the same
+// slots: Phong takes the colour from the polygon's material, so both carry five channels. A
+// channel value and its slope are signed two's complement words of ChannelBits bits with
+// FracBits fraction bits, one format for all, so one incrementer and one interpolator
 // serve every channel. The integer part each channel needs is listed beside it.
 #pragma once
 
@@ -18,12 +20,15 @@
   X(ChannelBits, 42, "signed word of every channel value and slope")                             \
   X(DepthBits, 24, "depth integer part: depth in [0,1) maps to [0, 2^DepthBits)")                \
   X(ShadeBits, 8, "shade integer part: 8-bit levels 0..255")                                     \
-  X(NumChannels, 5, "channels per edge record: X, Z, R, G, B")                                   \
+  X(NumChannels, 5, "channels per edge record: X, Z, then R, G, B (Gouraud) or Nx, Ny, Nz (Phong)") \
   X(ChanX, 0, "channel index of X")                                                              \
   X(ChanZ, 1, "channel index of depth")                                                          \
   X(ChanR, 2, "channel index of red")                                                            \
   X(ChanG, 3, "channel index of green")                                                          \
   X(ChanB, 4, "channel index of blue")                                                           \
+  X(ChanNx, 2, "phong: channel index of the normal's x (the slot of red)")                       \
+  X(ChanNy, 3, "phong: channel index of the normal's y")                                         \
+  X(ChanNz, 4, "phong: channel index of the normal's z")                                         \
   X(RecipBits, 24, "span reciprocal: mantissa bits of 1/(X_F - X_E), relative error < 2^-23")    \
   X(AlphaBits, 24, "fraction bits of the prestep coefficient alpha0 = (x_c - X_E)/(X_F - X_E)")  \
   X(PolyIdBits, 16, "polygon id bits: at most 65536 polygons per frame")                         \
@@ -41,7 +46,8 @@
   X(PhongPowBits, 20, "phong: fraction bits of cos(s) and cos(s)^n, both in [0,1]")              \
   X(MaterialBits, 9, "phong: unsigned width of d and W (1.0 = 2^MaterialFracBits)")              \
   X(MaterialFracBits, 8, "phong: fraction bits of d and W")                                      \
-  X(ShininessBits, 8, "phong: unsigned width of the specular exponent n (0..255)")
+  X(ShininessBits, 8, "phong: unsigned width of the specular exponent n (0..255)")              \
+  X(MaterialIdBits, 4, "material id carried by every edge, segment and fragment (16 materials)")
 
 namespace watkins::fmt {
 #define WATKINS_DECLARE_FORMAT(name, value, comment) constexpr int name = value;

@@ -35,9 +35,21 @@ struct PrepareOptions {
   int max_active_edges = fmt::MaxActiveEdges;  // capacity of the active-edge list
 };
 
+// A material in the phong_shader's formats (see model/phong_shader.hpp).
+struct QuantizedMaterial {
+  std::array<int, 3> cp{};  // R, G, B reflectance, 8-bit levels (255 = 1.0)
+  int d = 0, w = 0;         // MaterialBits, 1.0 = 2^MaterialFracBits
+  int shininess = 0;        // ShininessBits
+};
+
 struct PreparedScene {
   int width = 0, height = 0;
   std::array<std::uint8_t, 3> background{};
+  // Phong: edge channels ChanNx.. hold normals, every edge a material id; light and eye are
+  // unit vectors in Q2.14 (UnitBits), frame constants of the shader.
+  ShadingMode shading = ShadingMode::Gouraud;
+  std::vector<QuantizedMaterial> materials;  // at most 2^MaterialIdBits
+  std::array<i64, 3> light{}, eye{};
   int polygons = 0;
   std::vector<EdgeRecord> edges;  // sorted by (y0, id)
   SceneNeeds needs;

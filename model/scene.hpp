@@ -21,11 +21,16 @@ class SceneError : public std::runtime_error {
 
 enum class ShadingRule { Gouraud, Lambert, Warnock, Romney };
 enum class DepthMode { InverseZ, Z };  // Gouraud's eq. (1): interpolate 1/Z; eq. (2): interpolate Z
+// Which pipeline shades: Gouraud interpolates vertex shades (computed by a ShadingRule);
+// Phong interpolates vertex normals and applies Phong's eq. (3) at every pixel.
+enum class ShadingMode { Gouraud, Phong };
 
 const char* to_string(ShadingRule r);
 const char* to_string(DepthMode m);
 std::optional<ShadingRule> parse_shading_rule(const std::string& s);  // "gouraud", "lambert", ...
 std::optional<DepthMode> parse_depth_mode(const std::string& s);      // "inverse-z", "z"
+const char* to_string(ShadingMode m);
+std::optional<ShadingMode> parse_shading_mode(const std::string& s);  // "gouraud", "phong"
 
 struct Scene;  // parsed scene, defined in scene_types.hpp
 
@@ -34,6 +39,14 @@ struct BuildOptions {
   std::optional<ShadingRule> rule;
   std::optional<DepthMode> depth;
   std::optional<bool> cull_backfaces;
+  std::optional<ShadingMode> shading;
+};
+
+// A material as Phong's eq. (3) uses it: S = Cp [cos(i)(1 - d) + d] + W cos(s)^n.
+struct PhongMaterial {
+  double cp[3] = {1, 1, 1};  // reflectance per channel, [0, 1]
+  double d = 0.2, W = 0.5;   // d in [0, 1], W in [0, 511/256]
+  int n = 10;                // 0..255
 };
 
 // The scene as the pipeline sees it: screen size, background and screen-space polygons.
@@ -43,6 +56,12 @@ struct BuiltScene {
   double background[3] = {0, 0, 0};  // 8-bit levels
   ShadingRule rule = ShadingRule::Gouraud;
   DepthMode depth = DepthMode::InverseZ;
+  ShadingMode shading = ShadingMode::Gouraud;
+  // Phong: camera-space unit vectors towards the light and towards the eye (both at infinity,
+  // eye = (0, 0, -1)), and the materials ScreenPolygon::material indexes.
+  double light[3] = {0, 0, -1};
+  double eye[3] = {0, 0, -1};
+  std::vector<PhongMaterial> materials;
   std::vector<ScreenPolygon> polygons;
   int culled_backfaces = 0;   // dropped by back-face culling
   int near_clipped = 0;       // dropped: a vertex behind the camera's near plane

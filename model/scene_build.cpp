@@ -42,6 +42,14 @@ std::optional<DepthMode> parse_depth_mode(const std::string& s) {
   return std::nullopt;
 }
 
+const char* to_string(ShadingMode m) { return m == ShadingMode::Gouraud ? "gouraud" : "phong"; }
+
+std::optional<ShadingMode> parse_shading_mode(const std::string& s) {
+  for (ShadingMode m : {ShadingMode::Gouraud, ShadingMode::Phong})
+    if (s == to_string(m)) return m;
+  return std::nullopt;
+}
+
 const std::string& default_scene_text() {
   static const std::string s =
 #include "default_scene.inc"

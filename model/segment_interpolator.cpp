@@ -16,6 +16,7 @@ i64 first_centre_at_or_after(i64 x) { return static_cast<i64>(floor_shift(x - kH
 SpanSetup SegmentInterpolator::setup(const Segment& s, int width) {
   SpanSetup span;
   span.poly = s.poly;
+  span.material = s.material;
   const i64 xe = s.e[fmt::ChanX], xf = s.f[fmt::ChanX];
   span.x_start = static_cast<int>(std::max<i64>(first_centre_at_or_after(xe), 0));
   span.x_end = static_cast<int>(std::min<i64>(first_centre_at_or_after(xf), width));
@@ -45,11 +46,14 @@ Fragment SegmentInterpolator::fragment(const SpanSetup& span, int x, const Chann
   Fragment f;
   f.x = x;
   f.poly = span.poly;
+  f.material = span.material;
   f.depth = static_cast<std::uint32_t>(
       clamp_i(round_shift(value[fmt::ChanZ], fmt::FracBits), 0, fmt::DepthMax));
   for (int c = 0; c < fmt::ShadeChannels; ++c)
     f.rgb[c] = static_cast<std::uint8_t>(
         clamp_i(round_shift(value[fmt::ChanR + c], fmt::FracBits), 0, fmt::ShadeMax));
+  for (int c = 0; c < 3; ++c)
+    f.normal[c] = saturate_signed(value[fmt::ChanNx + c], fmt::NormalInBits);
   return f;
 }
 

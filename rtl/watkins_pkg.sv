@@ -11,12 +11,15 @@ package watkins_pkg;
   localparam int ChannelBits = 42;  // signed word of every channel value and slope
   localparam int DepthBits = 24;  // depth integer part: depth in [0,1) maps to [0, 2^DepthBits)
   localparam int ShadeBits = 8;  // shade integer part: 8-bit levels 0..255
-  localparam int NumChannels = 5;  // channels per edge record: X, Z, R, G, B
+  localparam int NumChannels = 5;  // channels per edge record: X, Z, then R, G, B (Gouraud) or Nx, Ny, Nz (Phong)
   localparam int ChanX = 0;  // channel index of X
   localparam int ChanZ = 1;  // channel index of depth
   localparam int ChanR = 2;  // channel index of red
   localparam int ChanG = 3;  // channel index of green
   localparam int ChanB = 4;  // channel index of blue
+  localparam int ChanNx = 2;  // phong: channel index of the normal's x (the slot of red)
+  localparam int ChanNy = 3;  // phong: channel index of the normal's y
+  localparam int ChanNz = 4;  // phong: channel index of the normal's z
   localparam int RecipBits = 24;  // span reciprocal: mantissa bits of 1/(X_F - X_E), relative error < 2^-23
   localparam int AlphaBits = 24;  // fraction bits of the prestep coefficient alpha0 = (x_c - X_E)/(X_F - X_E)
   localparam int PolyIdBits = 16;  // polygon id bits: at most 65536 polygons per frame
@@ -35,6 +38,7 @@ package watkins_pkg;
   localparam int MaterialBits = 9;  // phong: unsigned width of d and W (1.0 = 2^MaterialFracBits)
   localparam int MaterialFracBits = 8;  // phong: fraction bits of d and W
   localparam int ShininessBits = 8;  // phong: unsigned width of the specular exponent n (0..255)
+  localparam int MaterialIdBits = 4;  // material id carried by every edge, segment and fragment (16 materials)
   localparam int MaxScreen = 4096;  // 2^ScreenBits
   localparam int ShadeMax = 255;  // largest 8-bit level
   localparam int SubPixelToFrac = 12;  // FracBits - SubPixelBits
@@ -49,6 +53,7 @@ package watkins_pkg;
     logic [LineBits-1:0] y0;                            // first scan line
     logic [LineBits-1:0] n;                             // scan lines crossed
     logic [PolyIdBits-1:0] poly;                        // polygon id
+    logic [MaterialIdBits-1:0] material;                // material of the polygon (Phong)
     logic [NumChannels-1:0][ChannelBits-1:0] value;     // channels at scan line y0
     logic [NumChannels-1:0][ChannelBits-1:0] slope;     // per-scan-line increments
   } edge_t;

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Lint and synthesis check of rtl/: Verilator --lint-only -Wall on every file (package first),
-# then yosys 0.23: read, hierarchy/proc/check, and a full synth_ice40 of watkins_gouraud_top with
+# then yosys 0.23: read, hierarchy/proc/check, and a full synth_ice40 of watkins_top with
 # small buffers (MaxWidth, MaxActiveEdges) so it finishes in a couple of minutes. Fails on any
 # warning or error. The only yosys warning tolerated is "Replacing memory ... with list of
 # registers": pipeline register arrays (span_reciprocal stages, active-edge banks) are meant to
@@ -19,7 +19,7 @@ LOG=$(mktemp -d)
 trap 'rm -rf "$LOG"' EXIT
 
 echo "== verilator --lint-only -Wall"
-verilator --lint-only -Wall --top-module watkins_gouraud_top "${VLT[@]}" "$PKG" "${SRCS[@]}"
+verilator --lint-only -Wall --top-module watkins_top "${VLT[@]}" "$PKG" "${SRCS[@]}"
 # Every module on its own as well, so parameters the top does not use are checked too.
 for f in "${SRCS[@]}"; do
   m=$(basename "$f" .sv)
@@ -39,7 +39,7 @@ yosys_check() {  # $1: label, $2: script
 
 READ="read_verilog -sv $PKG ${SRCS[*]}"
 echo "== yosys read + hierarchy/proc/check (default parameters)"
-yosys_check elab "$READ; hierarchy -check -top watkins_gouraud_top; proc; check -assert"
+yosys_check elab "$READ; hierarchy -check -top watkins_top; proc; check -assert"
 echo "   clean"
 
 if [[ "${1:-}" == "--synth" ]]; then
@@ -48,7 +48,7 @@ if [[ "${1:-}" == "--synth" ]]; then
   # is quadratic in yosys 0.23 and alone takes over 10 minutes here; the rest of that step is
   # run by hand. -dsp maps the span-setup multipliers to SB_MAC16 (iCE40 UltraPlus), which
   # keeps ABC's work, and the run, to about 3 minutes.
-  yosys_check synth "$READ; hierarchy -check -top watkins_gouraud_top -chparam MaxWidth $SYNTH_WIDTH -chparam MaxActiveEdges $SYNTH_EDGES; synth_ice40 -dsp -top watkins_gouraud_top -run :check; hierarchy -check; check -noinit -assert; tee -o $LOG/stat.txt stat"
+  yosys_check synth "$READ; hierarchy -check -top watkins_top -chparam MaxWidth $SYNTH_WIDTH -chparam MaxActiveEdges $SYNTH_EDGES; synth_ice40 -dsp -top watkins_top -run :check; hierarchy -check; check -noinit -assert; tee -o $LOG/stat.txt stat"
   sed -n '/Number of cells/,/^$/p' "$LOG/stat.txt" | head -30
   echo "   clean"
 fi

@@ -29,6 +29,7 @@ int main() {
             << "    logic [LineBits-1:0] y0;                            // first scan line\n"
             << "    logic [LineBits-1:0] n;                             // scan lines crossed\n"
             << "    logic [PolyIdBits-1:0] poly;                        // polygon id\n"
+            << "    logic [MaterialIdBits-1:0] material;                // material of the polygon (Phong)\n"
             << "    logic [NumChannels-1:0][ChannelBits-1:0] value;     // channels at scan line y0\n"
             << "    logic [NumChannels-1:0][ChannelBits-1:0] slope;     // per-scan-line increments\n"
             << "  } edge_t;\n"

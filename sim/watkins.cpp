@@ -11,7 +11,7 @@
 #include <string>
 
 #include "float_reference.hpp"
-#include "gouraud_pipeline.hpp"
+#include "pipeline.hpp"
 #include "prepare.hpp"
 #include "scene.hpp"
 
@@ -173,7 +173,7 @@ int render(const RenderArgs& a) {
   Image result;
   int rtl_status = 0;  // --rtl: 1 when the RTL differs from the model
   if (a.model == "fixed") {
-    GouraudPipeline pipe(a.max_active_edges);
+    Pipeline pipe(a.max_active_edges);
     const auto t2 = Clock::now();
     result = pipe.render(prepared);
     const double t_model = seconds_since(t2);

@@ -1,4 +1,4 @@
-// SystemC bench: the Verilated (--sc) watkins_gouraud_top bound to sc_signals and clocked by one
+// SystemC bench: the Verilated (--sc) watkins_top bound to sc_signals and clocked by one
 // SC_THREAD that also runs the transaction-level source, sink and checker (frame_driver.hpp).
 //
 // Why one thread and no sc_clock: the driver is the same plain C++ as the plain harness's
@@ -18,8 +18,8 @@
 #include <verilated.h>
 #include <verilated_fst_c.h>
 
-#include "Vwatkins_gouraud_top.h"
-#include "Vwatkins_gouraud_top___024root.h"  // the public internal stage signals
+#include "Vwatkins_top.h"
+#include "Vwatkins_top___024root.h"  // the public internal stage signals
 #include "fst_trace.hpp"
 #include "frame_driver.hpp"
 
@@ -40,7 +40,7 @@ SC_MODULE(GouraudBench) {
   sc_signal<uint32_t> pixel_x{"pixel_x"}, pixel_y{"pixel_y"};
   sc_signal<uint32_t> width{"width"}, height{"height"}, background{"background"}, pixel_rgb{"pixel_rgb"};
   sc_signal<sc_bv<edge_layout::Bits>> edge{"edge"};
-  Vwatkins_gouraud_top dut{"dut"};
+  Vwatkins_top dut{"dut"};
 
   sc_event start;
   std::function<void()> job;  // runs inside the thread, so it may wait()
@@ -168,7 +168,7 @@ Bench& bench() {
 }  // namespace
 
 std::string rtl_description() {
-  return "SystemC bench (Verilated --sc watkins_gouraud_top, one SC_THREAD, SystemC " +
+  return "SystemC bench (Verilated --sc watkins_top, one SC_THREAD, SystemC " +
          std::string(sc_release()) + ")";
 }
 

@@ -1,4 +1,4 @@
-// Co-simulation of the Verilated watkins_gouraud_top against the bit-exact model.
+// Co-simulation of the Verilated watkins_top against the bit-exact model.
 //
 // run_rtl() streams a prepared scene's edge records into the RTL (seeded random input gaps),
 // collects the pixel stream (seeded random back-pressure), checks it pixel by pixel against the
@@ -18,9 +18,9 @@
 
 namespace watkins::tb {
 
-// The model's internal stage streams of one frame, item by item (GouraudPipeline's
+// The model's internal stage streams of one frame, item by item (Pipeline's
 // PipelineObserver), as the bench expects them at the three internal stage boundaries of
-// watkins_gouraud_top. Per stage, the items of line y are followed by an end-of-line marker
+// watkins_top. Per stage, the items of line y are followed by an end-of-line marker
 // (eol, no payload), for y = 0 .. height-1. `index` numbers the items of a line from 0 (the
 // marker gets the number of items before it).
 struct StageEdge {      // active_edge_list -> segment_former (ae_*)
@@ -63,7 +63,7 @@ struct RtlOptions {
   bool check_stages = true;
   // Sparse output mode (sparse_i = 1): the RTL emits only the covered pixels with their (x, y);
   // the sink assembles the image from them (background elsewhere) and checks every beat, in
-  // order, against the model's sparse stream (sparse_stream() in model/gouraud_pipeline.hpp).
+  // order, against the model's sparse stream (sparse_stream() in model/pipeline.hpp).
   bool sparse = false;
   // Per-frame mode for run_rtl_frames (frame f uses sparse_frames[f] when f < size, else sparse).
   std::vector<bool> sparse_frames;

@@ -1,5 +1,5 @@
 // Plain C++ harness: the same source/sink/checker (frame_driver.hpp) on a Verilated --cc build of
-// watkins_gouraud_top, clocked by a loop (tick = clock low + eval, clock high + eval). Only for the
+// watkins_top, clocked by a loop (tick = clock low + eval, clock high + eval). Only for the
 // speed comparison with the SystemC bench (watkins_rtl_speed_cc); implements the same API as
 // rtl_bench.cpp, so a program links exactly one of watkins_tb and watkins_tb_cc.
 #include <memory>
@@ -8,8 +8,8 @@
 #include <verilated.h>
 #include <verilated_fst_c.h>
 
-#include "Vwatkins_gouraud_top_cc.h"
-#include "Vwatkins_gouraud_top_cc___024root.h"  // the public internal stage signals
+#include "Vwatkins_top_cc.h"
+#include "Vwatkins_top_cc___024root.h"  // the public internal stage signals
 #include "fst_trace.hpp"
 #include "frame_driver.hpp"
 #include "rtl_bench.hpp"
@@ -24,7 +24,7 @@ class CcHarness {
   CcHarness() {
     ctx_.traceEverOn(true);
     ctx_.fatalOnError(false);
-    dut_ = std::make_unique<Vwatkins_gouraud_top_cc>(&ctx_, "watkins_tb");
+    dut_ = std::make_unique<Vwatkins_top_cc>(&ctx_, "watkins_tb");
   }
 
   // ---- Pins (see frame_driver.hpp) ----
@@ -82,7 +82,7 @@ class CcHarness {
 
  private:
   VerilatedContext ctx_;
-  std::unique_ptr<Vwatkins_gouraud_top_cc> dut_;
+  std::unique_ptr<Vwatkins_top_cc> dut_;
   FstTrace trace_;
   detail::StageTaps taps_;
 };
@@ -99,7 +99,7 @@ Harness& harness() {
 
 }  // namespace
 
-std::string rtl_description() { return "plain C++ harness (Verilated --cc watkins_gouraud_top, eval loop)"; }
+std::string rtl_description() { return "plain C++ harness (Verilated --cc watkins_top, eval loop)"; }
 
 int rtl_max_width() { return MaxWidth; }
 

@@ -7,7 +7,7 @@
 #include <ctime>
 #include <string>
 
-#include "gouraud_pipeline.hpp"
+#include "pipeline.hpp"
 #include "prepare.hpp"
 #include "rtl_bench.hpp"
 #include "scene.hpp"
@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
     using namespace watkins;
     const BuiltScene scene = load_scene_or_default(scene_path);
     const PreparedScene prepared = prepare(scene);
-    const Image expected = GouraudPipeline().render(prepared);
+    const Image expected = Pipeline().render(prepared);
     tb::RtlResult warm = tb::run_rtl(prepared, opt, &expected);  // also builds the bench
     long long cycles = 0;
     double wall = 0;

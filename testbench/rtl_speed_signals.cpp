@@ -12,7 +12,7 @@
 
 #include <systemc.h>
 
-#include "Vwatkins_gouraud_top.h"
+#include "Vwatkins_top.h"
 #include "edge_packing.hpp"
 #include "prepare.hpp"
 #include "scene.hpp"
@@ -29,7 +29,7 @@ SC_MODULE(SignalBench) {
   sc_signal<uint32_t> pixel_x{"pixel_x"}, pixel_y{"pixel_y"};
   sc_signal<uint32_t> width{"width"}, height{"height"}, background{"background"}, pixel_rgb{"pixel_rgb"};
   sc_signal<sc_bv<tb::edge_layout::Bits>> edge{"edge"};
-  Vwatkins_gouraud_top dut{"dut"};
+  Vwatkins_top dut{"dut"};
 
   std::vector<sc_bv<tb::edge_layout::Bits>> beats;  // the frame's edges, then the end-of-frame beat
   int frames = 1;

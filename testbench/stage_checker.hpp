@@ -1,8 +1,8 @@
 // Per-stage checking for the bench (frame_driver.hpp): the three internal valid/ready streams of
-// watkins_gouraud_top (active_edge_list -> segment_former -> segment_interpolator ->
+// watkins_top (active_edge_list -> segment_former -> segment_interpolator ->
 // scanline_buffer), read from the Verilated model's public signals (the /*verilator
-// public_flat_rd*/ ae_*, sg_*, fr_* of rtl/watkins_gouraud_top.sv), are compared transfer by
-// transfer with the model's stage streams (GouraudPipeline's PipelineObserver). The first
+// public_flat_rd*/ ae_*, sg_*, fr_* of rtl/watkins_top.sv), are compared transfer by
+// transfer with the model's stage streams (Pipeline's PipelineObserver). The first
 // difference names its stage, line and item, both values, and the pixels it affects; the pixel
 // check stays the last one.
 //
@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "formats.hpp"
-#include "gouraud_pipeline.hpp"
+#include "pipeline.hpp"
 #include "rtl_bench.hpp"
 #include "segment_interpolator.hpp"
 
@@ -37,27 +37,27 @@ struct StageTaps {
   const std::uint32_t *fr_depth = nullptr, *fr_rgb = nullptr;
 };
 
-// `root` is the Verilated model's root (model.rootp, Vwatkins_gouraud_top___024root).
+// `root` is the Verilated model's root (model.rootp, Vwatkins_top___024root).
 template <class Root>
 StageTaps stage_taps(const Root& root) {
   StageTaps t;
-  t.ae_valid = &root.watkins_gouraud_top__DOT__ae_valid;
-  t.ae_ready = &root.watkins_gouraud_top__DOT__ae_ready;
-  t.ae_eol = &root.watkins_gouraud_top__DOT__ae_eol;
-  t.ae_poly = &root.watkins_gouraud_top__DOT__ae_poly;
-  t.ae_value = root.watkins_gouraud_top__DOT__ae_value.data();
-  t.sg_valid = &root.watkins_gouraud_top__DOT__sg_valid;
-  t.sg_ready = &root.watkins_gouraud_top__DOT__sg_ready;
-  t.sg_eol = &root.watkins_gouraud_top__DOT__sg_eol;
-  t.sg_poly = &root.watkins_gouraud_top__DOT__sg_poly;
-  t.sg_e = root.watkins_gouraud_top__DOT__sg_e.data();
-  t.sg_f = root.watkins_gouraud_top__DOT__sg_f.data();
-  t.fr_valid = &root.watkins_gouraud_top__DOT__fr_valid;
-  t.fr_ready = &root.watkins_gouraud_top__DOT__fr_ready;
-  t.fr_eol = &root.watkins_gouraud_top__DOT__fr_eol;
-  t.fr_x = &root.watkins_gouraud_top__DOT__fr_x;
-  t.fr_depth = &root.watkins_gouraud_top__DOT__fr_depth;
-  t.fr_rgb = &root.watkins_gouraud_top__DOT__fr_rgb;
+  t.ae_valid = &root.watkins_top__DOT__ae_valid;
+  t.ae_ready = &root.watkins_top__DOT__ae_ready;
+  t.ae_eol = &root.watkins_top__DOT__ae_eol;
+  t.ae_poly = &root.watkins_top__DOT__ae_poly;
+  t.ae_value = root.watkins_top__DOT__ae_value.data();
+  t.sg_valid = &root.watkins_top__DOT__sg_valid;
+  t.sg_ready = &root.watkins_top__DOT__sg_ready;
+  t.sg_eol = &root.watkins_top__DOT__sg_eol;
+  t.sg_poly = &root.watkins_top__DOT__sg_poly;
+  t.sg_e = root.watkins_top__DOT__sg_e.data();
+  t.sg_f = root.watkins_top__DOT__sg_f.data();
+  t.fr_valid = &root.watkins_top__DOT__fr_valid;
+  t.fr_ready = &root.watkins_top__DOT__fr_ready;
+  t.fr_eol = &root.watkins_top__DOT__fr_eol;
+  t.fr_x = &root.watkins_top__DOT__fr_x;
+  t.fr_depth = &root.watkins_top__DOT__fr_depth;
+  t.fr_rgb = &root.watkins_top__DOT__fr_rgb;
   return t;
 }
 
@@ -121,7 +121,7 @@ inline StageStreams model_stage_streams(const PreparedScene& scene, Image* image
     s.fragments.push_back(StageFragment{y, kf, true, 0, 0, 0});
     kf = 0;
   };
-  GouraudPipeline pipe(fmt::MaxActiveEdges);
+  Pipeline pipe(fmt::MaxActiveEdges);
   Image img = pipe.render(scene, o);
   if (image) *image = std::move(img);
   return s;

@@ -15,8 +15,8 @@ width=$(( 16#$(sed -n 1p "$work/frame.hex") ))
 sources=("$root/rtl/watkins_pkg.sv")
 for f in "$root"/rtl/*.sv; do [[ "$f" == *watkins_pkg.sv ]] || sources+=("$f"); done
 t0=$(date +%s.%N)
-yosys -q -p "read_verilog -sv -DSYNTHESIS ${sources[*]}; chparam -set MaxWidth $width watkins_gouraud_top; \
-  hierarchy -top watkins_gouraud_top; proc; flatten; opt_clean; write_verilog -noattr $work/top.v" \
+yosys -q -p "read_verilog -sv -DSYNTHESIS ${sources[*]}; chparam -set MaxWidth $width watkins_top; \
+  hierarchy -top watkins_top; proc; flatten; opt_clean; write_verilog -noattr $work/top.v" \
   >"$work/yosys.log" 2>&1
 iverilog -g2012 -o "$work/tb.vvp" "$work/top.v" "$root/testbench/icarus/tb_watkins.sv"
 t1=$(date +%s.%N)

@@ -1,4 +1,4 @@
-// tb_watkins: Icarus Verilog bench for the yosys-elaborated watkins_gouraud_top (plain Verilog
+// tb_watkins: Icarus Verilog bench for the yosys-elaborated watkins_top (plain Verilog
 // written by `yosys ... write_verilog`, since Icarus 11 cannot read the package's packed
 // structs). Reads the hex files of watkins_export, streams the edge records with no gaps and
 // no back-pressure, checks every pixel against the model, prints cycles and mismatches.
@@ -21,7 +21,7 @@ module tb_watkins;
   wire  [23:0]         rgb;
   wire                 covered, last, pixel_valid, overflow;
 
-  watkins_gouraud_top dut (
+  watkins_top dut (
     .clk_i(clk), .rst_ni(rst_n),
     .width_i(frame[0][12:0]), .height_i(frame[1][12:0]), .background_i(frame[2][23:0]), .sparse_i(1'b0),
     .edge_i(edge_d), .edge_eof_i(eof_d), .edge_valid_i(edge_valid), .edge_ready_o(edge_ready),

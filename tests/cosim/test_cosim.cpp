@@ -1,4 +1,4 @@
-// Co-simulation: the Verilated watkins_gouraud_top (testbench/rtl_bench.hpp) must produce the bit-exact
+// Co-simulation: the Verilated watkins_top (testbench/rtl_bench.hpp) must produce the bit-exact
 // model's image, pixel for pixel, under random input gaps and output back-pressure.
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "gouraud_pipeline.hpp"
+#include "pipeline.hpp"
 #include "prepare.hpp"
 #include "rtl_bench.hpp"
 #include "scene.hpp"
@@ -169,7 +169,7 @@ TEST_P(ShippedScenes, MatchTheModelUnderGapsAndStalls) {
     GTEST_SKIP() << "the scene does not fit the hardware: " << e.what();
   }
   if (prepared.width > rtl_max_width()) GTEST_SKIP() << "wider than the RTL line buffer";
-  const Image model = GouraudPipeline().render(prepared);
+  const Image model = Pipeline().render(prepared);
   // Full speed first, then gaps and stalls, then all-stall bursts.
   // Then sparse output mode at full speed and under gaps and stalls.
   RtlOptions patterns[] = {{1, 0.0, 0.0}, {2, 0.25, 0.3}, {3, 0.1, 0.02, 300}, {4, 0.0, 0.0}, {5, 0.2, 0.3, 20}};
@@ -234,7 +234,7 @@ TEST(Cosim, SparseEmptyFrameIsOneTerminatingBeat) {
   s.background[1] = 8;
   s.background[2] = 7;
   const PreparedScene p = prepare(s);
-  const Image model = GouraudPipeline().render(p);
+  const Image model = Pipeline().render(p);
   const std::vector<SparseBeat> beats = sparse_stream(model);
   ASSERT_EQ(beats.size(), 1u);
   EXPECT_EQ(beats[0].x, 39);
@@ -266,7 +266,7 @@ TEST(Cosim, SparseLastLineUncovered) {
   t.v = {{5, 4, 0.3, 0, {200, 10, 10}}, {25, 6, 0.5, 0, {10, 200, 10}}, {12, 14, 0.7, 0, {10, 10, 200}}};
   s.polygons = {t};
   const PreparedScene p = prepare(s);
-  const Image model = GouraudPipeline().render(p);
+  const Image model = Pipeline().render(p);
   const std::vector<SparseBeat> beats = sparse_stream(model);
   ASSERT_GE(beats.size(), 2u);
   EXPECT_FALSE(beats.back().covered);
@@ -286,7 +286,7 @@ TEST(Cosim, SparseLastLineUncovered) {
 
 TEST(Cosim, SparseCheckerNamesTheFirstMismatchingBeat) {
   const PreparedScene p = prepare(two_triangles(20, 10, 0.0));
-  Image want = GouraudPipeline().render(p);
+  Image want = Pipeline().render(p);
   int fx = -1, fy = -1;  // the first covered pixel from (7, 3) on
   for (int k = 3 * 20 + 7; k < 20 * 10 && fx < 0; ++k)
     if (want.covered[std::size_t(k)]) fx = k % 20, fy = k / 20;
@@ -324,7 +324,7 @@ TEST(Cosim, FramesBackToBackSwitchingModes) {
     for (std::size_t f = 0; f < scenes.size(); ++f) {
       EXPECT_TRUE(r.frames[f].complete) << "frame " << f;
       EXPECT_EQ(r.frames[f].sparse, modes[f]) << "frame " << f;
-      const Image m = GouraudPipeline().render(*scenes[f]);
+      const Image m = Pipeline().render(*scenes[f]);
       EXPECT_EQ(r.frames[f].image.rgb, m.rgb) << "frame " << f;
       EXPECT_EQ(r.frames[f].image.covered, m.covered) << "frame " << f;
       if (modes[f]) EXPECT_EQ(r.frames[f].pixels, static_cast<long long>(sparse_stream(m).size())) << "frame " << f;
@@ -404,7 +404,7 @@ TEST(Cosim, CheckerNamesTheFirstMismatchingPixel) {
   // The checker itself: an expected image with two pixels changed must give exactly those two
   // mismatches, the first one named with its (x, y) and both values.
   const PreparedScene p = prepare(two_triangles(20, 10, 0.0));
-  Image want = GouraudPipeline().render(p);
+  Image want = Pipeline().render(p);
   want.at(7, 3)[1] ^= 0x10;
   want.covered[std::size_t(9) * 20 + 19] ^= 1;
   const RtlOptions o{51, 0.2, 0.2};
@@ -446,7 +446,7 @@ long long model_stage_items(const PreparedScene& p) {
   o.segments_end = [&](int) { ++n; };
   o.fragment = [&](int, const Fragment&, bool) { ++n; };
   o.fragments_end = [&](int) { ++n; };
-  GouraudPipeline().render(p, o);
+  Pipeline().render(p, o);
   return n;
 }
 

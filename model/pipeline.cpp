@@ -1,9 +1,23 @@
-#include "gouraud_pipeline.hpp"
+#include "pipeline.hpp"
 
 #include "active_edge_list.hpp"
+#include "normalizer.hpp"
+#include "phong_shader.hpp"
 #include "segment_former.hpp"
 
 namespace watkins {
+namespace {
+
+// normalizer → phong_shader on one fragment: its rgb becomes the shade of its material.
+void phong_shade(const PreparedScene& scene, Fragment& f) {
+  const Normalizer::Unit u = Normalizer::normalize(f.normal[0], f.normal[1], f.normal[2]);
+  const QuantizedMaterial& m = scene.materials.at(static_cast<std::size_t>(f.material));
+  const PhongShader::Pixel px{u.n, m.cp, m.d, m.w, m.shininess};
+  const std::array<int, 3> rgb = PhongShader::shade(px, scene.light, scene.eye);
+  for (int c = 0; c < 3; ++c) f.rgb[c] = static_cast<std::uint8_t>(rgb[c]);
+}
+
+}  // namespace
 
 std::vector<SparseBeat> sparse_stream(const Image& img) {
   std::vector<SparseBeat> out;
@@ -23,13 +37,13 @@ std::vector<SparseBeat> sparse_stream(const Image& img) {
   return out;
 }
 
-Image GouraudPipeline::render(const PreparedScene& scene, const FragmentObserver& observe) {
+Image Pipeline::render(const PreparedScene& scene, const FragmentObserver& observe) {
   PipelineObserver o;
   o.fragment = observe;
   return render(scene, o);
 }
 
-Image GouraudPipeline::render(const PreparedScene& scene, const PipelineObserver& observe) {
+Image Pipeline::render(const PreparedScene& scene, const PipelineObserver& observe) {
   stats_ = PipelineStats{};
   Image img(scene.width, scene.height);
   ActiveEdgeList active(max_active_edges_);
@@ -59,7 +73,8 @@ Image GouraudPipeline::render(const PreparedScene& scene, const PipelineObserver
       const SpanSetup span = SegmentInterpolator::setup(s, scene.width);
       ChannelVector v = span.value;
       for (int x = span.x_start; x < span.x_end; ++x) {
-        const Fragment f = SegmentInterpolator::fragment(span, x, v);
+        Fragment f = SegmentInterpolator::fragment(span, x, v);
+        if (scene.shading == ShadingMode::Phong) phong_shade(scene, f);
         const bool won = line.write(f);
         ++stats_.fragments;
         stats_.visible += won;

@@ -1,12 +1,12 @@
-// rtl/watkins_gouraud_top.sv end to end against GouraudPipeline::render, pixel by pixel: random
+// rtl/watkins_top.sv end to end against Pipeline::render, pixel by pixel: random
 // scenes (triangles and quads partly off screen), a jittered quad mesh (shared edges: equal X,
 // ties broken by edge id), frames back to back, random edge-stream gaps and pixel back-pressure,
 // and an active-edge overflow (sticky flag, the frame still completes). A quick check of the
 // top; the full co-simulation is the SystemC bench in testbench/.
 #include <gtest/gtest.h>
 
-#include "Vwatkins_gouraud_top.h"
-#include "gouraud_pipeline.hpp"
+#include "Vwatkins_top.h"
+#include "pipeline.hpp"
 #include "prepare.hpp"
 #include "rtl_harness.hpp"
 #include "scene.hpp"
@@ -75,7 +75,7 @@ void pack(VlWide<15>& w, const EdgeRecord& e) {
 }
 
 struct Top {
-  Harness<Vwatkins_gouraud_top> h;
+  Harness<Vwatkins_top> h;
   std::mt19937_64 rng{1};
   Top() {
     h.dut.edge_valid_i = 0;
@@ -183,7 +183,7 @@ void random_frames(std::uint64_t seed, SparseOf sparse) {
     const int w = 1 + static_cast<int>(rng() % MaxWidth), h = 1 + static_cast<int>(rng() % 70);
     PreparedScene p;
     if (!prepare_ok(random_scene(w, h, static_cast<int>(rng() % 7), rng), p)) continue;
-    GouraudPipeline pipe(MaxActiveEdges);
+    Pipeline pipe(MaxActiveEdges);
     const Image ref = pipe.render(p);
     t.frame(p, &ref, frames % 2 ? 40 : 10, frames % 3 ? 40 : 0, sparse(frames));
     ++frames;
@@ -201,7 +201,7 @@ TEST(RtlTop, SharedEdgeMesh) {
   for (int i = 0; i < 4; ++i) {
     PreparedScene p;
     ASSERT_TRUE(prepare_ok(mesh_scene(96, 64, 3, 5, rng), p, true));
-    GouraudPipeline pipe(MaxActiveEdges);
+    Pipeline pipe(MaxActiveEdges);
     const Image ref = pipe.render(p);
     t.frame(p, &ref, 20 * i, 20 * i);
   }
@@ -217,7 +217,7 @@ TEST(RtlTop, CyclesPerFrame) {
     PreparedScene p;
     const BuiltScene s = i < 3 ? mesh_scene(MaxWidth, 48, 3 + i, 3, rng) : random_scene(MaxWidth, 48, 6, rng);
     if (!prepare_ok(s, p)) continue;
-    GouraudPipeline pipe(MaxActiveEdges);
+    Pipeline pipe(MaxActiveEdges);
     std::vector<std::uint64_t> per_line(p.height, 0);
     const Image ref = pipe.render(p, [&](int y, const Fragment&, bool) { ++per_line[y]; });
     // The two line buffers overlap line y's fragments (and its marker) with line y-1's pixels.
@@ -242,7 +242,7 @@ TEST(RtlTop, SparseCyclesPerFrame) {
   for (int i = 0; i < 4; ++i) {
     PreparedScene p;
     if (!prepare_ok(random_scene(MaxWidth, 48, 1 + i, rng), p)) continue;
-    GouraudPipeline pipe(MaxActiveEdges);
+    Pipeline pipe(MaxActiveEdges);
     std::vector<std::uint64_t> per_line(p.height, 0);
     const Image ref = pipe.render(p, [&](int y, const Fragment&, bool) { ++per_line[y]; });
     std::uint64_t bound = 0;
@@ -270,7 +270,7 @@ TEST(RtlTop, OverflowIsStickyAndNeverHangs) {
   EXPECT_TRUE(t.h.dut.overflow_o);
   PreparedScene small;
   ASSERT_TRUE(prepare_ok(random_scene(40, 20, 3, rng), small));
-  GouraudPipeline pipe(MaxActiveEdges);
+  Pipeline pipe(MaxActiveEdges);
   const Image ref = pipe.render(small);
   t.frame(small, &ref, 10, 10);
   EXPECT_TRUE(t.h.dut.overflow_o) << "sticky until reset";

@@ -1,4 +1,4 @@
-// watkins_gouraud_top: the Watkins/Gouraud scan-line shading pipeline (model/gouraud_pipeline.cpp)
+// watkins_top: the Watkins/Gouraud scan-line shading pipeline (model/pipeline.cpp)
 // from the y-sorted edge-record stream to every pixel of the frame in raster order:
 // active_edge_list (+ edge_incrementer) -> segment_former -> segment_interpolator (span setup,
 // span_reciprocal, stepper) -> scanline_buffer. Every stage boundary is valid/ready.
@@ -12,7 +12,7 @@
 // the last line has one, otherwise a terminating beat with pixel_covered_o = 0 (background rgb)
 // at (width-1, height-1) -- so a frame covering no pixel is exactly that one beat. The consumer
 // keeps the background elsewhere (e.g. a framebuffer cleared once). sparse_i = 0: every pixel.
-module watkins_gouraud_top #(
+module watkins_top #(
   parameter int unsigned MaxActiveEdges = watkins_pkg::MaxActiveEdges,
   parameter int unsigned MaxWidth = 1024            // line-buffer depth in pixels
 ) (

@@ -1,6 +1,9 @@
-// Twin of rtl/watkins_gouraud_top.sv: the whole Watkins/Gouraud pipeline, stage by stage, on the
+// Twin of rtl/watkins_top.sv: the whole Watkins scan-line pipeline, stage by stage, on the
 // y-sorted edge-record stream: active-edge list + edge_incrementer → segment_former →
-// segment_interpolator → scanline_buffer → pixels in raster order (every pixel of the screen).
+// segment_interpolator → [Phong: normalizer → phong_shader] → scanline_buffer → pixels in
+// raster order (every pixel of the screen). Gouraud shading (scene.shading) writes the
+// interpolated shade; Phong shading normalizes the interpolated normal and shades it with the
+// fragment's material, per pixel, before the depth test.
 #pragma once
 
 #include <array>
@@ -27,7 +30,7 @@ struct PipelineStats {
 using FragmentObserver = std::function<void(int y, const Fragment& f, bool won)>;
 
 // Every internal stage stream of the pipeline, item by item, in each stage's own output order
-// (the streams of rtl/watkins_gouraud_top.sv between its stages; the co-simulation bench compares
+// (the streams of rtl/watkins_top.sv between its stages; the co-simulation bench compares
 // them to the RTL's). Every callback is optional; per stage, the items of scan line y come first,
 // then its end-of-line marker, for y = 0 .. height-1.
 struct PipelineObserver {
@@ -37,12 +40,14 @@ struct PipelineObserver {
   // segment_former output: the segments of line y in closing order (empty spans included).
   std::function<void(int y, const Segment& s)> segment;
   std::function<void(int y)> segments_end;
-  // segment_interpolator output: the fragments of line y in order, and whether each won its pixel.
+  // Fragments of line y in order as the scanline_buffer receives them, and whether each won its
+  // pixel: the interpolator's output (x, depth, normal, material), with rgb the interpolated
+  // shade (Gouraud) or the phong_shader's output (Phong).
   std::function<void(int y, const Fragment& f, bool won)> fragment;
   std::function<void(int y)> fragments_end;
 };
 
-// One beat of the sparse pixel stream (watkins_gouraud_top with sparse_i = 1): the covered pixels
+// One beat of the sparse pixel stream (watkins_top with sparse_i = 1): the covered pixels
 // of the frame in raster order; `last` on the frame's last beat. When the last line has no
 // covered pixel (e.g. a frame that covers nothing) a terminating beat follows, not covered, with
 // the background colour at (width-1, height-1), and carries `last` instead.
@@ -55,9 +60,9 @@ struct SparseBeat {
 // The sparse stream of a rendered frame (its covered pixels, plus the terminator when needed).
 std::vector<SparseBeat> sparse_stream(const Image& img);
 
-class GouraudPipeline {
+class Pipeline {
  public:
-  explicit GouraudPipeline(int max_active_edges = fmt::MaxActiveEdges)
+  explicit Pipeline(int max_active_edges = fmt::MaxActiveEdges)
       : max_active_edges_(max_active_edges) {}
   // Renders the frame. Throws SceneError if the active-edge list would overflow.
   Image render(const PreparedScene& scene, const FragmentObserver& observe = nullptr);
