@@ -11,7 +11,7 @@ void SegmentFormer::form(const std::vector<ActiveEdge>& x_ordered, std::vector<S
     if (it == open.end()) {
       open.emplace(edge.rec.poly, &edge);
     } else {
-      out.push_back(Segment{edge.rec.poly, it->second->rec.material, it->second->rec.value, edge.rec.value});
+      out.push_back(Segment{edge.rec.poly, edge.rec.material, it->second->rec.value, edge.rec.value});
       open.erase(it);
     }
   }

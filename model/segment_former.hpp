@@ -13,7 +13,7 @@ namespace watkins {
 
 struct Segment {
   int poly = 0;
-  int material = 0;   // of the polygon (taken from the opening edge)
+  int material = 0;   // of the polygon (taken from the closing edge, like the RTL)
   ChannelVector e{};  // left end E: channel values of the opening edge on this scan line
   ChannelVector f{};  // right end F: channel values of the closing edge
 };

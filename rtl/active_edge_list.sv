@@ -22,6 +22,7 @@ module active_edge_list #(
   input  logic                                                              edge_valid_i,
   output logic                                                              edge_ready_o,
   output logic [watkins_pkg::PolyIdBits-1:0]                                out_poly_o,   // polygon of the edge
+  output logic [watkins_pkg::MaterialIdBits-1:0]                            out_material_o, // its material
   output logic [watkins_pkg::NumChannels*watkins_pkg::ChannelBits-1:0]   out_value_o,  // channels on this line
   output logic                                                              out_eol_o,    // end-of-line marker, no edge
   output logic                                                              out_valid_o,
@@ -40,6 +41,7 @@ module active_edge_list #(
     logic [LB-1:0]                      remaining;  // lines left including the current one
     logic [watkins_pkg::EdgeIdBits-1:0] id;
     logic [watkins_pkg::PolyIdBits-1:0] poly;
+    logic [watkins_pkg::MaterialIdBits-1:0] material;
     logic [NC*CB-1:0]                   value;
     logic [NC*CB-1:0]                   slope;
   } entry_t;
@@ -51,7 +53,9 @@ module active_edge_list #(
   endfunction
 
   // Bank b, entry i at b * N + i (plain vectors: yosys 0.23 mishandles arrays of structs).
-  localparam int unsigned EB = LB + watkins_pkg::EdgeIdBits + watkins_pkg::PolyIdBits + 2 * NC * CB;
+  localparam int unsigned TB = watkins_pkg::EdgeIdBits + watkins_pkg::PolyIdBits
+                             + watkins_pkg::MaterialIdBits;  // id, polygon, material
+  localparam int unsigned EB = LB + TB + 2 * NC * CB;
   logic [EB-1:0]   bank_q [2 * N];
   localparam int unsigned SB = $clog2(2 * N);
   function automatic logic [SB-1:0] slot(logic b, logic [IB-1:0] i);
@@ -76,6 +80,7 @@ module active_edge_list #(
   assign out_valid_o = (have_edge && !out_done_q) || (streaming && !have_edge && !eol_sent_q);
   assign out_eol_o   = !have_edge;
   assign out_poly_o  = cur.poly;
+  assign out_material_o = cur.material;
   assign out_value_o = cur.value;
   assign out_fire    = out_valid_o && out_ready_i;
 
@@ -88,17 +93,17 @@ module active_edge_list #(
   logic                  st_valid, st_retire;
   logic [NC*CB-1:0]      st_value, st_slope;
   logic [LB-1:0]         st_remaining;
-  logic [watkins_pkg::EdgeIdBits + watkins_pkg::PolyIdBits - 1:0] st_payload;
+  logic [TB-1:0]         st_payload;
 
   edge_incrementer #(
     .NumChannels(NC),
-    .PayloadBits(watkins_pkg::EdgeIdBits + watkins_pkg::PolyIdBits)
+    .PayloadBits(TB)
   ) u_inc (
     .clk_i, .rst_ni,
     .value_i    (cur.value),
     .slope_i    (cur.slope),
     .remaining_i(cur.remaining),
-    .payload_i  ({cur.id, cur.poly}),
+    .payload_i  ({cur.id, cur.poly, cur.material}),
     .valid_i    (inc_valid),
     .ready_o    (inc_ready),
     .value_o    (st_value),
@@ -133,11 +138,12 @@ module active_edge_list #(
     fresh.remaining = edge_i.n;
     fresh.id        = id_q;
     fresh.poly      = edge_i.poly;
+    fresh.material  = edge_i.material;
     fresh.value     = edge_i.value;
     fresh.slope     = edge_i.slope;
     if (ins_step) begin
       ins.remaining = st_remaining;
-      {ins.id, ins.poly} = st_payload;
+      {ins.id, ins.poly, ins.material} = st_payload;
       ins.value = st_value;
       ins.slope = st_slope;
     end else begin
@@ -225,7 +231,7 @@ module active_edge_list #(
   a_in_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
     edge_valid_i && !edge_ready_o |=> edge_valid_i && $stable({edge_i, edge_eof_i}));
   a_out_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    out_valid_o && !out_ready_i |=> out_valid_o && $stable({out_poly_o, out_value_o, out_eol_o}));
+    out_valid_o && !out_ready_i |=> out_valid_o && $stable({out_poly_o, out_material_o, out_value_o, out_eol_o}));
   a_no_insert_on_swap: assert property (@(posedge clk_i) disable iff (!rst_ni)
     swap |-> !ins_valid);
   c_overflow: cover property (@(posedge clk_i) disable iff (!rst_ni) $rose(overflow_o));

@@ -1,7 +1,8 @@
 // segment_former: pairs the X-ordered active edges of one scan line into segments per polygon
 // (model/segment_former.cpp): the first edge of a polygon opens a segment, the next edge of the
 // same polygon closes it; segments leave in closing order, the end-of-line marker follows them
-// and clears the table (an edge left open draws nothing).
+// and clears the table (an edge left open draws nothing). A segment's material is its closing
+// edge's (both edges belong to one polygon, so one material).
 // Latency 1: output registered; ready_o = ready_i || !valid_o (combinational).
 // The open table has MaxActiveEdges entries, so it cannot fill: a line carries at most that
 // many edges.
@@ -11,6 +12,7 @@ module segment_former #(
   input  logic                                                              clk_i,
   input  logic                                                              rst_ni,
   input  logic [watkins_pkg::PolyIdBits-1:0]                                edge_poly_i,  // polygon of the edge
+  input  logic [watkins_pkg::MaterialIdBits-1:0]                            edge_material_i, // its material
   input  logic [watkins_pkg::NumChannels*watkins_pkg::ChannelBits-1:0]   edge_value_i, // channels on this line
   input  logic                                                              edge_eol_i,   // end-of-line marker
   input  logic                                                              edge_valid_i,
@@ -18,6 +20,7 @@ module segment_former #(
   output logic [watkins_pkg::NumChannels*watkins_pkg::ChannelBits-1:0]   seg_e_o,      // opening edge
   output logic [watkins_pkg::NumChannels*watkins_pkg::ChannelBits-1:0]   seg_f_o,      // closing edge
   output logic [watkins_pkg::PolyIdBits-1:0]                                seg_poly_o,
+  output logic [watkins_pkg::MaterialIdBits-1:0]                            seg_material_o, // the closing edge's
   output logic                                                              seg_eol_o,
   output logic                                                              seg_valid_o,
   input  logic                                                              seg_ready_i
@@ -77,15 +80,16 @@ module segment_former #(
       seg_e_o    <= open_value_q[hit_idx];
       seg_f_o    <= edge_value_i;
       seg_poly_o <= edge_poly_i;
+      seg_material_o <= edge_material_i;
       seg_eol_o  <= edge_eol_i;
     end
   end
 
 `ifndef SYNTHESIS
   a_in_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    edge_valid_i && !edge_ready_o |=> edge_valid_i && $stable({edge_poly_i, edge_value_i, edge_eol_i}));
+    edge_valid_i && !edge_ready_o |=> edge_valid_i && $stable({edge_poly_i, edge_material_i, edge_value_i, edge_eol_i}));
   a_out_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    seg_valid_o && !seg_ready_i |=> seg_valid_o && $stable({seg_e_o, seg_f_o, seg_poly_o, seg_eol_o}));
+    seg_valid_o && !seg_ready_i |=> seg_valid_o && $stable({seg_e_o, seg_f_o, seg_poly_o, seg_material_o, seg_eol_o}));
   a_table_room: assert property (@(posedge clk_i) disable iff (!rst_ni)
     fire && !edge_eol_i && !hit |-> has_free);
   c_two_open: cover property (@(posedge clk_i) disable iff (!rst_ni) $countones(open_q) >= 2);

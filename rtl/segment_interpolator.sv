@@ -8,7 +8,9 @@
 // pixel) leave no bubble and a span's setup hides behind the previous spans' pixels.
 // Latency segment -> first fragment: 32 cycles. All stage outputs registered; ready is
 // combinational through the setup stages (one stall signal), registered at the FIFO.
-// End-of-line markers pass through in order.
+// End-of-line markers pass through in order. Each fragment carries both readings of the three
+// attribute channels: frag_rgb_o (Gouraud shade levels) and frag_normal_o (Phong normal, the
+// channel saturated to NormalInBits); a top uses one and synthesis drops the other.
 module segment_interpolator #(
   parameter int unsigned FifoDepth = 4
 ) (
@@ -17,12 +19,15 @@ module segment_interpolator #(
   input  logic [watkins_pkg::LineBits-1:0]                                 width_i,  // screen width, stable per frame
   input  logic [watkins_pkg::NumChannels*watkins_pkg::ChannelBits-1:0]   seg_e_i, // left end E
   input  logic [watkins_pkg::NumChannels*watkins_pkg::ChannelBits-1:0]   seg_f_i, // right end F
+  input  logic [watkins_pkg::MaterialIdBits-1:0]                          seg_material_i,
   input  logic                                                             seg_eol_i, // end-of-line marker, no segment
   input  logic                                                             seg_valid_i,
   output logic                                                             seg_ready_o,
   output logic [watkins_pkg::LineBits-1:0]                                 frag_x_o,
   output logic [watkins_pkg::DepthBits-1:0]                                frag_depth_o,
   output logic [23:0]                                                      frag_rgb_o,  // {R,G,B}
+  output logic [3*watkins_pkg::NormalInBits-1:0]                           frag_normal_o, // {Nz,Ny,Nx}
+  output logic [watkins_pkg::MaterialIdBits-1:0]                          frag_material_o,
   output logic                                                             frag_eol_o,  // end-of-line marker, no fragment
   output logic                                                             frag_valid_o,
   input  logic                                                             frag_ready_i
@@ -39,6 +44,8 @@ module segment_interpolator #(
   localparam int unsigned XCB  = CB + 1 - FB;                   // signed width of a pixel index
   localparam int unsigned DepB = watkins_pkg::DepthBits;
   localparam int unsigned XLo  = watkins_pkg::ChanX * CB;
+  localparam int unsigned NB   = watkins_pkg::NormalInBits;
+  localparam int unsigned MIB  = watkins_pkg::MaterialIdBits;
 
   typedef logic signed [CB-1:0] chan_t;
   typedef logic signed [PW-1:0] prod_t;
@@ -49,6 +56,7 @@ module segment_interpolator #(
   typedef struct packed {
     logic                  eol;
     logic                  empty;   // no pixel centre in [X_E, X_F) on screen
+    logic [MIB-1:0]        material;
     logic [LB-1:0]         xs;      // first pixel
     logic [LB-1:0]         xe;      // one past the last pixel
     logic [DB-1:0]         offset;  // x_start + 1/2 - X_E >= 0, X units
@@ -84,6 +92,7 @@ module segment_interpolator #(
     xe_full = (fcf > $signed(XCB'(width_i))) ? $signed(XCB'(width_i)) : fcf;
     s0_d.eol   = seg_eol_i;
     s0_d.empty = (xe_full <= xs_full);
+    s0_d.material = seg_material_i;
     s0_d.xs    = LB'(xs_full);
     s0_d.xe    = LB'(xe_full);
     off        = $signed((DB + 2)'({s0_d.xs, 1'b1, (FB - 1)'(0)}))
@@ -209,6 +218,7 @@ module segment_interpolator #(
   // ---------------------------------------------------------------- FIFO of ready spans
   typedef struct packed {
     logic                  eol;
+    logic [MIB-1:0]        material;
     logic [LB-1:0]         xs;
     logic [LB-1:0]         xe;
     logic [NI*CB-1:0]      value;  // channels at pixel xs
@@ -221,6 +231,7 @@ module segment_interpolator #(
 
   always_comb begin
     f_in.eol = sc_span_q.eol;
+    f_in.material = sc_span_q.material;
     f_in.xs  = sc_span_q.xs;
     f_in.xe  = sc_span_q.xe;
     for (int c = 0; c < NI; c++) begin
@@ -256,10 +267,12 @@ module segment_interpolator #(
   // ---------------------------------------------------------------- stepper
   logic                  st_active_q;  // a span is being stepped from the registers below
   logic [LB-1:0]         st_x_q, st_xe_q;
+  logic [MIB-1:0]        st_material_q;
   logic [NI*CB-1:0]      st_value_q, st_step_q;
 
   logic                  out_free, from_head, emit_frag, emit_eol;
   logic [LB-1:0]         cur_x, cur_xe;
+  logic [MIB-1:0]        cur_material;
   logic [NI*CB-1:0]      cur_value, cur_step;
 
   assign out_free  = !frag_valid_o || frag_ready_i;
@@ -270,6 +283,7 @@ module segment_interpolator #(
 
   assign cur_x     = st_active_q ? st_x_q     : f_out.xs;
   assign cur_xe    = st_active_q ? st_xe_q    : f_out.xe;
+  assign cur_material = st_active_q ? st_material_q : f_out.material;
   assign cur_value = st_active_q ? st_value_q : f_out.value;
   assign cur_step  = st_active_q ? st_step_q  : f_out.step;
 
@@ -284,6 +298,13 @@ module segment_interpolator #(
     if (r < 0) level = '0;
     else if (r > $signed((CB - FB + 1)'(hi))) level = hi;
     else level = DepB'(r);
+  endfunction
+
+  // saturate_signed(v, NormalInBits) of a channel value: the normal keeps its FracBits fraction.
+  function automatic logic [NB-1:0] normal_word(logic signed [CB-1:0] v);
+    if (v > $signed(CB'((64'd1 << (NB - 1)) - 1))) normal_word = NB'((64'd1 << (NB - 1)) - 1);
+    else if (v < -$signed(CB'(64'd1 << (NB - 1)))) normal_word = NB'(64'd1 << (NB - 1));
+    else normal_word = NB'(v);
   endfunction
 
   always_ff @(posedge clk_i) begin
@@ -302,8 +323,12 @@ module segment_interpolator #(
       frag_depth_o <= level(cur_value[(watkins_pkg::ChanZ - 1)*CB +: CB], DepB'((64'd1 << DepB) - 1));
       for (int c = 0; c < 3; c++)
         frag_rgb_o[23 - 8 * c -: 8] <= 8'(level(cur_value[(watkins_pkg::ChanR - 1 + c)*CB +: CB], DepB'(255)));
+      for (int c = 0; c < 3; c++)
+        frag_normal_o[c*NB +: NB] <= normal_word(cur_value[(watkins_pkg::ChanNx - 1 + c)*CB +: CB]);
+      frag_material_o <= cur_material;
       frag_eol_o   <= 1'b0;
       st_x_q       <= cur_x + 1'b1;
+      st_material_q <= cur_material;
       st_xe_q      <= cur_xe;
       st_step_q    <= cur_step;
       for (int c = 0; c < NI; c++)
@@ -315,10 +340,10 @@ module segment_interpolator #(
 
 `ifndef SYNTHESIS
   a_in_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    seg_valid_i && !seg_ready_o |=> seg_valid_i && $stable({seg_e_i, seg_f_i, seg_eol_i}));
+    seg_valid_i && !seg_ready_o |=> seg_valid_i && $stable({seg_e_i, seg_f_i, seg_material_i, seg_eol_i}));
   a_out_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
     frag_valid_o && !frag_ready_i |=> frag_valid_o
-      && $stable({frag_x_o, frag_depth_o, frag_rgb_o, frag_eol_o}));
+      && $stable({frag_x_o, frag_depth_o, frag_rgb_o, frag_normal_o, frag_material_o, frag_eol_o}));
   a_x_on_screen: assert property (@(posedge clk_i) disable iff (!rst_ni)
     frag_valid_o && !frag_eol_o |-> frag_x_o < width_i);
   c_back_to_back_spans: cover property (@(posedge clk_i) disable iff (!rst_ni)

@@ -1,7 +1,13 @@
-// watkins_top: the Watkins/Gouraud scan-line shading pipeline (model/pipeline.cpp)
-// from the y-sorted edge-record stream to every pixel of the frame in raster order:
-// active_edge_list (+ edge_incrementer) -> segment_former -> segment_interpolator (span setup,
-// span_reciprocal, stepper) -> scanline_buffer. Every stage boundary is valid/ready.
+// watkins_top: the Watkins scan-line shading pipeline (model/pipeline.cpp) from the y-sorted
+// edge-record stream to every pixel of the frame in raster order: active_edge_list
+// (+ edge_incrementer) -> segment_former -> segment_interpolator (span setup, span_reciprocal,
+// stepper) -> [Phong = 1: normalizer -> material table -> phong_shader] -> scanline_buffer.
+// Every stage boundary is valid/ready. Phong = 0 (Gouraud): channels 2..4 are R, G, B shades
+// and the fragment's shade goes straight to the depth test. Phong = 1: they are the vertex
+// normal; each fragment's interpolated normal is normalized and shaded by Phong's eq. (3) with
+// its polygon's material (a 2^MaterialIdBits-entry table written through material_*_i between
+// frames) and the frame's light_i / eye_i (sampled with the frame size), adding 21 cycles of
+// latency, not throughput: still one fragment per clock, shaded before the depth test.
 // A frame starts with the first beat of its edge stream once the previous frame's last pixel
 // has left and its stream has been read up to its EOF beat; width, height and background are
 // sampled then (and sparse_i). Steady state: one fragment per clock; a line costs max(width, fragments +
@@ -14,7 +20,8 @@
 // keeps the background elsewhere (e.g. a framebuffer cleared once). sparse_i = 0: every pixel.
 module watkins_top #(
   parameter int unsigned MaxActiveEdges = watkins_pkg::MaxActiveEdges,
-  parameter int unsigned MaxWidth = 1024            // line-buffer depth in pixels
+  parameter int unsigned MaxWidth = 1024,           // line-buffer depth in pixels
+  parameter int          Phong = 0                  // 1: per-pixel Phong shading of normals
 ) (
   input  logic                               clk_i,
   input  logic                               rst_ni,          // active-low synchronous reset
@@ -33,11 +40,24 @@ module watkins_top #(
   output logic                               pixel_last_o,    // last pixel of the frame
   output logic                               pixel_valid_o,
   input  logic                               pixel_ready_i,
-  output logic                               overflow_o       // sticky until reset: the active-edge list was full
+  output logic                               overflow_o,      // sticky until reset: the active-edge list was full
+  // Phong only (ignored when Phong = 0). light_i / eye_i: unit vectors towards the light and the
+  // eye, {z, y, x} Q2.14, sampled at frame start. Material table: one write per clock, between
+  // frames; entry {Cp {R,G,B} 8-bit, d, W (1.0 = 256), n} as model/phong_shader.hpp defines them.
+  input  logic [3*watkins_pkg::UnitBits-1:0]       light_i,
+  input  logic [3*watkins_pkg::UnitBits-1:0]       eye_i,
+  input  logic                                     material_we_i,
+  input  logic [watkins_pkg::MaterialIdBits-1:0]   material_addr_i,
+  input  logic [23:0]                              material_cp_i,
+  input  logic [watkins_pkg::MaterialBits-1:0]     material_d_i,
+  input  logic [watkins_pkg::MaterialBits-1:0]     material_w_i,
+  input  logic [watkins_pkg::ShininessBits-1:0]    material_n_i
 );
   localparam int unsigned LB = watkins_pkg::LineBits;
   localparam int unsigned NC = watkins_pkg::NumChannels;
   localparam int unsigned CB = watkins_pkg::ChannelBits;
+  localparam int unsigned DepB = watkins_pkg::DepthBits;
+  localparam int unsigned MIB  = watkins_pkg::MaterialIdBits;
 
   // ------------------------------------------------------------ frame control
   logic          frame_busy_q, ael_busy, start;
@@ -70,6 +90,7 @@ module watkins_top #(
   // The three internal stage streams are readable from the Verilated model (the co-simulation
   // bench compares them item by item with the model's, testbench/stage_checker.hpp).
   logic [watkins_pkg::PolyIdBits-1:0] ae_poly  /*verilator public_flat_rd*/;
+  logic [MIB-1:0]                     ae_material /*verilator public_flat_rd*/;
   logic [NC*CB-1:0]                    ae_value /*verilator public_flat_rd*/;
   logic                               ae_eol   /*verilator public_flat_rd*/;
   logic                               ae_valid /*verilator public_flat_rd*/;
@@ -87,6 +108,7 @@ module watkins_top #(
     .edge_valid_i,
     .edge_ready_o,
     .out_poly_o  (ae_poly),
+    .out_material_o(ae_material),
     .out_value_o (ae_value),
     .out_eol_o   (ae_eol),
     .out_valid_o (ae_valid),
@@ -104,12 +126,14 @@ module watkins_top #(
   /* verilator lint_off UNUSEDSIGNAL */
   logic [watkins_pkg::PolyIdBits-1:0] sg_poly /*verilator public_flat_rd*/;
   /* verilator lint_on UNUSEDSIGNAL */
+  logic [MIB-1:0]        sg_material /*verilator public_flat_rd*/;
 
   segment_former #(
     .MaxActiveEdges(MaxActiveEdges)
   ) u_segment_former (
     .clk_i, .rst_ni,
     .edge_poly_i (ae_poly),
+    .edge_material_i(ae_material),
     .edge_value_i(ae_value),
     .edge_eol_i  (ae_eol),
     .edge_valid_i(ae_valid),
@@ -117,6 +141,7 @@ module watkins_top #(
     .seg_e_o     (sg_e),
     .seg_f_o     (sg_f),
     .seg_poly_o  (sg_poly),
+    .seg_material_o(sg_material),
     .seg_eol_o   (sg_eol),
     .seg_valid_o (sg_valid),
     .seg_ready_i (sg_ready)
@@ -126,6 +151,8 @@ module watkins_top #(
   logic [LB-1:0]                     fr_x     /*verilator public_flat_rd*/;
   logic [watkins_pkg::DepthBits-1:0] fr_depth /*verilator public_flat_rd*/;
   logic [23:0]                       fr_rgb   /*verilator public_flat_rd*/;
+  logic [3*watkins_pkg::NormalInBits-1:0] fr_normal /*verilator public_flat_rd*/;
+  logic [MIB-1:0]                    fr_material /*verilator public_flat_rd*/;
   logic                              fr_eol   /*verilator public_flat_rd*/;
   logic                              fr_valid /*verilator public_flat_rd*/;
   logic                              fr_ready /*verilator public_flat_rd*/;
@@ -135,16 +162,108 @@ module watkins_top #(
     .width_i     (width_q),
     .seg_e_i     (sg_e),
     .seg_f_i     (sg_f),
+    .seg_material_i(sg_material),
     .seg_eol_i   (sg_eol),
     .seg_valid_i (sg_valid),
     .seg_ready_o (sg_ready),
     .frag_x_o    (fr_x),
     .frag_depth_o(fr_depth),
     .frag_rgb_o  (fr_rgb),
+    .frag_normal_o(fr_normal),
+    .frag_material_o(fr_material),
     .frag_eol_o  (fr_eol),
     .frag_valid_o(fr_valid),
     .frag_ready_i(fr_ready)
   );
+
+  // ------------------------------------------------------------ shading
+  // sh_*: the fragments the depth test receives, shaded (the bench compares them, too).
+  logic [LB-1:0]   sh_x     /*verilator public_flat_rd*/;
+  logic [DepB-1:0] sh_depth /*verilator public_flat_rd*/;
+  logic [23:0]     sh_rgb   /*verilator public_flat_rd*/;
+  logic            sh_eol   /*verilator public_flat_rd*/;
+  logic            sh_valid /*verilator public_flat_rd*/;
+  logic            sh_ready /*verilator public_flat_rd*/;
+
+  if (Phong != 0) begin : g_phong
+    localparam int unsigned UB = watkins_pkg::UnitBits;
+    localparam int unsigned PB = 1 + LB + DepB;   // {eol, x, depth} rides along
+    logic [3*UB-1:0] light_q, eye_q;
+    always_ff @(posedge clk_i) begin
+      if (start) begin
+        light_q <= light_i;
+        eye_q   <= eye_i;
+      end
+    end
+
+    // Material table: flops (16 x 50 bits), read combinationally by the shader's input stage.
+    localparam int unsigned EntryBits = 24 + 2 * watkins_pkg::MaterialBits + watkins_pkg::ShininessBits;
+    logic [EntryBits-1:0] material_q [2**MIB];
+    always_ff @(posedge clk_i) begin
+      if (material_we_i)
+        material_q[material_addr_i] <= {material_cp_i, material_d_i, material_w_i, material_n_i};
+    end
+
+    logic [3*UB-1:0] nm_unit;
+    logic [MIB-1:0]  nm_material;
+    logic [PB-1:0]   nm_payload, sh_payload;
+    logic            nm_valid, nm_ready;
+    logic            nm_null_unused;  // a null normal already reads as (0,0,0): cos(i) = 0
+
+    normalizer #(
+      .PayloadBits(MIB + PB)
+    ) u_normalizer (
+      .clk_i, .rst_ni,
+      .normal_i (fr_normal),
+      .payload_i({fr_material, fr_eol, fr_x, fr_depth}),
+      .valid_i  (fr_valid),
+      .ready_o  (fr_ready),
+      .unit_o   (nm_unit),
+      .null_o   (nm_null_unused),
+      .payload_o({nm_material, nm_payload}),
+      .valid_o  (nm_valid),
+      .ready_i  (nm_ready)
+    );
+
+    logic [23:0]                        m_cp;
+    logic [watkins_pkg::MaterialBits-1:0]  m_d, m_w;
+    logic [watkins_pkg::ShininessBits-1:0] m_n;
+    logic [23:0]                        bgr;
+    assign {m_cp, m_d, m_w, m_n} = material_q[nm_material];
+
+    phong_shader #(
+      .PayloadBits(PB)
+    ) u_phong_shader (
+      .clk_i, .rst_ni,
+      .light_i    (light_q),
+      .eye_i      (eye_q),
+      .normal_i   (nm_unit),
+      .cp_i       ({m_cp[7:0], m_cp[15:8], m_cp[23:16]}),  // the shader's order is {B,G,R}
+      .d_i        (m_d),
+      .w_i        (m_w),
+      .shininess_i(m_n),
+      .payload_i  (nm_payload),
+      .valid_i    (nm_valid),
+      .ready_o    (nm_ready),
+      .rgb_o      (bgr),
+      .payload_o  (sh_payload),
+      .valid_o    (sh_valid),
+      .ready_i    (sh_ready)
+    );
+    assign sh_rgb = {bgr[7:0], bgr[15:8], bgr[23:16]};
+    assign {sh_eol, sh_x, sh_depth} = sh_payload;
+  end else begin : g_gouraud
+    assign sh_x     = fr_x;
+    assign sh_depth = fr_depth;
+    assign sh_rgb   = fr_rgb;
+    assign sh_eol   = fr_eol;
+    assign sh_valid = fr_valid;
+    assign fr_ready = sh_ready;
+    // The normal reading of the channels and the Phong inputs serve Phong = 1 only.
+    logic unused_phong;
+    assign unused_phong = ^{fr_normal, fr_material, light_i, eye_i, material_we_i, material_addr_i,
+                            material_cp_i, material_d_i, material_w_i, material_n_i};
+  end
 
   // ------------------------------------------------------------ visibility and pixels
   scanline_buffer #(
@@ -155,12 +274,12 @@ module watkins_top #(
     .height_i       (height_q),
     .background_i   (background_q),
     .sparse_i       (sparse_q),
-    .frag_x_i       (fr_x),
-    .frag_depth_i   (fr_depth),
-    .frag_rgb_i     (fr_rgb),
-    .frag_eol_i     (fr_eol),
-    .frag_valid_i   (fr_valid),
-    .frag_ready_o   (fr_ready),
+    .frag_x_i       (sh_x),
+    .frag_depth_i   (sh_depth),
+    .frag_rgb_i     (sh_rgb),
+    .frag_eol_i     (sh_eol),
+    .frag_valid_i   (sh_valid),
+    .frag_ready_o   (sh_ready),
     .pixel_rgb_o,
     .pixel_covered_o,
     .pixel_x_o,
@@ -181,6 +300,8 @@ module watkins_top #(
       && height_i <= LB'(watkins_pkg::MaxScreen));
   a_overflow_sticky: assert property (@(posedge clk_i) disable iff (!rst_ni)
     overflow_o |=> overflow_o);
+  a_material_between_frames: assert property (@(posedge clk_i) disable iff (!rst_ni)
+    material_we_i |-> !frame_busy_q);
   c_frame_done: cover property (@(posedge clk_i) disable iff (!rst_ni)
     pixel_valid_o && pixel_ready_i && pixel_last_o);
 `endif

@@ -1,11 +1,11 @@
 // Edge record → watkins_pkg::edge_t, bit-exact. The one place where the C++ record meets the RTL's
 // packed struct; tests/cosim/test_edge_packing.cpp checks it against rtl/watkins_pkg.sv.
 //
-// A packed struct puts its first field at the top: edge_t = {y0, n, poly, value, slope}, and
-// `logic [NumChannels-1:0][ChannelBits-1:0] value` puts value[NumChannels-1] (B) at the top of its
-// field and value[0] (X) at the bottom. So, from bit 0 up:
-//   slope[0..4] at 0 + 42c, value[0..4] at 210 + 42c, poly at 420, n at 436, y0 at 449; 462 bits.
-// Verilator stores a 462-bit port as 15 little-endian 32-bit words (VlWide<15> / sc_bv<462>).
+// A packed struct puts its first field at the top: edge_t = {y0, n, poly, material, value, slope},
+// and `logic [NumChannels-1:0][ChannelBits-1:0] value` puts value[NumChannels-1] at the top of its
+// field and value[0] (X) at the bottom. So, from bit 0 up: slope[0..4] at 0 + 42c, value[0..4] at
+// 210 + 42c, material at 420, poly at 424, n at 440, y0 at 453; 466 bits.
+// Verilator stores a 466-bit port as 15 little-endian 32-bit words (VlWide<15> / sc_bv<466>).
 #pragma once
 
 #include <array>
@@ -22,12 +22,13 @@ namespace watkins::tb {
 namespace edge_layout {
 constexpr int SlopeLsb = 0;
 constexpr int ValueLsb = SlopeLsb + fmt::NumChannels * fmt::ChannelBits;
-constexpr int PolyLsb = ValueLsb + fmt::NumChannels * fmt::ChannelBits;
+constexpr int MaterialLsb = ValueLsb + fmt::NumChannels * fmt::ChannelBits;
+constexpr int PolyLsb = MaterialLsb + fmt::MaterialIdBits;
 constexpr int NLsb = PolyLsb + fmt::PolyIdBits;
 constexpr int Y0Lsb = NLsb + fmt::LineBits;
 constexpr int Bits = Y0Lsb + fmt::LineBits;  // $bits(watkins_pkg::edge_t)
 constexpr int Words = (Bits + 31) / 32;
-static_assert(Bits == 462, "edge_t layout changed: update edge_packing.hpp and its test");
+static_assert(Bits == 466, "edge_t layout changed: update edge_packing.hpp and its test");
 }  // namespace edge_layout
 
 using EdgeWords = std::array<std::uint32_t, edge_layout::Words>;
@@ -62,10 +63,12 @@ inline EdgeWords pack_edge(const EdgeRecord& e) {
   check_unsigned("y0", e.y0, fmt::LineBits);
   check_unsigned("n", e.n, fmt::LineBits);
   check_unsigned("poly", e.poly, fmt::PolyIdBits);
+  check_unsigned("material", e.material, fmt::MaterialIdBits);
   EdgeWords w{};
   put_bits(w, Y0Lsb, fmt::LineBits, static_cast<std::uint64_t>(e.y0));
   put_bits(w, NLsb, fmt::LineBits, static_cast<std::uint64_t>(e.n));
   put_bits(w, PolyLsb, fmt::PolyIdBits, static_cast<std::uint64_t>(e.poly));
+  put_bits(w, MaterialLsb, fmt::MaterialIdBits, static_cast<std::uint64_t>(e.material));
   for (int c = 0; c < fmt::NumChannels; ++c) {
     for (const bool is_slope : {false, true}) {
       const i64 v = is_slope ? e.slope[c] : e.value[c];
@@ -87,6 +90,7 @@ inline EdgeRecord unpack_edge(const EdgeWords& w) {
   e.y0 = static_cast<int>(get_bits(w, Y0Lsb, fmt::LineBits));
   e.n = static_cast<int>(get_bits(w, NLsb, fmt::LineBits));
   e.poly = static_cast<int>(get_bits(w, PolyLsb, fmt::PolyIdBits));
+  e.material = static_cast<int>(get_bits(w, MaterialLsb, fmt::MaterialIdBits));
   for (int c = 0; c < fmt::NumChannels; ++c) {
     e.value[c] = wrap_signed(get_bits(w, ValueLsb + c * fmt::ChannelBits, fmt::ChannelBits), fmt::ChannelBits);
     e.slope[c] = wrap_signed(get_bits(w, SlopeLsb + c * fmt::ChannelBits, fmt::ChannelBits), fmt::ChannelBits);

@@ -4,6 +4,8 @@
 //
 //   void reset_pin(bool rst_n);
 //   void frame_pins(uint32_t width, uint32_t height, uint32_t background_rgb, bool sparse);
+//   void phong_pins(uint64_t light, uint64_t eye);   // {z, y, x} Q2.14 (Phong frames)
+//   void material_pin(bool we, int addr, const QuantizedMaterial& m);  // one table write
 //   void edge_pins(bool valid, bool eof, const EdgeWords& data);
 //   void ready_pin(bool pixel_ready);
 //   void settle(uint64_t t);   // clock low with the new inputs; combinational outputs valid
@@ -74,6 +76,30 @@ class Rng {
 inline std::uint32_t pack_rgb(const std::array<std::uint8_t, 3>& c) {
   return (std::uint32_t(c[0]) << 16) | (std::uint32_t(c[1]) << 8) | c[2];
 }
+
+// {z, y, x} of a Q2.14 unit vector, as light_i / eye_i take it.
+inline std::uint64_t pack_unit(const std::array<i64, 3>& v) {
+  std::uint64_t w = 0;
+  for (int c = 0; c < 3; ++c) w |= wrap_unsigned(v[c], fmt::UnitBits) << (c * fmt::UnitBits);
+  return w;
+}
+
+// What the top samples or holds per frame: changing any of it waits for the previous frames'
+// last pixel (the material table is written between frames).
+struct FrameConfig {
+  std::uint32_t width = 0, height = 0, background = 0;
+  bool sparse = false;
+  std::uint64_t light = 0, eye = 0;
+  std::vector<QuantizedMaterial> materials;
+  bool operator==(const FrameConfig& o) const {
+    auto same_material = [](const QuantizedMaterial& a, const QuantizedMaterial& b) {
+      return a.cp == b.cp && a.d == b.d && a.w == b.w && a.shininess == b.shininess;
+    };
+    return width == o.width && height == o.height && background == o.background && sparse == o.sparse &&
+           light == o.light && eye == o.eye && materials.size() == o.materials.size() &&
+           std::equal(materials.begin(), materials.end(), o.materials.begin(), same_material);
+  }
+};
 
 inline std::string rgb_text(std::uint32_t rgb, bool covered) {
   char b[96];
@@ -147,21 +173,38 @@ class FrameDriver {
 
     auto frame_needs = [&](int f) {
       const PreparedScene& s = *scenes[f];
-      return std::make_tuple(std::uint32_t(s.width), std::uint32_t(s.height), pack_rgb(s.background),
-                             bool(r.frames[f].sparse));
+      FrameConfig k;
+      k.width = std::uint32_t(s.width);
+      k.height = std::uint32_t(s.height);
+      k.background = pack_rgb(s.background);
+      k.sparse = r.frames[f].sparse;
+      if (s.shading == ShadingMode::Phong) {
+        k.light = pack_unit(s.light);
+        k.eye = pack_unit(s.eye);
+        k.materials = s.materials;
+      }
+      return k;
     };
+    std::size_t loading = 0;  // > 0: material table writes left before the frame may start
     auto next_inputs = [&]() {
       // Edge source.
       if (!presenting && sf < n) {
         const bool starts = sb == 0;
-        const bool same = frame_pins_set && frame_needs(sf) == std::make_tuple(cur_w_, cur_h_, cur_bg_, cur_sparse_);
+        const bool same = frame_pins_set && frame_needs(sf) == cur_;
         const bool may_start = !starts || same || kf >= sf;  // else wait for the previous frames to drain
-        if (may_start && !gap_rng.chance(gap_thr)) {
-          if (starts && !same) {
-            std::tie(cur_w_, cur_h_, cur_bg_, cur_sparse_) = frame_needs(sf);
-            pins_.frame_pins(cur_w_, cur_h_, cur_bg_, cur_sparse_);
-            frame_pins_set = true;
-          }
+        if (may_start && starts && !same && loading == 0) {
+          cur_ = frame_needs(sf);
+          pins_.frame_pins(cur_.width, cur_.height, cur_.background, cur_.sparse);
+          pins_.phong_pins(cur_.light, cur_.eye);
+          frame_pins_set = true;
+          loading = cur_.materials.size() + 1;  // the writes, then write enable low again
+        }
+        if (loading > 0) {
+          const std::size_t k = cur_.materials.size() + 1 - loading;
+          if (k < cur_.materials.size()) pins_.material_pin(true, static_cast<int>(k), cur_.materials[k]);
+          else pins_.material_pin(false, 0, QuantizedMaterial{});
+          --loading;
+        } else if (may_start && !gap_rng.chance(gap_thr)) {
           presenting = true;
           if (starts) r.frames[sf].first_edge_cycle = cycle_ - start_cycle;  // the RTL starts the frame here
           const bool eof = sb == beats[sf].size();
@@ -456,10 +499,19 @@ class FrameDriver {
   Pins& pins_;
   bool need_reset_ = true;
   long long cycle_ = 0;  // cycles since the bench was built
-  std::uint32_t cur_w_ = 0, cur_h_ = 0, cur_bg_ = 0;
-  bool cur_sparse_ = false;
+  FrameConfig cur_;  // what the frame pins and the material table hold
   long long sparse_pos_ = -1;  // raster position of the previous sparse beat
 };
+
+// True when the frames need the Phong top (Phong = 1), false for the Gouraud top; frames of one
+// run use one top, so mixing the two throws std::invalid_argument.
+inline bool phong_frames(const std::vector<const PreparedScene*>& scenes) {
+  int phong = 0;
+  for (const PreparedScene* s : scenes) phong += s->shading == ShadingMode::Phong;
+  if (phong != 0 && phong != static_cast<int>(scenes.size()))
+    throw std::invalid_argument("RTL: one run_rtl_frames call renders Gouraud or Phong frames, not both");
+  return phong != 0;
+}
 
 // What run_rtl_frames does before the driver on either harness: check that every screen fits the
 // RTL and render the model images that were not given (into `rendered`, which `use` points into).

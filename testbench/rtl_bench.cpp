@@ -1,5 +1,7 @@
 // SystemC bench: the Verilated (--sc) watkins_top bound to sc_signals and clocked by one
 // SC_THREAD that also runs the transaction-level source, sink and checker (frame_driver.hpp).
+// Two Verilated builds of the one top: Phong = 0 (Vwatkins_top) and Phong = 1
+// (Vwatkins_top_phong), each in its own bench module; a run clocks only the one its scenes need.
 //
 // Why one thread and no sc_clock: the driver is the same plain C++ as the plain harness's
 // (so both run identical checks and must agree on every cycle), a cycle is two timed waits with
@@ -20,6 +22,8 @@
 
 #include "Vwatkins_top.h"
 #include "Vwatkins_top___024root.h"  // the public internal stage signals
+#include "Vwatkins_top_phong.h"
+#include "Vwatkins_top_phong___024root.h"
 #include "fst_trace.hpp"
 #include "frame_driver.hpp"
 
@@ -32,7 +36,8 @@ namespace {
 
 constexpr int MaxWidth = 1024;  // the top's MaxWidth parameter default (not overridden here)
 
-SC_MODULE(GouraudBench) {
+template <class Dut>
+struct TopBench : sc_module {
   sc_signal<bool> clk{"clk"}, rst_n{"rst_n"}, edge_eof{"edge_eof"}, edge_valid{"edge_valid"};
   sc_signal<bool> edge_ready{"edge_ready"}, pixel_covered{"pixel_covered"}, pixel_last{"pixel_last"};
   sc_signal<bool> pixel_valid{"pixel_valid"}, pixel_ready{"pixel_ready"}, overflow{"overflow"};
@@ -40,13 +45,18 @@ SC_MODULE(GouraudBench) {
   sc_signal<uint32_t> pixel_x{"pixel_x"}, pixel_y{"pixel_y"};
   sc_signal<uint32_t> width{"width"}, height{"height"}, background{"background"}, pixel_rgb{"pixel_rgb"};
   sc_signal<sc_bv<edge_layout::Bits>> edge{"edge"};
-  Vwatkins_top dut{"dut"};
+  sc_signal<uint64_t> light{"light"}, eye{"eye"};
+  sc_signal<bool> material_we{"material_we"};
+  sc_signal<uint32_t> material_addr{"material_addr"}, material_cp{"material_cp"}, material_d{"material_d"};
+  sc_signal<uint32_t> material_w{"material_w"}, material_n{"material_n"};
+  Dut dut{"dut"};
 
   sc_event start;
   std::function<void()> job;  // runs inside the thread, so it may wait()
   bool job_done = false;
 
-  SC_CTOR(GouraudBench) {
+  SC_HAS_PROCESS(TopBench);
+  explicit TopBench(sc_module_name name) : sc_module(name) {
     dut.clk_i(clk);
     dut.rst_ni(rst_n);
     dut.width_i(width);
@@ -65,6 +75,14 @@ SC_MODULE(GouraudBench) {
     dut.pixel_valid_o(pixel_valid);
     dut.pixel_ready_i(pixel_ready);
     dut.overflow_o(overflow);
+    dut.light_i(light);
+    dut.eye_i(eye);
+    dut.material_we_i(material_we);
+    dut.material_addr_i(material_addr);
+    dut.material_cp_i(material_cp);
+    dut.material_d_i(material_d);
+    dut.material_w_i(material_w);
+    dut.material_n_i(material_n);
     SC_THREAD(main);
   }
 
@@ -84,10 +102,22 @@ SC_MODULE(GouraudBench) {
     background.write(bg);
     sparse.write(sp);
   }
+  void phong_pins(std::uint64_t l, std::uint64_t e) {
+    light.write(l);
+    eye.write(e);
+  }
+  void material_pin(bool we, int addr, const QuantizedMaterial& m) {
+    material_we.write(we);
+    material_addr.write(static_cast<uint32_t>(addr));
+    material_cp.write(detail::pack_rgb({std::uint8_t(m.cp[0]), std::uint8_t(m.cp[1]), std::uint8_t(m.cp[2])}));
+    material_d.write(static_cast<uint32_t>(m.d));
+    material_w.write(static_cast<uint32_t>(m.w));
+    material_n.write(static_cast<uint32_t>(m.shininess));
+  }
   void edge_pins(bool valid, bool eof, const EdgeWords& data) {
     edge_valid.write(valid);
     edge_eof.write(eof);
-    if (data != last_edge_) {  // a 462-bit sc_bv write is the costly one; skip it when unchanged
+    if (data != last_edge_) {  // a 466-bit sc_bv write is the costly one; skip it when unchanged
       last_edge_ = data;
       for (int i = 0; i < edge_layout::Words; ++i) edge_bv_.set_word(i, data[i]);
       edge.write(edge_bv_);
@@ -142,9 +172,17 @@ SC_MODULE(GouraudBench) {
   detail::StageTaps taps_;
 };
 
+// One Verilated top, its bench module and its driver.
+template <class Dut>
+struct Side {
+  TopBench<Dut>* top = nullptr;
+  detail::FrameDriver<TopBench<Dut>>* driver = nullptr;
+  explicit Side(const char* name) : top(new TopBench<Dut>(name)), driver(new detail::FrameDriver<TopBench<Dut>>(*top)) {}
+};
+
 struct Bench {
-  GouraudBench* top = nullptr;
-  detail::FrameDriver<GouraudBench>* driver = nullptr;
+  Side<Vwatkins_top> gouraud{"watkins_tb"};
+  Side<Vwatkins_top_phong> phong{"watkins_tb_phong"};
   bool dead = false;
 };
 
@@ -157,8 +195,6 @@ Bench& bench() {
     Verilated::threadContextp()->fatalOnError(false);  // an assertion ends the run, not the process
     sc_report_handler::set_actions(SC_INFO, SC_DO_NOTHING);
     auto* x = new Bench;
-    x->top = new GouraudBench("watkins_tb");
-    x->driver = new detail::FrameDriver<GouraudBench>(*x->top);
     sc_start(SC_ZERO_TIME);  // elaborate and park the thread on `start`
     return x;
   }();
@@ -168,14 +204,40 @@ Bench& bench() {
 }  // namespace
 
 std::string rtl_description() {
-  return "SystemC bench (Verilated --sc watkins_top, one SC_THREAD, SystemC " +
+  return "SystemC bench (Verilated --sc watkins_top, Phong = 0 and 1, one SC_THREAD each, SystemC " +
          std::string(sc_release()) + ")";
 }
 
 int rtl_max_width() { return MaxWidth; }
 
+namespace {
+
+// Runs the frames on one side's thread and returns when it is done.
+template <class Dut, class Work>
+void run_on(Bench& b, Side<Dut>& side, const Work& work) {
+  std::exception_ptr error;
+  side.top->job = [&] {
+    try {
+      work(*side.driver);
+    } catch (...) {
+      error = std::current_exception();
+    }
+  };
+  side.top->job_done = false;
+  side.top->start.notify(SC_ZERO_TIME);
+  sc_start();  // returns when the thread waits for the next job (nothing left to simulate)
+  if (!side.top->job_done) {
+    b.dead = true;
+    throw std::runtime_error("RTL bench: the SystemC kernel stopped before the run finished");
+  }
+  if (error) std::rethrow_exception(error);
+}
+
+}  // namespace
+
 RtlResult run_rtl_frames(const std::vector<const PreparedScene*>& scenes, const RtlOptions& opt,
                          const std::vector<const Image*>& expected) {
+  const bool phong = detail::phong_frames(scenes);
   RtlResult r;
   std::vector<Image> rendered;
   std::vector<const Image*> use;
@@ -183,22 +245,10 @@ RtlResult run_rtl_frames(const std::vector<const PreparedScene*>& scenes, const 
   detail::expected_images(scenes, opt, expected, rendered, use, stages, r, MaxWidth);
   Bench& b = bench();
   if (b.dead) throw std::runtime_error("RTL bench: the SystemC kernel stopped in an earlier run");
-  std::exception_ptr error;
-  b.top->job = [&] {
-    try {
-      b.driver->run(scenes, use, stages, opt, r);
-    } catch (...) {
-      error = std::current_exception();
-    }
-  };
-  b.top->job_done = false;
-  b.top->start.notify(SC_ZERO_TIME);
-  sc_start();  // returns when the thread waits for the next job (nothing left to simulate)
-  if (!b.top->job_done) {
-    b.dead = true;
-    throw std::runtime_error("RTL bench: the SystemC kernel stopped before the run finished");
-  }
-  if (error) std::rethrow_exception(error);
+  if (phong)
+    run_on(b, b.phong, [&](auto& d) { d.run(scenes, use, stages, opt, r); });
+  else
+    run_on(b, b.gouraud, [&](auto& d) { d.run(scenes, use, stages, opt, r); });
   return r;
 }
 

@@ -7,6 +7,7 @@
 // frames within one run_rtl_frames() call follow each other back to back.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -19,7 +20,7 @@
 namespace watkins::tb {
 
 // The model's internal stage streams of one frame, item by item (Pipeline's
-// PipelineObserver), as the bench expects them at the three internal stage boundaries of
+// PipelineObserver), as the bench expects them at the four internal stage boundaries of
 // watkins_top. Per stage, the items of line y are followed by an end-of-line marker
 // (eol, no payload), for y = 0 .. height-1. `index` numbers the items of a line from 0 (the
 // marker gets the number of items before it).
@@ -27,26 +28,31 @@ struct StageEdge {      // active_edge_list -> segment_former (ae_*)
   int line = 0, index = 0;
   bool eol = false;
   int poly = 0;
+  int material = 0;
   ChannelVector value{};
 };
 struct StageSegment {   // segment_former -> segment_interpolator (sg_*)
   int line = 0, index = 0;
   bool eol = false;
   int poly = 0;
+  int material = 0;
   ChannelVector e{}, f{};
 };
-struct StageFragment {  // segment_interpolator -> scanline_buffer (fr_*)
+struct StageFragment {  // segment_interpolator -> shading (fr_*) and shading -> scanline_buffer (sh_*)
   int line = 0, index = 0;
   bool eol = false;
   int x = 0;
   std::uint32_t depth = 0;
-  std::uint32_t rgb = 0;  // {R, G, B}
+  int material = 0;
+  std::array<i64, 3> normal{};  // fr_*: the normal reading of channels 2..4
+  std::uint32_t rgb = 0;        // sh_*: {R, G, B} as shaded (Gouraud: the interpolated shade)
 };
 struct StageStreams {
   int width = 0;          // screen width of the frame (to name the pixels a mismatch affects)
   std::vector<StageEdge> edges;
   std::vector<StageSegment> segments;
-  std::vector<StageFragment> fragments;
+  std::vector<StageFragment> fragments;  // segment_interpolator output (x, depth, material, normal)
+  std::vector<StageFragment> shaded;     // shading output (x, depth, rgb): the same items
 };
 
 struct RtlOptions {
@@ -99,7 +105,7 @@ struct RtlResult {
   // pixels (..)") or, when every stage stream agreed up to then, a pixel's ("pixel output: frame 0
   // pixel (x, y) at cycle C: RTL ... model ..."); empty when there is none.
   std::string first_mismatch;
-  std::string first_stage;          // the stage of first_mismatch ("active_edge_list",
+  std::string first_stage;          // the stage of first_mismatch ("active_edge_list", "shading",
                                     // "segment_former", "segment_interpolator" or "pixel output")
   std::string first_pixel_mismatch; // the first mismatching pixel, or empty
   // Per stage that diverged, its first mismatch, in the order found (a stage is no longer

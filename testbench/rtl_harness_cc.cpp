@@ -35,6 +35,18 @@ class CcHarness {
     dut_->background_i = bg;
     dut_->sparse_i = sparse;
   }
+  void phong_pins(std::uint64_t light, std::uint64_t eye) {
+    dut_->light_i = light;
+    dut_->eye_i = eye;
+  }
+  void material_pin(bool we, int addr, const QuantizedMaterial& m) {
+    dut_->material_we_i = we;
+    dut_->material_addr_i = static_cast<std::uint32_t>(addr);
+    dut_->material_cp_i = detail::pack_rgb({std::uint8_t(m.cp[0]), std::uint8_t(m.cp[1]), std::uint8_t(m.cp[2])});
+    dut_->material_d_i = static_cast<std::uint32_t>(m.d);
+    dut_->material_w_i = static_cast<std::uint32_t>(m.w);
+    dut_->material_n_i = static_cast<std::uint32_t>(m.shininess);
+  }
   void edge_pins(bool valid, bool eof, const EdgeWords& data) {
     dut_->edge_valid_i = valid;
     dut_->edge_eof_i = eof;
@@ -105,6 +117,8 @@ int rtl_max_width() { return MaxWidth; }
 
 RtlResult run_rtl_frames(const std::vector<const PreparedScene*>& scenes, const RtlOptions& opt,
                          const std::vector<const Image*>& expected) {
+  if (detail::phong_frames(scenes))
+    throw std::invalid_argument("plain C++ harness: only the Gouraud top (Phong = 0) is built here");
   RtlResult r;
   std::vector<Image> rendered;
   std::vector<const Image*> use;

@@ -29,6 +29,10 @@ SC_MODULE(SignalBench) {
   sc_signal<uint32_t> pixel_x{"pixel_x"}, pixel_y{"pixel_y"};
   sc_signal<uint32_t> width{"width"}, height{"height"}, background{"background"}, pixel_rgb{"pixel_rgb"};
   sc_signal<sc_bv<tb::edge_layout::Bits>> edge{"edge"};
+  sc_signal<uint64_t> light{"light"}, eye{"eye"};  // Phong inputs: unused by the Gouraud top
+  sc_signal<bool> material_we{"material_we"};
+  sc_signal<uint32_t> material_addr{"material_addr"}, material_cp{"material_cp"}, material_d{"material_d"};
+  sc_signal<uint32_t> material_w{"material_w"}, material_n{"material_n"};
   Vwatkins_top dut{"dut"};
 
   std::vector<sc_bv<tb::edge_layout::Bits>> beats;  // the frame's edges, then the end-of-frame beat
@@ -59,6 +63,14 @@ SC_MODULE(SignalBench) {
     dut.pixel_valid_o(pixel_valid);
     dut.pixel_ready_i(pixel_ready);
     dut.overflow_o(overflow);
+    dut.light_i(light);
+    dut.eye_i(eye);
+    dut.material_we_i(material_we);
+    dut.material_addr_i(material_addr);
+    dut.material_cp_i(material_cp);
+    dut.material_d_i(material_d);
+    dut.material_w_i(material_w);
+    dut.material_n_i(material_n);
     SC_THREAD(reset);
     SC_METHOD(source);
     sensitive << clk.posedge_event();

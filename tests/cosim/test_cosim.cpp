@@ -444,8 +444,8 @@ long long model_stage_items(const PreparedScene& p) {
   o.active_edges_end = [&](int) { ++n; };
   o.segment = [&](int, const Segment&) { ++n; };
   o.segments_end = [&](int) { ++n; };
-  o.fragment = [&](int, const Fragment&, bool) { ++n; };
-  o.fragments_end = [&](int) { ++n; };
+  o.fragment = [&](int, const Fragment&, bool) { n += 2; };  // interpolator and shading outputs
+  o.fragments_end = [&](int) { n += 2; };
   Pipeline().render(p, o);
   return n;
 }
@@ -515,13 +515,20 @@ TEST(Cosim, StageCheckerNamesTheDivergingStage) {
       {"segment_interpolator",
        [](StageStreams& s) {
          StageFragment& f = s.fragments.at(middle_item(s.fragments));
-         f.rgb ^= 0x000100;  // green, lowest bit
+         f.material ^= 1;
          return "segment_interpolator output: frame 0 line " + std::to_string(f.line) + " fragment " +
                 std::to_string(f.index) + " at cycle ";
        }},
+      {"shading",
+       [](StageStreams& s) {
+         StageFragment& f = s.shaded.at(middle_item(s.shaded));
+         f.rgb ^= 0x000100;  // green, lowest bit
+         return "shading output: frame 0 line " + std::to_string(f.line) + " fragment " +
+                std::to_string(f.index) + " at cycle ";
+       }},
   };
-  const char* differs[] = {"(differs in x)", "(differs in F.z)", "(differs in rgb)"};
-  const char* affects[] = {"; affects line ", "; affects pixels (", "; pixel ("};
+  const char* differs[] = {"(differs in x)", "(differs in F.z)", "(differs in material)", "(differs in rgb)"};
+  const char* affects[] = {"; affects line ", "; affects pixels (", "; pixel (", "; pixel ("};
   for (std::size_t k = 0; k < cases.size(); ++k) {
     std::string want;
     const RtlOptions o{71 + k, 0.2, 0.2};

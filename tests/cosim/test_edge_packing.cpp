@@ -18,6 +18,7 @@ EdgeRecord sample_record() {
   e.y0 = 0x1ABC;  // 13 bits: 1 1010 1011 1100
   e.n = 0x0123;
   e.poly = 0xBEEF;
+  e.material = 0xA;
   for (int c = 0; c < fmt::NumChannels; ++c) {
     e.value[c] = (c % 2 ? -1 : 1) * ((i64{1} << (fmt::ChannelBits - 2)) + 0x1234567 * (c + 1));
     e.slope[c] = (c % 2 ? 1 : -1) * (i64{0x5A5A5A} * (c + 3));
@@ -30,11 +31,12 @@ EdgeRecord sample_record() {
 TEST(EdgePacking, FieldsSitWhereThePackedStructPutsThem) {
   const EdgeRecord e = sample_record();
   const EdgeWords w = pack_edge(e);
-  // y0 is the top field: bits 461..449.
-  EXPECT_EQ(get_bits(w, 449, 13), 0x1ABCu);
-  EXPECT_EQ(w[14] >> 1, 0x1ABCu) << "y0 occupies bits [461:449] = word 14 bits [13:1]";
-  EXPECT_EQ(get_bits(w, 436, 13), 0x0123u);
-  EXPECT_EQ(get_bits(w, 420, 16), 0xBEEFu);
+  // y0 is the top field: bits 465..453.
+  EXPECT_EQ(get_bits(w, 453, 13), 0x1ABCu);
+  EXPECT_EQ(w[14] >> 5, 0x1ABCu) << "y0 occupies bits [465:453] = word 14 bits [17:5]";
+  EXPECT_EQ(get_bits(w, 440, 13), 0x0123u);
+  EXPECT_EQ(get_bits(w, 424, 16), 0xBEEFu);
+  EXPECT_EQ(get_bits(w, 420, 4), 0xAu);
   // value[4] (B) at the top of the value field, slope[0] (X) at bit 0.
   const std::uint64_t mask = (std::uint64_t{1} << fmt::ChannelBits) - 1;
   for (int c = 0; c < fmt::NumChannels; ++c) {
@@ -43,8 +45,8 @@ TEST(EdgePacking, FieldsSitWhereThePackedStructPutsThem) {
   }
   // slope[0] low word by hand: -(0x5A5A5A * 3) in two's complement.
   EXPECT_EQ(w[0], static_cast<std::uint32_t>(-(0x5A5A5A * 3)));
-  // Nothing above bit 461.
-  EXPECT_EQ(w[14] >> 14, 0u);
+  // Nothing above bit 465.
+  EXPECT_EQ(w[14] >> 18, 0u);
 }
 
 TEST(EdgePacking, RoundTripsRandomRecords) {
@@ -56,6 +58,7 @@ TEST(EdgePacking, RoundTripsRandomRecords) {
     e.y0 = static_cast<int>(rng() % (1u << fmt::LineBits));
     e.n = static_cast<int>(rng() % (1u << fmt::LineBits));
     e.poly = static_cast<int>(rng() % (1u << fmt::PolyIdBits));
+    e.material = static_cast<int>(rng() % (1u << fmt::MaterialIdBits));
     for (int c = 0; c < fmt::NumChannels; ++c) {
       e.value[c] = k < 8 ? (k % 2 ? -lim : lim - 1) : ch(rng);  // extremes first
       e.slope[c] = k < 8 ? (k % 4 < 2 ? -1 : 0) : ch(rng);
@@ -64,6 +67,7 @@ TEST(EdgePacking, RoundTripsRandomRecords) {
     ASSERT_EQ(d.y0, e.y0);
     ASSERT_EQ(d.n, e.n);
     ASSERT_EQ(d.poly, e.poly);
+    ASSERT_EQ(d.material, e.material);
     ASSERT_EQ(d.value, e.value) << "record " << k;
     ASSERT_EQ(d.slope, e.slope) << "record " << k;
   }
@@ -78,6 +82,9 @@ TEST(EdgePacking, RejectsFieldsThatDoNotFit) {
   e.poly = -1;
   EXPECT_THROW(pack_edge(e), std::invalid_argument);
   e.poly = 0;
+  e.material = 1 << fmt::MaterialIdBits;
+  EXPECT_THROW(pack_edge(e), std::invalid_argument);
+  e.material = 0;
   e.value[2] = i64{1} << (fmt::ChannelBits - 1);
   EXPECT_THROW(pack_edge(e), std::invalid_argument);
 }
@@ -100,9 +107,11 @@ TEST(EdgePacking, MatchesTheStructInWatkinsPkg) {
     dims.push_back(std::regex_replace((*it)[1].str(), std::regex(R"(\s+)"), ""));
     names.push_back((*it)[2].str());
   }
-  EXPECT_EQ(names, (std::vector<std::string>{"y0", "n", "poly", "value", "slope"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"y0", "n", "poly", "material", "value", "slope"}));
   EXPECT_EQ(dims, (std::vector<std::string>{"[LineBits-1:0]", "[LineBits-1:0]", "[PolyIdBits-1:0]",
+                                            "[MaterialIdBits-1:0]",
                                             "[NumChannels-1:0][ChannelBits-1:0]",
                                             "[NumChannels-1:0][ChannelBits-1:0]"}));
-  EXPECT_EQ(edge_layout::Bits, 2 * fmt::LineBits + fmt::PolyIdBits + 2 * fmt::NumChannels * fmt::ChannelBits);
+  EXPECT_EQ(edge_layout::Bits, 2 * fmt::LineBits + fmt::PolyIdBits + fmt::MaterialIdBits +
+                                   2 * fmt::NumChannels * fmt::ChannelBits);
 }
