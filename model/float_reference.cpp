@@ -7,7 +7,7 @@
 namespace watkins {
 namespace {
 
-using Attr = glm::dvec4;  // depth, R, G, B
+using Attr = glm::dvec4;  // depth, then R, G, B (Gouraud) or Nx, Ny, Nz (Phong)
 
 struct Crossing {
   double x;
@@ -21,9 +21,37 @@ struct FloatSegment {
   Attr ae, af;
 };
 
-Attr attributes(const ScreenVertex& v) { return Attr(v.depth, v.rgb[0], v.rgb[1], v.rgb[2]); }
+// The vertex attributes the mode interpolates, in the slots the edge record uses.
+Attr attributes(const ScreenVertex& v, ShadingMode mode) {
+  const double* c = mode == ShadingMode::Phong ? v.normal : v.rgb;
+  return Attr(v.depth, c[0], c[1], c[2]);
+}
+
+// The shade of a visible pixel from its interpolated attributes: the Gouraud shade itself, or
+// Phong's eq. (3) on the normalized normal (a null normal stays null, as in the normalizer).
+std::array<double, 3> pixel_levels(const BuiltScene& scene, int poly, const Attr& a) {
+  if (scene.shading == ShadingMode::Gouraud) return {a[1], a[2], a[3]};
+  const glm::dvec3 n(a[1], a[2], a[3]);
+  const double len = glm::length(n);
+  const glm::dvec3 u = len > 0 ? n / len : n;
+  const PhongMaterial& m = scene.materials.at(std::size_t(scene.polygons[std::size_t(poly)].material));
+  return phong_levels(m, {u.x, u.y, u.z}, scene.light, scene.eye);
+}
 
 }  // namespace
+
+std::array<double, 3> phong_levels(const PhongMaterial& m, const std::array<double, 3>& n,
+                                   const double (&light)[3], const double (&eye)[3]) {
+  const glm::dvec3 N(n[0], n[1], n[2]), L(light[0], light[1], light[2]), E(eye[0], eye[1], eye[2]);
+  const double cos_i = std::max(glm::dot(N, L), 0.0);  // i > 90 degrees: no direct light
+  const double cos_s = std::clamp(2 * cos_i * glm::dot(N, E) - glm::dot(L, E), 0.0, 1.0);
+  const double d = std::min(m.d, 1.0);
+  const double spec = cos_i > 0 && cos_s > 0 ? m.W * std::pow(cos_s, m.n) : 0.0;
+  std::array<double, 3> out{};
+  for (int c = 0; c < 3; ++c)
+    out[c] = std::clamp(255.0 * (m.cp[c] * (cos_i * (1 - d) + d) + spec), 0.0, 255.0);
+  return out;
+}
 
 Image render_float_reference(const BuiltScene& scene, FloatReferenceStats* stats) {
   const int W = scene.width, H = scene.height;
@@ -57,7 +85,8 @@ Image render_float_reference(const BuiltScene& scene, FloatReferenceStats* stats
         if (a->y > b->y) std::swap(a, b);  // top first, as the edge setup does
         if (!(a->y <= yc && yc < b->y)) continue;
         const double t = (yc - a->y) / (b->y - a->y);
-        xs.push_back({glm::mix(a->x, b->x, t), glm::mix(attributes(*a), attributes(*b), t), int(i)});
+        xs.push_back({glm::mix(a->x, b->x, t),
+                      glm::mix(attributes(*a, scene.shading), attributes(*b, scene.shading), t), int(i)});
       }
       std::sort(xs.begin(), xs.end(), [](const Crossing& l, const Crossing& r) {
         return l.x != r.x ? l.x < r.x : l.edge < r.edge;
@@ -74,7 +103,7 @@ Image render_float_reference(const BuiltScene& scene, FloatReferenceStats* stats
       const int x1 = std::min(W, int(std::ceil(s.xf - 0.5)));
       for (int x = x0; x < x1; ++x) {
         const double alpha = (x + 0.5 - s.xe) / (s.xf - s.xe);
-        const Attr a = (1.0 - alpha) * s.ae + alpha * s.af;  // Gouraud: S = (1 − α)S_E + αS_F
+        const Attr a = (1.0 - alpha) * s.ae + alpha * s.af;  // S (or N) = (1 − α)S_E + αS_F
         ++fragments;
         if (written[x] && !(a.x < depth[x])) continue;
         written[x] = 1;
@@ -87,8 +116,11 @@ Image render_float_reference(const BuiltScene& scene, FloatReferenceStats* stats
       std::uint8_t* px = img.at(x, y);
       img.covered[std::size_t(y) * W + x] = written[x];
       img.owner[std::size_t(y) * W + x] = written[x] ? owner[x] : -1;
+      const std::array<double, 3> level =
+          written[x] ? pixel_levels(scene, owner[x], colour[x])
+                     : std::array<double, 3>{scene.background[0], scene.background[1], scene.background[2]};
       for (int c = 0; c < 3; ++c) {
-        const double v = written[x] ? colour[x][c + 1] : scene.background[c];
+        const double v = level[c];
         px[c] = static_cast<std::uint8_t>(std::clamp(std::lround(v), 0L, 255L));
       }
     }

@@ -15,11 +15,31 @@ namespace {
 constexpr i64 kSub = 1 << fmt::SubPixelBits;               // 16 sub-pixel steps per pixel
 constexpr i64 kHalfPixelSub = kSub / 2;                     // pixel centre offset in 1/16 pixel
 constexpr double kVertexLimit = double(1 << (fmt::VertexIntBits - 1));  // 8192 pixels
+constexpr double kUnitSlack = 1e-6;  // |unit vector component| <= 1 up to double rounding
 
 i64 quantize(double v, int frac_bits) { return std::llround(std::ldexp(v, frac_bits)); }
 
 // ceil(a / kSub) for any sign of a.
 i64 ceil_sub(i64 a) { return static_cast<i64>(floor_shift(a + kSub - 1, fmt::SubPixelBits)); }
+
+std::string num(double x) {
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
+
+// A component of a unit vector, checked and rounded to `frac_bits` fraction bits.
+i64 quantize_unit(double c, int frac_bits, const std::string& what) {
+  if (!(std::isfinite(c) && std::fabs(c) <= 1 + kUnitSlack))
+    throw SceneError(what + " component " + num(c) + " is outside [-1, 1] (expected a unit vector)");
+  return quantize(c, frac_bits);
+}
+
+// Light and eye directions: Q2.14 (UnitBits), the phong_shader's frame constants.
+std::array<i64, 3> quantize_direction(const double (&v)[3], const std::string& what) {
+  return {quantize_unit(v[0], fmt::UnitFracBits, what), quantize_unit(v[1], fmt::UnitFracBits, what),
+          quantize_unit(v[2], fmt::UnitFracBits, what)};
+}
 
 std::string where(int poly, int vertex) {
   std::ostringstream s;
@@ -29,7 +49,7 @@ std::string where(int poly, int vertex) {
 
 }  // namespace
 
-QuantizedVertex quantize_vertex(const ScreenVertex& v) {
+QuantizedVertex quantize_vertex(const ScreenVertex& v, ShadingMode shading) {
   QuantizedVertex q;
   auto in_range = [](double c) { return std::isfinite(c) && c >= -kVertexLimit && c < kVertexLimit; };
   if (!in_range(v.x) || !in_range(v.y))
@@ -44,11 +64,35 @@ QuantizedVertex quantize_vertex(const ScreenVertex& v) {
   q.ch[fmt::ChanX] = q.x16 * (i64{1} << fmt::SubPixelToFrac);
   q.ch[fmt::ChanZ] = std::min<i64>(quantize(v.depth, fmt::DepthBits + fmt::FracBits),
                                    (fmt::DepthMax << fmt::FracBits) | ((i64{1} << fmt::FracBits) - 1));
+  if (shading == ShadingMode::Phong) {
+    for (int c = 0; c < 3; ++c) q.ch[fmt::ChanNx + c] = quantize_unit(v.normal[c], fmt::FracBits, "vertex normal");
+    return q;
+  }
   for (int c = 0; c < fmt::ShadeChannels; ++c) {
     if (!(v.rgb[c] >= 0.0 && v.rgb[c] <= fmt::ShadeMax))
       throw SceneError("vertex shade " + std::to_string(v.rgb[c]) + " is outside [0, 255]");
     q.ch[fmt::ChanR + c] = quantize(v.rgb[c], fmt::FracBits);
   }
+  return q;
+}
+
+QuantizedMaterial quantize_material(const PhongMaterial& m) {
+  auto in = [](double x, double lo, double hi) { return std::isfinite(x) && x >= lo && x <= hi; };
+  const double w_max = double((1 << fmt::MaterialBits) - 1) / (1 << fmt::MaterialFracBits);
+  QuantizedMaterial q;
+  for (int c = 0; c < 3; ++c) {
+    if (!in(m.cp[c], 0, 1)) throw SceneError("colour " + num(m.cp[c]) + " is outside [0, 1]");
+    q.cp[c] = static_cast<int>(std::lround(m.cp[c] * fmt::ShadeMax));
+  }
+  if (!in(m.d, 0, 1)) throw SceneError("d = " + num(m.d) + " is outside [0, 1]");
+  if (!in(m.W, 0, w_max)) throw SceneError("W = " + num(m.W) + " is outside [0, " + num(w_max) + "]");
+  if (m.n < 0 || m.n >= (1 << fmt::ShininessBits))
+    throw SceneError("n = " + std::to_string(m.n) + " is outside [0, " +
+                     std::to_string((1 << fmt::ShininessBits) - 1) + "]");
+  const int one = 1 << fmt::MaterialFracBits;
+  q.d = std::clamp(static_cast<int>(quantize(m.d, fmt::MaterialFracBits)), 0, one);
+  q.w = std::clamp(static_cast<int>(quantize(m.W, fmt::MaterialFracBits)), 0, (1 << fmt::MaterialBits) - 1);
+  q.shininess = m.n;
   return q;
 }
 
@@ -81,6 +125,24 @@ bool make_edge_record(const QuantizedVertex& a, const QuantizedVertex& b, int po
 }
 
 static PreparedScene prepare_unnamed(const BuiltScene& scene, const PrepareOptions& opt);
+
+// Phong's frame constants: the materials (at most 2^MaterialIdBits), light and eye in Q2.14.
+static void prepare_phong_constants(const BuiltScene& scene, PreparedScene& out) {
+  const std::size_t max_materials = std::size_t{1} << fmt::MaterialIdBits;
+  if (scene.materials.size() > max_materials)
+    throw SceneError("scene needs " + std::to_string(scene.materials.size()) + " materials; the material id is " +
+                     std::to_string(fmt::MaterialIdBits) + " bits and holds " + std::to_string(max_materials) +
+                     " (merge materials, or raise MaterialIdBits in model/formats.hpp and the RTL to match)");
+  for (std::size_t m = 0; m < scene.materials.size(); ++m) {
+    try {
+      out.materials.push_back(quantize_material(scene.materials[m]));
+    } catch (const SceneError& e) {
+      throw SceneError("material " + std::to_string(m) + ": " + e.what());
+    }
+  }
+  out.light = quantize_direction(scene.light, "light direction");
+  out.eye = quantize_direction(scene.eye, "eye direction");
+}
 
 int SceneNeeds::bits_for_value(int channel) const {
   auto bits = [](i64 v) {
@@ -119,21 +181,29 @@ static PreparedScene prepare_unnamed(const BuiltScene& scene, const PrepareOptio
     out.background[c] = static_cast<std::uint8_t>(
         std::clamp<long>(std::lround(scene.background[c]), 0, fmt::ShadeMax));
   out.polygons = static_cast<int>(scene.polygons.size());
+  out.shading = scene.shading;
+  const bool phong = scene.shading == ShadingMode::Phong;
+  if (phong) prepare_phong_constants(scene, out);
 
   for (std::size_t p = 0; p < scene.polygons.size(); ++p) {
     const auto& poly = scene.polygons[p];
+    if (phong && (poly.material < 0 || poly.material >= static_cast<int>(out.materials.size())))
+      throw SceneError("polygon " + std::to_string(p) + ": material " + std::to_string(poly.material) +
+                       " is not one of the scene's " + std::to_string(out.materials.size()) + " materials");
     std::vector<QuantizedVertex> q;
     for (std::size_t i = 0; i < poly.v.size(); ++i) {
       try {
-        q.push_back(quantize_vertex(poly.v[i]));
+        q.push_back(quantize_vertex(poly.v[i], scene.shading));
       } catch (const SceneError& e) {
         throw SceneError(where(static_cast<int>(p), static_cast<int>(i)) + ": " + e.what());
       }
     }
     for (std::size_t i = 0; i < q.size(); ++i) {
       EdgeRecord e;
-      if (make_edge_record(q[i], q[(i + 1) % q.size()], static_cast<int>(p), scene.height, e))
+      if (make_edge_record(q[i], q[(i + 1) % q.size()], static_cast<int>(p), scene.height, e)) {
+        e.material = phong ? poly.material : 0;
         out.edges.push_back(e);
+      }
     }
   }
   // The hardware reads edges in order of their first scan line; polygon order breaks ties.

@@ -55,7 +55,11 @@ struct PreparedScene {
   SceneNeeds needs;
 };
 
-QuantizedVertex quantize_vertex(const ScreenVertex& v);  // throws SceneError when out of range
+// Channels ChanR.. carry the shade (Gouraud) or the unit normal (Phong, ChanNx..); throws
+// SceneError when a value is out of range.
+QuantizedVertex quantize_vertex(const ScreenVertex& v, ShadingMode shading = ShadingMode::Gouraud);
+// A material in the phong_shader's formats; throws SceneError when a value does not fit.
+QuantizedMaterial quantize_material(const PhongMaterial& m);
 
 // Edge record of the edge from a to b for a screen of `height` lines; false when it crosses no
 // pixel centre on screen (horizontal, between two centres, or above/below the screen).
@@ -63,6 +67,8 @@ bool make_edge_record(const QuantizedVertex& a, const QuantizedVertex& b, int po
                       EdgeRecord& out);
 
 // Throws SceneError when a capacity limit is exceeded (naming the limit, the need and the line).
+// Gouraud scenes carry material id 0 on every edge (the id is unused there, so any number of
+// materials fits); Phong scenes carry each polygon's material and need at most 2^MaterialIdBits.
 PreparedScene prepare(const BuiltScene& scene, const PrepareOptions& opt = {});
 
 }  // namespace watkins

@@ -19,7 +19,9 @@ class SceneError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-enum class ShadingRule { Gouraud, Lambert, Warnock, Romney };
+// Vertex shading rules of the Gouraud pipeline. Phong is Phong's eq. (3) evaluated at each vertex
+// (light and eye at infinity), what Gouraud interpolates when compared with Phong shading.
+enum class ShadingRule { Gouraud, Lambert, Warnock, Romney, Phong };
 enum class DepthMode { InverseZ, Z };  // Gouraud's eq. (1): interpolate 1/Z; eq. (2): interpolate Z
 // Which pipeline shades: Gouraud interpolates vertex shades (computed by a ShadingRule);
 // Phong interpolates vertex normals and applies Phong's eq. (3) at every pixel.
@@ -27,7 +29,7 @@ enum class ShadingMode { Gouraud, Phong };
 
 const char* to_string(ShadingRule r);
 const char* to_string(DepthMode m);
-std::optional<ShadingRule> parse_shading_rule(const std::string& s);  // "gouraud", "lambert", ...
+std::optional<ShadingRule> parse_shading_rule(const std::string& s);  // "gouraud", ..., "phong"
 std::optional<DepthMode> parse_depth_mode(const std::string& s);      // "inverse-z", "z"
 const char* to_string(ShadingMode m);
 std::optional<ShadingMode> parse_shading_mode(const std::string& s);  // "gouraud", "phong"

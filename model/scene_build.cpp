@@ -6,11 +6,13 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <map>
 #include <sstream>
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 
+#include "float_reference.hpp"
 #include "mesh_obj.hpp"
 #include "scene.hpp"
 #include "scene_types.hpp"
@@ -24,6 +26,7 @@ const char* to_string(ShadingRule r) {
     case ShadingRule::Lambert: return "lambert";
     case ShadingRule::Warnock: return "warnock";
     case ShadingRule::Romney: return "romney";
+    case ShadingRule::Phong: return "phong";
   }
   return "?";
 }
@@ -31,7 +34,8 @@ const char* to_string(ShadingRule r) {
 const char* to_string(DepthMode m) { return m == DepthMode::InverseZ ? "inverse-z" : "z"; }
 
 std::optional<ShadingRule> parse_shading_rule(const std::string& s) {
-  for (ShadingRule r : {ShadingRule::Gouraud, ShadingRule::Lambert, ShadingRule::Warnock, ShadingRule::Romney})
+  for (ShadingRule r : {ShadingRule::Gouraud, ShadingRule::Lambert, ShadingRule::Warnock, ShadingRule::Romney,
+                        ShadingRule::Phong})
     if (s == to_string(r)) return r;
   return std::nullopt;
 }
@@ -115,6 +119,41 @@ struct CamObject {
   std::vector<char> kept;           // per face: survived near/far rejection
 };
 
+// The normal of the side the observer sees: n, or -n when it faces away from the eye.
+glm::dvec3 facing(const glm::dvec3& p, const glm::dvec3& n) {
+  const glm::dvec3 to_eye = -p / glm::length(p);
+  return glm::dot(n, to_eye) < 0 ? -n : n;
+}
+
+// The builder's material table: one PhongMaterial per distinct material a polygon uses, so
+// ScreenPolygon::material indexes BuiltScene::materials. Phong's n must fit the shader's 8 bits.
+class MaterialTable {
+ public:
+  MaterialTable(const std::string& scene, bool phong, std::vector<PhongMaterial>& out)
+      : scene_(scene), phong_(phong), out_(out) {}
+  int index(const Material& m) {
+    auto it = ids_.find(m.name);
+    if (it != ids_.end()) return it->second;
+    if (phong_ && !(m.n == std::floor(m.n) && m.n >= 0 && m.n <= 255))
+      throw SceneError(scene_ + ": materials." + m.name + ".n: Phong shading needs an integer in [0, 255], got " +
+                       fmt(m.n));
+    out_.push_back(to_phong(m));
+    return ids_[m.name] = static_cast<int>(out_.size() - 1);
+  }
+  static PhongMaterial to_phong(const Material& m) {
+    PhongMaterial p;
+    for (int c = 0; c < 3; ++c) p.cp[c] = m.color[c];
+    p.d = m.d, p.W = m.W, p.n = static_cast<int>(m.n);
+    return p;
+  }
+
+ private:
+  const std::string& scene_;
+  bool phong_;
+  std::vector<PhongMaterial>& out_;
+  std::map<std::string, int> ids_;
+};
+
 double signed_area(const ScreenPolygon& p) {
   double a2 = 0;
   for (size_t k = 0; k < p.v.size(); ++k) {
@@ -133,10 +172,17 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
   for (int c = 0; c < 3; ++c) out.background[c] = sc.background[c];
   out.rule = opt.rule.value_or(sc.shading.rule);
   out.depth = opt.depth.value_or(sc.shading.depth);
+  out.shading = opt.shading.value_or(sc.shading.mode);
   const bool cull = opt.cull_backfaces.value_or(sc.shading.cull_backfaces);
   const Camera& cam = sc.camera;
   const View view = make_view(cam);
   const glm::dvec3 light_cam = view.dir(sc.light.towards);
+  // Phong (pipeline or vertex rule): light and eye at infinity; an "eye" light shines along E.
+  const glm::dvec3 eye_dir(0, 0, -1);
+  const glm::dvec3 light_inf = sc.light.type == Light::Type::Eye ? eye_dir : glm::normalize(light_cam);
+  for (int c = 0; c < 3; ++c) out.light[c] = light_inf[c], out.eye[c] = eye_dir[c];
+  MaterialTable materials(sc.name, out.shading == ShadingMode::Phong || out.rule == ShadingRule::Phong,
+                          out.materials);
 
   // Pass 1: geometry into camera space; reject polygons reaching outside [near, far).
   std::vector<CamObject> objs;
@@ -180,10 +226,15 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
 
   // Pass 2: project and shade every vertex of a kept polygon, then emit the polygons.
   const double half_w = 0.5 * sc.width, half_h = 0.5 * sc.height;
-  auto shade = [&](const glm::dvec3& p, glm::dvec3 n, const Material& mat, double rgb[3]) {
+  // n is already turned towards the eye (facing): the side that is seen is shaded.
+  auto shade = [&](const glm::dvec3& p, const glm::dvec3& n, const Material& mat, double rgb[3]) {
     const double R = glm::length(p);
     const glm::dvec3 to_eye = -p / R;
-    if (glm::dot(n, to_eye) < 0) n = -n;  // shade the side that is seen
+    if (out.rule == ShadingRule::Phong) {
+      const auto lv = phong_levels(MaterialTable::to_phong(mat), {n.x, n.y, n.z}, out.light, out.eye);
+      std::copy(lv.begin(), lv.end(), rgb);
+      return;
+    }
     const glm::dvec3 L = sc.light.type == Light::Type::Eye ? to_eye : light_cam;
     const double cs = glm::dot(n, L);
     double diff = 0, spec = 0;
@@ -195,6 +246,7 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
         spec = std::pow(std::fabs(cs), sc.shading.specular_m) * (rmin / R);
         break;
       case ShadingRule::Romney: diff = cs * cs * std::pow(rmin / R, 4); break;
+      case ShadingRule::Phong: break;  // handled above
     }
     for (int c = 0; c < 3; ++c) rgb[c] = std::clamp(255.0 * (mat.color[c] * diff + spec), 0.0, 255.0);
   };
@@ -204,7 +256,16 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
     const SceneObject& o = sc.objects[i];
     if (o.type == ObjectType::Polygons) {
       // A hardware user's command list: already in screen space, never culled or reshaded.
-      out.polygons.insert(out.polygons.end(), o.polygons.begin(), o.polygons.end());
+      const bool phong = out.shading == ShadingMode::Phong;
+      const std::string& missing = phong ? o.vertex_without_normal : o.vertex_without_rgb;
+      if (!missing.empty())
+        throw SceneError(sc.name + ": " + missing + ": missing key \"" + (phong ? "normal" : "rgb") + "\" (" +
+                         (phong ? "Phong shading interpolates vertex normals" : "Gouraud shading interpolates vertex shades") +
+                         ")");
+      for (ScreenPolygon p : o.polygons) {
+        p.material = materials.index(o.material);
+        out.polygons.push_back(std::move(p));
+      }
       continue;
     }
     const CamObject& co = objs[next_obj++];
@@ -226,7 +287,9 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
       v.depth = out.depth == DepthMode::InverseZ ? 1.0 - cam.near / p.z : (p.z - cam.near) / (cam.far - cam.near);
       v.depth = std::min(v.depth, std::nextafter(1.0, 0.0));  // rounding only; Z < far already holds
       v.eye_z = p.z;
-      shade(p, m.normal[k], o.material, v.rgb);
+      const glm::dvec3 n = facing(p, m.normal[k]);
+      for (int c = 0; c < 3; ++c) v.normal[c] = n[c];
+      shade(p, n, o.material, v.rgb);
       done[k] = 1;
       return v;
     };
@@ -244,6 +307,7 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
       } else if (cull && a > 0) {
         ++out.culled_backfaces;
       } else {
+        poly.material = materials.index(o.material);  // only materials of emitted polygons count
         out.polygons.push_back(std::move(poly));
       }
     }

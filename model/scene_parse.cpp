@@ -208,10 +208,16 @@ void parse_light(const Reader& r, const json& j, Light& l) {
 void parse_shading(const Reader& r, const json& j, Shading& s) {
   const std::string f = "shading";
   r.expect_object(j, f);
-  r.check_keys(j, f, {"rule", "depth", "cull_backfaces", "specular_m"});
+  r.check_keys(j, f, {"mode", "rule", "depth", "cull_backfaces", "specular_m"});
+  opt(j, f, "mode", [&](const json& v, const std::string& ff) {
+    auto mode = parse_shading_mode(r.string(v, ff));
+    if (!mode) r.fail(ff, "expected \"gouraud\" or \"phong\", got " + show(v));
+    s.mode = *mode;
+  });
   opt(j, f, "rule", [&](const json& v, const std::string& ff) {
     auto rule = parse_shading_rule(r.string(v, ff));
-    if (!rule) r.fail(ff, "expected \"gouraud\", \"lambert\", \"warnock\" or \"romney\", got " + show(v));
+    if (!rule)
+      r.fail(ff, "expected \"gouraud\", \"lambert\", \"warnock\", \"romney\" or \"phong\", got " + show(v));
     s.rule = *rule;
   });
   opt(j, f, "depth", [&](const json& v, const std::string& ff) {
@@ -233,10 +239,12 @@ std::map<std::string, Material> parse_materials(const Reader& r, const json& j) 
     r.expect_object(m, mf);
     r.check_keys(m, mf, {"color", "d", "W", "n"});
     Material mat;
+    mat.name = it.key();
     mat.color = r.vec3_in(r.required(m, mf, "color"), mf + ".color", 0, 1);
     opt(m, mf, "d", [&](const json& v, const std::string& ff) { mat.d = r.number_in(v, ff, 0, 1); });
-    opt(m, mf, "W", [&](const json& v, const std::string& ff) { mat.W = r.number_in(v, ff, 0, 1); });
-    opt(m, mf, "n", [&](const json& v, const std::string& ff) { mat.n = r.number_in(v, ff, 1, 1000); });
+    // W up to 511/256: the phong_shader's MaterialBits word (specular may saturate the level).
+    opt(m, mf, "W", [&](const json& v, const std::string& ff) { mat.W = r.number_in(v, ff, 0, 511.0 / 256); });
+    opt(m, mf, "n", [&](const json& v, const std::string& ff) { mat.n = r.number_in(v, ff, 0, 1000); });
     out[it.key()] = mat;
   }
   return out;
@@ -257,7 +265,9 @@ void parse_transform(const Reader& r, const json& j, const std::string& f, Trans
   });
 }
 
-ScreenPolygon parse_screen_polygon(const Reader& r, const json& j, const std::string& f) {
+// A screen-space polygon. "rgb" (Gouraud) and "normal" (Phong) are each optional here; the first
+// vertex lacking one is recorded in `o` and rejected by the builder when its mode needs it.
+ScreenPolygon parse_screen_polygon(const Reader& r, const json& j, const std::string& f, SceneObject& o) {
   r.expect_object(j, f);
   r.check_keys(j, f, {"vertices"});
   const json& vs = r.array(r.required(j, f, "vertices"), f + ".vertices");
@@ -268,7 +278,7 @@ ScreenPolygon parse_screen_polygon(const Reader& r, const json& j, const std::st
     const std::string vf = f + ".vertices[" + std::to_string(k) + "]";
     const json& v = vs[k];
     r.expect_object(v, vf);
-    r.check_keys(v, vf, {"x", "y", "depth", "rgb"});
+    r.check_keys(v, vf, {"x", "y", "depth", "rgb", "normal"});
     ScreenVertex sv;
     for (const char* key : {"x", "y"}) {
       const std::string cf = vf + "." + key;
@@ -278,8 +288,19 @@ ScreenPolygon parse_screen_polygon(const Reader& r, const json& j, const std::st
       (key[0] == 'x' ? sv.x : sv.y) = x;
     }
     sv.depth = r.number_in(r.required(v, vf, "depth"), vf + ".depth", 0, 1, true);
-    glm::dvec3 c = r.vec3_in(r.required(v, vf, "rgb"), vf + ".rgb", 0, 255);
-    for (int ch = 0; ch < 3; ++ch) sv.rgb[ch] = c[ch];
+    opt(v, vf, "rgb", [&](const json& jv, const std::string& ff) {
+      const glm::dvec3 c = r.vec3_in(jv, ff, 0, 255);
+      for (int ch = 0; ch < 3; ++ch) sv.rgb[ch] = c[ch];
+    });
+    // Camera-space normal (any non-zero length, stored as a unit vector), not turned: passed through.
+    opt(v, vf, "normal", [&](const json& jv, const std::string& ff) {
+      const glm::dvec3 n = r.vec3(jv, ff);
+      const double len = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+      if (!(len > 1e-12)) r.fail(ff, "must be a non-zero vector");
+      for (int ch = 0; ch < 3; ++ch) sv.normal[ch] = n[ch] / len;
+    });
+    if (!v.contains("rgb") && o.vertex_without_rgb.empty()) o.vertex_without_rgb = vf;
+    if (!v.contains("normal") && o.vertex_without_normal.empty()) o.vertex_without_normal = vf;
     p.v.push_back(sv);
   }
   double a2 = 0;  // twice the signed area (shoelace)
@@ -290,6 +311,14 @@ ScreenPolygon parse_screen_polygon(const Reader& r, const json& j, const std::st
   }
   if (std::fabs(a2) * 0.5 < 1e-9) r.fail(f, "polygon has zero area");
   return p;
+}
+
+const Material& find_material(const Reader& r, const std::map<std::string, Material>& mats, const json& v,
+                              const std::string& field) {
+  const std::string name = r.string(v, field);
+  auto m = mats.find(name);
+  if (m == mats.end()) r.fail(field, "unknown material \"" + name + "\"");
+  return m->second;
 }
 
 SceneObject parse_object(const Reader& r, const json& j, const std::string& f, int index,
@@ -307,12 +336,7 @@ SceneObject parse_object(const Reader& r, const json& j, const std::string& f, i
       for (const char* a : keys) ok = ok || it.key() == a;
       if (!ok) r.fail(f, "unknown key \"" + it.key() + "\"");
     }
-    opt(j, f, "material", [&](const json& v, const std::string& ff) {
-      std::string name = r.string(v, ff);
-      auto m = mats.find(name);
-      if (m == mats.end()) r.fail(ff, "unknown material \"" + name + "\"");
-      o.material = m->second;
-    });
+    opt(j, f, "material", [&](const json& v, const std::string& ff) { o.material = find_material(r, mats, v, ff); });
     parse_transform(r, j, f, o.transform);
     opt(j, f, "triangles", [&](const json& v, const std::string& ff) { o.triangles = r.boolean(v, ff); });
   };
@@ -375,11 +399,12 @@ SceneObject parse_object(const Reader& r, const json& j, const std::string& f, i
     });
   } else if (type == "polygons") {
     o.type = ObjectType::Polygons;
-    r.check_keys(j, f, {"type", "polygons"});
+    r.check_keys(j, f, {"type", "polygons", "material"});
+    opt(j, f, "material", [&](const json& v, const std::string& ff) { o.material = find_material(r, mats, v, ff); });
     const std::string pf = f + ".polygons";
     const json& ps = r.array(r.required(j, f, "polygons"), pf);
     for (size_t k = 0; k < ps.size(); ++k) {
-      ScreenPolygon p = parse_screen_polygon(r, ps[k], pf + "[" + std::to_string(k) + "]");
+      ScreenPolygon p = parse_screen_polygon(r, ps[k], pf + "[" + std::to_string(k) + "]", o);
       p.object = index;
       o.polygons.push_back(std::move(p));
     }

@@ -22,9 +22,10 @@ struct Transform {
   glm::dvec3 scale{1.0};  // every component > 0 (a mirror would flip the winding)
 };
 
-// Reflectance in [0,1] per channel; d, W, n are Phong's coefficients, validated and carried
-// for later shading rules.
+// Reflectance in [0,1] per channel; d, W, n are Phong's coefficients (eq. 3). n is checked
+// against the Phong formats (an integer 0..255) only when a Phong rule or pipeline uses it.
 struct Material {
+  std::string name;  // key in "materials"; empty for the default white material
   glm::dvec3 color{1.0};
   double d = 0.2, W = 0.5, n = 10.0;
 };
@@ -46,6 +47,7 @@ struct Shading {
   DepthMode depth = DepthMode::InverseZ;
   bool cull_backfaces = true;
   double specular_m = 8.0;
+  ShadingMode mode = ShadingMode::Gouraud;  // "mode": which pipeline shades
 };
 
 enum class ObjectType { Sphere, Cone, QuarterTorus, HyperbolicParaboloid, BezierPatch, Mesh, Polygons };
@@ -71,6 +73,9 @@ struct SceneObject {
   std::string file;               // mesh: OBJ path already resolved against the scene's folder
   MeshNormals normals = MeshNormals::File;
   std::vector<ScreenPolygon> polygons;  // "polygons": screen-space, validated, passed through
+  // "polygons": the first vertex without "rgb" / "normal" (field path, empty when none); which
+  // one is an error depends on the shading mode, known only once the command line is applied.
+  std::string vertex_without_rgb, vertex_without_normal;
 };
 
 struct Scene {

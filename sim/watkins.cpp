@@ -1,5 +1,5 @@
 // watkins: the command line of the Watkins pipeline model.
-//   watkins render [SCENE] [--out image.png] [--model fixed|float] [--rule R] [--depth D]
+//   watkins render [SCENE] [--out image.png] [--model fixed|float] [--shading S] [--rule R] [--depth D]
 //                  [--diff d.png] [--cull|--no-cull] [--max-active-edges N]
 //                  [--rtl [--sparse] [--trace out.fst] [--seed N] [--gap P] [--stall P]]
 #include <CLI/CLI.hpp>
@@ -117,17 +117,19 @@ struct RenderArgs {
   std::string scene;
   std::string out = "watkins.png";
   std::string model = "fixed";
-  std::string rule, depth, diff;
+  std::string shading, rule, depth, diff;
   bool cull = false, no_cull = false;
   int max_active_edges = watkins::fmt::MaxActiveEdges;
   RtlArgs rtl;  // --rtl and its options
 };
 
-void print_needs(const watkins::SceneNeeds& n) {
+void print_needs(const watkins::SceneNeeds& n, watkins::ShadingMode shading) {
   using namespace watkins;
   std::printf("needs         active edges %d (scan line %d), widest span %d px, longest edge %d lines\n",
               n.max_active_edges, n.max_active_line, n.max_segment_pixels, n.max_edge_lines);
-  static const char* names[fmt::NumChannels] = {"X", "Z", "R", "G", "B"};
+  static const char* gouraud[fmt::NumChannels] = {"X", "Z", "R", "G", "B"};
+  static const char* phong[fmt::NumChannels] = {"X", "Z", "Nx", "Ny", "Nz"};
+  const char* const* names = shading == ShadingMode::Phong ? phong : gouraud;
   for (int c = 0; c < fmt::NumChannels; ++c)
     std::printf("  channel %s  value [%lld, %lld]  slope [%lld, %lld]  -> %d of %d bits\n", names[c],
                 static_cast<long long>(n.value_min[c]), static_cast<long long>(n.value_max[c]),
@@ -138,10 +140,14 @@ void print_needs(const watkins::SceneNeeds& n) {
 int render(const RenderArgs& a) {
   using namespace watkins;
   BuildOptions opt;
+  if (!a.shading.empty()) {
+    opt.shading = parse_shading_mode(a.shading);
+    if (!opt.shading) throw SceneError("--shading: unknown shading mode \"" + a.shading + "\" (gouraud, phong)");
+  }
   if (!a.rule.empty()) {
     opt.rule = parse_shading_rule(a.rule);
     if (!opt.rule) throw SceneError("--rule: unknown shading rule \"" + a.rule +
-                                    "\" (gouraud, lambert, warnock, romney)");
+                                    "\" (gouraud, lambert, warnock, romney, phong)");
   }
   if (!a.depth.empty()) {
     opt.depth = parse_depth_mode(a.depth);
@@ -158,12 +164,16 @@ int render(const RenderArgs& a) {
   const PreparedScene prepared = prepare(scene, popt);
   const double t_prep = seconds_since(t0);
 
-  std::printf("scene         %s  %dx%d  rule %s  depth %s\n", scene.name.c_str(), scene.width,
-              scene.height, to_string(scene.rule), to_string(scene.depth));
+  std::printf("scene         %s  %dx%d  shading %s  rule %s  depth %s\n", scene.name.c_str(), scene.width,
+              scene.height, to_string(scene.shading), to_string(scene.rule), to_string(scene.depth));
+  if (scene.shading == ShadingMode::Phong)
+    std::printf("phong         %zu material(s), light (%.4f, %.4f, %.4f), eye (%.4f, %.4f, %.4f); the rule is unused\n",
+                scene.materials.size(), scene.light[0], scene.light[1], scene.light[2], scene.eye[0], scene.eye[1],
+                scene.eye[2]);
   std::printf("polygons      %zu (culled %d back faces, %d clipped, %d degenerate)\n",
               scene.polygons.size(), scene.culled_backfaces, scene.near_clipped, scene.degenerate);
   std::printf("edge records  %zu\n", prepared.edges.size());
-  print_needs(prepared.needs);
+  print_needs(prepared.needs, prepared.shading);
 
   const auto t1 = Clock::now();
   FloatReferenceStats fstats;
@@ -208,7 +218,10 @@ int main(int argc, char** argv) {
   r->add_option("--out,-o", ra.out, "PNG to write")->capture_default_str();
   r->add_option("--model", ra.model, "fixed (bit-exact pipeline model) or float (double reference)")
       ->check(CLI::IsMember({"fixed", "float"}))->capture_default_str();
-  r->add_option("--rule", ra.rule, "vertex shading rule: gouraud, lambert, warnock, romney");
+  r->add_option("--shading", ra.shading, "pipeline: gouraud (interpolate vertex shades) or phong (interpolate "
+                                          "vertex normals, Phong's eq. 3 per pixel); overrides the scene's shading.mode");
+  r->add_option("--rule", ra.rule, "vertex shading rule of the gouraud pipeline: gouraud, lambert, warnock, romney, "
+                                   "phong (eq. 3 at the vertices)");
   r->add_option("--depth", ra.depth, "depth channel: inverse-z (Gouraud eq. 1) or z (eq. 2)");
   r->add_option("--diff", ra.diff, "PNG of |model - double reference| x16 (magenta: coverage differs)");
   r->add_flag("--cull", ra.cull, "cull back faces");

@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <cstdlib>
@@ -133,10 +134,35 @@ TEST_F(Cli, ScreenTooLarge) {
 }
 
 TEST_F(Cli, UnknownShadingRuleOnCommandLine) {
-  const CliRun r = run("render --rule phong --out " + dir_ + "/x.png");
+  const CliRun r = run("render --rule blinn --out " + dir_ + "/x.png");
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.output.find("--rule: unknown shading rule \"phong\""), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("--rule: unknown shading rule \"blinn\""), std::string::npos) << r.output;
   EXPECT_FALSE(exists(dir_ + "/x.png"));
+}
+
+TEST_F(Cli, UnknownShadingModeOnCommandLine) {
+  const CliRun r = run("render --shading flat --out " + dir_ + "/x.png");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find("watkins: error: --shading: unknown shading mode \"flat\" (gouraud, phong)"),
+            std::string::npos) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << "one-line error:\n" << r.output;
+  EXPECT_FALSE(exists(dir_ + "/x.png"));
+}
+
+TEST_F(Cli, PhongShadingRendersAndReportsTheMode) {
+  const std::string png = dir_ + "/phong.png";
+  const CliRun r = run("render " WATKINS_SOURCE_DIR "/scenes/sphere.json --shading phong --out " + png);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(exists(png));
+  EXPECT_NE(r.output.find("shading phong"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("channel Nx"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("vs double"), std::string::npos) << r.output;
+}
+
+TEST_F(Cli, HelpListsShading) {
+  const CliRun r = run("render --help");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("--shading"), std::string::npos) << r.output;
 }
 
 }  // namespace
