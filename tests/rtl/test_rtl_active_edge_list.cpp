@@ -16,6 +16,7 @@
 #include "Vactive_edge_list.h"
 #include "active_edge_list.hpp"
 #include "prepare.hpp"
+#include "edge_packing.hpp"
 #include "rtl_harness.hpp"
 #include "scene.hpp"
 
@@ -36,8 +37,9 @@ struct Frame {
 
 struct OutEdge {
   int poly = 0;
+  int material = 0;
   ChannelVector value{};
-  bool operator==(const OutEdge& o) const { return poly == o.poly && value == o.value; }
+  bool operator==(const OutEdge& o) const { return poly == o.poly && material == o.material && value == o.value; }
 };
 using Line = std::vector<OutEdge>;
 
@@ -51,7 +53,7 @@ struct Expect {
 
 Line to_line(const ActiveEdgeList& a) {
   Line l;
-  for (const auto& e : a.edges()) l.push_back({e.rec.poly, e.rec.value});
+  for (const auto& e : a.edges()) l.push_back({e.rec.poly, e.rec.material, e.rec.value});
   return l;
 }
 
@@ -82,16 +84,10 @@ void sort_and_number(Frame& f) {
   for (std::size_t i = 0; i < f.edges.size(); ++i) f.edges[i].id = static_cast<int>(i);
 }
 
-// Packs an edge record into watkins_pkg::edge_t (y0, n, poly, value[4..0], slope[4..0], MSB first).
+// Packs an edge record into watkins_pkg::edge_t (the bench's packer, testbench/edge_packing.hpp).
 void pack(VlWide<15>& w, const EdgeRecord& e) {
-  for (int i = 0; i < 15; ++i) w[i] = 0;
-  set_bits(w, 449, 13, static_cast<std::uint64_t>(e.y0));
-  set_bits(w, 436, 13, static_cast<std::uint64_t>(e.n));
-  set_bits(w, 420, 16, static_cast<std::uint64_t>(e.poly));
-  for (int c = 0; c < NC; ++c) {
-    set_bits(w, 5 * CB + c * CB, CB, to_bits(e.value[c], CB));
-    set_bits(w, c * CB, CB, to_bits(e.slope[c], CB));
-  }
+  const tb::EdgeWords x = tb::pack_edge(e);
+  for (int i = 0; i < tb::edge_layout::Words; ++i) w[i] = x[i];
 }
 
 i64 rnd(std::mt19937_64& rng, i64 lo, i64 hi) {
@@ -107,6 +103,7 @@ EdgeRecord edge(std::mt19937_64& rng, int y0, int n, i64 x, i64 dx, Values v = V
   e.y0 = y0;
   e.n = n;
   e.poly = (rng() % 8 == 0) ? ((rng() % 2) ? 0 : 65535) : static_cast<int>(rng() % 65536);
+  e.material = static_cast<int>(rng() % (1u << fmt::MaterialIdBits));
   e.value[fmt::ChanX] = x;
   e.slope[fmt::ChanX] = dx;
   for (int c = fmt::ChanZ; c < NC; ++c) {
@@ -309,6 +306,7 @@ struct Ael {
         } else {
           OutEdge o;
           o.poly = d.out_poly_o;
+          o.material = d.out_material_o;
           for (int c = 0; c < NC; ++c) o.value[c] = get_signed(d.out_value_o, c * CB, CB);
           cur.push_back(o);
           ++tot.edges_out;

@@ -28,6 +28,7 @@ constexpr i64 One = i64{1} << fmt::FracBits;
 struct In {
   bool eol = false;
   int poly = 0;
+  int material = 0;  // random per edge: a segment takes its closing edge's
   ChannelVector value{};
 };
 struct Out {
@@ -118,12 +119,13 @@ void add_line(std::mt19937_64& rng, const std::vector<int>& polys, std::deque<In
   for (int q : polys) {
     ActiveEdge e;
     e.rec.poly = q;
+    e.rec.material = static_cast<int>(rng() % (1u << fmt::MaterialIdBits));
     e.rec.value = random_value(rng);
     e.remaining = 1;
     edges.push_back(e);
-    in.push_back({false, q, e.rec.value});
+    in.push_back({false, q, e.rec.material, e.rec.value});
   }
-  in.push_back({true, 0, random_value(rng)});  // the marker's data is don't-care
+  in.push_back({true, 0, 0, random_value(rng)});  // the marker's data is don't-care
   std::vector<Segment> segs;
   SegmentFormer::form(edges, segs);
   for (const auto& s : segs) want.push_back({false, s});
@@ -152,6 +154,7 @@ Counts run(std::deque<In> in, std::deque<Out> want, int gap_pct, int bp_pct, std
       const In& i = in.front();
       d.edge_eol_i = i.eol;
       d.edge_poly_i = static_cast<std::uint16_t>(i.poly);
+      d.edge_material_i = static_cast<std::uint8_t>(i.material);
       for (int c = 0; c < NC; ++c) set_bits(d.edge_value_i, c * CB, CB, to_bits(i.value[c], CB));
       d.edge_valid_i = 1;
     }
@@ -171,11 +174,12 @@ Counts run(std::deque<In> in, std::deque<Out> want, int gap_pct, int bp_pct, std
         e[c] = get_signed(d.seg_e_o, c * CB, CB);
         f[c] = get_signed(d.seg_f_o, c * CB, CB);
       }
-      if (ok && !w.eol) ok = int(d.seg_poly_o) == w.seg.poly && e == w.seg.e && f == w.seg.f;
+      if (ok && !w.eol)
+        ok = int(d.seg_poly_o) == w.seg.poly && int(d.seg_material_o) == w.seg.material && e == w.seg.e && f == w.seg.f;
       if (!ok && bad++ < 8)
         ADD_FAILURE() << "output " << got << " (line " << n.lines << "): rtl eol " << int(d.seg_eol_o) << " poly "
-                      << d.seg_poly_o << " E.x " << e[fmt::ChanX] << " F.x " << f[fmt::ChanX] << "; model eol " << w.eol
-                      << " poly " << w.seg.poly << " E.x " << w.seg.e[fmt::ChanX] << " F.x " << w.seg.f[fmt::ChanX];
+                      << d.seg_poly_o << " material " << int(d.seg_material_o) << " E.x " << e[fmt::ChanX] << " F.x " << f[fmt::ChanX] << "; model eol " << w.eol
+                      << " poly " << w.seg.poly << " material " << w.seg.material << " E.x " << w.seg.e[fmt::ChanX] << " F.x " << w.seg.f[fmt::ChanX];
       if (w.eol) ++n.lines;
       else ++n.segments;
       want.pop_front();

@@ -28,6 +28,8 @@ struct Frag {
   bool eol;
   int x;
   std::uint32_t depth, rgb;
+  std::uint64_t normal;  // {Nz, Ny, Nx}, NormalInBits each
+  int material;
 };
 
 Segment random_segment(std::mt19937_64& rng, int width) {
@@ -63,8 +65,12 @@ Segment random_segment(std::mt19937_64& rng, int width) {
   }
   s.e[fmt::ChanX] = xe;
   s.f[fmt::ChanX] = xf;
+  const bool normals = rng() % 3 == 0;  // attribute channels in the range of unit normals
   for (int c = fmt::ChanZ; c < NC; ++c) {
-    if (rng() % 8 == 0) {
+    if (normals && c != fmt::ChanZ) {
+      s.e[c] = rnd(-5 * One / 4, 5 * One / 4);
+      s.f[c] = rnd(-5 * One / 4, 5 * One / 4);
+    } else if (rng() % 8 == 0) {
       s.e[c] = wrap_signed(static_cast<i128>(rng()), CB);
       s.f[c] = wrap_signed(static_cast<i128>(rng()), CB);
     } else if (c == fmt::ChanZ) {
@@ -76,19 +82,23 @@ Segment random_segment(std::mt19937_64& rng, int width) {
     }
   }
   s.poly = static_cast<int>(rng() % 65536);
+  s.material = static_cast<int>(rng() % (1u << fmt::MaterialIdBits));
   return s;
 }
 
 void expected(const Item& it, int width, std::deque<Frag>& out) {
   if (it.eol) {
-    out.push_back({true, 0, 0, 0});
+    out.push_back({true, 0, 0, 0, 0, 0});
     return;
   }
   const SpanSetup span = SegmentInterpolator::setup(it.seg, width);
   ChannelVector v = span.value;
   for (int x = span.x_start; x < span.x_end; ++x) {
     const Fragment f = SegmentInterpolator::fragment(span, x, v);
-    out.push_back({false, x, f.depth, (std::uint32_t(f.rgb[0]) << 16) | (std::uint32_t(f.rgb[1]) << 8) | f.rgb[2]});
+    std::uint64_t n = 0;
+    for (int c = 0; c < 3; ++c) n |= wrap_unsigned(f.normal[c], fmt::NormalInBits) << (c * fmt::NormalInBits);
+    out.push_back({false, x, f.depth, (std::uint32_t(f.rgb[0]) << 16) | (std::uint32_t(f.rgb[1]) << 8) | f.rgb[2], n,
+                   f.material});
     SegmentInterpolator::step(span, v);
   }
 }
@@ -117,6 +127,7 @@ Result run(int items, int width, int gap_pct, int bp_pct, std::uint64_t seed, in
         set_bits(h.dut.seg_e_i, c * CB, CB, to_bits(cur.seg.e[c], CB));
         set_bits(h.dut.seg_f_i, c * CB, CB, to_bits(cur.seg.f[c], CB));
       }
+      h.dut.seg_material_i = static_cast<std::uint8_t>(cur.seg.material);
       h.dut.seg_eol_i = cur.eol;
       h.dut.seg_valid_i = 1;
     }
@@ -130,11 +141,14 @@ Result run(int items, int width, int gap_pct, int bp_pct, std::uint64_t seed, in
       }
       const Frag& w = want.front();
       const bool ok = h.dut.frag_eol_o == w.eol &&
-                      (w.eol || (int(h.dut.frag_x_o) == w.x && h.dut.frag_depth_o == w.depth && h.dut.frag_rgb_o == w.rgb));
+                      (w.eol || (int(h.dut.frag_x_o) == w.x && h.dut.frag_depth_o == w.depth && h.dut.frag_rgb_o == w.rgb &&
+                                 h.dut.frag_normal_o == w.normal && int(h.dut.frag_material_o) == w.material));
       if (!ok && bad++ < 8)
         ADD_FAILURE() << "output " << got << ": rtl eol " << int(h.dut.frag_eol_o) << " x " << h.dut.frag_x_o
-                      << " depth " << h.dut.frag_depth_o << " rgb " << std::hex << h.dut.frag_rgb_o << std::dec
-                      << "; model eol " << w.eol << " x " << w.x << " depth " << w.depth << " rgb " << std::hex << w.rgb;
+                      << " depth " << h.dut.frag_depth_o << " rgb " << std::hex << h.dut.frag_rgb_o << " normal "
+                      << h.dut.frag_normal_o << std::dec << " material " << int(h.dut.frag_material_o) << "; model eol "
+                      << w.eol << " x " << w.x << " depth " << w.depth << " rgb " << std::hex << w.rgb << " normal "
+                      << w.normal << std::dec << " material " << w.material;
       res.fragments += !w.eol;
       want.pop_front();
       ++got;

@@ -8,6 +8,7 @@
 #include "Vwatkins_top.h"
 #include "pipeline.hpp"
 #include "prepare.hpp"
+#include "edge_packing.hpp"
 #include "rtl_harness.hpp"
 #include "scene.hpp"
 
@@ -62,16 +63,9 @@ BuiltScene mesh_scene(int w, int h, int cols, int rows, std::mt19937_64& rng) {
   return s;
 }
 
-void pack(VlWide<15>& w, const EdgeRecord& e) {
-  constexpr int CB = fmt::ChannelBits;
-  for (int i = 0; i < 15; ++i) w[i] = 0;
-  set_bits(w, 449, 13, e.y0);
-  set_bits(w, 436, 13, e.n);
-  set_bits(w, 420, 16, e.poly);
-  for (int c = 0; c < fmt::NumChannels; ++c) {
-    set_bits(w, 5 * CB + c * CB, CB, to_bits(e.value[c], CB));
-    set_bits(w, c * CB, CB, to_bits(e.slope[c], CB));
-  }
+void pack(VlWide<15>& w, const EdgeRecord& e) {  // the bench's packer (testbench/edge_packing.hpp)
+  const tb::EdgeWords x = tb::pack_edge(e);
+  for (int i = 0; i < tb::edge_layout::Words; ++i) w[i] = x[i];
 }
 
 struct Top {
