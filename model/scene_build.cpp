@@ -287,9 +287,12 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
       v.depth = out.depth == DepthMode::InverseZ ? 1.0 - cam.near / p.z : (p.z - cam.near) / (cam.far - cam.near);
       v.depth = std::min(v.depth, std::nextafter(1.0, 0.0));  // rounding only; Z < far already holds
       v.eye_z = p.z;
-      const glm::dvec3 n = facing(p, m.normal[k]);
-      for (int c = 0; c < 3; ++c) v.normal[c] = n[c];
-      shade(p, n, o.material, v.rgb);
+      // Phong gets the surface normal as it is: the side seen is decided per polygon below, since
+      // near a silhouette a front face's vertex normals may point slightly away from the eye and
+      // turning those alone would make the interpolated normal pass through zero. Gouraud's
+      // vertex rules shade the side each vertex shows.
+      for (int c = 0; c < 3; ++c) v.normal[c] = m.normal[k][c];
+      shade(p, facing(p, m.normal[k]), o.material, v.rgb);
       done[k] = 1;
       return v;
     };
@@ -307,6 +310,9 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
       } else if (cull && a > 0) {
         ++out.culled_backfaces;
       } else {
+        if (a > 0)  // a back face (culling off): its back is what is seen, so Phong shades that side
+          for (ScreenVertex& v : poly.v)
+            for (double& c : v.normal) c = -c;
         poly.material = materials.index(o.material);  // only materials of emitted polygons count
         out.polygons.push_back(std::move(poly));
       }

@@ -14,7 +14,7 @@ struct ScreenVertex {
   double depth = 0;    // [0, 1): smaller is nearer. Eq. (1) mode: 1 - near/Z; eq. (2): (Z-near)/(far-near)
   double eye_z = 0;    // camera-space Z of the vertex (0 for polygons given in screen space)
   double rgb[3] = {0, 0, 0};  // shade in 8-bit levels, [0, 255] (Gouraud)
-  double normal[3] = {0, 0, -1};  // camera-space unit normal, turned towards the eye (Phong)
+  double normal[3] = {0, 0, -1};  // camera-space unit normal of the side seen (Phong)
 };
 
 struct ScreenPolygon {
