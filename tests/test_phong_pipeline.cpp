@@ -4,62 +4,22 @@
 // Every bound below was measured first (figures in the comments) and is asserted with a margin.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <functional>
 #include <string>
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include "phong_hard_cases.hpp"
 #include "test_support.hpp"
 
 using namespace watkins;
 using namespace watkins::test;
 
 namespace {
-
-// A screen vertex carrying the camera-space normal (nx, ny, nz) as given: the pipeline and the
-// reference both normalize after interpolation, so any length with |component| <= 1 is valid.
-ScreenVertex rvtx(double x, double y, double nx, double ny, double nz, double depth = 0.5) {
-  ScreenVertex v = vtx(x, y, depth);
-  v.normal[0] = nx, v.normal[1] = ny, v.normal[2] = nz;
-  return v;
-}
-
-// The same with the normal normalized.
-ScreenVertex nvtx(double x, double y, double nx, double ny, double nz, double depth = 0.5) {
-  const double len = std::sqrt(nx * nx + ny * ny + nz * nz);
-  return rvtx(x, y, nx / len, ny / len, nz / len, depth);
-}
-
-PhongMaterial material(double c, double d, double W, int n) {
-  PhongMaterial m;
-  m.cp[0] = m.cp[1] = m.cp[2] = c;
-  m.d = d, m.W = W, m.n = n;
-  return m;
-}
-
-// A Phong screen-space scene with one material (index 0) and a light towards `l` (normalized).
-BuiltScene phong_scene(int w, int h, std::vector<ScreenPolygon> polys, const PhongMaterial& m,
-                       double lx = 0, double ly = 0, double lz = -1) {
-  BuiltScene s = screen(w, h, std::move(polys));
-  s.shading = ShadingMode::Phong;
-  s.materials = {m};
-  const double len = std::sqrt(lx * lx + ly * ly + lz * lz);
-  s.light[0] = lx / len, s.light[1] = ly / len, s.light[2] = lz / len;
-  return s;
-}
-
-// A w x h quad at (x0, y0) whose corner normals tilt outwards by `t` around -Z: (∓t, ±t, -1)
-// (camera +Y is up, screen +y down), so the normal is (0, 0, -1) only at the centre.
-ScreenPolygon tilted_quad(double x0, double y0, double w, double h, double t) {
-  return poly({nvtx(x0, y0, -t, t, -1), nvtx(x0 + w, y0, t, t, -1), nvtx(x0 + w, y0 + h, t, -t, -1),
-               nvtx(x0, y0 + h, -t, -t, -1)});
-}
 
 ImageError fixed_vs_double(const BuiltScene& s) { return compare_images(render_fixed(s), render_float_reference(s)); }
 
@@ -73,20 +33,6 @@ std::string error_of(const std::function<void()>& f) {
   }
   return "(no error)";
 }
-
-// A temporary folder for OBJ files, removed afterwards.
-struct TempDir {
-  std::string path;
-  TempDir() {
-    char tmpl[] = "/tmp/watkins_phong_XXXXXX";
-    path = mkdtemp(tmpl);
-  }
-  ~TempDir() { std::system(("rm -rf " + path).c_str()); }
-  std::string write(const std::string& name, const std::string& text) const {
-    std::ofstream(path + "/" + name) << text;
-    return path + "/" + name;
-  }
-};
 
 // ---- shipped scenes ----------------------------------------------------------------------------
 
@@ -126,11 +72,7 @@ TEST(PhongPipeline, ConeWithinBoundsOfTheDoubleReference) {
 // Cp d = 204 * 64 / 256 = 51, with no specular. The reference treats its (exactly) null normal the
 // same way. Measured: 0 levels of difference anywhere (max 0, mean 0).
 TEST(PhongPipeline, AntipodalNormalsGiveCpDAtTheNullNormal) {
-  const BuiltScene s = phong_scene(
-      70, 40,
-      {poly({rvtx(0.5, 0.5, 0.5, 0.25, -0.75), rvtx(64.5, 0.5, -0.5, -0.25, 0.75),
-             rvtx(64.5, 32.5, -0.5, 0.25, 0.75), rvtx(0.5, 32.5, 0.5, -0.25, -0.75)})},
-      material(0.8, 0.25, 0.5, 8));
+  const BuiltScene s = antipodal_normals_scene();
   int nulls = 0;
   const PreparedScene p = prepare(s);
   Pipeline pipe;
@@ -155,11 +97,7 @@ TEST(PhongPipeline, AntipodalNormalsGiveCpDAtTheNullNormal) {
 // Normals almost in the screen plane (|Nz| = 0.001 before normalization), lit from the side:
 // the shade depends on Nx, Ny alone. Measured: max 1 level, mean 0.1624, 0 of 4096 pixels > 1.
 TEST(PhongPipeline, NormalsNearlyInTheScreenPlane) {
-  const BuiltScene s = phong_scene(
-      72, 72,
-      {poly({nvtx(4, 4, -1, 0.2, -0.001), nvtx(68, 4, 0.2, 1, -0.001), nvtx(68, 68, 1, -0.2, -0.001),
-             nvtx(4, 68, -0.2, -1, -0.001)})},
-      material(0.7, 0.2, 0.6, 12), -1, 0.5, -0.05);
+  const BuiltScene s = screen_plane_normals_scene();
   const ImageError e = fixed_vs_double(s);
   EXPECT_EQ(e.compared, 64 * 64);
   EXPECT_LE(e.max_abs, 1);
@@ -173,10 +111,7 @@ TEST(PhongPipeline, NormalsNearlyInTheScreenPlane) {
 // 0.8 * 0.0995 * 255 = 20 levels. Measured: max 1 level, mean 0.0938, 0 of 2048 pixels > 1 vs
 // double; 1376 pixels have cos(i) < 0, all exactly 51.
 TEST(PhongPipeline, GrazingLightHasNoSpecularLeak) {
-  const BuiltScene s = phong_scene(
-      72, 40,
-      {poly({nvtx(4, 4, -0.3, 0, -1), nvtx(68, 4, 0.3, 0, -1), nvtx(68, 36, 0.3, 0, -1), nvtx(4, 36, -0.3, 0, -1)})},
-      material(0.8, 0.25, 0.8, 1), 1, 0, 0.1);
+  const BuiltScene s = grazing_light_scene();
   const Image img = render_fixed(s), ref = render_float_reference(s);
   int dark = 0, lit = 0;
   for (int y = 4; y < 36; ++y)
@@ -201,30 +136,17 @@ TEST(PhongPipeline, GrazingLightHasNoSpecularLeak) {
 
 // ---- interior highlight: what Phong shading is for ---------------------------------------------
 
-// One 200 x 200 pixel quad at Z = 4 (an OBJ face, so both pipelines get the same geometry from
-// the scene front end), corner normals tilted outwards by 0.5, light at the eye: the mirror
-// direction is met only at the centre. Phong: measured 255 at the centre. Gouraud with the
-// phong vertex rule interpolates the corner shades (cos(s)^64 ~ 0 there): measured max 131.
+// scenes/highlight.json: one 200 x 200 pixel quad at Z = 4 (an OBJ face, so both pipelines get the
+// same geometry from the scene front end), corner normals tilted outwards by 0.5, light at the
+// eye: the mirror direction is met only at the centre. Phong: measured 255 at the centre. Gouraud
+// with the phong vertex rule interpolates the corner shades (cos(s)^64 ~ 0 there): measured max 131.
 TEST(PhongPipeline, InteriorHighlightOnlyWithPhong) {
-  TempDir dir;
-  // OBJ is right-handed: the loader negates z, so these are camera-space Z = 4 and normals (x, y, -1).
-  dir.write("quad.obj",
-            "v -1 -1 -4\nv 1 -1 -4\nv 1 1 -4\nv -1 1 -4\n"
-            "vn -0.5 -0.5 1\nvn 0.5 -0.5 1\nvn 0.5 0.5 1\nvn -0.5 0.5 1\n"
-            "f 1//1 2//2 3//3 4//4\n");
-  const std::string scene = R"({
-    "screen": {"width": 256, "height": 256},
-    "camera": {"type": "gouraud", "focal": 3.125},
-    "light": {"type": "eye"},
-    "shading": {"cull_backfaces": false},
-    "materials": {"glaze": {"color": [0.6, 0.6, 0.6], "d": 0.2, "W": 0.5, "n": 64}},
-    "objects": [{"type": "mesh", "file": "quad.obj", "material": "glaze"}]})";
   BuildOptions phong, gouraud;
   phong.shading = ShadingMode::Phong;
   gouraud.shading = ShadingMode::Gouraud;
   gouraud.rule = ShadingRule::Phong;
-  const BuiltScene sp = load_scene_text(scene, "quad.json", dir.path, phong);
-  const BuiltScene sg = load_scene_text(scene, "quad.json", dir.path, gouraud);
+  const BuiltScene sp = load_scene(WATKINS_SOURCE_DIR "/scenes/highlight.json", phong);
+  const BuiltScene sg = load_scene(WATKINS_SOURCE_DIR "/scenes/highlight.json", gouraud);
   ASSERT_EQ(sp.polygons.size(), 1u);
   const Image ip = render_fixed(sp), ig = render_fixed(sg);
   auto max_level = [](const Image& img, int x0, int x1) {
@@ -263,8 +185,7 @@ TEST(PhongPipeline, ShininessSweepWithinBoundsOfTheDoubleReference) {
   for (const Bound b : {Bound{0, 0, 0.01, 0}, Bound{1, 1, 0.03, 0}, Bound{2, 1, 0.13, 0}, Bound{5, 1, 0.24, 0},
                         Bound{10, 2, 0.2, 10}, Bound{32, 3, 0.13, 60}, Bound{64, 3, 0.11, 80},
                         Bound{128, 5, 0.1, 130}, Bound{255, 6, 0.085, 100}}) {
-    const BuiltScene s = phong_scene(140, 140, {tilted_quad(6, 6, 128, 128, 0.4)},
-                                     material(0.6, 0.125, 1.5, b.n), -0.2, 0.3, -1);
+    const BuiltScene s = shininess_scene(b.n);
     const ImageError e = fixed_vs_double(s);
     EXPECT_EQ(e.compared, 128 * 128) << "n = " << b.n;
     EXPECT_LE(e.max_abs, b.max_abs) << "n = " << b.n;
