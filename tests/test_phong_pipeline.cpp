@@ -4,7 +4,6 @@
 // Every bound below was measured first (figures in the comments) and is asserted with a margin.
 #include <gtest/gtest.h>
 
-
 #include <algorithm>
 #include <cmath>
 #include <functional>

@@ -2,9 +2,16 @@
 // segment interpolator) against the bit-exact model, under random input gaps and back-pressure.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <random>
 #include <string>
 #include <vector>
 
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include "cosim_support.hpp"
+#include "phong_hard_cases.hpp"
 #include "pipeline.hpp"
 #include "prepare.hpp"
 #include "rtl_bench.hpp"
@@ -12,13 +19,9 @@
 
 using namespace watkins;
 using namespace watkins::tb;
+using namespace watkins::tb::test;
 
 namespace {
-
-std::string report(const std::string& what, const RtlOptions& o, const RtlResult& r) {
-  return what + " (seed " + std::to_string(o.seed) + ", gap " + std::to_string(o.gap) + ", stall " +
-         std::to_string(o.stall) + ", stall burst " + std::to_string(o.stall_burst) + "):\n" + r.summary();
-}
 
 // A Gouraud-prepared scene turned into Phong records without scene preparation: each shade
 // channel s (0..255 levels) becomes a normal component (s - 127.5) / 128 in [-1, 1), so the
@@ -50,9 +53,158 @@ TEST(PhongCosim, DatapathOnArbitraryNormalRecords) {
     o.stall_burst = k == 3 ? 100 : 1;
     o.sparse = k % 2;
     const RtlResult r = run_rtl(p, o, &want);
-    EXPECT_TRUE(r.ok()) << report("default scene as Phong records", o, r);
+    expect_clean("default scene as Phong records", o, r);
     EXPECT_GT(r.stage_items, 0);
   }
+}
+
+// ---------------------------------------------------------------- random Phong scenes
+glm::dvec3 random_unit(std::mt19937_64& rng) {
+  std::normal_distribution<double> g(0, 1);
+  for (;;) {
+    const glm::dvec3 v(g(rng), g(rng), g(rng));
+    if (glm::length(v) > 1e-3) return glm::normalize(v);
+  }
+}
+
+// random_scene's geometry with vertex normals and materials: normals mostly towards the viewer,
+// some polygons with antipodal vertex normals (the interpolated normal passes through zero), some
+// with normals in the screen plane; 1..16 materials with n over 0..255; a light from anywhere
+// (grazing and from behind included).
+BuiltScene random_phong_scene(std::uint64_t seed) {
+  BuiltScene s = random_scene(seed);
+  s.name = "random Phong scene " + std::to_string(seed);
+  std::mt19937_64 rng(seed ^ 0x9E3779B97F4A7C15ull);
+  std::uniform_real_distribution<double> u(0, 1);
+  s.shading = ShadingMode::Phong;
+  const int count = 1 + static_cast<int>(rng() % 16);
+  for (int k = 0; k < count; ++k) {
+    PhongMaterial m;
+    for (double& c : m.cp) c = u(rng);
+    m.d = u(rng);
+    m.W = u(rng) * 511.0 / 256.0;
+    const int pick = static_cast<int>(rng() % 8);
+    m.n = pick == 0 ? 0 : pick == 1 ? 128 : pick == 2 ? 255 : static_cast<int>(rng() % 256);
+    s.materials.push_back(m);
+  }
+  const glm::dvec3 l = random_unit(rng);
+  for (int c = 0; c < 3; ++c) s.light[c] = l[c];
+  for (ScreenPolygon& p : s.polygons) {
+    p.material = static_cast<int>(rng() % static_cast<std::uint64_t>(count));
+    const int kind = static_cast<int>(rng() % 8);
+    for (std::size_t k = 0; k < p.v.size(); ++k) {
+      glm::dvec3 n = random_unit(rng);
+      if (kind >= 2) n.z = -std::fabs(n.z);           // towards the viewer
+      if (kind == 1) n = glm::normalize(glm::dvec3(n.x, n.y, 0.0));  // in the screen plane
+      for (int c = 0; c < 3; ++c) p.v[k].normal[c] = n[c];
+    }
+    if (kind == 0)  // antipodal: the second vertex faces exactly away from the first
+      for (int c = 0; c < 3; ++c) p.v[1].normal[c] = -p.v[0].normal[c];
+  }
+  return s;
+}
+
+class RandomPhongScenes : public ::testing::TestWithParam<int> {};
+
+constexpr int PhongScenesPerBatch = 25;
+
+TEST_P(RandomPhongScenes, MatchTheModel) {
+  int ran = 0;
+  for (int k = 0; k < PhongScenesPerBatch; ++k) {
+    const std::uint64_t seed = 5000 + static_cast<std::uint64_t>(GetParam()) * PhongScenesPerBatch + k;
+    const BuiltScene scene = random_phong_scene(seed);
+    PreparedScene prepared;
+    try {
+      prepared = prepare(scene);
+    } catch (const SceneError&) {  // too many active edges for the hardware: not a co-simulation case
+      continue;
+    }
+    ASSERT_EQ(prepared.shading, ShadingMode::Phong);
+    RtlOptions o = random_options(seed);
+    o.sparse = k % 2;
+    const RtlResult r = run_rtl(prepared, o);
+    expect_clean(scene.name + " (" + std::to_string(scene.polygons.size()) + " polygons, " +
+                     std::to_string(scene.materials.size()) + " materials)" + (o.sparse ? " sparse" : ""),
+                 o, r);
+    if (!r.ok()) return;  // one report per batch is enough
+    ++ran;
+  }
+  EXPECT_GE(ran, PhongScenesPerBatch * 4 / 5) << "most random scenes fit the hardware";
+}
+
+INSTANTIATE_TEST_SUITE_P(Batches, RandomPhongScenes, ::testing::Range(0, 4));  // 4 x 25 = 100 scenes
+
+// ---------------------------------------------------------------- shipped scenes, Phong shading
+class ShippedScenesPhong : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ShippedScenesPhong, MatchTheModelUnderGapsAndStalls) {
+  BuildOptions opt;
+  opt.shading = ShadingMode::Phong;
+  check_shipped_scene(GetParam(), opt);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, ShippedScenesPhong, ::testing::ValuesIn(shipped_scenes()), scene_test_name);
+
+// ---------------------------------------------------------------- the hard cases on the RTL
+// The scenes whose error bounds tests/test_phong_pipeline.cpp asserts, bit for bit on the RTL.
+TEST(PhongCosim, HardCasesMatchTheModel) {
+  using namespace watkins::test;
+  struct Case {
+    std::string name;
+    BuiltScene scene;
+  };
+  std::vector<Case> cases = {{"antipodal normals", antipodal_normals_scene()},
+                             {"normals in the screen plane", screen_plane_normals_scene()},
+                             {"grazing light", grazing_light_scene()}};
+  for (int n : {0, 1, 2, 64, 128, 255}) cases.push_back({"n = " + std::to_string(n), shininess_scene(n)});
+  std::uint64_t seed = 300;
+  for (const Case& c : cases) {
+    const PreparedScene p = prepare(c.scene);
+    const RtlOptions o{seed++, 0.2, 0.3};
+    expect_clean(c.name, o, run_rtl(p, o));
+  }
+}
+
+// The interior highlight of scenes/highlight.json, both pipelines on the RTL: Phong finds it at
+// the centre, Gouraud (the phong vertex rule) cannot.
+TEST(PhongCosim, InteriorHighlightPhongFindsItGouraudCannot) {
+  BuildOptions phong, gouraud;
+  phong.shading = ShadingMode::Phong;
+  gouraud.shading = ShadingMode::Gouraud;
+  gouraud.rule = ShadingRule::Phong;
+  const PreparedScene pp = prepare(load_scene(WATKINS_SOURCE_DIR "/scenes/highlight.json", phong));
+  const PreparedScene pg = prepare(load_scene(WATKINS_SOURCE_DIR "/scenes/highlight.json", gouraud));
+  const RtlOptions o{17, 0.1, 0.1};
+  const RtlResult rp = run_rtl(pp, o), rg = run_rtl(pg, o);
+  expect_clean("highlight, Phong", o, rp);
+  expect_clean("highlight, Gouraud", o, rg);
+  auto peak = [](const Image& img, int lo, int hi) {
+    int m = 0;
+    for (int y = lo; y < hi; ++y)
+      for (int x = lo; x < hi; ++x) m = std::max(m, int(img.at(x, y)[0]));
+    return m;
+  };
+  EXPECT_GE(peak(rp.frames.at(0).image, 118, 138), 250);
+  EXPECT_LE(peak(rg.frames.at(0).image, 0, 256), 135);
+}
+
+// Phong frames back to back with different materials and lights: the bench rewrites the
+// material table between frames (after the previous frame's last pixel), the RTL follows.
+TEST(PhongCosim, FramesBackToBackWithNewMaterials) {
+  const PreparedScene a = prepare(random_phong_scene(77));
+  const PreparedScene b = prepare(random_phong_scene(78));
+  ASSERT_FALSE(a.materials.size() == b.materials.size() && a.light == b.light);
+  const RtlOptions o{23, 0.2, 0.2};
+  const RtlResult r = run_rtl_frames({&a, &b, &a, &a}, o);
+  expect_clean("Phong frames a b a a", o, r);
+  ASSERT_EQ(r.frames.size(), 4u);
+  EXPECT_EQ(r.frames[0].image.rgb, r.frames[2].image.rgb);
+}
+
+TEST(PhongCosim, OneRunIsGouraudOrPhong) {
+  const PreparedScene g = prepare(load_scene_or_default(""));
+  const PreparedScene p = as_phong_records(g);
+  EXPECT_THROW(run_rtl_frames({&g, &p}), std::invalid_argument);
 }
 
 }  // namespace
