@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Lint and synthesis check of rtl/: Verilator --lint-only -Wall on every file (package first),
-# then yosys 0.23: read, hierarchy/proc/check, and a full synth_ice40 of watkins_top with
-# small buffers (MaxWidth, MaxActiveEdges) so it finishes in a couple of minutes. Fails on any
+# Lint and synthesis check of rtl/: Verilator --lint-only -Wall on every file (package first) and
+# on watkins_top in both shading modes (Phong = 0 and 1), then yosys 0.23: read,
+# hierarchy/proc/check of both, and a full synth_ice40 of each with small buffers (MaxWidth,
+# MaxActiveEdges) so they finish in minutes. Fails on any
 # warning or error. The only yosys warning tolerated is "Replacing memory ... with list of
 # registers": pipeline register arrays (span_reciprocal stages, active-edge banks) are meant to
 # be flops, and yosys says so for each one.
@@ -20,6 +21,7 @@ trap 'rm -rf "$LOG"' EXIT
 
 echo "== verilator --lint-only -Wall"
 verilator --lint-only -Wall --top-module watkins_top "${VLT[@]}" "$PKG" "${SRCS[@]}"
+verilator --lint-only -Wall --top-module watkins_top -GPhong=1 "${VLT[@]}" "$PKG" "${SRCS[@]}"
 # Every module on its own as well, so parameters the top does not use are checked too.
 for f in "${SRCS[@]}"; do
   m=$(basename "$f" .sv)
@@ -38,18 +40,21 @@ yosys_check() {  # $1: label, $2: script
 }
 
 READ="read_verilog -sv $PKG ${SRCS[*]}"
-echo "== yosys read + hierarchy/proc/check (default parameters)"
+echo "== yosys read + hierarchy/proc/check (default parameters, Phong = 0 and 1)"
 yosys_check elab "$READ; hierarchy -check -top watkins_top; proc; check -assert"
+yosys_check elab_phong "$READ; hierarchy -check -top watkins_top -chparam Phong 1; proc; check -assert"
 echo "   clean"
 
 if [[ "${1:-}" == "--synth" ]]; then
-  echo "== yosys synth_ice40 (MaxWidth=$SYNTH_WIDTH, MaxActiveEdges=$SYNTH_EDGES)"
-  # synth_ice40 up to its final check step, whose first command (autoname, cosmetic renaming)
-  # is quadratic in yosys 0.23 and alone takes over 10 minutes here; the rest of that step is
-  # run by hand. -dsp maps the span-setup multipliers to SB_MAC16 (iCE40 UltraPlus), which
-  # keeps ABC's work, and the run, to about 3 minutes.
-  yosys_check synth "$READ; hierarchy -check -top watkins_top -chparam MaxWidth $SYNTH_WIDTH -chparam MaxActiveEdges $SYNTH_EDGES; synth_ice40 -dsp -top watkins_top -run :check; hierarchy -check; check -noinit -assert; tee -o $LOG/stat.txt stat"
-  sed -n '/Number of cells/,/^$/p' "$LOG/stat.txt" | head -30
+  for phong in 0 1; do
+    echo "== yosys synth_ice40 (MaxWidth=$SYNTH_WIDTH, MaxActiveEdges=$SYNTH_EDGES, Phong=$phong)"
+    # synth_ice40 up to its final check step, whose first command (autoname, cosmetic renaming)
+    # is quadratic in yosys 0.23 and alone takes over 10 minutes here; the rest of that step is
+    # run by hand. -dsp maps the multipliers to SB_MAC16 (iCE40 UltraPlus), which keeps ABC's
+    # work, and the run, to minutes.
+    yosys_check "synth$phong" "$READ; hierarchy -check -top watkins_top -chparam MaxWidth $SYNTH_WIDTH -chparam MaxActiveEdges $SYNTH_EDGES -chparam Phong $phong; synth_ice40 -dsp -top watkins_top -run :check; hierarchy -check; check -noinit -assert; tee -o $LOG/stat$phong.txt stat"
+    sed -n '/Number of cells/,/^$/p' "$LOG/stat$phong.txt" | head -30
+  done
   echo "   clean"
 fi
 echo "lint.sh: OK"

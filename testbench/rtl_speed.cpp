@@ -1,10 +1,12 @@
 // Simulation speed of the RTL on one harness: built twice, as watkins_rtl_speed_sc (SystemC bench)
 // and watkins_rtl_speed_cc (plain C++ harness, a second Verilated build), from this one source.
-//   watkins_rtl_speed_{sc,cc} [SCENE] [--repeat N] [--gap P] [--stall P] [--seed N] [--no-stage-check]
+//   watkins_rtl_speed_{sc,cc} [SCENE] [--shading gouraud|phong] [--repeat N] [--gap P] [--stall P]
+//                             [--seed N] [--no-stage-check]
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
 #include <ctime>
+#include <stdexcept>
 #include <string>
 
 #include "pipeline.hpp"
@@ -22,13 +24,20 @@ int main(int argc, char** argv) {
   app.add_option("--gap", opt.gap, "edge source gap probability")->capture_default_str();
   app.add_option("--stall", opt.stall, "pixel sink stall probability")->capture_default_str();
   app.add_option("--seed", opt.seed, "random seed")->capture_default_str();
+  std::string shading;
+  app.add_option("--shading", shading, "gouraud or phong (default: the scene's); the plain C++ harness has Gouraud only");
   bool no_stages = false;
   app.add_flag("--no-stage-check", no_stages, "compare the pixels only, not the internal stage streams");
   CLI11_PARSE(app, argc, argv);
   opt.check_stages = !no_stages;
   try {
     using namespace watkins;
-    const BuiltScene scene = load_scene_or_default(scene_path);
+    BuildOptions build;
+    if (!shading.empty()) {
+      build.shading = parse_shading_mode(shading);
+      if (!build.shading) throw std::invalid_argument("--shading: expected gouraud or phong, got \"" + shading + "\"");
+    }
+    const BuiltScene scene = load_scene_or_default(scene_path, build);
     const PreparedScene prepared = prepare(scene);
     const Image expected = Pipeline().render(prepared);
     tb::RtlResult warm = tb::run_rtl(prepared, opt, &expected);  // also builds the bench
@@ -46,8 +55,8 @@ int main(int argc, char** argv) {
     }
     const double cpu = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
     std::printf("harness       %s\n", tb::rtl_description().c_str());
-    std::printf("scene         %s %dx%d, %zu edge records\n", scene.name.c_str(), prepared.width,
-                prepared.height, prepared.edges.size());
+    std::printf("scene         %s %dx%d, %zu edge records, %s shading\n", scene.name.c_str(), prepared.width,
+                prepared.height, prepared.edges.size(), to_string(prepared.shading));
     std::printf("frame cycles  %lld (gap %.2f, stall %.2f)\n", warm.cycles, opt.gap, opt.stall);
     std::printf("stage check   %s (%lld stage transfers compared per frame)\n", opt.check_stages ? "on" : "off",
                 warm.stage_items);

@@ -1,26 +1,31 @@
 #!/usr/bin/env bash
-# RTL figures: fragments per cycle of the Verilated pipeline (default scene: bound by the one-
-# pixel-per-clock output in full-frame mode, by the fragment path in sparse mode (--sparse: covered
-# pixels only); overdraw scene: bound by the fragment rate), and simulated cycles per
-# second with the SystemC bench against a plain C++ harness on the same RTL.
+# RTL figures: cycles per frame and fragments per cycle of the Verilated pipeline, Gouraud and
+# Phong shading (watkins_top with Phong = 0 and 1), in full-frame output (bound by one pixel per
+# clock) and sparse output (--sparse: covered pixels only, bound by the fragment path); the
+# overdraw scene is bound by the fragment rate. Then simulated cycles per second: the SystemC
+# bench against a plain C++ harness on the same RTL, and the Phong top on the SystemC bench.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 build="${WATKINS_BUILD:-$root/build}"
 [ -x "$build/testbench/watkins_rtl_speed_sc" ] || { echo "rtl: not built (needs Verilator and SystemC)"; exit 0; }
-for run in ":" ":--sparse" "$root/scenes/overdraw.json:" "$root/scenes/overdraw.json:--sparse"; do
-  scene=${run%%:*}
-  mode=${run#*:}
-  out=$("$build/watkins" render $scene --rtl $mode --out "$(mktemp -u).png")
-  name=$(basename "${scene:-default}" .json)${mode:+ sparse}
-  frag=$(echo "$out" | sed -n 's/^rtl pixels.*fragments \([0-9]*\) (model), \([0-9.]*\) fragments\/cycle, \([0-9.]*\) pixels\/cycle/\1 fragments, \2 fragments\/cycle, \3 pixels\/cycle/p')
-  cyc=$(echo "$out" | sed -n 's/^rtl cycles *\([0-9]*\).*/\1/p')
-  mism=$(echo "$out" | sed -n "s/^rtl vs model *\([0-9]*\) mismatching.*/\1/p")
-  printf "rtl %-16s %s cycles, %s; %s mismatches\n" "$name" "$cyc" "$frag" "$mism"
+scenes=("" "$root/scenes/sphere.json" "$root/scenes/cone.json" "$root/scenes/overdraw.json")
+printf "%-26s %9s %9s %8s %11s %10s\n" "rtl frame" "cycles" "fragments" "frag/cyc" "pixels/cyc" "mismatches"
+for scene in "${scenes[@]}"; do
+  for shading in gouraud phong; do
+    for mode in "" "--sparse"; do
+      out=$("$build/watkins" render $scene --shading $shading --rtl $mode --out "$(mktemp -u).png")
+      name="$(basename "${scene:-default}" .json) $shading${mode:+ sparse}"
+      read -r frag fpc ppc < <(echo "$out" | sed -n 's/^rtl pixels.*fragments \([0-9]*\) (model), \([0-9.]*\) fragments\/cycle, \([0-9.]*\) pixels\/cycle/\1 \2 \3/p')
+      cyc=$(echo "$out" | sed -n 's/^rtl cycles *\([0-9]*\).*/\1/p')
+      mism=$(echo "$out" | sed -n "s/^rtl vs model *\([0-9]*\) mismatching.*/\1/p")
+      printf "%-26s %9s %9s %8s %11s %10s\n" "$name" "$cyc" "$frag" "$fpc" "$ppc" "$mism"
+    done
+  done
 done
-for h in sc cc; do
-  exe="$build/testbench/watkins_rtl_speed_$h"
-  [ -x "$exe" ] || continue
-  speed=$("$exe" --repeat 3 | sed -n 's/^speed *\([0-9]*\) cycles\/s.*/\1/p')
-  desc=$([ "$h" = sc ] && echo "SystemC bench (one SC_THREAD clocks the model)" || echo "plain C++ harness (eval loop)")
-  printf "verilator %-48s %s cycles/s\n" "$desc" "$speed"
-done
+speed() {  # $1: harness (sc, cc), $2: shading
+  "$build/testbench/watkins_rtl_speed_$1" --repeat 3 --shading "$2" | sed -n 's/^speed *\([0-9]*\) cycles\/s.*/\1/p'
+}
+printf "verilator %-52s %s cycles/s\n" "SystemC bench, Gouraud top (one SC_THREAD clocks it)" "$(speed sc gouraud)"
+[ -x "$build/testbench/watkins_rtl_speed_cc" ] &&
+  printf "verilator %-52s %s cycles/s\n" "plain C++ harness, Gouraud top (eval loop)" "$(speed cc gouraud)"
+printf "verilator %-52s %s cycles/s\n" "SystemC bench, Phong top" "$(speed sc phong)"
