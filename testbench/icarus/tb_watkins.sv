@@ -5,7 +5,7 @@
 //   vvp tb.vvp +dir=<folder of edges.hex, pixels.hex, frame.hex>
 `timescale 1ns / 1ps
 module tb_watkins;
-  localparam int EdgeBits = 462;       // $bits(watkins_pkg::edge_t), checked by edge_packing.hpp
+  localparam int EdgeBits = 466;       // $bits(watkins_pkg::edge_t), checked by edge_packing.hpp
   localparam int MaxEdges = 1 << 18;
   localparam int MaxPixels = 1 << 20;
 
@@ -26,7 +26,10 @@ module tb_watkins;
     .width_i(frame[0][12:0]), .height_i(frame[1][12:0]), .background_i(frame[2][23:0]), .sparse_i(1'b0),
     .edge_i(edge_d), .edge_eof_i(eof_d), .edge_valid_i(edge_valid), .edge_ready_o(edge_ready),
     .pixel_rgb_o(rgb), .pixel_covered_o(covered), .pixel_x_o(), .pixel_y_o(), .pixel_last_o(last),
-    .pixel_valid_o(pixel_valid), .pixel_ready_i(1'b1), .overflow_o(overflow));
+    .pixel_valid_o(pixel_valid), .pixel_ready_i(1'b1), .overflow_o(overflow),
+    // Phong inputs: unused by the Gouraud top (Phong = 0) simulated here.
+    .light_i('0), .eye_i('0), .material_we_i(1'b0), .material_addr_i('0), .material_cp_i('0),
+    .material_d_i('0), .material_w_i('0), .material_n_i('0));
 
   always #5 clk = ~clk;
 
