@@ -28,8 +28,8 @@ module tb_watkins;
     .pixel_rgb_o(rgb), .pixel_covered_o(covered), .pixel_x_o(), .pixel_y_o(), .pixel_last_o(last),
     .pixel_valid_o(pixel_valid), .pixel_ready_i(1'b1), .overflow_o(overflow),
     // Phong inputs: unused by the Gouraud top (Phong = 0) simulated here.
-    .light_i('0), .eye_i('0), .material_we_i(1'b0), .material_addr_i('0), .material_cp_i('0),
-    .material_d_i('0), .material_w_i('0), .material_n_i('0));
+    .light_i(48'd0), .eye_i(48'd0), .material_we_i(1'b0), .material_addr_i(4'd0), .material_cp_i(24'd0),
+    .material_d_i(9'd0), .material_w_i(9'd0), .material_n_i(8'd0));
 
   always #5 clk = ~clk;
 
