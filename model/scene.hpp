@@ -3,6 +3,7 @@
 // Every error names the file, and the line/column or the JSON field, and what is wrong.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -68,6 +69,9 @@ struct BuiltScene {
   int culled_backfaces = 0;   // dropped by back-face culling
   int near_clipped = 0;       // dropped: a vertex behind the camera's near plane
   int degenerate = 0;         // dropped: zero projected area (e.g. the pole quads of a sphere)
+  // The parsed scene it was built from (for the analytic truth, which ray-casts the exact
+  // surfaces); null for scenes assembled in code.
+  std::shared_ptr<const Scene> source;
 };
 
 // Load and validate a scene file (JSON). Relative OBJ paths are resolved against its folder.

@@ -7,11 +7,13 @@
 #include <cstring>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <sstream>
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 
+#include "camera.hpp"
 #include "float_reference.hpp"
 #include "mesh_obj.hpp"
 #include "scene.hpp"
@@ -68,7 +70,6 @@ BuiltScene load_scene_or_default(const std::string& path, const BuildOptions& op
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kCoordLimit = 8192.0;
 constexpr size_t kMaxPolygons = 65536;  // the pipeline's polygon id is 16 bits
 
@@ -76,39 +77,6 @@ std::string fmt(double x) {
   std::ostringstream os;
   os << x;
   return os.str();
-}
-
-// Column-major glm: m[c][r]. Rotation applies X first, then Y, then Z.
-glm::dmat3 rotation(const glm::dvec3& deg) {
-  const glm::dvec3 a = deg * (kPi / 180.0);
-  const double cx = std::cos(a.x), sx = std::sin(a.x), cy = std::cos(a.y), sy = std::sin(a.y),
-               cz = std::cos(a.z), sz = std::sin(a.z);
-  glm::dmat3 rx(1, 0, 0, 0, cx, sx, 0, -sx, cx);
-  glm::dmat3 ry(cy, 0, -sy, 0, 1, 0, sy, 0, cy);
-  glm::dmat3 rz(cz, sz, 0, -sz, cz, 0, 0, 0, 1);
-  return rz * ry * rx;
-}
-
-// World -> camera: a rotation (rows right, up, forward) and the eye position. The lookat
-// basis uses right = up x forward so the map is a proper rotation of the left-handed world.
-struct View {
-  glm::dvec3 eye{0.0}, right{1, 0, 0}, up{0, 1, 0}, fwd{0, 0, 1};
-  glm::dvec3 point(const glm::dvec3& p) const {
-    glm::dvec3 d = p - eye;
-    return {glm::dot(d, right), glm::dot(d, up), glm::dot(d, fwd)};
-  }
-  glm::dvec3 dir(const glm::dvec3& d) const { return {glm::dot(d, right), glm::dot(d, up), glm::dot(d, fwd)}; }
-};
-
-View make_view(const Camera& c) {
-  View v;
-  if (c.type == Camera::Type::LookAt) {
-    v.eye = c.eye;
-    v.fwd = glm::normalize(c.target - c.eye);
-    v.right = glm::normalize(glm::cross(c.up, v.fwd));
-    v.up = glm::cross(v.fwd, v.right);
-  }
-  return v;
 }
 
 // An object in camera space, ready to project and shade.
@@ -137,14 +105,8 @@ class MaterialTable {
     if (phong_ && !(m.n == std::floor(m.n) && m.n >= 0 && m.n <= 255))
       throw SceneError(scene_ + ": materials." + m.name + ".n: Phong shading needs an integer in [0, 255], got " +
                        fmt(m.n));
-    out_.push_back(to_phong(m));
+    out_.push_back(phong_material(m));
     return ids_[m.name] = static_cast<int>(out_.size() - 1);
-  }
-  static PhongMaterial to_phong(const Material& m) {
-    PhongMaterial p;
-    for (int c = 0; c < 3; ++c) p.cp[c] = m.color[c];
-    p.d = m.d, p.W = m.W, p.n = static_cast<int>(m.n);
-    return p;
   }
 
  private:
@@ -167,6 +129,7 @@ double signed_area(const ScreenPolygon& p) {
 BuiltScene build(const Scene& sc, const BuildOptions& opt) {
   BuiltScene out;
   out.name = sc.name;
+  out.source = std::make_shared<const Scene>(sc);
   out.width = sc.width;
   out.height = sc.height;
   for (int c = 0; c < 3; ++c) out.background[c] = sc.background[c];
@@ -231,7 +194,7 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
     const double R = glm::length(p);
     const glm::dvec3 to_eye = -p / R;
     if (out.rule == ShadingRule::Phong) {
-      const auto lv = phong_levels(MaterialTable::to_phong(mat), {n.x, n.y, n.z}, out.light, out.eye);
+      const auto lv = phong_levels(phong_material(mat), {n.x, n.y, n.z}, out.light, out.eye);
       std::copy(lv.begin(), lv.end(), rgb);
       return;
     }

@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 
+#include "analytic_truth.hpp"
 #include "float_reference.hpp"
 #include "pipeline.hpp"
 #include "prepare.hpp"
@@ -117,7 +118,7 @@ struct RenderArgs {
   std::string scene;
   std::string out = "watkins.png";
   std::string model = "fixed";
-  std::string shading, rule, depth, diff;
+  std::string shading, rule, depth, diff, truth, truth_diff;
   bool cull = false, no_cull = false;
   int max_active_edges = watkins::fmt::MaxActiveEdges;
   RtlArgs rtl;  // --rtl and its options
@@ -135,6 +136,31 @@ void print_needs(const watkins::SceneNeeds& n, watkins::ShadingMode shading) {
                 static_cast<long long>(n.value_min[c]), static_cast<long long>(n.value_max[c]),
                 static_cast<long long>(n.slope_min[c]), static_cast<long long>(n.slope_max[c]),
                 n.bits_for_value(c), fmt::ChannelBits);
+}
+
+// The error of the algorithm: the double reference (and the fixed-point model) against the exact
+// surfaces ray-cast with the same illumination, over pixels showing the same scene object.
+watkins::AnalyticTruth print_truth(const watkins::BuiltScene& scene, const watkins::Image& reference,
+                                   const watkins::Image* fixed) {
+  using namespace watkins;
+  const auto t0 = Clock::now();
+  AnalyticTruth truth = render_analytic_truth(scene);
+  if (!truth.unavailable.empty()) {
+    std::printf("vs truth      none: %s\n", truth.unavailable.c_str());
+    return truth;
+  }
+  const double t = seconds_since(t0);
+  auto line = [&](const char* what, const Image& img) {
+    const ImageError e = compare_with_truth(scene, img, truth);
+    std::printf("vs truth      %s: max |d| %d levels, mean |d| %.4f levels, %d pixels > 1 level (over %d pixels "
+                "showing the same object; %d change coverage)\n",
+                what, e.max_abs, e.mean_abs, e.over_one, e.compared, e.coverage_differs);
+  };
+  line("double reference", reference);
+  if (fixed) line("fixed model", *fixed);
+  std::printf("truth         %d exact surface(s) ray-cast in %.3f s%s\n", truth.surfaces, t,
+              truth.without_truth ? "; objects without a closed form are not compared" : "");
+  return truth;
 }
 
 int render(const RenderArgs& a) {
@@ -201,9 +227,17 @@ int render(const RenderArgs& a) {
     result = reference;
     std::printf("double model  %lld fragments, %.3f s\n", fstats.fragments, t_ref);
   }
+  const AnalyticTruth truth = print_truth(scene, reference, a.model == "fixed" ? &result : nullptr);
   if (!a.diff.empty()) write_png(diff_image(result, reference), a.diff);
+  std::string truth_files;
+  if ((!a.truth.empty() || !a.truth_diff.empty()) && truth.unavailable.empty()) {
+    if (!a.truth.empty()) write_png(truth.image, a.truth);
+    if (!a.truth_diff.empty()) write_png(truth_diff_image(scene, result, truth), a.truth_diff);
+    truth_files = (a.truth.empty() ? "" : ", " + a.truth) + (a.truth_diff.empty() ? "" : ", " + a.truth_diff);
+  }
   write_png(result, a.out);
-  std::printf("wrote         %s%s%s\n", a.out.c_str(), a.diff.empty() ? "" : ", ", a.diff.c_str());
+  std::printf("wrote         %s%s%s%s\n", a.out.c_str(), a.diff.empty() ? "" : ", ", a.diff.c_str(),
+              truth_files.c_str());
   return rtl_status;
 }
 
@@ -216,6 +250,8 @@ int main(int argc, char** argv) {
   auto* r = app.add_subcommand("render", "render a scene (the embedded default scene if none is given)");
   r->add_option("scene", ra.scene, "scene file (JSON); see docs/scene-format.md");
   r->add_option("--out,-o", ra.out, "PNG to write")->capture_default_str();
+  r->add_option("--truth", ra.truth, "PNG of the analytic truth (exact surfaces ray-cast, eq. 3 per pixel)");
+  r->add_option("--truth-diff", ra.truth_diff, "PNG of |image - analytic truth| x16 (magenta: coverage or object differs)");
   r->add_option("--model", ra.model, "fixed (bit-exact pipeline model) or float (double reference)")
       ->check(CLI::IsMember({"fixed", "float"}))->capture_default_str();
   r->add_option("--shading", ra.shading, "pipeline: gouraud (interpolate vertex shades) or phong (interpolate "

@@ -1,0 +1,233 @@
+// Ray casting of the exact surfaces: each surface is an implicit F(p) = 0 in object space with a
+// domain (the part of it the scene object is). A camera ray is mapped into object space, marched
+// over the object's bounding sphere to bracket the first sign change of F inside the domain, and
+// the root refined by bisection; the normal is grad F, mapped back by the inverse transpose.
+#include "analytic_truth.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <optional>
+
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+
+#include "camera.hpp"
+#include "float_reference.hpp"
+#include "scene_types.hpp"
+
+namespace watkins {
+namespace {
+
+// One piece of an exact surface in object space.
+struct Implicit {
+  std::function<double(const glm::dvec3&)> f;          // zero on the surface
+  std::function<glm::dvec3(const glm::dvec3&)> grad;   // its gradient (the normal's direction)
+  std::function<bool(const glm::dvec3&)> inside;       // the part that belongs to the object
+};
+
+struct Surface {
+  int object = 0;
+  std::vector<Implicit> pieces;
+  glm::dvec3 centre{0.0};  // bounding sphere, object space
+  double radius = 0;
+  glm::dmat3 to_object{1.0}, normal_to_camera{1.0};
+  glm::dvec3 offset{0.0};  // p_cam = inverse(to_object) * p_obj + offset
+  PhongMaterial material;
+};
+
+std::vector<Implicit> pieces_of(const SceneObject& o, glm::dvec3& centre, double& radius) {
+  std::vector<Implicit> v;
+  const glm::dvec3 c = o.center;
+  switch (o.type) {
+    case ObjectType::Sphere: {
+      const double r = o.radius;
+      v.push_back({[=](const glm::dvec3& p) { return glm::dot(p - c, p - c) - r * r; },
+                   [=](const glm::dvec3& p) { return p - c; }, [](const glm::dvec3&) { return true; }});
+      centre = c, radius = r;
+      break;
+    }
+    case ObjectType::Cone: {
+      const double r = o.radius, h = o.height, k = r / h, apex = c.y + h;
+      v.push_back({[=](const glm::dvec3& p) {
+                     const double dx = p.x - c.x, dz = p.z - c.z, a = apex - p.y;
+                     return dx * dx + dz * dz - k * k * a * a;
+                   },
+                   [=](const glm::dvec3& p) { return glm::dvec3(p.x - c.x, k * k * (apex - p.y), p.z - c.z); },
+                   [=](const glm::dvec3& p) { return p.y >= c.y && p.y <= apex; }});
+      if (o.cap)
+        v.push_back({[=](const glm::dvec3& p) { return p.y - c.y; },
+                     [](const glm::dvec3&) { return glm::dvec3(0, -1, 0); },
+                     [=](const glm::dvec3& p) {
+                       const double dx = p.x - c.x, dz = p.z - c.z;
+                       return dx * dx + dz * dz <= r * r;
+                     }});
+      centre = c + glm::dvec3(0, h / 2, 0), radius = std::sqrt(r * r + h * h / 4);
+      break;
+    }
+    case ObjectType::QuarterTorus: {
+      const double R = o.major_radius, r = o.minor_radius;
+      v.push_back({[=](const glm::dvec3& p) {
+                     const double q = std::sqrt(p.x * p.x + p.z * p.z) - R;
+                     return q * q + p.y * p.y - r * r;
+                   },
+                   [=](const glm::dvec3& p) {
+                     const double rho = std::sqrt(p.x * p.x + p.z * p.z), q = rho - R;
+                     return rho > 0 ? glm::dvec3(q * p.x / rho, p.y, q * p.z / rho) : glm::dvec3(0, p.y, 0);
+                   },
+                   [](const glm::dvec3& p) { return p.x >= 0 && p.z >= 0; }});
+      centre = glm::dvec3(0.0), radius = R + r;
+      break;
+    }
+    case ObjectType::HyperbolicParaboloid: {
+      const double cc = o.c, s = o.size;
+      v.push_back({[=](const glm::dvec3& p) { return (p.x * p.x - p.y * p.y) / cc - p.z; },
+                   [=](const glm::dvec3& p) { return glm::dvec3(2 * p.x / cc, -2 * p.y / cc, -1); },
+                   [=](const glm::dvec3& p) { return std::fabs(p.x) <= s && std::fabs(p.y) <= s; }});
+      centre = glm::dvec3(0.0), radius = std::sqrt(2 * s * s + std::pow(2 * s * s / std::fabs(cc), 2));
+      break;
+    }
+    default:
+      break;
+  }
+  return v;
+}
+
+// First hit of the camera ray t*d (t > 0) on the surface, in camera-space distance along d.
+struct Hit {
+  double t = std::numeric_limits<double>::infinity();
+  glm::dvec3 normal{0.0};  // camera space, unit
+};
+
+std::optional<Hit> cast(const Surface& s, const glm::dvec3& d, double near, double far) {
+  // Object-space ray o + t*e for the camera ray t*d.
+  const glm::dvec3 o = s.to_object * (-s.offset), e = s.to_object * d;
+  // Bounding sphere, a little larger so roots on it are bracketed from outside.
+  const glm::dvec3 oc = o - s.centre;
+  const double a = glm::dot(e, e), b = glm::dot(oc, e), r = s.radius * 1.01 + 1e-9;
+  const double disc = b * b - a * (glm::dot(oc, oc) - r * r);
+  if (disc <= 0) return std::nullopt;
+  const double q = std::sqrt(disc);
+  double t0 = std::max((-b - q) / a, 0.0), t1 = (-b + q) / a;
+  if (t1 <= 0) return std::nullopt;
+  std::optional<Hit> best;
+  constexpr int Steps = 1024;
+  for (const Implicit& piece : s.pieces) {
+    const double dt = (t1 - t0) / Steps;
+    double ta = t0, fa = piece.f(o + ta * e);
+    for (int k = 1; k <= Steps; ++k) {
+      const double tb = t0 + k * dt, fb = piece.f(o + tb * e);
+      if ((fa <= 0) != (fb <= 0)) {
+        double lo = ta, hi = tb, flo = fa;
+        for (int it = 0; it < 60; ++it) {
+          const double mid = 0.5 * (lo + hi), fm = piece.f(o + mid * e);
+          if ((fm <= 0) == (flo <= 0)) lo = mid, flo = fm;
+          else hi = mid;
+        }
+        const double t = 0.5 * (lo + hi);
+        const glm::dvec3 p = o + t * e;
+        const double z = t * d.z;  // camera-space depth of the hit
+        if (piece.inside(p) && z >= near && z < far) {
+          if (!best || t < best->t) {
+            Hit h;
+            h.t = t;
+            h.normal = glm::normalize(s.normal_to_camera * piece.grad(p));
+            best = h;
+          }
+          break;  // the first root of this piece inside its domain
+        }
+      }
+      ta = tb, fa = fb;
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+AnalyticTruth render_analytic_truth(const BuiltScene& scene) {
+  AnalyticTruth out;
+  if (!scene.source) {
+    out.unavailable = "the scene was not built from a scene file";
+    return out;
+  }
+  if (scene.shading != ShadingMode::Phong && scene.rule != ShadingRule::Phong) {
+    out.unavailable = "the illumination is not Phong's eq. (3) (use --shading phong or --rule phong)";
+    return out;
+  }
+  const Scene& sc = *scene.source;
+  const View view = make_view(sc.camera);
+  std::vector<Surface> surfaces;
+  for (std::size_t i = 0; i < sc.objects.size(); ++i) {
+    const SceneObject& o = sc.objects[i];
+    Surface s;
+    s.object = static_cast<int>(i);
+    s.pieces = pieces_of(o, s.centre, s.radius);
+    if (s.pieces.empty()) {
+      ++out.without_truth;
+      continue;
+    }
+    const ObjectToCamera m(view, o.transform);
+    s.to_object = glm::inverse(m.linear);
+    s.normal_to_camera = glm::transpose(s.to_object);
+    s.offset = m.offset;
+    s.material = phong_material(o.material);
+    surfaces.push_back(std::move(s));
+  }
+  out.surfaces = static_cast<int>(surfaces.size());
+  if (surfaces.empty()) {
+    out.unavailable = "no object of the scene has an exact surface here (sphere, cone, torus, hypar)";
+    return out;
+  }
+  const int W = scene.width, H = scene.height;
+  out.image = Image(W, H);
+  for (int c = 0; c < 3; ++c)
+    for (std::size_t k = 0; k < out.image.rgb.size(); k += 3)
+      out.image.rgb[k + c] = static_cast<std::uint8_t>(std::lround(scene.background[c]));
+  const double half_w = 0.5 * W, half_h = 0.5 * H, f = sc.camera.focal;
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      // Inverse of x_s = W/2 + f (W/2) X/Z, y_s = H/2 - f (W/2) Y/Z at the pixel centre.
+      const glm::dvec3 d((x + 0.5 - half_w) / (f * half_w), (half_h - (y + 0.5)) / (f * half_w), 1.0);
+      std::optional<Hit> best;
+      const Surface* owner = nullptr;
+      for (const Surface& s : surfaces) {
+        const std::optional<Hit> h = cast(s, d, sc.camera.near, sc.camera.far);
+        if (h && (!best || h->t < best->t)) best = h, owner = &s;
+      }
+      if (!best) continue;
+      glm::dvec3 n = best->normal;
+      if (glm::dot(n, -d) < 0) n = -n;  // the side that is seen
+      const auto lv = phong_levels(owner->material, {n.x, n.y, n.z}, scene.light, scene.eye);
+      std::uint8_t* p = out.image.at(x, y);
+      for (int c = 0; c < 3; ++c) p[c] = static_cast<std::uint8_t>(std::lround(lv[c]));
+      const std::size_t i = std::size_t(y) * W + x;
+      out.image.covered[i] = 1;
+      out.image.owner[i] = owner->object;
+    }
+  return out;
+}
+
+namespace {
+
+// The render with each pixel's owner turned from polygon id into scene object index.
+Image by_object(const BuiltScene& scene, const Image& img) {
+  Image out = img;
+  for (int& o : out.owner)
+    if (o >= 0) o = scene.polygons.at(std::size_t(o)).object;
+  return out;
+}
+
+}  // namespace
+
+ImageError compare_with_truth(const BuiltScene& scene, const Image& img, const AnalyticTruth& truth) {
+  return compare_images(by_object(scene, img), truth.image);
+}
+
+Image truth_diff_image(const BuiltScene& scene, const Image& img, const AnalyticTruth& truth) {
+  return diff_image(by_object(scene, img), truth.image);
+}
+
+}  // namespace watkins
