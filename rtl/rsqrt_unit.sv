@@ -18,7 +18,6 @@ module rsqrt_unit #(
   localparam int P   = watkins_pkg::RsqrtIndexBits;  // seed index bits
   localparam int T   = watkins_pkg::RsqrtSeedBits;   // seed fraction bits
   localparam int G   = watkins_pkg::RsqrtNrBits;     // fraction bits of m'c * y0^2
-  localparam int Rows = (1 << P) - (1 << (P - 2));   // m' >= 1/4: rows 2^(P-2) .. 2^P-1
   localparam int Sh4 = (W + 1) + 2 * T - G;          // m'c * y0^2 down to G fraction bits
   localparam int Sh5 = T + G + 1 - F;                // y0 * u / 2 down to F fraction bits
 
@@ -50,11 +49,13 @@ module rsqrt_unit #(
   endfunction
   /* verilator lint_on UNUSEDSIGNAL */
 
-  // The ROM: one constant per row, evaluated at elaboration (yosys and Verilator alike).
-  logic [Rows*(T+1)-1:0] seed_rom;  // row r at [r*(T+1) +: T+1]
-  for (genvar g = 0; g < Rows; g++) begin : g_seed
-    localparam [T:0] Seed = seed_fn(g + (1 << (P - 2)));
-    assign seed_rom[g*(T+1) +: T+1] = Seed;
+  // The seed ROM, one row per P-bit index, filled at elaboration (yosys and Verilator alike).
+  // Rows below 2^(P-2) hold 0: only the null vector (mant = 0) reads them, and y = 0 then makes
+  // every unit component 0 with no special case. Read synchronously (stage 2's register), so
+  // synthesis maps it to block RAM (iCE40: 4 x SB_RAM40_4K) instead of a 15-bit 1024-way mux.
+  logic [T:0] seed_rom [1 << P];
+  initial begin
+    for (int r = 0; r < (1 << P); r++) seed_rom[r] = (r < (1 << (P - 2))) ? '0 : seed_fn(r);
   end
 
   // ---- stage 1: even-shift normalization m' = (m << 2j) / 2^MBits in [1/4, 1) -------------
@@ -83,15 +84,11 @@ module rsqrt_unit #(
 
   // ---- stage 2: seed y0 ---------------------------------------------------------------------
   logic [P-1:0] idx;
-  logic [T:0]   y0;
   logic [T:0]   y0_q  [2:4];
   logic [W:0]   mc_q  [2:3];  // m'c = mant + half an ulp: {mant, 1}, W+1 fraction bits
   assign idx = mant_q[W-1 -: P];
-  logic [P-1:0] row;
-  assign row = idx - P'(1 << (P - 2));
-  assign y0  = (idx >= P'(1 << (P - 2))) ? seed_rom[row*(T+1) +: T+1] : '0;
   always_ff @(posedge clk_i) if (en_i) begin
-    y0_q[2]  <= y0;
+    y0_q[2]  <= seed_rom[idx];
     mc_q[2]  <= {mant_q, 1'b1};
     j_q[2]   <= j1_q;
     nul_q[2] <= nul1_q;
