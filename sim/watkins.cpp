@@ -90,7 +90,10 @@ int run_rtl_mode(const RtlArgs& a, const watkins::PreparedScene& prepared, watki
               r.sim_cycles, r.wall_seconds);
   if (r.overflow) std::printf("rtl overflow  overflow_o set at cycle %lld\n", r.overflow_cycle);
   if (!a.trace.empty()) std::printf("rtl trace     %s\n", a.trace.c_str());
-  image = r.frames.at(0).image;
+  // The RTL's pixels and coverage; the visible-polygon ids stay the model's (the RTL emits none),
+  // so --diff and the truth comparison still tell shading from visibility changes.
+  image.rgb = r.frames.at(0).image.rgb;
+  image.covered = r.frames.at(0).image.covered;
   if (!r.ok() || r.overflow) {
     const std::string s = r.summary();
     std::fprintf(stderr, "watkins: RTL run failed:\n%s%s\n", s.c_str(),
@@ -141,7 +144,7 @@ void print_needs(const watkins::SceneNeeds& n, watkins::ShadingMode shading) {
 // The error of the algorithm: the double reference (and the fixed-point model) against the exact
 // surfaces ray-cast with the same illumination, over pixels showing the same scene object.
 watkins::AnalyticTruth print_truth(const watkins::BuiltScene& scene, const watkins::Image& reference,
-                                   const watkins::Image* fixed) {
+                                   const watkins::Image* fixed, const char* fixed_name) {
   using namespace watkins;
   const auto t0 = Clock::now();
   AnalyticTruth truth = render_analytic_truth(scene);
@@ -157,7 +160,7 @@ watkins::AnalyticTruth print_truth(const watkins::BuiltScene& scene, const watki
                 what, e.max_abs, e.mean_abs, e.over_one, e.compared, e.coverage_differs);
   };
   line("double reference", reference);
-  if (fixed) line("fixed model", *fixed);
+  if (fixed) line(fixed_name, *fixed);
   std::printf("truth         %d exact surface(s) ray-cast in %.3f s%s\n", truth.surfaces, t,
               truth.without_truth ? "; objects without a closed form are not compared" : "");
   return truth;
@@ -206,7 +209,7 @@ int render(const RenderArgs& a) {
   const Image reference = render_float_reference(scene, &fstats);
   const double t_ref = seconds_since(t1);
 
-  Image result;
+  Image result;          // the fixed model's image, or the RTL's with --rtl
   int rtl_status = 0;  // --rtl: 1 when the RTL differs from the model
   if (a.model == "fixed") {
     Pipeline pipe(a.max_active_edges);
@@ -227,7 +230,8 @@ int render(const RenderArgs& a) {
     result = reference;
     std::printf("double model  %lld fragments, %.3f s\n", fstats.fragments, t_ref);
   }
-  const AnalyticTruth truth = print_truth(scene, reference, a.model == "fixed" ? &result : nullptr);
+  const AnalyticTruth truth = print_truth(scene, reference, a.model == "fixed" ? &result : nullptr,
+                                          a.rtl.enabled ? "RTL" : "fixed model");
   if (!a.diff.empty()) write_png(diff_image(result, reference), a.diff);
   std::string truth_files;
   if ((!a.truth.empty() || !a.truth_diff.empty()) && truth.unavailable.empty()) {
