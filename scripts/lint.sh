@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # Lint and synthesis check of rtl/: Verilator --lint-only -Wall on every file (package first) and
 # on watkins_top in both shading modes (Phong = 0 and 1), then yosys 0.23: read,
-# hierarchy/proc/check of both, and a full synth_ice40 of each with small buffers (MaxWidth,
-# MaxActiveEdges) so they finish in minutes. Fails on any
+# hierarchy/proc/check of both tops; with --synth a full synth_ice40 of the Gouraud top with small
+# buffers (MaxWidth, MaxActiveEdges) and of the two Phong blocks (normalizer, phong_shader) on their
+# own, so every module is synthesized in a few minutes; --synth-all also synthesizes the whole
+# Phong top (5 more minutes). Fails on any
 # warning or error. The only yosys warning tolerated is "Replacing memory ... with list of
 # registers": pipeline register arrays (span_reciprocal stages, active-edge banks) are meant to
 # be flops, and yosys says so for each one.
-# Usage: scripts/lint.sh [--synth]   (the synthesis takes ~3 minutes; CI runs it via scripts/test.sh)
+# Usage: scripts/lint.sh [--synth | --synth-all]   (CI runs --synth via scripts/test.sh)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -45,16 +47,21 @@ yosys_check elab "$READ; hierarchy -check -top watkins_top; proc; check -assert"
 yosys_check elab_phong "$READ; hierarchy -check -top watkins_top -chparam Phong 1; proc; check -assert"
 echo "   clean"
 
-if [[ "${1:-}" == "--synth" ]]; then
-  for phong in 0 1; do
-    echo "== yosys synth_ice40 (MaxWidth=$SYNTH_WIDTH, MaxActiveEdges=$SYNTH_EDGES, Phong=$phong)"
-    # synth_ice40 up to its final check step, whose first command (autoname, cosmetic renaming)
-    # is quadratic in yosys 0.23 and alone takes over 10 minutes here; the rest of that step is
-    # run by hand. -dsp maps the multipliers to SB_MAC16 (iCE40 UltraPlus), which keeps ABC's
-    # work, and the run, to minutes.
-    yosys_check "synth$phong" "$READ; hierarchy -check -top watkins_top -chparam MaxWidth $SYNTH_WIDTH -chparam MaxActiveEdges $SYNTH_EDGES -chparam Phong $phong; synth_ice40 -dsp -top watkins_top -run :check; hierarchy -check; check -noinit -assert; tee -o $LOG/stat$phong.txt stat"
-    sed -n '/Number of cells/,/^$/p' "$LOG/stat$phong.txt" | head -30
-  done
+synth() {  # $1: label, $2: top, $3: hierarchy -chparam options
+  echo "== yosys synth_ice40 $2 $3"
+  # synth_ice40 up to its final check step, whose first command (autoname, cosmetic renaming) is
+  # quadratic in yosys 0.23 and alone takes over 10 minutes here; the rest of that step is run by
+  # hand. -dsp maps the multipliers to SB_MAC16 (iCE40 UltraPlus), which keeps ABC's work, and
+  # the run, to minutes.
+  yosys_check "$1" "$READ; hierarchy -check -top $2 $3; synth_ice40 -dsp -top $2 -run :check; hierarchy -check; check -noinit -assert; tee -o $LOG/$1.txt stat"
+  sed -n '/Number of cells/,/^$/p' "$LOG/$1.txt" | head -30
+}
+if [[ "${1:-}" == --synth* ]]; then
+  small="-chparam MaxWidth $SYNTH_WIDTH -chparam MaxActiveEdges $SYNTH_EDGES"
+  synth gouraud watkins_top "$small"
+  synth normalizer normalizer ""
+  synth phong_shader phong_shader ""
+  [[ "$1" == --synth-all ]] && synth phong watkins_top "$small -chparam Phong 1"
   echo "   clean"
 fi
 echo "lint.sh: OK"
