@@ -242,6 +242,12 @@ int render(const RenderArgs& a) {
   write_png(result, a.out);
   std::printf("wrote         %s%s%s%s\n", a.out.c_str(), a.diff.empty() ? "" : ", ", a.diff.c_str(),
               truth_files.c_str());
+  if ((!a.truth.empty() || !a.truth_diff.empty()) && !truth.unavailable.empty()) {
+    std::fprintf(stderr, "watkins: %s not written: no analytic truth for %s: %s\n",
+                 !a.truth.empty() ? a.truth.c_str() : a.truth_diff.c_str(), scene.name.c_str(),
+                 truth.unavailable.c_str());
+    return 1;
+  }
   return rtl_status;
 }
 

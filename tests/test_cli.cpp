@@ -166,3 +166,27 @@ TEST_F(Cli, HelpListsShading) {
 }
 
 }  // namespace
+
+namespace {
+
+class CliTruth : public Cli {};
+
+// The analytic truth from the command line: reported and written for eq. (3), refused otherwise.
+TEST_F(CliTruth, WrittenForPhongsIlluminationRefusedOtherwise) {
+  const std::string png = dir_ + "/s.png", truth = dir_ + "/t.png", diff = dir_ + "/td.png";
+  const CliRun r = run("render " WATKINS_SOURCE_DIR "/scenes/sphere.json --shading phong --out " + png + " --truth " +
+                       truth + " --truth-diff " + diff);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(exists(truth) && exists(diff));
+  EXPECT_NE(r.output.find("vs truth      double reference: max |d|"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("vs truth      fixed model: max |d|"), std::string::npos) << r.output;
+  const std::string t2 = dir_ + "/t2.png";
+  const CliRun l = run("render " WATKINS_SOURCE_DIR "/scenes/sphere.json --rule lambert --out " + dir_ +
+                       "/l.png --truth " + t2);
+  EXPECT_EQ(l.exit_code, 1) << l.output;
+  EXPECT_NE(l.output.find("t2.png not written: no analytic truth for"), std::string::npos) << l.output;
+  EXPECT_NE(l.output.find("eq. (3)"), std::string::npos) << l.output;
+  EXPECT_FALSE(exists(t2));
+}
+
+}  // namespace
