@@ -1,7 +1,9 @@
 // Ray casting of the exact surfaces: each surface is an implicit F(p) = 0 in object space with a
-// domain (the part of it the scene object is). A camera ray is mapped into object space, marched
-// over the object's bounding sphere to bracket the first sign change of F inside the domain, and
-// the root refined by bisection; the normal is grad F, mapped back by the inverse transpose.
+// domain (the part of it the scene object is), or a bicubic patch P(s, t). A camera ray is mapped
+// into object space; for F it is marched over the object's bounding sphere to bracket the first
+// sign change of F inside the domain, and the root refined by bisection (normal: grad F); for a
+// patch, Newton's method on P(s, t) = o + t e from a grid of starts (normal: dP/ds x dP/dt).
+// Normals go back to camera space by the inverse transpose.
 #include "analytic_truth.hpp"
 
 #include <algorithm>
@@ -9,6 +11,7 @@
 #include <functional>
 #include <limits>
 #include <optional>
+#include <utility>
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
@@ -17,6 +20,7 @@
 #include "camera.hpp"
 #include "float_reference.hpp"
 #include "scene_types.hpp"
+#include "surfaces.hpp"
 
 namespace watkins {
 namespace {
@@ -31,6 +35,7 @@ struct Implicit {
 struct Surface {
   int object = 0;
   std::vector<Implicit> pieces;
+  std::vector<glm::dvec3> patch;  // 16 control points of a Bezier patch (else empty)
   glm::dvec3 centre{0.0};  // bounding sphere, object space
   double radius = 0;
   glm::dmat3 to_object{1.0}, normal_to_camera{1.0};
@@ -95,6 +100,43 @@ std::vector<Implicit> pieces_of(const SceneObject& o, glm::dvec3& centre, double
   return v;
 }
 
+// Nearest root t in [t0, t1] of P(s, t) = o + t e with s, t in [0, 1], by Newton from a 3 x 3 grid of
+// (s, t) starts (a bicubic sheet seen by one ray rarely has more roots than that); the object-space normal dP/ds x dP/dt comes with it. `accept` filters by depth.
+std::optional<std::pair<double, glm::dvec3>> patch_hit(const std::vector<glm::dvec3>& cp, const glm::dvec3& o,
+                                                       const glm::dvec3& e, double t0, double t1,
+                                                       const std::function<bool(double)>& accept) {
+  std::optional<std::pair<double, glm::dvec3>> best;
+  const double scale = glm::length(e) * (t1 - t0);
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) {
+      double u = (1 + 2 * a) / 6.0, v = (1 + 2 * b) / 6.0, t = 0;
+      glm::dvec3 p, ds, dt;
+      bezier_point(cp, u, v, p, ds, dt);
+      t = glm::dot(p - o, e) / glm::dot(e, e);
+      bool converged = false;
+      for (int it = 0; it < 30 && !converged; ++it) {
+        bezier_point(cp, u, v, p, ds, dt);
+        const glm::dvec3 f = p - (o + t * e);
+        if (glm::length(f) < 1e-12 * scale) {
+          converged = true;
+          break;
+        }
+        const glm::dmat3 jac(ds, dt, -e);  // columns: d/ds, d/dt, d/dt(ray)
+        if (std::fabs(glm::determinant(jac)) < 1e-300) break;
+        const glm::dvec3 step = glm::inverse(jac) * f;
+        u -= step.x, v -= step.y, t -= step.z;
+        if (!(std::fabs(u) < 4 && std::fabs(v) < 4)) break;  // diverging
+      }
+      const double tol = 1e-9;
+      if (!converged || u < -tol || u > 1 + tol || v < -tol || v > 1 + tol || t < t0 || t > t1 || !accept(t))
+        continue;
+      const glm::dvec3 n = glm::cross(ds, dt);
+      if (glm::length(n) == 0) continue;  // a degenerate corner has no normal
+      if (!best || t < best->first) best = std::make_pair(t, n);
+    }
+  return best;
+}
+
 // First hit of the camera ray t*d (t > 0) on the surface, in camera-space distance along d.
 struct Hit {
   double t = std::numeric_limits<double>::infinity();
@@ -142,6 +184,15 @@ std::optional<Hit> cast(const Surface& s, const glm::dvec3& d, double near, doub
       ta = tb, fa = fb;
     }
   }
+  if (!s.patch.empty()) {
+    const auto accept = [&](double t) { return t * d.z >= near && t * d.z < far; };
+    if (const auto h = patch_hit(s.patch, o, e, t0, t1, accept); h && (!best || h->first < best->t)) {
+      Hit hit;
+      hit.t = h->first;
+      hit.normal = glm::normalize(s.normal_to_camera * h->second);
+      best = hit;
+    }
+  }
   return best;
 }
 
@@ -165,7 +216,12 @@ AnalyticTruth render_analytic_truth(const BuiltScene& scene) {
     Surface s;
     s.object = static_cast<int>(i);
     s.pieces = pieces_of(o, s.centre, s.radius);
-    if (s.pieces.empty()) {
+    if (o.type == ObjectType::BezierPatch) {
+      s.patch = o.control_points;  // bounding sphere of the control points (the convex hull holds the patch)
+      for (const glm::dvec3& c : s.patch) s.centre += c / 16.0;
+      for (const glm::dvec3& c : s.patch) s.radius = std::max(s.radius, glm::length(c - s.centre));
+    }
+    if (s.pieces.empty() && s.patch.empty()) {
       ++out.without_truth;
       continue;
     }
@@ -178,7 +234,7 @@ AnalyticTruth render_analytic_truth(const BuiltScene& scene) {
   }
   out.surfaces = static_cast<int>(surfaces.size());
   if (surfaces.empty()) {
-    out.unavailable = "no object of the scene has an exact surface here (sphere, cone, torus, hypar)";
+    out.unavailable = "no object of the scene has an exact surface here (sphere, cone, torus, hypar, patch)";
     return out;
   }
   const int W = scene.width, H = scene.height;

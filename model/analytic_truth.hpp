@@ -5,9 +5,9 @@
 // shades or normals), apart from quantization (fixed point against the double reference).
 //
 // Defined when the scene's illumination is eq. (3): Phong shading, or Gouraud shading with the
-// "phong" vertex rule. Surfaces with a closed form here: sphere, cone (side and base cap),
-// quarter torus, hyperbolic paraboloid; meshes, Bezier patches and screen-space polygons have no
-// truth (their pixels are left uncovered and so are not compared).
+// "phong" vertex rule. Exact surfaces: sphere, cone (side and base cap), quarter torus,
+// hyperbolic paraboloid, bicubic Bezier patch; meshes and screen-space polygons have no truth
+// (their pixels are left uncovered and so are not compared).
 #pragma once
 
 #include <string>

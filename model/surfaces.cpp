@@ -152,6 +152,25 @@ void bernstein(double t, double b[4], double db[4]) {
   db[0] = -3 * u * u; db[1] = 3 * u * u - 6 * t * u; db[2] = 6 * t * u - 3 * t * t; db[3] = 3 * t * t;
 }
 
+}  // namespace
+
+void bezier_point(const std::vector<glm::dvec3>& cp, double s, double t, glm::dvec3& p, glm::dvec3& ds,
+                  glm::dvec3& dt) {
+  double bs[4], dbs[4], bt[4], dbt[4];
+  bernstein(s, bs, dbs);
+  bernstein(t, bt, dbt);
+  p = ds = dt = glm::dvec3(0.0);
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) {
+      const glm::dvec3& c = cp[std::size_t(4 * i + j)];
+      p += bt[i] * bs[j] * c;
+      ds += bt[i] * dbs[j] * c;
+      dt += dbt[i] * bs[j] * c;
+    }
+}
+
+namespace {
+
 // Bicubic Bezier: control_points[4*row + col]; s runs along a row, t from row to row. The
 // normal is dP/ds x dP/dt: rows listed top first, left to right, as seen from the front,
 // give a patch facing the viewer (left-handed world).
@@ -159,17 +178,7 @@ IndexedMesh bezier(const SceneObject& o) {
   IndexedMesh m;
   const auto& cp = o.control_points;
   auto eval = [&](double s, double t, glm::dvec3& p, glm::dvec3& ds, glm::dvec3& dt) {
-    double bs[4], dbs[4], bt[4], dbt[4];
-    bernstein(s, bs, dbs);
-    bernstein(t, bt, dbt);
-    p = ds = dt = glm::dvec3(0.0);
-    for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j) {
-        const glm::dvec3& c = cp[4 * i + j];
-        p += bt[i] * bs[j] * c;
-        ds += bt[i] * dbs[j] * c;
-        dt += dbt[i] * bs[j] * c;
-      }
+    bezier_point(cp, s, t, p, ds, dt);
   };
   grid(m, o.u, o.v, false, false, o.triangles, [&](double s, double t, glm::dvec3& p, glm::dvec3& n) {
     glm::dvec3 ds, dt, q;

@@ -31,4 +31,9 @@ struct IndexedMesh {
 // Sphere, cone, quarter_torus, hyperbolic_paraboloid, bezier_patch. Object space, untransformed.
 IndexedMesh tessellate_surface(const SceneObject& o);
 
+// Bicubic Bezier patch (control_points[4*row + col]; s along a row, t from row to row): the point
+// and its partial derivatives dP/ds, dP/dt at (s, t). Shared by the tessellation and the analytic truth.
+void bezier_point(const std::vector<glm::dvec3>& cp, double s, double t, glm::dvec3& p, glm::dvec3& ds,
+                  glm::dvec3& dt);
+
 }  // namespace watkins

@@ -109,3 +109,50 @@ TEST(AnalyticTruth, PhongCostsLessThanGouraudAndBothFallWithTessellation) {
     last_g = g.mean_abs, last_p = p.mean_abs;
   }
 }
+
+// A flat patch (control points on the plane Z = 4, a 2 x 2 square) is its own truth: every pixel
+// inside its image, the square |x - 100|, |y - 100| < 100 * 1/4 = 25 pixels, has N = -Z, so with
+// L = E = -Z the level is 255 (0.5 (0.75 + 0.25) + 0.5) = 255 and outside nothing is covered.
+TEST(AnalyticTruth, FlatBezierPatchByHand) {
+  std::string cps;
+  for (int row = 0; row < 4; ++row)
+    for (int col = 0; col < 4; ++col)
+      cps += std::string(cps.empty() ? "" : ", ") + "[" + std::to_string(-1 + col * 2.0 / 3) + ", " +
+             std::to_string(1 - row * 2.0 / 3) + ", 4]";
+  const std::string text = R"({"screen": {"width": 200, "height": 200}, "camera": {"type": "gouraud", "focal": 1},
+    "light": {"type": "eye"}, "shading": {"mode": "phong", "cull_backfaces": false},
+    "materials": {"m": {"color": [0.5, 0.5, 0.5], "d": 0.25, "W": 0.5, "n": 20}},
+    "objects": [{"type": "bezier_patch", "u": 4, "v": 4, "material": "m", "control_points": [)" + cps + "]}]}";
+  const BuiltScene s = load_scene_text(text, "flat", ".");
+  const AnalyticTruth t = render_analytic_truth(s);
+  ASSERT_TRUE(t.unavailable.empty()) << t.unavailable;
+  int covered = 0, wrong = 0;
+  for (int y = 0; y < 200; ++y)
+    for (int x = 0; x < 200; ++x) {
+      const double dx = std::fabs(x + 0.5 - 100), dy = std::fabs(y + 0.5 - 100);
+      const bool in = t.image.is_covered(x, y);
+      covered += in;
+      if (std::fabs(dx - 25) > 0.01 && std::fabs(dy - 25) > 0.01) wrong += in != (dx < 25 && dy < 25);
+      if (in) EXPECT_EQ(t.image.at(x, y)[0], 255) << x << "," << y;
+    }
+  EXPECT_EQ(wrong, 0);
+  EXPECT_EQ(covered, 50 * 50);
+}
+
+// The shipped patch (16 x 16 grid elements) with Phong's illumination against the exact patch
+// (Newton on P(s, t) per pixel). Measured over 14960 pixels: Gouraud max 93, mean 1.034; Phong
+// max 11, mean 0.304.
+TEST(AnalyticTruth, ShippedPatch) {
+  BuildOptions phong, gouraud;
+  phong.shading = ShadingMode::Phong;
+  gouraud.shading = ShadingMode::Gouraud;
+  gouraud.rule = ShadingRule::Phong;
+  const ImageError p = algorithm_error(load_scene(WATKINS_SOURCE_DIR "/scenes/patch.json", phong));
+  const ImageError g = algorithm_error(load_scene(WATKINS_SOURCE_DIR "/scenes/patch.json", gouraud));
+  EXPECT_GT(p.compared, 14000);
+  EXPECT_EQ(p.compared, g.compared);
+  EXPECT_LE(g.max_abs, 96);
+  EXPECT_LT(g.mean_abs, 1.1);
+  EXPECT_LE(p.max_abs, 12);
+  EXPECT_LT(p.mean_abs, 0.33);
+}
