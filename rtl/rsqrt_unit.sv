@@ -21,12 +21,13 @@ module rsqrt_unit #(
   localparam int Sh4 = (W + 1) + 2 * T - G;          // m'c * y0^2 down to G fraction bits
   localparam int Sh5 = T + G + 1 - F;                // y0 * u / 2 down to F fraction bits
 
-  // floor(sqrt(v)) bit by bit, exactly Normalizer::isqrt.
+  // floor(sqrt(v)) bit by bit, exactly Normalizer::isqrt for v < 2^34 (the seeds need v < 2^32:
+  // v = 2^(2T+P+3) / (2 idx + 1) with idx >= 2^(P-2)); fewer steps keep elaboration quick.
   function automatic logic [63:0] isqrt(input logic [63:0] v);
     logic [63:0] rem, root, b;
     rem  = v;
     root = '0;
-    for (int i = 31; i >= 0; i--) begin
+    for (int i = 16; i >= 0; i--) begin
       b = 64'd1 << (2 * i);
       if (rem >= root + b) begin
         rem  = rem - (root + b);
@@ -55,7 +56,8 @@ module rsqrt_unit #(
   // synthesis maps it to block RAM (iCE40: 4 x SB_RAM40_4K) instead of a 15-bit 1024-way mux.
   logic [T:0] seed_rom [1 << P];
   initial begin
-    for (int r = 0; r < (1 << P); r++) seed_rom[r] = (r < (1 << (P - 2))) ? '0 : seed_fn(r);
+    for (int r = 0; r < (1 << (P - 2)); r++) seed_rom[r] = '0;
+    for (int r = 1 << (P - 2); r < (1 << P); r++) seed_rom[r] = seed_fn(r);
   end
 
   // ---- stage 1: even-shift normalization m' = (m << 2j) / 2^MBits in [1/4, 1) -------------

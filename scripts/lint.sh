@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Lint and synthesis check of rtl/: Verilator --lint-only -Wall on every file (package first) and
 # on watkins_top in both shading modes (Phong = 0 and 1), then yosys 0.23: read,
-# hierarchy/proc/check of both tops; with --synth a full synth_ice40 of the Gouraud top with small
+# hierarchy/proc/check of the Phong top (every module) at the synthesis sizes; with --synth a full synth_ice40 of the Gouraud top with small
 # buffers (MaxWidth, MaxActiveEdges) and of the two Phong blocks (normalizer, phong_shader) on their
 # own, so every module is synthesized in a few minutes; --synth-all also synthesizes the whole
 # Phong top (5 more minutes). Fails on any
@@ -42,9 +42,10 @@ yosys_check() {  # $1: label, $2: script
 }
 
 READ="read_verilog -sv $PKG ${SRCS[*]}"
-echo "== yosys read + hierarchy/proc/check (default parameters, Phong = 0 and 1)"
-yosys_check elab "$READ; hierarchy -check -top watkins_top; proc; check -assert"
-yosys_check elab_phong "$READ; hierarchy -check -top watkins_top -chparam Phong 1; proc; check -assert"
+SMALL="-chparam MaxWidth $SYNTH_WIDTH -chparam MaxActiveEdges $SYNTH_EDGES"
+echo "== yosys read + hierarchy/proc/check (Phong top: every module; MaxWidth=$SYNTH_WIDTH, MaxActiveEdges=$SYNTH_EDGES)"
+# The buffers as synthesis sizes them (Verilator above lints the defaults): a quick check.
+yosys_check elab "$READ; hierarchy -check -top watkins_top $SMALL -chparam Phong 1; proc; check -assert"
 echo "   clean"
 
 synth() {  # $1: label, $2: top, $3: hierarchy -chparam options
@@ -57,11 +58,10 @@ synth() {  # $1: label, $2: top, $3: hierarchy -chparam options
   sed -n '/Number of cells/,/^$/p' "$LOG/$1.txt" | head -30
 }
 if [[ "${1:-}" == --synth* ]]; then
-  small="-chparam MaxWidth $SYNTH_WIDTH -chparam MaxActiveEdges $SYNTH_EDGES"
-  synth gouraud watkins_top "$small"
+  synth gouraud watkins_top "$SMALL"
   synth normalizer normalizer ""
   synth phong_shader phong_shader ""
-  [[ "$1" == --synth-all ]] && synth phong watkins_top "$small -chparam Phong 1"
+  [[ "$1" == --synth-all ]] && synth phong watkins_top "$SMALL -chparam Phong 1"
   echo "   clean"
 fi
 echo "lint.sh: OK"
