@@ -34,6 +34,7 @@
   X(PolyIdBits, 16, "polygon id bits: at most 65536 polygons per frame")                         \
   X(EdgeIdBits, 18, "edge id bits: position in the edge stream (4 edges per polygon at most)")   \
   X(MaxActiveEdges, 64, "default capacity of the active-edge list")                              \
+  X(DefaultMaxWidth, 1024, "default line-buffer width of watkins_top in pixels (MaxWidth)")      \
   X(NormalInBits, 18, "normalizer input: interpolated Nx, Ny, Nz, signed, FracBits fraction bits")  \
   X(UnitBits, 16, "unit normal component out of the normalizer: signed Q2.14")                   \
   X(UnitFracBits, 14, "fraction bits of a unit normal component (1.0 = 16384)")             \
@@ -60,6 +61,8 @@ constexpr int ShadeMax = (1 << ShadeBits) - 1;
 constexpr long long DepthMax = (1LL << DepthBits) - 1;  // "farthest" representable depth
 constexpr int SubPixelToFrac = FracBits - SubPixelBits;  // shift from 1/16 pixel to X channel
 constexpr int ShadeChannels = 3;                         // R, G, B after X and Z
+// $bits(watkins_pkg::edge_t): y0, n, poly, material, then value and slope of every channel.
+constexpr int EdgeRecordBits = 2 * LineBits + PolyIdBits + MaterialIdBits + 2 * NumChannels * ChannelBits;
 
 static_assert(FracBits >= SubPixelBits, "X channel must hold the vertex sub-pixel bits");
 static_assert(DepthBits + FracBits + 2 <= ChannelBits, "depth (plus sign and guard) must fit");

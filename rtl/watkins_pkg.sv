@@ -25,6 +25,7 @@ package watkins_pkg;
   localparam int PolyIdBits = 16;  // polygon id bits: at most 65536 polygons per frame
   localparam int EdgeIdBits = 18;  // edge id bits: position in the edge stream (4 edges per polygon at most)
   localparam int MaxActiveEdges = 64;  // default capacity of the active-edge list
+  localparam int DefaultMaxWidth = 1024;  // default line-buffer width of watkins_top in pixels (MaxWidth)
   localparam int NormalInBits = 18;  // normalizer input: interpolated Nx, Ny, Nz, signed, FracBits fraction bits
   localparam int UnitBits = 16;  // unit normal component out of the normalizer: signed Q2.14
   localparam int UnitFracBits = 14;  // fraction bits of a unit normal component (1.0 = 16384)
@@ -43,6 +44,7 @@ package watkins_pkg;
   localparam int ShadeMax = 255;  // largest 8-bit level
   localparam int SubPixelToFrac = 12;  // FracBits - SubPixelBits
   localparam int ShadeChannels = 3;  // R, G, B
+  localparam int EdgeRecordBits = 466;  // $bits(edge_t)
 
   // One channel value or slope: signed, FracBits fraction bits.
   typedef logic signed [ChannelBits-1:0] channel_t;
