@@ -11,7 +11,7 @@ function(watkins_rtl_unit bench)
   add_executable(${bench} ${CMAKE_CURRENT_SOURCE_DIR}/${bench}.cpp)
   target_include_directories(${bench} PRIVATE ${CMAKE_CURRENT_SOURCE_DIR} ${CMAKE_SOURCE_DIR}/tests/rtl
                              ${CMAKE_SOURCE_DIR}/testbench)
-  target_link_libraries(${bench} PRIVATE watkins_model GTest::gtest_main)
+  target_link_libraries(${bench} PRIVATE watkins_prepare GTest::gtest_main)
   target_compile_options(${bench} PRIVATE -O3)
   set(srcs ${CMAKE_SOURCE_DIR}/rtl/watkins_pkg.sv)
   foreach(s ${U_SOURCES})

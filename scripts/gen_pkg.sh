@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# Regenerates rtl/watkins_pkg.sv from model/formats.hpp (the one source of the formats).
+# Regenerates rtl/watkins_pkg.sv from model/twins/formats.hpp (the one source of the formats).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-g++ -std=c++17 -I"$root/model" "$root/sim/gen_pkg.cpp" -o "$tmp/gen_pkg"
+g++ -std=c++17 -I"$root/model/twins" "$root/sim/gen_pkg.cpp" -o "$tmp/gen_pkg"
 "$tmp/gen_pkg" > "$root/rtl/watkins_pkg.sv"
 echo "wrote rtl/watkins_pkg.sv"

@@ -7,7 +7,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build="${WATKINS_BUILD:-$root/build}"
-"$root/scripts/setup.sh"
+"$root/scripts/setup.sh" --main
 mkdir -p "$root/out"
 rtl=()
 "$build/watkins" render --help | grep -q -- '--rtl' && rtl=(--rtl)

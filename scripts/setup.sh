@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # Installs every Debian package Watkins needs (skipping what is present) and builds it.
-#   scripts/setup.sh [--no-build]
+#   scripts/setup.sh [--no-build]           packages only
+#   scripts/setup.sh --main                 the main job only: `watkins` and its Verilated tops
+#                                           (no tests, no speed harnesses)
+#   scripts/setup.sh                        everything: tests, benches, speed harnesses
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 
@@ -27,5 +30,10 @@ fi
 
 [ "${1:-}" = "--no-build" ] && exit 0
 build="${WATKINS_BUILD:-$root/build}"
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$build" -j"${WATKINS_JOBS:-2}"
+if [ "${1:-}" = "--main" ]; then
+  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DWATKINS_TESTS=OFF -DWATKINS_RTL_CC_HARNESS=OFF >/dev/null
+  cmake --build "$build" -j"${WATKINS_JOBS:-2}" --target watkins
+else
+  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DWATKINS_TESTS=ON -DWATKINS_RTL_CC_HARNESS=ON >/dev/null
+  cmake --build "$build" -j"${WATKINS_JOBS:-2}"
+fi

@@ -6,7 +6,7 @@
 #include <cstdio>
 
 #include "float_reference.hpp"
-#include "pipeline.hpp"
+#include "watkins_top.hpp"
 #include "prepare.hpp"
 #include "scene.hpp"
 
@@ -41,7 +41,7 @@ int main(int argc, char** argv) {
     using namespace watkins;
     const BuiltScene scene = load_scene_or_default(scene_path);
     const PreparedScene prepared = prepare(scene, PrepareOptions{1 << 20});
-    Pipeline pipe(1 << 20);
+    WatkinsTop pipe(1 << 20);
     pipe.render(prepared);
     const long long fragments = pipe.stats().fragments;
     const double pixels = double(scene.width) * scene.height;

@@ -9,7 +9,7 @@
 #include <fstream>
 
 #include "edge_packing.hpp"
-#include "pipeline.hpp"
+#include "watkins_top.hpp"
 #include "prepare.hpp"
 #include "scene.hpp"
 
@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
     using namespace watkins;
     const BuiltScene scene = load_scene_or_default(scene_path);
     const PreparedScene p = prepare(scene);
-    const Image img = Pipeline().render(p);
+    const Image img = WatkinsTop().render(p);
     std::ofstream edges(dir + "/edges.hex"), pixels(dir + "/pixels.hex"), frame(dir + "/frame.hex");
     if (!edges || !pixels || !frame) throw std::runtime_error(dir + ": cannot write the hex files");
     for (const auto& e : p.edges) {

@@ -12,9 +12,10 @@
 
 #include "analytic_truth.hpp"
 #include "float_reference.hpp"
-#include "pipeline.hpp"
+#include "image_io.hpp"
 #include "prepare.hpp"
 #include "scene.hpp"
+#include "watkins_top.hpp"
 
 // ==== RTL co-simulation (--rtl): owned by the testbench; see testbench/rtl_bench.hpp ==========
 #ifdef WATKINS_HAVE_RTL
@@ -212,7 +213,7 @@ int render(const RenderArgs& a) {
   Image result;          // the fixed model's image, or the RTL's with --rtl
   int rtl_status = 0;  // --rtl: 1 when the RTL differs from the model
   if (a.model == "fixed") {
-    Pipeline pipe(a.max_active_edges);
+    WatkinsTop pipe(a.max_active_edges);
     const auto t2 = Clock::now();
     result = pipe.render(prepared);
     const double t_model = seconds_since(t2);

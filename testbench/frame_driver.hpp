@@ -30,7 +30,7 @@
 #include <vector>
 
 #include "edge_packing.hpp"
-#include "pipeline.hpp"
+#include "watkins_top.hpp"
 #include "rtl_bench.hpp"
 #include "scene.hpp"
 #include "stage_checker.hpp"
@@ -541,7 +541,7 @@ inline void expected_images(const std::vector<const PreparedScene*>& scenes, con
         stages[f] = model_stage_streams(s, have ? nullptr : &rendered[f]);
         if (opt.edit_stage_streams) opt.edit_stage_streams(static_cast<int>(f), stages[f]);
       } else {
-        rendered[f] = Pipeline(fmt::MaxActiveEdges).render(s);
+        rendered[f] = WatkinsTop(fmt::MaxActiveEdges).render(s);
       }
       if (!have) use[f] = &rendered[f];
     } catch (const SceneError& e) {

@@ -19,7 +19,7 @@
 
 namespace watkins::tb {
 
-// The model's internal stage streams of one frame, item by item (Pipeline's
+// The model's internal stage streams of one frame, item by item (WatkinsTop's
 // PipelineObserver), as the bench expects them at the four internal stage boundaries of
 // watkins_top. Per stage, the items of line y are followed by an end-of-line marker
 // (eol, no payload), for y = 0 .. height-1. `index` numbers the items of a line from 0 (the
@@ -69,7 +69,7 @@ struct RtlOptions {
   bool check_stages = true;
   // Sparse output mode (sparse_i = 1): the RTL emits only the covered pixels with their (x, y);
   // the sink assembles the image from them (background elsewhere) and checks every beat, in
-  // order, against the model's sparse stream (sparse_stream() in model/pipeline.hpp).
+  // order, against the model's sparse stream (sparse_stream() in model/twins/watkins_top.hpp).
   bool sparse = false;
   // Per-frame mode for run_rtl_frames (frame f uses sparse_frames[f] when f < size, else sparse).
   std::vector<bool> sparse_frames;

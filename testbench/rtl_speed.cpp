@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "pipeline.hpp"
+#include "watkins_top.hpp"
 #include "prepare.hpp"
 #include "rtl_bench.hpp"
 #include "scene.hpp"
@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
     }
     const BuiltScene scene = load_scene_or_default(scene_path, build);
     const PreparedScene prepared = prepare(scene);
-    const Image expected = Pipeline().render(prepared);
+    const Image expected = WatkinsTop().render(prepared);
     tb::RtlResult warm = tb::run_rtl(prepared, opt, &expected);  // also builds the bench
     long long cycles = 0;
     double wall = 0;

@@ -3,7 +3,7 @@
 // (Phong: normalizer + phong_shader; Gouraud: a wire) -> scanline_buffer), read from the
 // Verilated model's public signals (the /*verilator public_flat_rd*/ ae_*, sg_*, fr_*, sh_* of
 // rtl/watkins_top.sv), are compared transfer by
-// transfer with the model's stage streams (Pipeline's PipelineObserver). The first
+// transfer with the model's stage streams (WatkinsTop's PipelineObserver). The first
 // difference names its stage, line and item, both values, and the pixels it affects; the pixel
 // check stays the last one.
 //
@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "formats.hpp"
-#include "pipeline.hpp"
+#include "watkins_top.hpp"
 #include "rtl_bench.hpp"
 #include "segment_interpolator.hpp"
 
@@ -151,7 +151,7 @@ inline StageStreams model_stage_streams(const PreparedScene& scene, Image* image
     s.shaded.push_back(s.fragments.back());
     kf = 0;
   };
-  Pipeline pipe(fmt::MaxActiveEdges);
+  WatkinsTop pipe(fmt::MaxActiveEdges);
   Image img = pipe.render(scene, o);
   if (image) *image = std::move(img);
   return s;

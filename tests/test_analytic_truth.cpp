@@ -1,4 +1,4 @@
-// The analytic truth (model/analytic_truth.hpp): exact surfaces ray-cast per pixel with Phong's
+// The analytic truth (model/reference/analytic_truth.hpp): exact surfaces ray-cast per pixel with Phong's
 // eq. (3). Checks the truth itself on a sphere worked by hand, then what it is for: the double
 // reference against the truth measures the algorithm (Gouraud vs Phong, tessellation).
 // Bounds were measured first (figures in the comments) and are asserted with a margin.

@@ -1,4 +1,4 @@
-// The SystemVerilog package must be exactly what the generator prints from model/formats.hpp.
+// The SystemVerilog package must be exactly what the generator prints from model/twins/formats.hpp.
 #include <gtest/gtest.h>
 
 #include <array>

@@ -93,7 +93,7 @@ TEST(HandWorked, VertexPropertyHolds) {
   for (int c = 0; c < 3; ++c) EXPECT_EQ(img.at(2, 5)[c], std::lround(sa[c])) << c;
   // Also at full channel precision: the first fragment of line 5 has exactly A's values.
   const PreparedScene p = prepare(s);
-  Pipeline pipe;
+  WatkinsTop pipe;
   bool seen = false;
   pipe.render(p, [&](int y, const Fragment& f, bool) {
     if (y == 5 && f.x == 2) {

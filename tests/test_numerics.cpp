@@ -60,7 +60,7 @@ struct InclinedPlane {
 double max_depth_error(bool eq1) {
   const BuiltScene s = InclinedPlane::scene(eq1);
   const PreparedScene p = prepare(s);
-  Pipeline pipe;
+  WatkinsTop pipe;
   double worst = 0;
   pipe.render(p, [&](int y, const Fragment& f, bool) {
     const double z = InclinedPlane::exact_z(f.x + 0.5, y + 0.5);

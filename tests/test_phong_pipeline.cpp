@@ -74,7 +74,7 @@ TEST(PhongPipeline, AntipodalNormalsGiveCpDAtTheNullNormal) {
   const BuiltScene s = antipodal_normals_scene();
   int nulls = 0;
   const PreparedScene p = prepare(s);
-  Pipeline pipe;
+  WatkinsTop pipe;
   const Image img = pipe.render(p, [&](int, const Fragment& f, bool) {
     if (f.normal[0] == 0 && f.normal[1] == 0 && f.normal[2] == 0) {
       ++nulls;
@@ -305,7 +305,7 @@ TEST(PhongScene, SeventeenMaterialsExceedTheMaterialId) {
   EXPECT_EQ(s.materials.size(), 17u);
   EXPECT_EQ(error_of([&] { prepare(s, PrepareOptions{1024}); }),
             "s.json: scene needs 17 materials; the material id is 4 bits and holds 16 (merge materials, or raise "
-            "MaterialIdBits in model/formats.hpp and the RTL to match)");
+            "MaterialIdBits in model/twins/formats.hpp and the RTL to match)");
   // Gouraud does not carry material ids: the same scene prepares.
   BuildOptions g;
   g.shading = ShadingMode::Gouraud;

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "float_reference.hpp"
-#include "pipeline.hpp"
+#include "watkins_top.hpp"
 #include "prepare.hpp"
 
 namespace {
@@ -35,7 +35,7 @@ TEST_P(ShippedScene, RendersWithinErrorBoundsOfTheDoubleReference) {
   const BuiltScene scene = load_scene(GetParam());
   ASSERT_FALSE(scene.polygons.empty());
   const PreparedScene prepared = prepare(scene);  // default capacities: throws if exceeded
-  Pipeline pipe;
+  WatkinsTop pipe;
   const Image fixed = pipe.render(prepared);
   EXPECT_GT(pipe.stats().fragments, 1000);
   const Image ref = render_float_reference(scene);
@@ -60,7 +60,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, ShippedScene, ::testing::ValuesIn(shipped_scene
 TEST(DefaultScene, IsEmbeddedAndRenders) {
   using namespace watkins;
   const BuiltScene scene = load_scene_text(default_scene_text(), "<default>", WATKINS_SOURCE_DIR "/scenes");
-  Pipeline pipe;
+  WatkinsTop pipe;
   const Image img = pipe.render(prepare(scene));
   long long covered = 0;
   for (auto c : img.covered) covered += c;

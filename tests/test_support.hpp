@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "float_reference.hpp"
-#include "pipeline.hpp"
+#include "watkins_top.hpp"
 #include "prepare.hpp"
 #include "scene.hpp"
 
@@ -37,7 +37,7 @@ inline BuiltScene screen(int w, int h, std::vector<ScreenPolygon> polys) {
 inline Image render_fixed(const BuiltScene& s, std::vector<int>* hits = nullptr,
                           PipelineStats* stats = nullptr, int max_active_edges = 1024) {
   const PreparedScene p = prepare(s, PrepareOptions{max_active_edges});
-  Pipeline pipe(max_active_edges);
+  WatkinsTop pipe(max_active_edges);
   if (hits) hits->assign(std::size_t(s.width) * s.height, 0);
   Image img = pipe.render(p, [&](int y, const Fragment& f, bool) {
     if (hits) ++(*hits)[std::size_t(y) * s.width + f.x];

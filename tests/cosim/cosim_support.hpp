@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "pipeline.hpp"
+#include "watkins_top.hpp"
 #include "prepare.hpp"
 #include "rtl_bench.hpp"
 #include "scene.hpp"
@@ -136,7 +136,7 @@ inline void check_shipped_scene(const std::string& name, const BuildOptions& opt
     GTEST_SKIP() << "the scene does not fit the hardware: " << e.what();
   }
   if (prepared.width > rtl_max_width()) GTEST_SKIP() << "wider than the RTL line buffer";
-  const Image model = Pipeline().render(prepared);
+  const Image model = WatkinsTop().render(prepared);
   // Full speed first, then gaps and stalls, then all-stall bursts.
   // Then sparse output mode at full speed and under gaps and stalls.
   RtlOptions patterns[] = {{1, 0.0, 0.0}, {2, 0.25, 0.3}, {3, 0.1, 0.02, 300}, {4, 0.0, 0.0}, {5, 0.2, 0.3, 20}};

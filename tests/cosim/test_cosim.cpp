@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "pipeline.hpp"
+#include "watkins_top.hpp"
 #include "prepare.hpp"
 #include "rtl_bench.hpp"
 #include "cosim_support.hpp"
@@ -109,7 +109,7 @@ TEST(Cosim, SparseEmptyFrameIsOneTerminatingBeat) {
   s.background[1] = 8;
   s.background[2] = 7;
   const PreparedScene p = prepare(s);
-  const Image model = Pipeline().render(p);
+  const Image model = WatkinsTop().render(p);
   const std::vector<SparseBeat> beats = sparse_stream(model);
   ASSERT_EQ(beats.size(), 1u);
   EXPECT_EQ(beats[0].x, 39);
@@ -141,7 +141,7 @@ TEST(Cosim, SparseLastLineUncovered) {
   t.v = {{5, 4, 0.3, 0, {200, 10, 10}}, {25, 6, 0.5, 0, {10, 200, 10}}, {12, 14, 0.7, 0, {10, 10, 200}}};
   s.polygons = {t};
   const PreparedScene p = prepare(s);
-  const Image model = Pipeline().render(p);
+  const Image model = WatkinsTop().render(p);
   const std::vector<SparseBeat> beats = sparse_stream(model);
   ASSERT_GE(beats.size(), 2u);
   EXPECT_FALSE(beats.back().covered);
@@ -161,7 +161,7 @@ TEST(Cosim, SparseLastLineUncovered) {
 
 TEST(Cosim, SparseCheckerNamesTheFirstMismatchingBeat) {
   const PreparedScene p = prepare(two_triangles(20, 10, 0.0));
-  Image want = Pipeline().render(p);
+  Image want = WatkinsTop().render(p);
   int fx = -1, fy = -1;  // the first covered pixel from (7, 3) on
   for (int k = 3 * 20 + 7; k < 20 * 10 && fx < 0; ++k)
     if (want.covered[std::size_t(k)]) fx = k % 20, fy = k / 20;
@@ -199,7 +199,7 @@ TEST(Cosim, FramesBackToBackSwitchingModes) {
     for (std::size_t f = 0; f < scenes.size(); ++f) {
       EXPECT_TRUE(r.frames[f].complete) << "frame " << f;
       EXPECT_EQ(r.frames[f].sparse, modes[f]) << "frame " << f;
-      const Image m = Pipeline().render(*scenes[f]);
+      const Image m = WatkinsTop().render(*scenes[f]);
       EXPECT_EQ(r.frames[f].image.rgb, m.rgb) << "frame " << f;
       EXPECT_EQ(r.frames[f].image.covered, m.covered) << "frame " << f;
       if (modes[f]) EXPECT_EQ(r.frames[f].pixels, static_cast<long long>(sparse_stream(m).size())) << "frame " << f;
@@ -279,7 +279,7 @@ TEST(Cosim, CheckerNamesTheFirstMismatchingPixel) {
   // The checker itself: an expected image with two pixels changed must give exactly those two
   // mismatches, the first one named with its (x, y) and both values.
   const PreparedScene p = prepare(two_triangles(20, 10, 0.0));
-  Image want = Pipeline().render(p);
+  Image want = WatkinsTop().render(p);
   want.at(7, 3)[1] ^= 0x10;
   want.covered[std::size_t(9) * 20 + 19] ^= 1;
   const RtlOptions o{51, 0.2, 0.2};
@@ -321,7 +321,7 @@ long long model_stage_items(const PreparedScene& p) {
   o.segments_end = [&](int) { ++n; };
   o.fragment = [&](int, const Fragment&, bool) { n += 2; };  // interpolator and shading outputs
   o.fragments_end = [&](int) { n += 2; };
-  Pipeline().render(p, o);
+  WatkinsTop().render(p, o);
   return n;
 }
 

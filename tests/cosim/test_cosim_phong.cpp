@@ -12,7 +12,7 @@
 
 #include "cosim_support.hpp"
 #include "phong_hard_cases.hpp"
-#include "pipeline.hpp"
+#include "watkins_top.hpp"
 #include "prepare.hpp"
 #include "rtl_bench.hpp"
 #include "scene.hpp"
@@ -44,7 +44,7 @@ PreparedScene as_phong_records(PreparedScene p) {
 
 TEST(PhongCosim, DatapathOnArbitraryNormalRecords) {
   const PreparedScene p = as_phong_records(prepare(load_scene_or_default("")));
-  const Image want = Pipeline().render(p);
+  const Image want = WatkinsTop().render(p);
   for (int k = 0; k < 4; ++k) {
     RtlOptions o;
     o.seed = 11 + k;

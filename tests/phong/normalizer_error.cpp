@@ -1,4 +1,4 @@
-// Error figures of the normalizer model (model/normalizer.hpp) against double precision:
+// Error figures of the normalizer model (model/twins/normalizer.hpp) against double precision:
 //  (a) the inverse square root over every mantissa m' at RsqrtMantBits (exhaustive), relative
 //      error of y against 1/sqrt(m'c) and against 1/sqrt of every m' the mantissa stands for;
 //  (b) the full normalizer over every exponent class (component magnitudes 2^e, e = 0..17),
@@ -57,16 +57,16 @@ int main(int argc, char** argv) {
   // (a) inverse square root, every mantissa.
   double rel_c = 0, rel_any = 0;
   std::uint64_t mants = 0;
-  for (std::uint32_t mant = Normalizer::MantLo; mant < Normalizer::MantHi; ++mant, ++mants) {
-    const double y = std::ldexp(double(Normalizer::rsqrt_mant(mant)), -Normalizer::F);
-    const double lo = std::ldexp(double(mant), -Normalizer::W);       // m' range of this mantissa
-    const double hi = std::ldexp(double(mant) + 1, -Normalizer::W);
-    const double c = std::ldexp(2.0 * mant + 1, -(Normalizer::W + 1));
+  for (std::uint32_t mant = RsqrtUnit::MantLo; mant < RsqrtUnit::MantHi; ++mant, ++mants) {
+    const double y = std::ldexp(double(RsqrtUnit::rsqrt_mant(mant)), -Normalizer::F);
+    const double lo = std::ldexp(double(mant), -RsqrtUnit::W);       // m' range of this mantissa
+    const double hi = std::ldexp(double(mant) + 1, -RsqrtUnit::W);
+    const double c = std::ldexp(2.0 * mant + 1, -(RsqrtUnit::W + 1));
     rel_c = std::max(rel_c, std::fabs(y * std::sqrt(c) - 1));
     rel_any = std::max({rel_any, std::fabs(y * std::sqrt(lo) - 1), std::fabs(y * std::sqrt(hi) - 1)});
   }
   std::printf("inverse sqrt, %llu mantissas (every m' in [1/4,1) at %d bits; y depends on m' only):\n",
-              static_cast<unsigned long long>(mants), Normalizer::W);
+              static_cast<unsigned long long>(mants), RsqrtUnit::W);
   std::printf("  max rel error vs 1/sqrt(m'c) (table + Newton-Raphson)  %.3g = 2^%.2f\n", rel_c,
               std::log2(rel_c));
   std::printf("  max rel error vs 1/sqrt(m') over the truncated bits   %.3g = 2^%.2f\n", rel_any,

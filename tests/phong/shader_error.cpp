@@ -1,4 +1,4 @@
-// Error figures of the Phong shader model (model/phong_shader.hpp) against double precision on
+// Error figures of the Phong shader model (model/twins/phong_shader.hpp) against double precision on
 // the same quantized inputs (N, L, E in Q2.14, Cp, d, W, n as given): random unit normals from
 // the normalizer model, random and grazing light (N.L within a few degrees of 0), n = 0..255
 // (and every n = 1..128 in its own class), random Cp, d, W. The reference evaluates eq. 3 in

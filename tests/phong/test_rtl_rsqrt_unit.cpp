@@ -1,4 +1,4 @@
-// rtl/rsqrt_unit.sv against Normalizer::normalize_mantissa + rsqrt_mant, exhaustively: every
+// rtl/rsqrt_unit.sv against RsqrtUnit::normalize_mantissa + rsqrt_mant, exhaustively: every
 // mantissa m' at RsqrtMantBits bits for every even shift j that can hold it (the whole reachable
 // domain of the unit: for j >= 9 the 36-bit m has fewer bits than the mantissa, so only
 // mantissas with zero low bits exist), random bits below the mantissa, m = 0, and random
@@ -24,7 +24,7 @@ struct Bench {
   Stalls stalls{rng, 0};
   std::deque<std::uint64_t> pipe;  // m values in flight, one per advancing clock
   std::uint64_t checked = 0, bad = 0;
-  std::vector<bool> rows_seen = std::vector<bool>(1 << Normalizer::P, false);
+  std::vector<bool> rows_seen = std::vector<bool>(1 << RsqrtUnit::P, false);
 
   void push(std::uint64_t m) {
     while (stalls.stall()) {  // a held pipe must not move
@@ -42,9 +42,9 @@ struct Bench {
     if (pipe.size() == Latency) check(pipe.front());
   }
   void check(std::uint64_t m) {
-    const Normalizer::Mantissa mm = Normalizer::normalize_mantissa(m);
-    const std::uint32_t y = Normalizer::rsqrt_mant(mm.mant);
-    rows_seen[mm.mant >> (Normalizer::W - Normalizer::P)] = true;
+    const RsqrtUnit::Mantissa mm = RsqrtUnit::normalize_mantissa(m);
+    const std::uint32_t y = RsqrtUnit::rsqrt_mant(mm.mant);
+    rows_seen[mm.mant >> (RsqrtUnit::W - RsqrtUnit::P)] = true;
     ++checked;
     if (h.dut.y_o != y || h.dut.j_o != mm.j || h.dut.null_o != mm.null) {
       if (bad++ < 5)
@@ -63,16 +63,16 @@ TEST(RtlRsqrtUnit, EveryMantissaEveryShift) {
   Bench r;
   r.stalls.pct = 2;
   std::uint64_t count = 0;
-  constexpr int MBits = Normalizer::MBits;
-  for (int j = 0; j <= Normalizer::MaxJ; ++j) {
-    const int lost = std::max(0, 2 * j - (MBits - Normalizer::W));  // mantissa bits below m's LSB
-    for (std::uint64_t mant = Normalizer::MantLo; mant < Normalizer::MantHi; ++mant) {
+  constexpr int MBits = RsqrtUnit::MBits;
+  for (int j = 0; j <= RsqrtUnit::MaxJ; ++j) {
+    const int lost = std::max(0, 2 * j - (MBits - RsqrtUnit::W));  // mantissa bits below m's LSB
+    for (std::uint64_t mant = RsqrtUnit::MantLo; mant < RsqrtUnit::MantHi; ++mant) {
       if (mant & ((std::uint64_t{1} << lost) - 1)) continue;
-      const std::uint64_t low = r.rng() & ((std::uint64_t{1} << (MBits - Normalizer::W)) - 1);
-      const std::uint64_t mprime = (mant << (MBits - Normalizer::W)) | low;
+      const std::uint64_t low = r.rng() & ((std::uint64_t{1} << (MBits - RsqrtUnit::W)) - 1);
+      const std::uint64_t mprime = (mant << (MBits - RsqrtUnit::W)) | low;
       const std::uint64_t m = mprime >> (2 * j);
-      ASSERT_EQ(Normalizer::normalize_mantissa(m).mant, mant);
-      ASSERT_EQ(Normalizer::normalize_mantissa(m).j, j);
+      ASSERT_EQ(RsqrtUnit::normalize_mantissa(m).mant, mant);
+      ASSERT_EQ(RsqrtUnit::normalize_mantissa(m).j, j);
       r.push(m);
       ++count;
     }
@@ -84,6 +84,6 @@ TEST(RtlRsqrtUnit, EveryMantissaEveryShift) {
               static_cast<unsigned long long>(count - 1), static_cast<unsigned long long>(r.checked));
   EXPECT_EQ(r.bad, 0u);
   EXPECT_GE(r.checked, count);
-  for (int row = 1 << (Normalizer::P - 2); row < (1 << Normalizer::P); ++row)
+  for (int row = 1 << (RsqrtUnit::P - 2); row < (1 << RsqrtUnit::P); ++row)
     EXPECT_TRUE(r.rows_seen[row]) << "seed row " << row << " never read";
 }

@@ -1,5 +1,5 @@
 // rtl/active_edge_list.sv (with its edge_incrementer) against ActiveEdgeList + EdgeIncrementer
-// driven like the frame loop of Pipeline::render: for every scan line of a frame, the
+// driven like the frame loop of WatkinsTop::render: for every scan line of a frame, the
 // active edges in (X, edge id) order (polygon id and every channel word) and the end-of-line
 // marker. Synthesized y-sorted edge streams (many edges starting on one line, equal X broken by
 // arrival index, edges crossing in X between lines, n = 1, edges on line 0 and on the last line,

@@ -1,4 +1,4 @@
-// rtl/watkins_top.sv end to end against Pipeline::render, pixel by pixel: random
+// rtl/watkins_top.sv end to end against WatkinsTop::render, pixel by pixel: random
 // scenes (triangles and quads partly off screen), a jittered quad mesh (shared edges: equal X,
 // ties broken by edge id), frames back to back, random edge-stream gaps and pixel back-pressure,
 // and an active-edge overflow (sticky flag, the frame still completes). A quick check of the
@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "Vwatkins_top.h"
-#include "pipeline.hpp"
+#include "watkins_top.hpp"
 #include "prepare.hpp"
 #include "edge_packing.hpp"
 #include "rtl_harness.hpp"
@@ -177,7 +177,7 @@ void random_frames(std::uint64_t seed, SparseOf sparse) {
     const int w = 1 + static_cast<int>(rng() % MaxWidth), h = 1 + static_cast<int>(rng() % 70);
     PreparedScene p;
     if (!prepare_ok(random_scene(w, h, static_cast<int>(rng() % 7), rng), p)) continue;
-    Pipeline pipe(MaxActiveEdges);
+    WatkinsTop pipe(MaxActiveEdges);
     const Image ref = pipe.render(p);
     t.frame(p, &ref, frames % 2 ? 40 : 10, frames % 3 ? 40 : 0, sparse(frames));
     ++frames;
@@ -195,7 +195,7 @@ TEST(RtlTop, SharedEdgeMesh) {
   for (int i = 0; i < 4; ++i) {
     PreparedScene p;
     ASSERT_TRUE(prepare_ok(mesh_scene(96, 64, 3, 5, rng), p, true));
-    Pipeline pipe(MaxActiveEdges);
+    WatkinsTop pipe(MaxActiveEdges);
     const Image ref = pipe.render(p);
     t.frame(p, &ref, 20 * i, 20 * i);
   }
@@ -211,7 +211,7 @@ TEST(RtlTop, CyclesPerFrame) {
     PreparedScene p;
     const BuiltScene s = i < 3 ? mesh_scene(MaxWidth, 48, 3 + i, 3, rng) : random_scene(MaxWidth, 48, 6, rng);
     if (!prepare_ok(s, p)) continue;
-    Pipeline pipe(MaxActiveEdges);
+    WatkinsTop pipe(MaxActiveEdges);
     std::vector<std::uint64_t> per_line(p.height, 0);
     const Image ref = pipe.render(p, [&](int y, const Fragment&, bool) { ++per_line[y]; });
     // The two line buffers overlap line y's fragments (and its marker) with line y-1's pixels.
@@ -236,7 +236,7 @@ TEST(RtlTop, SparseCyclesPerFrame) {
   for (int i = 0; i < 4; ++i) {
     PreparedScene p;
     if (!prepare_ok(random_scene(MaxWidth, 48, 1 + i, rng), p)) continue;
-    Pipeline pipe(MaxActiveEdges);
+    WatkinsTop pipe(MaxActiveEdges);
     std::vector<std::uint64_t> per_line(p.height, 0);
     const Image ref = pipe.render(p, [&](int y, const Fragment&, bool) { ++per_line[y]; });
     std::uint64_t bound = 0;
@@ -264,7 +264,7 @@ TEST(RtlTop, OverflowIsStickyAndNeverHangs) {
   EXPECT_TRUE(t.h.dut.overflow_o);
   PreparedScene small;
   ASSERT_TRUE(prepare_ok(random_scene(40, 20, 3, rng), small));
-  Pipeline pipe(MaxActiveEdges);
+  WatkinsTop pipe(MaxActiveEdges);
   const Image ref = pipe.render(small);
   t.frame(small, &ref, 10, 10);
   EXPECT_TRUE(t.h.dut.overflow_o) << "sticky until reset";

@@ -5,16 +5,13 @@
 #include <cmath>
 #include <sstream>
 
-#include "active_edge_list.hpp"
-#include "segment_former.hpp"
-#include "segment_interpolator.hpp"
 
 namespace watkins {
 namespace {
 
 constexpr i64 kSub = 1 << fmt::SubPixelBits;               // 16 sub-pixel steps per pixel
 constexpr i64 kHalfPixelSub = kSub / 2;                     // pixel centre offset in 1/16 pixel
-constexpr double kVertexLimit = double(1 << (fmt::VertexIntBits - 1));  // 8192 pixels
+constexpr double kVertexLimit = fmt::VertexLimit;  // 8192 pixels
 constexpr double kUnitSlack = 1e-6;  // |unit vector component| <= 1 up to double rounding
 
 i64 quantize(double v, int frac_bits) { return std::llround(std::ldexp(v, frac_bits)); }
@@ -22,16 +19,10 @@ i64 quantize(double v, int frac_bits) { return std::llround(std::ldexp(v, frac_b
 // ceil(a / kSub) for any sign of a.
 i64 ceil_sub(i64 a) { return static_cast<i64>(floor_shift(a + kSub - 1, fmt::SubPixelBits)); }
 
-std::string num(double x) {
-  std::ostringstream s;
-  s << x;
-  return s.str();
-}
-
 // A component of a unit vector, checked and rounded to `frac_bits` fraction bits.
 i64 quantize_unit(double c, int frac_bits, const std::string& what) {
   if (!(std::isfinite(c) && std::fabs(c) <= 1 + kUnitSlack))
-    throw SceneError(what + " component " + num(c) + " is outside [-1, 1] (expected a unit vector)");
+    throw SceneError(what + " component " + number_text(c) + " is outside [-1, 1] (expected a unit vector)");
   return quantize(c, frac_bits);
 }
 
@@ -81,11 +72,11 @@ QuantizedMaterial quantize_material(const PhongMaterial& m) {
   const double w_max = double((1 << fmt::MaterialBits) - 1) / (1 << fmt::MaterialFracBits);
   QuantizedMaterial q;
   for (int c = 0; c < 3; ++c) {
-    if (!in(m.cp[c], 0, 1)) throw SceneError("colour " + num(m.cp[c]) + " is outside [0, 1]");
+    if (!in(m.cp[c], 0, 1)) throw SceneError("colour " + number_text(m.cp[c]) + " is outside [0, 1]");
     q.cp[c] = static_cast<int>(std::lround(m.cp[c] * fmt::ShadeMax));
   }
-  if (!in(m.d, 0, 1)) throw SceneError("d = " + num(m.d) + " is outside [0, 1]");
-  if (!in(m.W, 0, w_max)) throw SceneError("W = " + num(m.W) + " is outside [0, " + num(w_max) + "]");
+  if (!in(m.d, 0, 1)) throw SceneError("d = " + number_text(m.d) + " is outside [0, 1]");
+  if (!in(m.W, 0, w_max)) throw SceneError("W = " + number_text(m.W) + " is outside [0, " + number_text(w_max) + "]");
   if (m.n < 0 || m.n >= (1 << fmt::ShininessBits))
     throw SceneError("n = " + std::to_string(m.n) + " is outside [0, " +
                      std::to_string((1 << fmt::ShininessBits) - 1) + "]");
@@ -128,11 +119,11 @@ static PreparedScene prepare_unnamed(const BuiltScene& scene, const PrepareOptio
 
 // Phong's frame constants: the materials (at most 2^MaterialIdBits), light and eye in Q2.14.
 static void prepare_phong_constants(const BuiltScene& scene, PreparedScene& out) {
-  const std::size_t max_materials = std::size_t{1} << fmt::MaterialIdBits;
+  const std::size_t max_materials = fmt::MaxMaterials;
   if (scene.materials.size() > max_materials)
     throw SceneError("scene needs " + std::to_string(scene.materials.size()) + " materials; the material id is " +
                      std::to_string(fmt::MaterialIdBits) + " bits and holds " + std::to_string(max_materials) +
-                     " (merge materials, or raise MaterialIdBits in model/formats.hpp and the RTL to match)");
+                     " (merge materials, or raise MaterialIdBits in model/twins/formats.hpp and the RTL to match)");
   for (std::size_t m = 0; m < scene.materials.size(); ++m) {
     try {
       out.materials.push_back(quantize_material(scene.materials[m]));
@@ -142,16 +133,6 @@ static void prepare_phong_constants(const BuiltScene& scene, PreparedScene& out)
   }
   out.light = quantize_direction(scene.light, "light direction");
   out.eye = quantize_direction(scene.eye, "eye direction");
-}
-
-int SceneNeeds::bits_for_value(int channel) const {
-  auto bits = [](i64 v) {
-    int b = 1;
-    while (!fits_signed(v, b)) ++b;
-    return b;
-  };
-  return std::max({bits(value_min[channel]), bits(value_max[channel]), bits(slope_min[channel]),
-                   bits(slope_max[channel])});
 }
 
 PreparedScene prepare(const BuiltScene& scene, const PrepareOptions& opt) {
@@ -168,7 +149,7 @@ static PreparedScene prepare_unnamed(const BuiltScene& scene, const PrepareOptio
     throw SceneError("screen " + std::to_string(scene.width) + "x" + std::to_string(scene.height) +
                      " exceeds the pipeline's limit of " + std::to_string(fmt::MaxScreen) + "x" +
                      std::to_string(fmt::MaxScreen));
-  const std::size_t max_polys = std::size_t{1} << fmt::PolyIdBits;
+  const std::size_t max_polys = fmt::MaxPolygons;
   if (scene.polygons.size() > max_polys)
     throw SceneError("scene has " + std::to_string(scene.polygons.size()) +
                      " polygons; the polygon id is " + std::to_string(fmt::PolyIdBits) +
@@ -211,45 +192,8 @@ static PreparedScene prepare_unnamed(const BuiltScene& scene, const PrepareOptio
                    [](const EdgeRecord& a, const EdgeRecord& b) { return a.y0 < b.y0; });
   for (std::size_t i = 0; i < out.edges.size(); ++i) out.edges[i].id = static_cast<int>(i);
 
-  SceneNeeds& needs = out.needs;
-  needs.polygons = out.polygons;
-  needs.edges = static_cast<int>(out.edges.size());
-  for (int c = 0; c < fmt::NumChannels; ++c) {
-    needs.value_min[c] = needs.slope_min[c] = INT64_MAX;
-    needs.value_max[c] = needs.slope_max[c] = INT64_MIN;
-  }
-  for (const auto& e : out.edges) {
-    needs.max_edge_lines = std::max(needs.max_edge_lines, e.n);
-    for (int c = 0; c < fmt::NumChannels; ++c) {
-      needs.value_min[c] = std::min(needs.value_min[c], e.value[c]);
-      needs.value_max[c] = std::max(needs.value_max[c], e.value[c]);
-      needs.slope_min[c] = std::min(needs.slope_min[c], e.slope[c]);
-      needs.slope_max[c] = std::max(needs.slope_max[c], e.slope[c]);
-    }
-  }
-  if (out.edges.empty())
-    for (int c = 0; c < fmt::NumChannels; ++c)
-      needs.value_min[c] = needs.value_max[c] = needs.slope_min[c] = needs.slope_max[c] = 0;
-
-  // Walk the scan lines with the pipeline's own front half to measure the active-edge list
-  // and the widest span (the same code the model renders with, so the numbers agree).
-  ActiveEdgeList active(1 << 30);
-  std::size_t next = 0;
-  std::vector<Segment> segments;
-  for (int y = 0; y < out.height; ++y) {
-    while (next < out.edges.size() && out.edges[next].y0 == y) active.insert(out.edges[next++]);
-    if (active.size() > needs.max_active_edges) {
-      needs.max_active_edges = active.size();
-      needs.max_active_line = y;
-    }
-    segments.clear();
-    SegmentFormer::form(active.edges(), segments);
-    for (const auto& s : segments) {
-      const SpanSetup span = SegmentInterpolator::setup(s, out.width);
-      needs.max_segment_pixels = std::max(needs.max_segment_pixels, span.x_end - span.x_start);
-    }
-    active.advance();
-  }
+  out.needs = measure_needs(out, out.polygons);
+  const SceneNeeds& needs = out.needs;
   if (needs.max_active_edges > opt.max_active_edges)
     throw SceneError("scene needs " + std::to_string(needs.max_active_edges) +
                      " active edges on scan line " + std::to_string(needs.max_active_line) +

@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "formats.hpp"
 #include "scene_types.hpp"
 
 namespace watkins {
@@ -17,19 +18,13 @@ namespace {
 
 using nlohmann::json;
 
-constexpr double kCoordLimit = 8192.0;  // screen-space vertices: [-8192, 8192) pixels
+constexpr double kCoordLimit = fmt::VertexLimit;  // screen-space vertices: [-8192, 8192) pixels
 
 // A short rendering of an offending value for messages.
 std::string show(const json& j) {
   std::string s = j.dump();
   if (s.size() > 40) s = s.substr(0, 37) + "...";
   return s;
-}
-
-std::string fmt(double x) {
-  std::ostringstream os;
-  os << x;
-  return os.str();
 }
 
 // Field-path aware accessors. `name` is the scene name used as the message prefix.
@@ -76,7 +71,7 @@ class Reader {
                    bool hi_open = false) const {
     double x = number(v, field);
     if (x < lo || x > hi || (hi_open && x == hi))
-      fail(field, "expected a number in [" + fmt(lo) + ", " + fmt(hi) + (hi_open ? ")" : "]") +
+      fail(field, "expected a number in [" + number_text(lo) + ", " + number_text(hi) + (hi_open ? ")" : "]") +
                       ", got " + show(v));
     return x;
   }
@@ -181,7 +176,7 @@ void parse_camera(const Reader& r, const json& j, Camera& cam) {
   }
   opt(j, f, "near", [&](const json& v, const std::string& ff) { cam.near = r.positive(v, ff); });
   opt(j, f, "far", [&](const json& v, const std::string& ff) { cam.far = r.positive(v, ff); });
-  if (!(cam.far > cam.near)) r.fail("camera.far", "must be greater than camera.near (" + fmt(cam.near) + ")");
+  if (!(cam.far > cam.near)) r.fail("camera.far", "must be greater than camera.near (" + number_text(cam.near) + ")");
   // 1 - near/Z must stay distinguishable from 1 in double precision, with a wide margin.
   if (cam.far / cam.near > 1e7) r.fail("camera.far", "far/near ratio above 1e7");
 }
@@ -260,7 +255,7 @@ void parse_transform(const Reader& r, const json& j, const std::string& f, Trans
     } else {
       t.scale = r.vec3(v, ff);
       for (int c = 0; c < 3; ++c)
-        if (!(t.scale[c] > 0)) r.fail(ff + "[" + std::to_string(c) + "]", "expected a positive number, got " + fmt(t.scale[c]));
+        if (!(t.scale[c] > 0)) r.fail(ff + "[" + std::to_string(c) + "]", "expected a positive number, got " + number_text(t.scale[c]));
     }
   });
 }
@@ -284,7 +279,7 @@ ScreenPolygon parse_screen_polygon(const Reader& r, const json& j, const std::st
       const std::string cf = vf + "." + key;
       double x = r.number(r.required(v, vf, key), cf);
       if (x < -kCoordLimit || x >= kCoordLimit)
-        r.fail(cf, fmt(x) + " is outside the representable range [-8192, 8192) pixels");
+        r.fail(cf, number_text(x) + " is outside the representable range [" + number_text(-kCoordLimit) + ", " + number_text(kCoordLimit) + ") pixels");
       (key[0] == 'x' ? sv.x : sv.y) = x;
     }
     sv.depth = r.number_in(r.required(v, vf, "depth"), vf + ".depth", 0, 1, true);
@@ -367,7 +362,7 @@ SceneObject parse_object(const Reader& r, const json& j, const std::string& f, i
     o.major_radius = r.positive(r.required(j, f, "major_radius"), f + ".major_radius");
     o.minor_radius = r.positive(r.required(j, f, "minor_radius"), f + ".minor_radius");
     if (!(o.minor_radius < o.major_radius))
-      r.fail(f + ".minor_radius", "must be smaller than major_radius (" + fmt(o.major_radius) + ")");
+      r.fail(f + ".minor_radius", "must be smaller than major_radius (" + number_text(o.major_radius) + ")");
     uv(2, 12, 3, 16);
   } else if (type == "hyperbolic_paraboloid") {
     o.type = ObjectType::HyperbolicParaboloid;

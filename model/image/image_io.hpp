@@ -1,27 +1,12 @@
-// An RGB8 frame with a coverage mask, PNG output and the error statistics every render reports.
+// Image I/O and comparison: PNG output, and the error statistics every render reports between two
+// frames (model, RTL, double reference, analytic truth).
 #pragma once
 
-#include <array>
-#include <cstdint>
 #include <string>
-#include <vector>
+
+#include "image.hpp"
 
 namespace watkins {
-
-struct Image {
-  int width = 0, height = 0;
-  std::vector<std::uint8_t> rgb;      // width*height*3, raster order
-  std::vector<std::uint8_t> covered;  // width*height: 1 where some polygon won the pixel
-  std::vector<int> owner;             // width*height: id of the visible polygon, -1 where none
-
-  Image() = default;
-  Image(int w, int h)
-      : width(w), height(h), rgb(std::size_t(w) * h * 3, 0), covered(std::size_t(w) * h, 0),
-        owner(std::size_t(w) * h, -1) {}
-  std::uint8_t* at(int x, int y) { return &rgb[(std::size_t(y) * width + x) * 3]; }
-  const std::uint8_t* at(int x, int y) const { return &rgb[(std::size_t(y) * width + x) * 3]; }
-  bool is_covered(int x, int y) const { return covered[std::size_t(y) * width + x] != 0; }
-};
 
 // Writes a PNG; throws std::runtime_error naming the path when it cannot.
 void write_png(const Image& img, const std::string& path);

@@ -61,6 +61,9 @@ constexpr int ShadeMax = (1 << ShadeBits) - 1;
 constexpr long long DepthMax = (1LL << DepthBits) - 1;  // "farthest" representable depth
 constexpr int SubPixelToFrac = FracBits - SubPixelBits;  // shift from 1/16 pixel to X channel
 constexpr int ShadeChannels = 3;                         // R, G, B after X and Z
+constexpr int VertexLimit = 1 << (VertexIntBits - 1);    // vertex X, Y in [-VertexLimit, VertexLimit) pixels
+constexpr int MaxPolygons = 1 << PolyIdBits;             // polygons per frame
+constexpr int MaxMaterials = 1 << MaterialIdBits;        // Phong materials per frame
 // $bits(watkins_pkg::edge_t): y0, n, poly, material, then value and slope of every channel.
 constexpr int EdgeRecordBits = 2 * LineBits + PolyIdBits + MaterialIdBits + 2 * NumChannels * ChannelBits;
 

@@ -18,7 +18,7 @@
 #include <glm/matrix.hpp>
 
 #include "camera.hpp"
-#include "float_reference.hpp"
+#include "illumination.hpp"
 #include "scene_types.hpp"
 #include "surfaces.hpp"
 

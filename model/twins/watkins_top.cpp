@@ -1,19 +1,20 @@
-#include "pipeline.hpp"
+#include "watkins_top.hpp"
 
-#include "active_edge_list.hpp"
+#include <algorithm>
+
 #include "normalizer.hpp"
 #include "phong_shader.hpp"
-#include "segment_former.hpp"
+#include "scan_lines.hpp"
 
 namespace watkins {
 namespace {
 
 // normalizer → phong_shader on one fragment: its rgb becomes the shade of its material.
-void phong_shade(const PreparedScene& scene, Fragment& f) {
+void phong_shade(const Frame& frame, Fragment& f) {
   const Normalizer::Unit u = Normalizer::normalize(f.normal[0], f.normal[1], f.normal[2]);
-  const QuantizedMaterial& m = scene.materials.at(static_cast<std::size_t>(f.material));
+  const QuantizedMaterial& m = frame.materials.at(static_cast<std::size_t>(f.material));
   const PhongShader::Pixel px{u.n, m.cp, m.d, m.w, m.shininess};
-  const std::array<int, 3> rgb = PhongShader::shade(px, scene.light, scene.eye);
+  const std::array<int, 3> rgb = PhongShader::shade(px, frame.light, frame.eye);
   for (int c = 0; c < 3; ++c) f.rgb[c] = static_cast<std::uint8_t>(rgb[c]);
 }
 
@@ -37,44 +38,34 @@ std::vector<SparseBeat> sparse_stream(const Image& img) {
   return out;
 }
 
-Image Pipeline::render(const PreparedScene& scene, const FragmentObserver& observe) {
+Image WatkinsTop::render(const Frame& frame, const FragmentObserver& observe) {
   PipelineObserver o;
   o.fragment = observe;
-  return render(scene, o);
+  return render(frame, o);
 }
 
-Image Pipeline::render(const PreparedScene& scene, const PipelineObserver& observe) {
+Image WatkinsTop::render(const Frame& frame, const PipelineObserver& observe) {
   stats_ = PipelineStats{};
-  Image img(scene.width, scene.height);
-  ActiveEdgeList active(max_active_edges_);
-  ScanlineBuffer line(scene.width, scene.background);
-  std::vector<Segment> segments;
-  std::size_t next = 0;
-  for (int y = 0; y < scene.height; ++y) {
-    while (next < scene.edges.size() && scene.edges[next].y0 == y) {
-      if (!active.insert(scene.edges[next]))
-        throw SceneError("active-edge list overflow on scan line " + std::to_string(y) +
-                         " (capacity " + std::to_string(max_active_edges_) + ")");
-      ++next;
-      ++stats_.edges;
-    }
-    stats_.max_active_edges = std::max(stats_.max_active_edges, active.size());
+  Image img(frame.width, frame.height);
+  ScanlineBuffer line(frame.width, frame.background);
+  walk_scan_lines(frame.edges, frame.height, max_active_edges_, [&](const ScanLine& sl) {
+    const int y = sl.y;
+    stats_.edges += sl.entered;
+    stats_.max_active_edges = std::max(stats_.max_active_edges, sl.active.size());
     if (observe.active_edge)
-      for (const ActiveEdge& e : active.edges()) observe.active_edge(y, e);
+      for (const ActiveEdge& e : sl.active.edges()) observe.active_edge(y, e);
     if (observe.active_edges_end) observe.active_edges_end(y);
-    segments.clear();
-    SegmentFormer::form(active.edges(), segments);
-    stats_.segments += static_cast<long long>(segments.size());
+    stats_.segments += static_cast<long long>(sl.segments.size());
     if (observe.segment)
-      for (const Segment& s : segments) observe.segment(y, s);
+      for (const Segment& s : sl.segments) observe.segment(y, s);
     if (observe.segments_end) observe.segments_end(y);
     line.clear();
-    for (const auto& s : segments) {
-      const SpanSetup span = SegmentInterpolator::setup(s, scene.width);
+    for (const auto& s : sl.segments) {
+      const SpanSetup span = SegmentInterpolator::setup(s, frame.width);
       ChannelVector v = span.value;
       for (int x = span.x_start; x < span.x_end; ++x) {
         Fragment f = SegmentInterpolator::fragment(span, x, v);
-        if (scene.shading == ShadingMode::Phong) phong_shade(scene, f);
+        if (frame.shading == ShadingMode::Phong) phong_shade(frame, f);
         const bool won = line.write(f);
         ++stats_.fragments;
         stats_.visible += won;
@@ -83,14 +74,13 @@ Image Pipeline::render(const PreparedScene& scene, const PipelineObserver& obser
       }
     }
     if (observe.fragments_end) observe.fragments_end(y);
-    for (int x = 0; x < scene.width; ++x) {
+    for (int x = 0; x < frame.width; ++x) {
       const auto p = line.pixel(x);
       std::copy(p.begin(), p.end(), img.at(x, y));
-      img.covered[std::size_t(y) * scene.width + x] = line.covered(x);
-      img.owner[std::size_t(y) * scene.width + x] = line.owner(x);
+      img.covered[std::size_t(y) * frame.width + x] = line.covered(x);
+      img.owner[std::size_t(y) * frame.width + x] = line.owner(x);
     }
-    active.advance();
-  }
+  });
   return img;
 }
 

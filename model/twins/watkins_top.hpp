@@ -1,7 +1,7 @@
 // Twin of rtl/watkins_top.sv: the whole Watkins scan-line pipeline, stage by stage, on the
 // y-sorted edge-record stream: active-edge list + edge_incrementer → segment_former →
 // segment_interpolator → [Phong: normalizer → phong_shader] → scanline_buffer → pixels in
-// raster order (every pixel of the screen). Gouraud shading (scene.shading) writes the
+// raster order (every pixel of the screen). Gouraud shading (frame.shading) writes the
 // interpolated shade; Phong shading normalizes the interpolated normal and shades it with the
 // fragment's material, per pixel, before the depth test.
 #pragma once
@@ -11,9 +11,9 @@
 #include <functional>
 #include <vector>
 
-#include "image.hpp"
-#include "prepare.hpp"
 #include "active_edge_list.hpp"
+#include "frame.hpp"
+#include "image.hpp"
 #include "scanline_buffer.hpp"
 
 namespace watkins {
@@ -60,14 +60,14 @@ struct SparseBeat {
 // The sparse stream of a rendered frame (its covered pixels, plus the terminator when needed).
 std::vector<SparseBeat> sparse_stream(const Image& img);
 
-class Pipeline {
+class WatkinsTop {
  public:
-  explicit Pipeline(int max_active_edges = fmt::MaxActiveEdges)
+  explicit WatkinsTop(int max_active_edges = fmt::MaxActiveEdges)
       : max_active_edges_(max_active_edges) {}
-  // Renders the frame. Throws SceneError if the active-edge list would overflow.
-  Image render(const PreparedScene& scene, const FragmentObserver& observe = nullptr);
+  // Renders the frame. Throws CapacityError if the active-edge list would overflow.
+  Image render(const Frame& frame, const FragmentObserver& observe = nullptr);
   // The same, reporting every stage stream to `observe`.
-  Image render(const PreparedScene& scene, const PipelineObserver& observe);
+  Image render(const Frame& frame, const PipelineObserver& observe);
   const PipelineStats& stats() const { return stats_; }
 
  private:

@@ -1,4 +1,4 @@
-#include "image.hpp"
+#include "image_io.hpp"
 
 #include <stb_image_write.h>
 

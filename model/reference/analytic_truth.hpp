@@ -12,7 +12,7 @@
 
 #include <string>
 
-#include "image.hpp"
+#include "image_io.hpp"
 #include "scene.hpp"
 
 namespace watkins {

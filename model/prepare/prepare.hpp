@@ -6,8 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "edge_record.hpp"
+#include "frame.hpp"
 #include "scene.hpp"
+#include "scene_needs.hpp"
 
 namespace watkins {
 
@@ -17,41 +18,14 @@ struct QuantizedVertex {
   ChannelVector ch{};    // channel values at the vertex (X = x16 << SubPixelToFrac)
 };
 
-// What the scene needs from the hardware: capacities and ranges, so the hardware can be sized
-// to the scene instead of a worst case.
-struct SceneNeeds {
-  int polygons = 0;
-  int edges = 0;              // edge records after dropping horizontal and off-screen edges
-  int max_active_edges = 0;   // largest active-edge list on any scan line
-  int max_active_line = -1;   // the scan line where it occurs
-  int max_edge_lines = 0;     // largest n of an edge record
-  int max_segment_pixels = 0; // widest span, in pixels (after clipping to the screen)
-  ChannelVector value_min{}, value_max{};  // ranges of edge-record channel values
-  ChannelVector slope_min{}, slope_max{};  // and of their per-scan-line slopes
-  int bits_for_value(int channel) const;   // signed bits the channel's values and slopes need
-};
-
 struct PrepareOptions {
   int max_active_edges = fmt::MaxActiveEdges;  // capacity of the active-edge list
 };
 
-// A material in the phong_shader's formats (see model/phong_shader.hpp).
-struct QuantizedMaterial {
-  std::array<int, 3> cp{};  // R, G, B reflectance, 8-bit levels (255 = 1.0)
-  int d = 0, w = 0;         // MaterialBits, 1.0 = 2^MaterialFracBits
-  int shininess = 0;        // ShininessBits
-};
-
-struct PreparedScene {
-  int width = 0, height = 0;
-  std::array<std::uint8_t, 3> background{};
-  // Phong: edge channels ChanNx.. hold normals, every edge a material id; light and eye are
-  // unit vectors in Q2.14 (UnitBits), frame constants of the shader.
-  ShadingMode shading = ShadingMode::Gouraud;
-  std::vector<QuantizedMaterial> materials;  // at most 2^MaterialIdBits
-  std::array<i64, 3> light{}, eye{};
+// The frame watkins_top renders (its pins and edge stream), with what scene preparation learnt
+// on the way: the polygon count and what the frame needs from the hardware.
+struct PreparedScene : Frame {
   int polygons = 0;
-  std::vector<EdgeRecord> edges;  // sorted by (y0, id)
   SceneNeeds needs;
 };
 

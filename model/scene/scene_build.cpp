@@ -14,47 +14,14 @@
 #include <glm/mat3x3.hpp>
 
 #include "camera.hpp"
-#include "float_reference.hpp"
+#include "formats.hpp"
+#include "illumination.hpp"
 #include "mesh_obj.hpp"
 #include "scene.hpp"
 #include "scene_types.hpp"
 #include "surfaces.hpp"
 
 namespace watkins {
-
-const char* to_string(ShadingRule r) {
-  switch (r) {
-    case ShadingRule::Gouraud: return "gouraud";
-    case ShadingRule::Lambert: return "lambert";
-    case ShadingRule::Warnock: return "warnock";
-    case ShadingRule::Romney: return "romney";
-    case ShadingRule::Phong: return "phong";
-  }
-  return "?";
-}
-
-const char* to_string(DepthMode m) { return m == DepthMode::InverseZ ? "inverse-z" : "z"; }
-
-std::optional<ShadingRule> parse_shading_rule(const std::string& s) {
-  for (ShadingRule r : {ShadingRule::Gouraud, ShadingRule::Lambert, ShadingRule::Warnock, ShadingRule::Romney,
-                        ShadingRule::Phong})
-    if (s == to_string(r)) return r;
-  return std::nullopt;
-}
-
-std::optional<DepthMode> parse_depth_mode(const std::string& s) {
-  for (DepthMode m : {DepthMode::InverseZ, DepthMode::Z})
-    if (s == to_string(m)) return m;
-  return std::nullopt;
-}
-
-const char* to_string(ShadingMode m) { return m == ShadingMode::Gouraud ? "gouraud" : "phong"; }
-
-std::optional<ShadingMode> parse_shading_mode(const std::string& s) {
-  for (ShadingMode m : {ShadingMode::Gouraud, ShadingMode::Phong})
-    if (s == to_string(m)) return m;
-  return std::nullopt;
-}
 
 const std::string& default_scene_text() {
   static const std::string s =
@@ -70,14 +37,8 @@ BuiltScene load_scene_or_default(const std::string& path, const BuildOptions& op
 
 namespace {
 
-constexpr double kCoordLimit = 8192.0;
-constexpr size_t kMaxPolygons = 65536;  // the pipeline's polygon id is 16 bits
-
-std::string fmt(double x) {
-  std::ostringstream os;
-  os << x;
-  return os.str();
-}
+constexpr double kCoordLimit = fmt::VertexLimit;
+constexpr size_t kMaxPolygons = fmt::MaxPolygons;  // the pipeline's polygon id is PolyIdBits
 
 // An object in camera space, ready to project and shade.
 struct CamObject {
@@ -104,7 +65,7 @@ class MaterialTable {
     if (it != ids_.end()) return it->second;
     if (phong_ && !(m.n == std::floor(m.n) && m.n >= 0 && m.n <= 255))
       throw SceneError(scene_ + ": materials." + m.name + ".n: Phong shading needs an integer in [0, 255], got " +
-                       fmt(m.n));
+                       number_text(m.n));
     out_.push_back(phong_material(m));
     return ids_[m.name] = static_cast<int>(out_.size() - 1);
   }
@@ -244,8 +205,9 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
       for (int axis = 0; axis < 2; ++axis) {
         const double c = axis == 0 ? v.x : v.y;
         if (!(c >= -kCoordLimit && c < kCoordLimit))
-          throw SceneError(sc.name + ": " + o.field + ": vertex projects to " + (axis == 0 ? "x=" : "y=") + fmt(c) +
-                           ", outside the representable range [-8192, 8192) pixels; move the camera or reduce focal");
+          throw SceneError(sc.name + ": " + o.field + ": vertex projects to " + (axis == 0 ? "x=" : "y=") + number_text(c) +
+                           ", outside the representable range [" + number_text(-kCoordLimit) + ", " +
+                           number_text(kCoordLimit) + ") pixels; move the camera or reduce focal");
       }
       v.depth = out.depth == DepthMode::InverseZ ? 1.0 - cam.near / p.z : (p.z - cam.near) / (cam.far - cam.near);
       v.depth = std::min(v.depth, std::nextafter(1.0, 0.0));  // rounding only; Z < far already holds
@@ -283,7 +245,8 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
   }
   if (out.polygons.size() > kMaxPolygons)
     throw SceneError(sc.name + ": scene has " + std::to_string(out.polygons.size()) +
-                     " polygons; the pipeline's polygon id is 16 bits (at most 65536)");
+                     " polygons; the pipeline's polygon id is " + std::to_string(fmt::PolyIdBits) +
+                     " bits (at most " + std::to_string(kMaxPolygons) + ")");
   return out;
 }
 

@@ -5,28 +5,19 @@
 
 #include <memory>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "scene_error.hpp"
 #include "screen_polygon.hpp"
+#include "shading_mode.hpp"
 
 namespace watkins {
-
-// Bad input of any kind. what() is the full user-facing message, e.g.
-// "scenes/x.json: objects[2].radius: expected a positive number, got -1".
-class SceneError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 // Vertex shading rules of the Gouraud pipeline. Phong is Phong's eq. (3) evaluated at each vertex
 // (light and eye at infinity), what Gouraud interpolates when compared with Phong shading.
 enum class ShadingRule { Gouraud, Lambert, Warnock, Romney, Phong };
 enum class DepthMode { InverseZ, Z };  // Gouraud's eq. (1): interpolate 1/Z; eq. (2): interpolate Z
-// Which pipeline shades: Gouraud interpolates vertex shades (computed by a ShadingRule);
-// Phong interpolates vertex normals and applies Phong's eq. (3) at every pixel.
-enum class ShadingMode { Gouraud, Phong };
 
 const char* to_string(ShadingRule r);
 const char* to_string(DepthMode m);

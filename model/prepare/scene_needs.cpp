@@ -1,0 +1,58 @@
+#include "scene_needs.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+
+#include "scan_lines.hpp"
+#include "segment_interpolator.hpp"
+
+namespace watkins {
+
+int SceneNeeds::bits_for_value(int channel) const {
+  auto bits = [](i64 v) {
+    int b = 1;
+    while (!fits_signed(v, b)) ++b;
+    return b;
+  };
+  return std::max({bits(value_min[channel]), bits(value_max[channel]), bits(slope_min[channel]),
+                   bits(slope_max[channel])});
+}
+
+SceneNeeds measure_needs(const Frame& frame, int polygons) {
+  SceneNeeds needs;
+  needs.polygons = polygons;
+  needs.edges = static_cast<int>(frame.edges.size());
+  for (int c = 0; c < fmt::NumChannels; ++c) {
+    needs.value_min[c] = needs.slope_min[c] = INT64_MAX;
+    needs.value_max[c] = needs.slope_max[c] = INT64_MIN;
+  }
+  for (const auto& e : frame.edges) {
+    needs.max_edge_lines = std::max(needs.max_edge_lines, e.n);
+    for (int c = 0; c < fmt::NumChannels; ++c) {
+      needs.value_min[c] = std::min(needs.value_min[c], e.value[c]);
+      needs.value_max[c] = std::max(needs.value_max[c], e.value[c]);
+      needs.slope_min[c] = std::min(needs.slope_min[c], e.slope[c]);
+      needs.slope_max[c] = std::max(needs.slope_max[c], e.slope[c]);
+    }
+  }
+  if (frame.edges.empty())
+    for (int c = 0; c < fmt::NumChannels; ++c)
+      needs.value_min[c] = needs.value_max[c] = needs.slope_min[c] = needs.slope_max[c] = 0;
+
+  // The active-edge list and the widest span, from the pipeline's own front half (an unbounded
+  // list, so the need is measured rather than refused here).
+  walk_scan_lines(frame.edges, frame.height, std::numeric_limits<int>::max(), [&](const ScanLine& line) {
+    if (line.active.size() > needs.max_active_edges) {
+      needs.max_active_edges = line.active.size();
+      needs.max_active_line = line.y;
+    }
+    for (const Segment& s : line.segments) {
+      const SpanSetup span = SegmentInterpolator::setup(s, frame.width);
+      needs.max_segment_pixels = std::max(needs.max_segment_pixels, span.x_end - span.x_start);
+    }
+  });
+  return needs;
+}
+
+}  // namespace watkins

@@ -1,0 +1,27 @@
+// What a frame needs from the hardware — capacities and ranges — so the hardware can be sized
+// to the scene instead of a worst case. Measured in one place: the active-edge list and the
+// widest span by walking the frame with the twins' own front half (model/twins/scan_lines.hpp),
+// the value ranges from the edge records.
+#pragma once
+
+#include "edge_record.hpp"
+#include "frame.hpp"
+
+namespace watkins {
+
+struct SceneNeeds {
+  int polygons = 0;
+  int edges = 0;              // edge records after dropping horizontal and off-screen edges
+  int max_active_edges = 0;   // largest active-edge list on any scan line
+  int max_active_line = -1;   // the scan line where it occurs
+  int max_edge_lines = 0;     // largest n of an edge record
+  int max_segment_pixels = 0; // widest span, in pixels (after clipping to the screen)
+  ChannelVector value_min{}, value_max{};  // ranges of edge-record channel values
+  ChannelVector slope_min{}, slope_max{};  // and of their per-scan-line slopes
+  int bits_for_value(int channel) const;   // signed bits the channel's values and slopes need
+};
+
+// Measures `frame`, made of `polygons` polygons.
+SceneNeeds measure_needs(const Frame& frame, int polygons);
+
+}  // namespace watkins

@@ -1,0 +1,34 @@
+// One frame as watkins_top receives it: the pins that are stable for the frame (size, background,
+// shading mode, the Phong material table, light and eye) and the y-sorted edge-record stream.
+// Scene preparation (model/prepare/) writes it; the twins and the RTL benches read nothing else.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "edge_record.hpp"
+#include "fixed_point.hpp"
+#include "shading_mode.hpp"
+
+namespace watkins {
+
+// One entry of the Phong top's material table, in the phong_shader's formats.
+struct QuantizedMaterial {
+  std::array<int, 3> cp{};  // R, G, B reflectance, 8-bit levels (255 = 1.0)
+  int d = 0, w = 0;         // MaterialBits, 1.0 = 2^MaterialFracBits
+  int shininess = 0;        // ShininessBits
+};
+
+struct Frame {
+  int width = 0, height = 0;
+  std::array<std::uint8_t, 3> background{};
+  // Phong: edge channels ChanNx.. hold normals, every edge a material id; light and eye are
+  // unit vectors in Q2.14 (UnitBits), frame constants of the shader.
+  ShadingMode shading = ShadingMode::Gouraud;
+  std::vector<QuantizedMaterial> materials;  // at most 2^MaterialIdBits
+  std::array<i64, 3> light{}, eye{};
+  std::vector<EdgeRecord> edges;  // sorted by (y0, id)
+};
+
+}  // namespace watkins

@@ -1,0 +1,27 @@
+// The frame the pipeline writes (watkins_top's pixel stream gathered into raster order): RGB8
+// pixels, which pixels some polygon won, and which polygon that was. Plain data; PNG output and
+// the error statistics live in model/image/.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace watkins {
+
+struct Image {
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> rgb;      // width*height*3, raster order
+  std::vector<std::uint8_t> covered;  // width*height: 1 where some polygon won the pixel
+  std::vector<int> owner;             // width*height: id of the visible polygon, -1 where none
+
+  Image() = default;
+  Image(int w, int h)
+      : width(w), height(h), rgb(std::size_t(w) * h * 3, 0), covered(std::size_t(w) * h, 0),
+        owner(std::size_t(w) * h, -1) {}
+  std::uint8_t* at(int x, int y) { return &rgb[(std::size_t(y) * width + x) * 3]; }
+  const std::uint8_t* at(int x, int y) const { return &rgb[(std::size_t(y) * width + x) * 3]; }
+  bool is_covered(int x, int y) const { return covered[std::size_t(y) * width + x] != 0; }
+};
+
+}  // namespace watkins

@@ -1,0 +1,47 @@
+// Twin of rtl/normalizer.sv: unit normal from an interpolated normal n = (Nx, Ny, Nz), stage by
+// stage with the RTL's widths and rounding (see docs/phong-blocks.md for the derivation).
+//
+//   stage 0  m = Nx^2 + Ny^2 + Nz^2, exact: 36 bits unsigned, 2*FracBits fraction bits
+//   stage 1  even-shift normalization m = 2^(4-2j) m',  m' = M' / 2^36 in [1/4, 1), j in 0..17;
+//            mant = top RsqrtMantBits bits of M'; m = 0 raises `null`
+//   stage 2  seed y0 ~ 1/sqrt(m'c), table indexed by mant's top RsqrtIndexBits bits
+//   stage 3  y0^2, exact
+//   stage 4  u = 3 - m'c*y0^2 (rounded to RsqrtNrBits fraction bits)
+//   stage 5  y = y0*u/2 (rounded to RsqrtBits fraction bits): one Newton-Raphson step
+//   stage 6  p = N * y, exact
+//   stage 7  unit = saturate(round(p * 2^(j-4-RsqrtBits)), UnitBits): Q2.14
+// m'c = mant + half an ulp of mant: the centre of the interval of m' the truncated mantissa
+// stands for, which halves the truncation error. Rounding is round_shift (ties toward +inf).
+// Null vector (m = 0): mant = 0, j = 0, the seed ROM reads 0, so y = 0 and the result is
+// (0, 0, 0); null is set as well. Any m > 0 gives a unit vector
+// in the direction of the (quantized) input, however short it is.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "fixed_point.hpp"
+#include "formats.hpp"
+#include "rsqrt_unit.hpp"
+
+namespace watkins {
+
+struct Normalizer {
+  static constexpr int InBits = fmt::NormalInBits;     // 18, signed, FracBits fraction
+  static constexpr int F = RsqrtUnit::F;               // fraction bits of y
+
+  struct Unit {
+    std::array<i64, 3> n{};  // Q2.14 components, UnitBits signed
+    bool null = false;
+  };
+
+  static std::uint64_t sum_of_squares(i64 nx, i64 ny, i64 nz) {
+    return static_cast<std::uint64_t>(nx * nx + ny * ny + nz * nz);
+  }
+  // Stage 7 for one component.
+  static i64 scale(i64 n, std::uint32_t y, int j);
+  // The whole block: components are NormalInBits signed, FracBits fraction bits.
+  static Unit normalize(i64 nx, i64 ny, i64 nz);
+};
+
+}  // namespace watkins

@@ -1,0 +1,33 @@
+// Twin of rtl/rsqrt_unit.sv; see rsqrt_unit.hpp.
+#include "rsqrt_unit.hpp"
+
+namespace watkins {
+
+RsqrtUnit::Mantissa RsqrtUnit::normalize_mantissa(std::uint64_t m) {
+  Mantissa r;
+  if (m == 0) {
+    r.null = true;
+    return r;
+  }
+  // Leading zeros of m in MBits bits, rounded down to even: m' = (m << 2j) / 2^36 >= 1/4.
+  const int lz = MBits - 1 - msb_index(m);
+  r.j = lz / 2;
+  const std::uint64_t shifted = m << (2 * r.j);  // < 2^36
+  r.mant = static_cast<std::uint32_t>(shifted >> (MBits - W));
+  return r;
+}
+
+std::uint32_t RsqrtUnit::rsqrt_mant(std::uint32_t mant) {
+  const std::uint64_t mc = (static_cast<std::uint64_t>(mant) << 1) | 1u;  // W+1 fraction bits
+  const std::uint64_t y0 = seed_row(static_cast<int>(mant >> (W - P)));      // T fraction bits
+  const std::uint64_t y0sq = y0 * y0;                                     // 2T fraction bits
+  const i128 t = round_shift(static_cast<i128>(mc) * y0sq, (W + 1) + 2 * T - G);  // G fraction
+  const i128 u = (static_cast<i128>(3) << G) - t;                         // 3 - m'c y0^2
+  const i128 y = round_shift(static_cast<i128>(y0) * u, T + G + 1 - F);   // y0 u / 2
+  return static_cast<std::uint32_t>(y);
+}
+
+static_assert(RsqrtUnit::seed(RsqrtUnit::MantLo >> (RsqrtUnit::W - RsqrtUnit::P)) < (1u << (RsqrtUnit::T + 1)),
+              "seed must fit T+1 bits");
+
+}  // namespace watkins
