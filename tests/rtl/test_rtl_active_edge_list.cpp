@@ -30,7 +30,7 @@ constexpr int CB = fmt::ChannelBits;
 constexpr int NC = fmt::NumChannels;
 constexpr i64 One = i64{1} << fmt::FracBits;
 
-struct Frame {
+struct EdgeFrame {
   int height = 1;
   std::vector<EdgeRecord> edges;  // sorted by y0, id = index
 };
@@ -57,7 +57,7 @@ Line to_line(const ActiveEdgeList& a) {
   return l;
 }
 
-Expect model(const Frame& f) {
+Expect model(const EdgeFrame& f) {
   Expect x;
   ActiveEdgeList a(N), u(1 << 30);
   std::size_t next = 0;
@@ -78,7 +78,7 @@ Expect model(const Frame& f) {
   return x;
 }
 
-void sort_and_number(Frame& f) {
+void sort_and_number(EdgeFrame& f) {
   std::stable_sort(f.edges.begin(), f.edges.end(),
                    [](const EdgeRecord& a, const EdgeRecord& b) { return a.y0 < b.y0; });
   for (std::size_t i = 0; i < f.edges.size(); ++i) f.edges[i].id = static_cast<int>(i);
@@ -119,9 +119,9 @@ EdgeRecord edge(std::mt19937_64& rng, int y0, int n, i64 x, i64 dx, Values v = V
 }
 
 // A random y-sorted frame that never needs more than `cap` active edges (cap <= N: no overflow).
-Frame random_frame(std::mt19937_64& rng, int height, int target_edges, Values v, int cap = N,
+EdgeFrame random_frame(std::mt19937_64& rng, int height, int target_edges, Values v, int cap = N,
                    bool beyond = true) {
-  Frame f;
+  EdgeFrame f;
   f.height = height;
   std::vector<int> cnt(height, 0);
   std::vector<int> bursts;  // lines where many edges start
@@ -178,7 +178,7 @@ ScreenVertex vtx(double x, double y, std::mt19937_64& rng) {
 
 // prepare() of a random scene (triangles and quads, partly off screen) or of a jittered quad
 // mesh (shared edges: equal X); retried until the scene fits N active edges.
-Frame prepared_frame(std::mt19937_64& rng, bool mesh) {
+EdgeFrame prepared_frame(std::mt19937_64& rng, bool mesh) {
   for (;;) {
     BuiltScene s;
     s.name = mesh ? "mesh" : "random";
@@ -209,7 +209,7 @@ Frame prepared_frame(std::mt19937_64& rng, bool mesh) {
     }
     try {
       const PreparedScene p = prepare(s, PrepareOptions{N});
-      Frame f;
+      EdgeFrame f;
       f.height = p.height;
       f.edges = p.edges;  // already y-sorted and numbered by prepare
       return f;
@@ -259,7 +259,7 @@ struct Ael {
 
   // Runs one frame back to back with the previous one. pre: cycles the first beat is offered
   // before start_i; poke: random start_i pulses while busy (ignored).
-  void frame(const Frame& f, int gap_pct, int bp_pct, bool poke = false) {
+  void frame(const EdgeFrame& f, int gap_pct, int bp_pct, bool poke = false) {
     auto& d = h.dut;
     Stalls gaps{rng, gap_pct}, bp{rng, bp_pct};
     const Expect x = model(f);
@@ -390,16 +390,16 @@ struct Ael {
 
 // ------------------------------------------------------------ directed frames
 
-Frame empty_frame(int height) {
-  Frame f;
+EdgeFrame empty_frame(int height) {
+  EdgeFrame f;
   f.height = height;
   return f;
 }
 
 // N edges starting on one line with equal X and slope: order by id on every line; they retire
 // at different lines.
-Frame same_line_ties(std::mt19937_64& rng, int height, int y0) {
-  Frame f;
+EdgeFrame same_line_ties(std::mt19937_64& rng, int height, int y0) {
+  EdgeFrame f;
   f.height = height;
   const i64 x = rnd(rng, -4 * One, 40 * One), dx = rnd(rng, -One, One);
   for (int i = 0; i < N; ++i) f.edges.push_back(edge(rng, y0, 1 + static_cast<int>(rng() % (height - y0)), x, dx));
@@ -408,8 +408,8 @@ Frame same_line_ties(std::mt19937_64& rng, int height, int y0) {
 }
 
 // Edges whose X order reverses (and ties) between lines: x_i = i, slope -i/2.
-Frame crossing(std::mt19937_64& rng, int height, int count) {
-  Frame f;
+EdgeFrame crossing(std::mt19937_64& rng, int height, int count) {
+  EdgeFrame f;
   f.height = height;
   for (int i = 0; i < count; ++i) f.edges.push_back(edge(rng, 0, height, i * One, -i * (One / 2)));
   for (int i = 0; i < count / 2; ++i)  // a second group, starting later, crossing the first
@@ -419,8 +419,8 @@ Frame crossing(std::mt19937_64& rng, int height, int count) {
 }
 
 // n = 1 edges on every line, edges on line 0 and on the last line, empty lines between.
-Frame sparse_lines(std::mt19937_64& rng, int height) {
-  Frame f;
+EdgeFrame sparse_lines(std::mt19937_64& rng, int height) {
+  EdgeFrame f;
   f.height = height;
   f.edges.push_back(edge(rng, 0, 1, 5 * One, 0));
   f.edges.push_back(edge(rng, 0, 1, 5 * One, 0));
@@ -434,8 +434,8 @@ Frame sparse_lines(std::mt19937_64& rng, int height) {
 }
 
 // The longest frame: edges over all 4096 lines, one starting on line 4095.
-Frame tall_frame(std::mt19937_64& rng) {
-  Frame f;
+EdgeFrame tall_frame(std::mt19937_64& rng) {
+  EdgeFrame f;
   f.height = fmt::MaxScreen;
   f.edges.push_back(edge(rng, 0, fmt::MaxScreen, 0, One / 64));
   f.edges.push_back(edge(rng, 0, fmt::MaxScreen, 64 * One, -One / 64));
@@ -447,8 +447,8 @@ Frame tall_frame(std::mt19937_64& rng) {
 
 // Exactly N active, stepped and new edges together: N - 1 long edges from line 0, one more on
 // line 3; then N edges starting on the line where N others retire.
-Frame exactly_full(std::mt19937_64& rng) {
-  Frame f;
+EdgeFrame exactly_full(std::mt19937_64& rng) {
+  EdgeFrame f;
   f.height = 12;
   for (int i = 0; i < N - 1; ++i) f.edges.push_back(edge(rng, 0, 6, rnd(rng, 0, 30 * One), rnd(rng, -One, One)));
   f.edges.push_back(edge(rng, 3, 3, rnd(rng, 0, 30 * One), rnd(rng, -One, One)));
@@ -459,8 +459,8 @@ Frame exactly_full(std::mt19937_64& rng) {
 
 // N + 1 edges starting on one line with nothing else active: the last record is dropped (as the
 // model's refused insert), the output stays exact.
-Frame one_too_many_same_line(std::mt19937_64& rng, int y0) {
-  Frame f;
+EdgeFrame one_too_many_same_line(std::mt19937_64& rng, int y0) {
+  EdgeFrame f;
   f.height = y0 + 6;
   for (int i = 0; i <= N; ++i) f.edges.push_back(edge(rng, y0, 1 + static_cast<int>(rng() % 6), rnd(rng, 0, 30 * One), rnd(rng, -One, One)));
   sort_and_number(f);
@@ -468,8 +468,8 @@ Frame one_too_many_same_line(std::mt19937_64& rng, int y0) {
 }
 
 // N active edges stepping on, one more starting later: some edge is dropped.
-Frame one_too_many_mixed(std::mt19937_64& rng) {
-  Frame f;
+EdgeFrame one_too_many_mixed(std::mt19937_64& rng) {
+  EdgeFrame f;
   f.height = 10;
   for (int i = 0; i < N; ++i) f.edges.push_back(edge(rng, 0, 10, rnd(rng, 0, 30 * One), rnd(rng, -One, One)));
   f.edges.push_back(edge(rng, 4, 3, rnd(rng, 0, 30 * One), 0));
@@ -494,7 +494,7 @@ TEST(RtlActiveEdgeList, DirectedCorners) {
     a.frame(sparse_lines(rng, 23), gap, bp, true);
     a.frame(sparse_lines(rng, 2), gap, bp);
     {  // a single edge on a single line
-      Frame f;
+      EdgeFrame f;
       f.height = 1;
       f.edges.push_back(edge(rng, 0, 1, One, 0));
       a.frame(f, gap, bp);
@@ -511,12 +511,12 @@ TEST(RtlActiveEdgeList, Capacity) {
   auto& rng = a.rng;
   // Exactly full, on line 0 and on the last line, at full rate and under stalls.
   for (int bp : {0, 50}) {
-    Frame f;
+    EdgeFrame f;
     f.height = 5;
     for (int i = 0; i < N; ++i) f.edges.push_back(edge(rng, 0, 5, rnd(rng, 0, 4) * One, rnd(rng, -1, 1) * One));
     sort_and_number(f);
     a.frame(f, bp, bp);
-    Frame g;
+    EdgeFrame g;
     g.height = 5;
     for (int i = 0; i < N; ++i) g.edges.push_back(edge(rng, 4, 1, rnd(rng, 0, 4) * One, 0));
     sort_and_number(g);
