@@ -20,7 +20,6 @@
 #include "random_scene.hpp"
 #include "rtl_harness.hpp"
 #include "scene.hpp"
-#include "scene_builder.hpp"
 
 using namespace watkins;
 using namespace watkins::rtl;
@@ -177,11 +176,8 @@ Frame prepared_frame(std::mt19937_64& rng, bool mesh) {
     BuiltScene s;
     if (mesh) {
       const int w = 8 + static_cast<int>(rng() % 56), h = 1 + static_cast<int>(rng() % 48);
-      test::GridSpec g;
-      g.cols = 1 + static_cast<int>(rng() % 7), g.rows = 1 + static_cast<int>(rng() % 6);
-      g.cell_w = double(w) / g.cols, g.cell_h = double(h) / g.rows;
-      g.jitter = 0.3;
-      s = test::screen(w, h, test::jittered_grid(rng, g), "mesh");
+      const int cols = 1 + static_cast<int>(rng() % 7), rows = 1 + static_cast<int>(rng() % 6);
+      s = test::mesh_scene(rng, w, h, cols, rows);
     } else {
       test::RandomSceneSpec spec;
       spec.max_width = 63, spec.min_height = 1, spec.max_height = 48;

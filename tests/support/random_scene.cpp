@@ -152,4 +152,12 @@ std::vector<ScreenPolygon> jittered_grid(std::mt19937_64& rng, const GridSpec& g
   return out;
 }
 
+BuiltScene mesh_scene(std::mt19937_64& rng, int w, int h, int cols, int rows) {
+  GridSpec g;
+  g.cols = cols, g.rows = rows;
+  g.cell_w = double(w) / cols, g.cell_h = double(h) / rows;
+  g.jitter = 0.3;
+  return screen(w, h, jittered_grid(rng, g), "mesh");
+}
+
 }  // namespace watkins::test

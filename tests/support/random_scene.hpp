@@ -49,4 +49,8 @@ struct GridSpec {
 };
 std::vector<ScreenPolygon> jittered_grid(std::mt19937_64& rng, const GridSpec& spec);
 
+// A w x h scene covered by a cols x rows jittered_grid of quads (jitter 0.3 of a cell, random
+// depths), named "mesh": shared edges, so equal X on a line, ties broken by edge id.
+BuiltScene mesh_scene(std::mt19937_64& rng, int w, int h, int cols, int rows);
+
 }  // namespace watkins::test
