@@ -24,6 +24,14 @@ struct StreamPorts {
   CData& out_ready;        // driven: low is back-pressure
 };
 
+// Reset with the driven handshake ports low: nothing offered, nothing taken.
+template <class V>
+void reset_stream(Harness<V>& h, StreamPorts p) {
+  p.in_valid = 0;
+  p.out_ready = 0;
+  h.reset();
+}
+
 // Item: what the scoreboard holds for one expected output (the model's output, or what the
 // bench needs to compute it). The counters run over every run() of the bench.
 template <class Item>

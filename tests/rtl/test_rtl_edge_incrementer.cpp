@@ -37,12 +37,12 @@ void run(int gap_pct, int bp_pct, int count, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   StreamBench<Expect> b(rng, gap_pct, bp_pct);
   b.max_cycles = 100u * count + 1000;
-  h.reset();
-  h.dut.valid_i = 0;
+  const StreamPorts ports{h.dut.valid_i, h.dut.ready_o, h.dut.valid_o, h.dut.ready_i};
+  reset_stream(h, ports);
   int sent = 0;
   ActiveEdge cur;
   b.run(
-      h, {h.dut.valid_i, h.dut.ready_o, h.dut.valid_o, h.dut.ready_i}, [&] { return sent < count; },
+      h, ports, [&] { return sent < count; },
       [&] {
         for (int c = 0; c < NC; ++c) {
           cur.rec.value[c] = random_channel(rng);

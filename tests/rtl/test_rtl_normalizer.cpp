@@ -35,16 +35,12 @@ std::uint64_t run(const std::function<bool(Vec&)>& next, int gap_pct, int bp_pct
   std::mt19937_64 rng(seed);
   StreamBench<Vec> b(rng, gap_pct, bp_pct);  // the input of each output
   b.report_limit = 5;
-  h.dut.rst_ni = 0;
-  h.dut.valid_i = 0;
-  h.dut.ready_i = 0;
-  h.tick();
-  h.tick();
-  h.dut.rst_ni = 1;
+  const StreamPorts ports{h.dut.valid_i, h.dut.ready_o, h.dut.valid_o, h.dut.ready_i};
+  reset_stream(h, ports);
   std::uint32_t tag = 0, want = 0;
   Vec v{};
   b.run(
-      h, {h.dut.valid_i, h.dut.ready_o, h.dut.valid_o, h.dut.ready_i}, [] { return true; },
+      h, ports, [] { return true; },
       [&] {
         if (!next(v)) return false;
         h.dut.normal_i = pack(v);

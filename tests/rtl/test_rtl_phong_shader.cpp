@@ -42,14 +42,10 @@ struct Bench {
   Harness<Vphong_shader> h;
   std::mt19937_64 rng;
   StreamBench<std::size_t> stream;  // the index of each output's pixel
+  const StreamPorts ports{h.dut.valid_i, h.dut.ready_o, h.dut.valid_o, h.dut.ready_i};
   explicit Bench(std::uint64_t seed, int gap, int back) : rng(seed), stream(rng, gap, back) {
     stream.report_limit = 5;
-    h.dut.rst_ni = 0;
-    h.dut.valid_i = 0;
-    h.dut.ready_i = 0;
-    h.tick();
-    h.tick();
-    h.dut.rst_ni = 1;
+    reset_stream(h, ports);
   }
   // One frame: set L and E on an empty pipe, then stream the pixels.
   void frame(const Vec& L, const Vec& E, const std::vector<PhongShader::Pixel>& px) {
@@ -60,7 +56,7 @@ struct Bench {
     std::size_t next = 0;
     std::uint32_t tag = 0, want = 0;
     stream.run(
-        h, {h.dut.valid_i, h.dut.ready_o, h.dut.valid_o, h.dut.ready_i}, [&] { return next < px.size(); },
+        h, ports, [&] { return next < px.size(); },
         [&] {
           const auto& p = px[next];
           h.dut.normal_i = pack(p.n);

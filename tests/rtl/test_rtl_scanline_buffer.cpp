@@ -38,7 +38,8 @@ void run(int frames, int gap_pct, int bp_pct, std::uint64_t seed, int sparse = 0
   StreamBench<Px> b(rng, gap_pct, bp_pct);
   b.max_cycles = 1000000;
   b.until_expected = true;  // the frame ends with its last pixel; every input must be in by then
-  h.reset();
+  const StreamPorts ports{h.dut.frag_valid_i, h.dut.frag_ready_o, h.dut.pixel_valid_o, h.dut.pixel_ready_i};
+  reset_stream(h, ports);
   for (int fr = 0; fr < frames; ++fr) {
     const int width = (fr % 3 == 0) ? MaxWidth : 1 + static_cast<int>(rng() % MaxWidth);
     const int height = 1 + static_cast<int>(rng() % 12);
@@ -86,10 +87,8 @@ void run(int frames, int gap_pct, int bp_pct, std::uint64_t seed, int sparse = 0
           want.push_back({pack(model.pixel(px)), model.covered(px), y == height - 1 && px == width - 1, px, y});
       }
     }
-    h.dut.frag_valid_i = 0;
     const bool ran = b.run(
-        h, {h.dut.frag_valid_i, h.dut.frag_ready_o, h.dut.pixel_valid_o, h.dut.pixel_ready_i},
-        [&] { return !in.empty(); },
+        h, ports, [&] { return !in.empty(); },
         [&] {
           const In& i = in.front();
           h.dut.frag_eol_i = i.eol;

@@ -147,13 +147,12 @@ Counts run(std::deque<In> in, std::deque<Out> want, int gap_pct, int bp_pct, std
   b.expect = std::move(want);
   b.max_cycles = 64ull * (in.size() + b.expect.size()) + 1000;
   auto& d = h.dut;
-  d.edge_valid_i = 0;
-  d.seg_ready_i = 0;
-  h.reset();
+  const StreamPorts ports{d.edge_valid_i, d.edge_ready_o, d.seg_valid_o, d.seg_ready_i};
+  reset_stream(h, ports);
   Counts n;
   const std::uint64_t start = h.cycles;
   b.run(
-      h, {d.edge_valid_i, d.edge_ready_o, d.seg_valid_o, d.seg_ready_i}, [&] { return !in.empty(); },
+      h, ports, [&] { return !in.empty(); },
       [&] {
         const In& i = in.front();
         d.edge_eol_i = i.eol;

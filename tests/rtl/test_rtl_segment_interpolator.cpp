@@ -115,16 +115,15 @@ Result run(int items, int width, int gap_pct, int bp_pct, std::uint64_t seed, in
   std::mt19937_64 rng(seed);
   StreamBench<Frag> b(rng, gap_pct, bp_pct);
   b.max_cycles = 50000000ull;
-  h.reset();
+  const StreamPorts ports{h.dut.seg_valid_i, h.dut.seg_ready_o, h.dut.frag_valid_o, h.dut.frag_ready_i};
+  reset_stream(h, ports);
   h.dut.width_i = width;
-  h.dut.seg_valid_i = 0;
   Item cur;
   int sent = 0;
   const std::uint64_t start = h.cycles;
   Result res;
   const bool ran = b.run(
-      h, {h.dut.seg_valid_i, h.dut.seg_ready_o, h.dut.frag_valid_o, h.dut.frag_ready_i},
-      [&] { return sent < items; },
+      h, ports, [&] { return sent < items; },
       [&] {
         cur.eol = rng() % eol_every == 0;
         cur.seg = random_segment(rng, width);

@@ -24,12 +24,12 @@ void run(Next next, int gap_pct, int bp_pct, std::uint64_t seed, std::uint64_t* 
   std::mt19937_64 rng(seed);
   StreamBench<i64> b(rng, gap_pct, bp_pct);  // the dx of each result
   b.report_limit = 5;
-  h.reset();
-  h.dut.valid_i = 0;
+  const StreamPorts ports{h.dut.valid_i, h.dut.ready_o, h.dut.valid_o, h.dut.ready_i};
+  reset_stream(h, ports);
   std::uint32_t tag = 0, want_tag = 0;
   i64 dx = 0;
   b.run(
-      h, {h.dut.valid_i, h.dut.ready_o, h.dut.valid_o, h.dut.ready_i}, [] { return true; },
+      h, ports, [] { return true; },
       [&] {
         if (!next(dx)) return false;
         h.dut.dx_i = static_cast<std::uint64_t>(dx);
