@@ -1,6 +1,6 @@
 // active_edge_list: the edges crossing each scan line, streamed in (X, edge id) order and
 // followed by an end-of-line marker, for lines 0..height-1 of a frame (model/active_edge_list
-// and the frame loop of model/pipeline.cpp).
+// and the frame loop of model/twins/watkins_top.cpp).
 // Two banks (ping-pong): while line y's sorted list streams out of one bank, every streamed edge
 // is also stepped by the edge_incrementer and, unless it retires, inserted into the other bank
 // for line y+1, as are the new edge records with y0 == y+1 from the y-sorted input stream. One

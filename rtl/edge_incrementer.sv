@@ -1,5 +1,5 @@
 // edge_incrementer: steps one active edge to the next scan line, value += slope in every
-// channel (wrapping at ChannelBits, as model/edge_incrementer.hpp) and remaining -= 1.
+// channel (wrapping at ChannelBits, as model/twins/edge_incrementer.hpp) and remaining -= 1.
 // Latency 1: valid and data registered; ready_o = ready_i || !valid_o (combinational).
 module edge_incrementer #(
   parameter int unsigned NumChannels = watkins_pkg::NumChannels,

@@ -1,6 +1,6 @@
 // normalizer: unit normal N/|N| in Q2.14 from an interpolated normal (Phong 1975 eqs. 6-8 need
 // a unit N; p. 317 asks for "a very fast mechanism for obtaining square roots"), bit-exact twin
-// of model/normalizer.hpp. m = Nx^2+Ny^2+Nz^2 exact, 1/sqrt(m) by rsqrt_unit (even shift, seed
+// of model/twins/normalizer.hpp. m = Nx^2+Ny^2+Nz^2 exact, 1/sqrt(m) by rsqrt_unit (even shift, seed
 // table, one Newton-Raphson step), N * 1/sqrt(m) rounded and saturated to UnitBits.
 // Latency 8, one normal per clock; every stage registers valid and data; one global stall:
 // ready_o = ready_i || !valid_o (combinational from ready_i and the output valid flop only).

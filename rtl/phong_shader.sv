@@ -1,7 +1,7 @@
 // phong_shader: Phong's shading rule S = Cp [cos(i)(1-d) + d] + W cos(s)^n (Phong 1975 eq. 3)
 // per pixel, light and eye at infinity, cos(s) = R.E = 2(N.L)(N.E) - L.E (Phong's reflected
 // vector, eqs. 4-8), cos(s)^n by square-and-multiply over the 8 bits of n; bit-exact twin of
-// model/phong_shader.hpp. Latency 13, one pixel per clock; every stage registers valid and data;
+// model/twins/phong_shader.hpp. Latency 13, one pixel per clock; every stage registers valid and data;
 // one global stall: ready_o = ready_i || !valid_o (combinational from ready_i and the output
 // valid flop only). light_i / eye_i are frame constants: L.E is registered from them every clock
 // (le_q), so they must be stable from one clock before a frame's first pixel to its last output.

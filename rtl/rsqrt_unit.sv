@@ -1,7 +1,7 @@
 // rsqrt_unit: y ~ 1/sqrt(m') for m = 2^(4-2j) * m', m' in [1/4, 1) (the normalizer's "very fast
 // mechanism for obtaining square roots", Phong 1975 p. 317): even-shift normalization, a 768-row
 // seed table, one Newton-Raphson step. Bit-exact twin of Normalizer::normalize_mantissa and
-// Normalizer::rsqrt_mant (model/normalizer.hpp). Latency 5, every stage registered; no
+// RsqrtUnit::rsqrt_mant (model/twins/rsqrt_unit.hpp). Latency 5, every stage registered; no
 // handshake: en_i advances every stage at once (the parent owns valid/ready and the stall).
 module rsqrt_unit #(
   localparam int MBits = 2 * watkins_pkg::NormalInBits,  // m = Nx^2 + Ny^2 + Nz^2, exact

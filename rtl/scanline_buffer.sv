@@ -1,4 +1,4 @@
-// scanline_buffer: per-pixel visibility of one scan line (model/scanline_buffer.cpp) and the
+// scanline_buffer: per-pixel visibility of one scan line (model/twins/scanline_buffer.cpp) and the
 // raster-order pixel stream. Two line buffers (ping-pong): fragments of line y are depth-tested
 // into one (kept when the pixel is empty or strictly nearer; first arrival wins ties) while the
 // other streams line y-1 out, pixel x = 0..width-1, clearing each pixel as it is read. The

@@ -1,5 +1,5 @@
 // segment_former: pairs the X-ordered active edges of one scan line into segments per polygon
-// (model/segment_former.cpp): the first edge of a polygon opens a segment, the next edge of the
+// (model/twins/segment_former.cpp): the first edge of a polygon opens a segment, the next edge of the
 // same polygon closes it; segments leave in closing order, the end-of-line marker follows them
 // and clears the table (an edge left open draws nothing). A segment's material is its closing
 // edge's (both edges belong to one polygon, so one material).

@@ -1,5 +1,5 @@
 // segment_interpolator: span setup for each segment E..F, then one fragment per pixel by alpha
-// stepping, exactly model/segment_interpolator.cpp (setup(), fragment(), step()).
+// stepping, exactly model/twins/segment_interpolator.cpp (setup(), fragment(), step()).
 // Setup pipeline, one segment per clock: s0 (pixel range, clipping, dx, offset, deltas) ->
 // span_reciprocal (26) -> sa (alpha and step products) -> sb (round, clamp alpha0, saturate
 // steps) -> sc (value products) -> FIFO (value = E + round(delta*alpha0)); empty spans are

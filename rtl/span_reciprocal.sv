@@ -1,6 +1,6 @@
 // span_reciprocal: 1/dx for a span width dx > 0 as mantissa recip = floor(2^(2R-1) / m) and
 // exponent p = floor(log2 dx), m = dx normalized to exactly R = RecipBits bits (low bits
-// truncated), exactly model/span_reciprocal.hpp: 1/dx ~= recip * 2^-(p+R).
+// truncated), exactly model/twins/span_reciprocal.hpp: 1/dx ~= recip * 2^-(p+R).
 // Pipelined, one input per clock: 1 stage leading-one detection and normalization, then a
 // restoring divider of R+1 stages (one quotient bit each). Latency R+2 = 26 cycles. Every stage
 // is registered; one global stall (ready_o = ready_i || !valid_o) holds the whole pipe.

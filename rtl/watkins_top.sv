@@ -1,4 +1,4 @@
-// watkins_top: the Watkins scan-line shading pipeline (model/pipeline.cpp) from the y-sorted
+// watkins_top: the Watkins scan-line shading pipeline (model/twins/watkins_top.cpp) from the y-sorted
 // edge-record stream to every pixel of the frame in raster order: active_edge_list
 // (+ edge_incrementer) -> segment_former -> segment_interpolator (span setup, span_reciprocal,
 // stepper) -> [Phong = 1: normalizer -> material table -> phong_shader] -> scanline_buffer.
@@ -43,7 +43,7 @@ module watkins_top #(
   output logic                               overflow_o,      // sticky until reset: the active-edge list was full
   // Phong only (ignored when Phong = 0). light_i / eye_i: unit vectors towards the light and the
   // eye, {z, y, x} Q2.14, sampled at frame start. Material table: one write per clock, between
-  // frames; entry {Cp {R,G,B} 8-bit, d, W (1.0 = 256), n} as model/phong_shader.hpp defines them.
+  // frames; entry {Cp {R,G,B} 8-bit, d, W (1.0 = 256), n} as model/twins/phong_shader.hpp defines them.
   input  logic [3*watkins_pkg::UnitBits-1:0]       light_i,
   input  logic [3*watkins_pkg::UnitBits-1:0]       eye_i,
   input  logic                                     material_we_i,

@@ -12,6 +12,7 @@
 #include <glm/vec3.hpp>
 
 #include "analytic_truth.hpp"
+#include "build_options.hpp"
 #include "float_reference.hpp"
 #include "test_support.hpp"
 
@@ -143,12 +144,9 @@ TEST(AnalyticTruth, FlatBezierPatchByHand) {
 // (Newton on P(s, t) per pixel). Measured over 14960 pixels: Gouraud max 93, mean 1.034; Phong
 // max 11, mean 0.304.
 TEST(AnalyticTruth, ShippedPatch) {
-  BuildOptions phong, gouraud;
-  phong.shading = ShadingMode::Phong;
-  gouraud.shading = ShadingMode::Gouraud;
-  gouraud.rule = ShadingRule::Phong;
-  const ImageError p = algorithm_error(load_scene(WATKINS_SOURCE_DIR "/scenes/patch.json", phong));
-  const ImageError g = algorithm_error(load_scene(WATKINS_SOURCE_DIR "/scenes/patch.json", gouraud));
+  const test::PhongVsGouraud opt = test::phong_vs_gouraud();
+  const ImageError p = algorithm_error(load_scene(WATKINS_SOURCE_DIR "/scenes/patch.json", opt.phong));
+  const ImageError g = algorithm_error(load_scene(WATKINS_SOURCE_DIR "/scenes/patch.json", opt.gouraud));
   EXPECT_GT(p.compared, 14000);
   EXPECT_EQ(p.compared, g.compared);
   EXPECT_LE(g.max_abs, 96);

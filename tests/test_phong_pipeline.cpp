@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include "build_options.hpp"
 #include "phong_hard_cases.hpp"
 #include "test_support.hpp"
 
@@ -36,9 +37,7 @@ std::string error_of(const std::function<void()>& f) {
 // ---- shipped scenes ----------------------------------------------------------------------------
 
 BuiltScene shipped_phong(const std::string& name) {
-  BuildOptions opt;
-  opt.shading = ShadingMode::Phong;
-  return load_scene(WATKINS_SOURCE_DIR "/scenes/" + name, opt);
+  return load_scene(WATKINS_SOURCE_DIR "/scenes/" + name, shading_options(ShadingMode::Phong));
 }
 
 // Measured: max 2, mean 0.2079, 1 of 37558 pixels > 1 level. The mean is set by Cp's 8-bit
@@ -140,12 +139,9 @@ TEST(PhongPipeline, GrazingLightHasNoSpecularLeak) {
 // eye: the mirror direction is met only at the centre. Phong: measured 255 at the centre. Gouraud
 // with the phong vertex rule interpolates the corner shades (cos(s)^64 ~ 0 there): measured max 131.
 TEST(PhongPipeline, InteriorHighlightOnlyWithPhong) {
-  BuildOptions phong, gouraud;
-  phong.shading = ShadingMode::Phong;
-  gouraud.shading = ShadingMode::Gouraud;
-  gouraud.rule = ShadingRule::Phong;
-  const BuiltScene sp = load_scene(WATKINS_SOURCE_DIR "/scenes/highlight.json", phong);
-  const BuiltScene sg = load_scene(WATKINS_SOURCE_DIR "/scenes/highlight.json", gouraud);
+  const PhongVsGouraud opt = phong_vs_gouraud();
+  const BuiltScene sp = load_scene(WATKINS_SOURCE_DIR "/scenes/highlight.json", opt.phong);
+  const BuiltScene sg = load_scene(WATKINS_SOURCE_DIR "/scenes/highlight.json", opt.gouraud);
   ASSERT_EQ(sp.polygons.size(), 1u);
   const Image ip = render_fixed(sp), ig = render_fixed(sg);
   auto max_level = [](const Image& img, int x0, int x1) {
@@ -206,8 +202,7 @@ TEST(PhongPipeline, ShininessRangeInTheSceneFile) {
   EXPECT_EQ(error_of([&] { load_scene_text(scene("2.5"), "s.json", "."); }),
             "s.json: materials.m.n: Phong shading needs an integer in [0, 255], got 2.5");
   // Gouraud does not use n: any value the parser accepts is kept.
-  BuildOptions g;
-  g.shading = ShadingMode::Gouraud;
+  const BuildOptions g = shading_options(ShadingMode::Gouraud);
   EXPECT_NO_THROW(load_scene_text(scene("300"), "s.json", ".", g));
 }
 
@@ -252,8 +247,7 @@ TEST(PhongScene, BuildFillsMaterialsLightEyeAndTurnedNormals) {
   EXPECT_EQ(prep.eye[2], -(1 << fmt::UnitFracBits));
   for (const EdgeRecord& e : prep.edges) EXPECT_EQ(e.material, s.polygons[std::size_t(e.poly)].material);
   // The same scene in Gouraud mode carries material id 0 and the shades, as before.
-  BuildOptions g;
-  g.shading = ShadingMode::Gouraud;
+  const BuildOptions g = shading_options(ShadingMode::Gouraud);
   const PreparedScene pg = prepare(load_scene_text(text, "s.json", ".", g), PrepareOptions{1024});
   for (const EdgeRecord& e : pg.edges) EXPECT_EQ(e.material, 0);
 }
@@ -282,8 +276,7 @@ TEST(PhongScene, ScreenVertexWithoutNormalIsRejectedUnderPhong) {
             "s.json: objects[0].polygons[0].vertices[1]: missing key \"normal\" (Phong shading interpolates "
             "vertex normals)");
   // Gouraud needs the shades instead.
-  BuildOptions g;
-  g.shading = ShadingMode::Gouraud;
+  const BuildOptions g = shading_options(ShadingMode::Gouraud);
   EXPECT_EQ(error_of([&] { load_scene_text(text, "s.json", ".", g); }),
             "s.json: objects[0].polygons[0].vertices[0]: missing key \"rgb\" (Gouraud shading interpolates "
             "vertex shades)");
@@ -307,8 +300,7 @@ TEST(PhongScene, SeventeenMaterialsExceedTheMaterialId) {
             "s.json: scene needs 17 materials; the material id is 4 bits and holds 16 (merge materials, or raise "
             "MaterialIdBits in model/twins/formats.hpp and the RTL to match)");
   // Gouraud does not carry material ids: the same scene prepares.
-  BuildOptions g;
-  g.shading = ShadingMode::Gouraud;
+  const BuildOptions g = shading_options(ShadingMode::Gouraud);
   EXPECT_NO_THROW(prepare(load_scene_text(text, "s.json", ".", g), PrepareOptions{1024}));
 }
 

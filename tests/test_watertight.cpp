@@ -4,6 +4,7 @@
 #include <cmath>
 #include <random>
 
+#include "random_scene.hpp"
 #include "test_support.hpp"
 
 using namespace watkins;
@@ -11,33 +12,18 @@ using namespace watkins::test;
 
 namespace {
 
-// A 32x32 grid of quads (or 2x triangles) over [8, 248)^2 with interior vertices jittered by up
-// to ±1.8 pixels at sub-pixel precision (so no triangle folds over); shared vertices are the same doubles.
+// A 32x32 grid of quads (or 2x triangles) over [8, 248)^2 with inner vertices jittered by up to
+// ±1.8 pixels at sub-pixel precision (so no quad folds over); shared vertices are the same doubles.
 std::vector<ScreenPolygon> grid_mesh(bool triangles, unsigned seed) {
-  constexpr int N = 32;
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> jitter(-1.8, 1.8);  // keeps every quad convex
-  std::uniform_real_distribution<double> shade(0.0, 255.0);
-  std::vector<ScreenVertex> v((N + 1) * (N + 1));
-  for (int j = 0; j <= N; ++j)
-    for (int i = 0; i <= N; ++i) {
-      const bool border = i == 0 || j == 0 || i == N || j == N;
-      v[j * (N + 1) + i] = vtx(8 + 7.5 * i + (border ? 0 : jitter(rng)), 8 + 7.5 * j + (border ? 0 : jitter(rng)),
-                               0.5, shade(rng), shade(rng), shade(rng));
-    }
-  std::vector<ScreenPolygon> out;
-  for (int j = 0; j < N; ++j)
-    for (int i = 0; i < N; ++i) {
-      const ScreenVertex &a = v[j * (N + 1) + i], &b = v[j * (N + 1) + i + 1],
-                         &c = v[(j + 1) * (N + 1) + i + 1], &d = v[(j + 1) * (N + 1) + i];
-      if (triangles) {
-        out.push_back(poly({a, b, c}));
-        out.push_back(poly({a, c, d}));
-      } else {
-        out.push_back(poly({a, b, c, d}));
-      }
-    }
-  return out;
+  std::mt19937_64 rng(seed);
+  GridSpec g;
+  g.cols = g.rows = 32;
+  g.x0 = g.y0 = 8;
+  g.cell_w = g.cell_h = 7.5;
+  g.jitter = 1.8 / 7.5;  // keeps every quad convex
+  g.triangles = triangles;
+  g.depth = 0.5;
+  return jittered_grid(rng, g);
 }
 
 void expect_each_pixel_once(const BuiltScene& s, int x0, int x1, int y0, int y1) {

@@ -1,11 +1,10 @@
-// Shared by the co-simulation tests (test_cosim.cpp, test_cosim_phong.cpp): random scenes, the
-// stall patterns, the shipped scene list and the failure report.
+// Shared by the co-simulation tests (test_cosim.cpp, test_cosim_phong.cpp): the stall patterns, the
+// shipped scene list and the failure report (the random scenes are tests/support/random_scene.hpp).
 #pragma once
 
 #include <algorithm>
-#include <cmath>
+#include <cctype>
 #include <filesystem>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -30,67 +29,6 @@ inline void expect_clean(const std::string& what, const RtlOptions& o, const Rtl
   EXPECT_FALSE(r.hang) << report(what, o, r);
   EXPECT_FALSE(r.overflow) << what;
   EXPECT_TRUE(r.model_error.empty()) << r.model_error;
-}
-
-// ---------------------------------------------------------------- random scenes
-inline ScreenVertex random_vertex(std::mt19937_64& rng, double cx, double cy, double radius, double w, double h) {
-  std::uniform_real_distribution<double> u(0, 1);
-  ScreenVertex v;
-  const double a = u(rng) * 2 * M_PI, d = radius * (0.3 + 0.7 * u(rng));
-  v.x = std::clamp(cx + d * std::cos(a), -0.5 * w, 1.5 * w);
-  v.y = std::clamp(cy + d * std::sin(a), -0.5 * h, 1.5 * h);
-  v.depth = u(rng) * 0.999;
-  for (double& c : v.rgb) c = u(rng) * 255;
-  return v;
-}
-
-// Triangles and convex quads of random size, partly off screen, overlapping and (random per-vertex
-// depths) interpenetrating; now and then vertices on pixel centres and horizontal edges.
-inline BuiltScene random_scene(std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0, 1);
-  BuiltScene s;
-  s.name = "random scene " + std::to_string(seed);
-  s.width = 8 + static_cast<int>(rng() % 89);   // 8..96
-  s.height = 8 + static_cast<int>(rng() % 57);  // 8..64
-  for (double& c : s.background) c = static_cast<double>(rng() % 256);
-  const int polys = 1 + static_cast<int>(rng() % 12);
-  for (int p = 0; p < polys; ++p) {
-    const double cx = (u(rng) * 1.4 - 0.2) * s.width, cy = (u(rng) * 1.4 - 0.2) * s.height;
-    const double radius = (0.05 + u(rng) * 0.7) * std::max(s.width, s.height);
-    ScreenPolygon poly;
-    poly.object = p;
-    const bool quad = rng() % 2;
-    if (quad) {  // convex: four points on an ellipse in angle order
-      std::vector<double> ang(4);
-      for (double& a : ang) a = u(rng) * 2 * M_PI;
-      std::sort(ang.begin(), ang.end());
-      const double rx = radius * (0.3 + 0.7 * u(rng)), ry = radius * (0.3 + 0.7 * u(rng));
-      for (double a : ang) {
-        ScreenVertex v = random_vertex(rng, cx, cy, radius, s.width, s.height);
-        v.x = cx + rx * std::cos(a);
-        v.y = cy + ry * std::sin(a);
-        poly.v.push_back(v);
-      }
-    } else {
-      for (int k = 0; k < 3; ++k) poly.v.push_back(random_vertex(rng, cx, cy, radius, s.width, s.height));
-    }
-    if (rng() % 5 == 0) {  // snap to pixel centres: edges through centres, horizontal edges
-      for (ScreenVertex& v : poly.v) {
-        v.x = std::floor(v.x) + 0.5;
-        v.y = std::floor(v.y) + 0.5;
-      }
-      if (poly.v.size() >= 2) poly.v[1].y = poly.v[0].y;
-    }
-    double a2 = 0;
-    for (std::size_t k = 0; k < poly.v.size(); ++k) {
-      const ScreenVertex &a = poly.v[k], &b = poly.v[(k + 1) % poly.v.size()];
-      a2 += a.x * b.y - b.x * a.y;
-    }
-    if (std::fabs(a2) < 1e-6) continue;
-    s.polygons.push_back(poly);
-  }
-  return s;
 }
 
 // Stall patterns cycle through: none, light random, heavy random, all-stall bursts.

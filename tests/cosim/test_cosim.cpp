@@ -3,10 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cmath>
 #include <filesystem>
 #include <functional>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -14,11 +12,14 @@
 #include "prepare.hpp"
 #include "rtl_bench.hpp"
 #include "cosim_support.hpp"
+#include "random_scene.hpp"
 #include "scene.hpp"
+#include "scene_builder.hpp"
 
 using namespace watkins;
 using namespace watkins::tb;
 using namespace watkins::tb::test;
+using namespace watkins::test;
 
 namespace {
 
@@ -68,29 +69,16 @@ INSTANTIATE_TEST_SUITE_P(Scenes, ShippedScenes, ::testing::ValuesIn(shipped_scen
 
 // ---------------------------------------------------------------- corner cases
 BuiltScene two_triangles(int w, int h, double shift) {
-  BuiltScene s;
-  s.name = "two triangles";
-  s.width = w;
-  s.height = h;
-  s.background[0] = 7;
-  s.background[1] = 70;
-  s.background[2] = 170;
-  ScreenPolygon a, b;
-  a.v = {{1 + shift, 1, 0.2, 0, {255, 0, 0}}, {w - 2.0, 3 + shift, 0.6, 0, {0, 255, 0}}, {4, h - 1.5, 0.9, 0, {0, 0, 255}}};
-  b.v = {{w - 1.0, 1, 0.7, 0, {250, 250, 0}}, {w * 0.6, h - 1.0, 0.1, 0, {0, 250, 250}}, {2 + shift, h * 0.4, 0.5, 0, {250, 0, 250}}};
-  s.polygons = {a, b};
-  return s;
+  return screen(w, h,
+                {poly({vtx(1 + shift, 1, 0.2, 255, 0, 0), vtx(w - 2.0, 3 + shift, 0.6, 0, 255, 0),
+                       vtx(4, h - 1.5, 0.9, 0, 0, 255)}),
+                 poly({vtx(w - 1.0, 1, 0.7, 250, 250, 0), vtx(w * 0.6, h - 1.0, 0.1, 0, 250, 250),
+                       vtx(2 + shift, h * 0.4, 0.5, 250, 0, 250)})},
+                "two triangles", {7, 70, 170});
 }
 
 TEST(Cosim, EmptyFrameIsAllBackground) {
-  BuiltScene s;
-  s.name = "empty";
-  s.width = 13;
-  s.height = 5;
-  s.background[0] = 1;
-  s.background[1] = 2;
-  s.background[2] = 3;
-  const PreparedScene p = prepare(s);
+  const PreparedScene p = prepare(screen(13, 5, {}, "empty", {1, 2, 3}));
   ASSERT_TRUE(p.edges.empty());
   const RtlOptions o{5, 0.3, 0.3};
   const RtlResult r = run_rtl(p, o);
@@ -101,14 +89,7 @@ TEST(Cosim, EmptyFrameIsAllBackground) {
 TEST(Cosim, SparseEmptyFrameIsOneTerminatingBeat) {
   // Sparse mode, nothing covered: one beat, not covered, background, at (width-1, height-1),
   // with pixel_last_o (the model's sparse_stream says the same).
-  BuiltScene s;
-  s.name = "empty";
-  s.width = 40;
-  s.height = 60;
-  s.background[0] = 9;
-  s.background[1] = 8;
-  s.background[2] = 7;
-  const PreparedScene p = prepare(s);
+  const PreparedScene p = prepare(screen(40, 60, {}, "empty", {9, 8, 7}));
   const Image model = WatkinsTop().render(p);
   const std::vector<SparseBeat> beats = sparse_stream(model);
   ASSERT_EQ(beats.size(), 1u);
@@ -133,14 +114,9 @@ TEST(Cosim, SparseEmptyFrameIsOneTerminatingBeat) {
 TEST(Cosim, SparseLastLineUncovered) {
   // A triangle well inside the frame: the last line has no covered pixel, so the stream ends
   // with the terminating (uncovered) beat; and the first lines are empty too.
-  BuiltScene s;
-  s.name = "inner triangle";
-  s.width = 30;
-  s.height = 20;
-  ScreenPolygon t;
-  t.v = {{5, 4, 0.3, 0, {200, 10, 10}}, {25, 6, 0.5, 0, {10, 200, 10}}, {12, 14, 0.7, 0, {10, 10, 200}}};
-  s.polygons = {t};
-  const PreparedScene p = prepare(s);
+  const PreparedScene p = prepare(
+      screen(30, 20, {poly({vtx(5, 4, 0.3, 200, 10, 10), vtx(25, 6, 0.5, 10, 200, 10), vtx(12, 14, 0.7, 10, 10, 200)})},
+             "inner triangle"));
   const Image model = WatkinsTop().render(p);
   const std::vector<SparseBeat> beats = sparse_stream(model);
   ASSERT_GE(beats.size(), 2u);
@@ -183,11 +159,7 @@ TEST(Cosim, FramesBackToBackSwitchingModes) {
   const PreparedScene a = prepare(two_triangles(40, 30, 0.0));
   const PreparedScene b = prepare(two_triangles(40, 30, 3.3));
   const PreparedScene c = prepare(two_triangles(23, 41, 1.7));
-  BuiltScene e;
-  e.name = "empty";
-  e.width = 40;
-  e.height = 30;
-  const PreparedScene empty = prepare(e);
+  const PreparedScene empty = prepare(screen(40, 30, {}, "empty"));
   const std::vector<const PreparedScene*> scenes = {&a, &b, &a, &c, &b, &empty, &a, &empty};
   const std::vector<bool> modes = {false, true, true, false, true, true, false, false};
   for (const RtlOptions& base : {RtlOptions{61, 0.0, 0.0}, RtlOptions{62, 0.3, 0.4}, RtlOptions{63, 0.05, 0.05, 50}}) {
@@ -235,15 +207,11 @@ TEST(Cosim, FramesBackToBack) {
 
 TEST(Cosim, ActiveEdgeListOverflowSetsOverflowO) {
   // 40 thin slivers crossing scan line 10: 80 active edges > MaxActiveEdges (64).
-  BuiltScene s;
-  s.name = "overflow";
-  s.width = 96;
-  s.height = 20;
+  BuiltScene s = screen(96, 20, {}, "overflow");
   for (int k = 0; k < 40; ++k) {
     const double x = 1 + k * 2.3;
-    ScreenPolygon p;
-    p.v = {{x, 2, 0.5, 0, {200, 100, 50}}, {x + 1.2, 18, 0.5, 0, {200, 100, 50}}, {x + 0.4, 18, 0.5, 0, {50, 100, 200}}};
-    s.polygons.push_back(p);
+    s.polygons.push_back(poly({vtx(x, 2, 0.5, 200, 100, 50), vtx(x + 1.2, 18, 0.5, 200, 100, 50),
+                               vtx(x + 0.4, 18, 0.5, 50, 100, 200)}));
   }
   PrepareOptions popt;
   popt.max_active_edges = 1 << 20;  // bypass the software check: the hardware must notice

@@ -2,24 +2,23 @@
 // segment interpolator) against the bit-exact model, under random input gaps and back-pressure.
 #include <gtest/gtest.h>
 
-#include <cmath>
-#include <random>
+#include <algorithm>
 #include <string>
 #include <vector>
 
-#include <glm/geometric.hpp>
-#include <glm/vec3.hpp>
-
+#include "build_options.hpp"
 #include "cosim_support.hpp"
 #include "phong_hard_cases.hpp"
 #include "watkins_top.hpp"
 #include "prepare.hpp"
+#include "random_scene.hpp"
 #include "rtl_bench.hpp"
 #include "scene.hpp"
 
 using namespace watkins;
 using namespace watkins::tb;
 using namespace watkins::tb::test;
+using namespace watkins::test;
 
 namespace {
 
@@ -59,51 +58,6 @@ TEST(PhongCosim, DatapathOnArbitraryNormalRecords) {
 }
 
 // ---------------------------------------------------------------- random Phong scenes
-glm::dvec3 random_unit(std::mt19937_64& rng) {
-  std::normal_distribution<double> g(0, 1);
-  for (;;) {
-    const glm::dvec3 v(g(rng), g(rng), g(rng));
-    if (glm::length(v) > 1e-3) return glm::normalize(v);
-  }
-}
-
-// random_scene's geometry with vertex normals and materials: normals mostly towards the viewer,
-// some polygons with antipodal vertex normals (the interpolated normal passes through zero), some
-// with normals in the screen plane; 1..16 materials with n over 0..255; a light from anywhere
-// (grazing and from behind included).
-BuiltScene random_phong_scene(std::uint64_t seed) {
-  BuiltScene s = random_scene(seed);
-  s.name = "random Phong scene " + std::to_string(seed);
-  std::mt19937_64 rng(seed ^ 0x9E3779B97F4A7C15ull);
-  std::uniform_real_distribution<double> u(0, 1);
-  s.shading = ShadingMode::Phong;
-  const int count = 1 + static_cast<int>(rng() % 16);
-  for (int k = 0; k < count; ++k) {
-    PhongMaterial m;
-    for (double& c : m.cp) c = u(rng);
-    m.d = u(rng);
-    m.W = u(rng) * 511.0 / 256.0;
-    const int pick = static_cast<int>(rng() % 8);
-    m.n = pick == 0 ? 0 : pick == 1 ? 128 : pick == 2 ? 255 : static_cast<int>(rng() % 256);
-    s.materials.push_back(m);
-  }
-  const glm::dvec3 l = random_unit(rng);
-  for (int c = 0; c < 3; ++c) s.light[c] = l[c];
-  for (ScreenPolygon& p : s.polygons) {
-    p.material = static_cast<int>(rng() % static_cast<std::uint64_t>(count));
-    const int kind = static_cast<int>(rng() % 8);
-    for (std::size_t k = 0; k < p.v.size(); ++k) {
-      glm::dvec3 n = random_unit(rng);
-      if (kind >= 2) n.z = -std::fabs(n.z);           // towards the viewer
-      if (kind == 1) n = glm::normalize(glm::dvec3(n.x, n.y, 0.0));  // in the screen plane
-      for (int c = 0; c < 3; ++c) p.v[k].normal[c] = n[c];
-    }
-    if (kind == 0)  // antipodal: the second vertex faces exactly away from the first
-      for (int c = 0; c < 3; ++c) p.v[1].normal[c] = -p.v[0].normal[c];
-  }
-  return s;
-}
-
 class RandomPhongScenes : public ::testing::TestWithParam<int> {};
 
 constexpr int PhongScenesPerBatch = 25;
@@ -138,9 +92,7 @@ INSTANTIATE_TEST_SUITE_P(Batches, RandomPhongScenes, ::testing::Range(0, 4));  /
 class ShippedScenesPhong : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(ShippedScenesPhong, MatchTheModelUnderGapsAndStalls) {
-  BuildOptions opt;
-  opt.shading = ShadingMode::Phong;
-  check_shipped_scene(GetParam(), opt);
+  check_shipped_scene(GetParam(), shading_options(ShadingMode::Phong));
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, ShippedScenesPhong, ::testing::ValuesIn(shipped_scenes()), scene_test_name);
@@ -148,7 +100,6 @@ INSTANTIATE_TEST_SUITE_P(Scenes, ShippedScenesPhong, ::testing::ValuesIn(shipped
 // ---------------------------------------------------------------- the hard cases on the RTL
 // The scenes whose error bounds tests/test_phong_pipeline.cpp asserts, bit for bit on the RTL.
 TEST(PhongCosim, HardCasesMatchTheModel) {
-  using namespace watkins::test;
   struct Case {
     std::string name;
     BuiltScene scene;
@@ -168,12 +119,9 @@ TEST(PhongCosim, HardCasesMatchTheModel) {
 // The interior highlight of scenes/highlight.json, both pipelines on the RTL: Phong finds it at
 // the centre, Gouraud (the phong vertex rule) cannot.
 TEST(PhongCosim, InteriorHighlightPhongFindsItGouraudCannot) {
-  BuildOptions phong, gouraud;
-  phong.shading = ShadingMode::Phong;
-  gouraud.shading = ShadingMode::Gouraud;
-  gouraud.rule = ShadingRule::Phong;
-  const PreparedScene pp = prepare(load_scene(WATKINS_SOURCE_DIR "/scenes/highlight.json", phong));
-  const PreparedScene pg = prepare(load_scene(WATKINS_SOURCE_DIR "/scenes/highlight.json", gouraud));
+  const PhongVsGouraud opt = phong_vs_gouraud();
+  const PreparedScene pp = prepare(load_scene(WATKINS_SOURCE_DIR "/scenes/highlight.json", opt.phong));
+  const PreparedScene pg = prepare(load_scene(WATKINS_SOURCE_DIR "/scenes/highlight.json", opt.gouraud));
   const RtlOptions o{17, 0.1, 0.1};
   const RtlResult rp = run_rtl(pp, o), rg = run_rtl(pg, o);
   expect_clean("highlight, Phong", o, rp);

@@ -17,6 +17,7 @@
 #include "active_edge_list.hpp"
 #include "prepare.hpp"
 #include "edge_packing.hpp"
+#include "random_scene.hpp"
 #include "rtl_harness.hpp"
 #include "scene.hpp"
 
@@ -168,44 +169,21 @@ EdgeFrame random_frame(std::mt19937_64& rng, int height, int target_edges, Value
   return f;
 }
 
-ScreenVertex vtx(double x, double y, std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> C(0, 255), D(0, 0.999);
-  ScreenVertex v;
-  v.x = x, v.y = y, v.depth = D(rng);
-  for (double& c : v.rgb) c = C(rng);
-  return v;
-}
-
-// prepare() of a random scene (triangles and quads, partly off screen) or of a jittered quad
-// mesh (shared edges: equal X); retried until the scene fits N active edges.
+// prepare() of a random scene (triangles and quads, bow-ties among them, partly off screen) or of
+// a jittered quad mesh (shared edges: equal X); retried until the scene fits N active edges.
 EdgeFrame prepared_frame(std::mt19937_64& rng, bool mesh) {
   for (;;) {
     BuiltScene s;
-    s.name = mesh ? "mesh" : "random";
-    s.width = 8 + static_cast<int>(rng() % 56);
-    s.height = 1 + static_cast<int>(rng() % 48);
     if (mesh) {
+      const int w = 8 + static_cast<int>(rng() % 56), h = 1 + static_cast<int>(rng() % 48);
       const int cols = 1 + static_cast<int>(rng() % 7), rows = 1 + static_cast<int>(rng() % 6);
-      std::uniform_real_distribution<double> J(-0.3, 0.3);
-      std::vector<ScreenVertex> g;
-      for (int j = 0; j <= rows; ++j)
-        for (int i = 0; i <= cols; ++i)
-          g.push_back(vtx((i + (i % cols ? J(rng) : 0)) * s.width / cols,
-                          (j + (j % rows ? J(rng) : 0)) * s.height / rows, rng));
-      for (int j = 0; j < rows; ++j)
-        for (int i = 0; i < cols; ++i) {
-          const int a = j * (cols + 1) + i;
-          ScreenPolygon p;
-          p.v = {g[a], g[a + 1], g[a + cols + 2], g[a + cols + 1]};
-          s.polygons.push_back(p);
-        }
+      s = test::mesh_scene(rng, w, h, cols, rows);
     } else {
-      std::uniform_real_distribution<double> X(-0.3 * s.width, 1.3 * s.width), Y(-0.3 * s.height, 1.3 * s.height);
-      for (int p = 0, np = static_cast<int>(rng() % 9); p < np; ++p) {
-        ScreenPolygon poly;
-        for (int i = 0, nv = (rng() % 2) ? 3 : 4; i < nv; ++i) poly.v.push_back(vtx(X(rng), Y(rng), rng));
-        s.polygons.push_back(poly);
-      }
+      test::RandomSceneSpec spec;
+      spec.max_width = 63, spec.min_height = 1, spec.max_height = 48;
+      spec.min_polygons = 0, spec.max_polygons = 8;
+      spec.convex_quads = false;
+      s = test::random_scene(rng, spec);
     }
     try {
       const PreparedScene p = prepare(s, PrepareOptions{N});

@@ -2,10 +2,12 @@
 #include <gtest/gtest.h>
 
 #include <deque>
+#include <string>
 
 #include "Vedge_incrementer.h"
 #include "edge_incrementer.hpp"
 #include "rtl_harness.hpp"
+#include "stream_bench.hpp"
 
 using namespace watkins;
 using namespace watkins::rtl;
@@ -33,51 +35,45 @@ struct Expect {
 void run(int gap_pct, int bp_pct, int count, std::uint64_t seed) {
   Harness<Vedge_incrementer> h;
   std::mt19937_64 rng(seed);
-  Stalls gaps{rng, gap_pct}, bp{rng, bp_pct};
-  h.reset();
-  std::deque<Expect> expect;
-  int sent = 0, got = 0;
-  h.dut.valid_i = 0;
+  StreamBench<Expect> b(rng, gap_pct, bp_pct);
+  b.max_cycles = 100u * count + 1000;
+  const StreamPorts ports{h.dut.valid_i, h.dut.ready_o, h.dut.valid_o, h.dut.ready_i};
+  reset_stream(h, ports);
+  int sent = 0;
   ActiveEdge cur;
-  while (got < count) {
-    if (!h.dut.valid_i && sent < count && !gaps.stall()) {
-      for (int c = 0; c < NC; ++c) {
-        cur.rec.value[c] = random_channel(rng);
-        cur.rec.slope[c] = random_channel(rng);
-        set_bits(h.dut.value_i, c * CB, CB, to_bits(cur.rec.value[c], CB));
-        set_bits(h.dut.slope_i, c * CB, CB, to_bits(cur.rec.slope[c], CB));
-      }
-      cur.remaining = rng() % 3 == 0 ? static_cast<int>(rng() % 3) : static_cast<int>(rng() % 8192);
-      h.dut.remaining_i = cur.remaining;
-      h.dut.payload_i = static_cast<std::uint32_t>(sent);
-      h.dut.valid_i = 1;
-    }
-    h.dut.ready_i = !bp.stall();
-    h.dut.eval();
-    const bool in_fire = h.dut.valid_i && h.dut.ready_o;
-    if (h.dut.valid_o && h.dut.ready_i) {
-      ASSERT_FALSE(expect.empty());
-      const Expect& x = expect.front();
-      for (int c = 0; c < NC; ++c) {
-        EXPECT_EQ(get_signed(h.dut.value_o, c * CB, CB), x.e.rec.value[c]) << "edge " << got << " ch " << c;
-        EXPECT_EQ(get_signed(h.dut.slope_o, c * CB, CB), x.e.rec.slope[c]);
-      }
-      EXPECT_EQ(h.dut.remaining_o, static_cast<std::uint32_t>(x.e.remaining) & 0x1FFF);
-      EXPECT_EQ(h.dut.retire_o, x.retire) << "remaining " << x.e.remaining;
-      EXPECT_EQ(h.dut.payload_o, x.tag);
-      expect.pop_front();
-      ++got;
-    }
-    if (in_fire) {
-      ActiveEdge stepped = cur;
-      EdgeIncrementer::step(stepped);
-      expect.push_back({stepped, stepped.remaining <= 0, static_cast<std::uint32_t>(sent)});
-      ++sent;
-    }
-    h.tick();
-    if (in_fire) h.dut.valid_i = 0;
-    ASSERT_LT(h.cycles, 100u * count + 1000) << "hang";
-  }
+  b.run(
+      h, ports, [&] { return sent < count; },
+      [&] {
+        for (int c = 0; c < NC; ++c) {
+          cur.rec.value[c] = random_channel(rng);
+          cur.rec.slope[c] = random_channel(rng);
+          set_bits(h.dut.value_i, c * CB, CB, to_bits(cur.rec.value[c], CB));
+          set_bits(h.dut.slope_i, c * CB, CB, to_bits(cur.rec.slope[c], CB));
+        }
+        cur.remaining = rng() % 3 == 0 ? static_cast<int>(rng() % 3) : static_cast<int>(rng() % 8192);
+        h.dut.remaining_i = cur.remaining;
+        h.dut.payload_i = static_cast<std::uint32_t>(sent);
+        return true;
+      },
+      [&](std::deque<Expect>& expect) {
+        ActiveEdge stepped = cur;
+        EdgeIncrementer::step(stepped);
+        expect.push_back({stepped, stepped.remaining <= 0, static_cast<std::uint32_t>(sent)});
+        ++sent;
+      },
+      [&](const Expect& x) {
+        std::string diff;
+        for (int c = 0; c < NC; ++c) {
+          if (get_signed(h.dut.value_o, c * CB, CB) != x.e.rec.value[c]) diff += " value ch " + std::to_string(c);
+          if (get_signed(h.dut.slope_o, c * CB, CB) != x.e.rec.slope[c]) diff += " slope ch " + std::to_string(c);
+        }
+        if (h.dut.remaining_o != (static_cast<std::uint32_t>(x.e.remaining) & 0x1FFF)) diff += " remaining";
+        if (h.dut.retire_o != x.retire) diff += " retire (remaining " + std::to_string(x.e.remaining) + ")";
+        if (h.dut.payload_o != x.tag) diff += " payload";
+        return diff.empty() ? diff : "edge " + std::to_string(x.tag) + " differs in" + diff;
+      });
+  EXPECT_EQ(b.checked, static_cast<std::uint64_t>(count));
+  EXPECT_EQ(b.mismatches, 0u);
 }
 
 }  // namespace

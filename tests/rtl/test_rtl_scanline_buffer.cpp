@@ -6,10 +6,13 @@
 #include <gtest/gtest.h>
 
 #include <deque>
+#include <sstream>
+#include <string>
 
 #include "Vscanline_buffer.h"
 #include "rtl_harness.hpp"
 #include "scanline_buffer.hpp"
+#include "stream_bench.hpp"
 
 using namespace watkins;
 using namespace watkins::rtl;
@@ -32,9 +35,11 @@ struct Px {
 void run(int frames, int gap_pct, int bp_pct, std::uint64_t seed, int sparse = 0) {
   Harness<Vscanline_buffer> h;
   std::mt19937_64 rng(seed);
-  Stalls gaps{rng, gap_pct}, bp{rng, bp_pct};
-  h.reset();
-  std::uint64_t bad = 0, checked = 0;
+  StreamBench<Px> b(rng, gap_pct, bp_pct);
+  b.max_cycles = 1000000;
+  b.until_expected = true;  // the frame ends with its last pixel; every input must be in by then
+  const StreamPorts ports{h.dut.frag_valid_i, h.dut.frag_ready_o, h.dut.pixel_valid_o, h.dut.pixel_ready_i};
+  reset_stream(h, ports);
   for (int fr = 0; fr < frames; ++fr) {
     const int width = (fr % 3 == 0) ? MaxWidth : 1 + static_cast<int>(rng() % MaxWidth);
     const int height = 1 + static_cast<int>(rng() % 12);
@@ -47,7 +52,7 @@ void run(int frames, int gap_pct, int bp_pct, std::uint64_t seed, int sparse = 0
     bool last_line_covered = false;
     // Stimulus and expected pixels of the whole frame, line by line, from the model.
     std::deque<In> in;
-    std::deque<Px> want;
+    std::deque<Px>& want = b.expect;
     ScanlineBuffer model(width, bg);
     for (int y = 0; y < height; ++y) {
       model.clear();
@@ -82,45 +87,34 @@ void run(int frames, int gap_pct, int bp_pct, std::uint64_t seed, int sparse = 0
           want.push_back({pack(model.pixel(px)), model.covered(px), y == height - 1 && px == width - 1, px, y});
       }
     }
-    h.dut.frag_valid_i = 0;
-    const std::uint64_t start = h.cycles;
-    while (!want.empty()) {
-      if (!h.dut.frag_valid_i && !in.empty() && !gaps.stall()) {
-        const In& i = in.front();
-        h.dut.frag_eol_i = i.eol;
-        h.dut.frag_x_i = i.f.x;
-        h.dut.frag_depth_i = i.f.depth;
-        h.dut.frag_rgb_i = (std::uint32_t(i.f.rgb[0]) << 16) | (std::uint32_t(i.f.rgb[1]) << 8) | i.f.rgb[2];
-        h.dut.frag_valid_i = 1;
-      }
-      h.dut.pixel_ready_i = !bp.stall();
-      h.dut.eval();
-      const bool in_fire = h.dut.frag_valid_i && h.dut.frag_ready_o;
-      if (h.dut.pixel_valid_o && h.dut.pixel_ready_i) {
-        const Px& w = want.front();
-        if ((h.dut.pixel_rgb_o != w.rgb || h.dut.pixel_covered_o != w.covered || h.dut.pixel_last_o != w.last ||
-             int(h.dut.pixel_x_o) != w.x || int(h.dut.pixel_y_o) != w.y) &&
-            bad++ < 8)
-          ADD_FAILURE() << "frame " << fr << (sp ? " (sparse)" : "") << " pixel " << checked << ": rtl ("
-                        << h.dut.pixel_x_o << ", " << h.dut.pixel_y_o << ") " << std::hex << h.dut.pixel_rgb_o
-                        << " cov " << int(h.dut.pixel_covered_o) << " last " << int(h.dut.pixel_last_o) << "; model ("
-                        << std::dec << w.x << ", " << w.y << ") " << std::hex << w.rgb << " cov " << w.covered
-                        << " last " << w.last;
-        want.pop_front();
-        ++checked;
-      }
-      h.tick();
-      if (in_fire) {
-        in.pop_front();
-        h.dut.frag_valid_i = 0;
-      }
-      ASSERT_LT(h.cycles - start, 1000000u) << "hang";
-    }
+    const bool ran = b.run(
+        h, ports, [&] { return !in.empty(); },
+        [&] {
+          const In& i = in.front();
+          h.dut.frag_eol_i = i.eol;
+          h.dut.frag_x_i = i.f.x;
+          h.dut.frag_depth_i = i.f.depth;
+          h.dut.frag_rgb_i = (std::uint32_t(i.f.rgb[0]) << 16) | (std::uint32_t(i.f.rgb[1]) << 8) | i.f.rgb[2];
+          return true;
+        },
+        [&](std::deque<Px>&) { in.pop_front(); },
+        [&](const Px& w) {
+          if (h.dut.pixel_rgb_o == w.rgb && h.dut.pixel_covered_o == w.covered && h.dut.pixel_last_o == w.last &&
+              int(h.dut.pixel_x_o) == w.x && int(h.dut.pixel_y_o) == w.y)
+            return std::string();
+          std::ostringstream diff;
+          diff << "frame " << fr << (sp ? " (sparse)" : "") << ": rtl (" << h.dut.pixel_x_o << ", "
+               << h.dut.pixel_y_o << ") " << std::hex << h.dut.pixel_rgb_o << " cov " << int(h.dut.pixel_covered_o)
+               << " last " << int(h.dut.pixel_last_o) << "; model (" << std::dec << w.x << ", " << w.y << ") "
+               << std::hex << w.rgb << " cov " << w.covered << " last " << w.last;
+          return diff.str();
+        });
+    ASSERT_TRUE(ran);
     ASSERT_TRUE(in.empty());
     h.tick();
     ASSERT_FALSE(h.dut.pixel_valid_o) << "extra pixel after the frame";
   }
-  EXPECT_EQ(bad, 0u);
+  EXPECT_EQ(b.mismatches, 0u);
 }
 
 }  // namespace

@@ -10,10 +10,13 @@
 #include <algorithm>
 #include <cstdio>
 #include <deque>
+#include <sstream>
+#include <string>
 
 #include "Vsegment_former.h"
 #include "rtl_harness.hpp"
 #include "segment_former.hpp"
+#include "stream_bench.hpp"
 
 using namespace watkins;
 using namespace watkins::rtl;
@@ -140,69 +143,57 @@ struct Counts {
 Counts run(std::deque<In> in, std::deque<Out> want, int gap_pct, int bp_pct, std::uint64_t seed) {
   Harness<Vsegment_former> h;
   std::mt19937_64 rng(seed);
-  Stalls gaps{rng, gap_pct}, bp{rng, bp_pct};
+  StreamBench<Out> b(rng, gap_pct, bp_pct);
+  b.expect = std::move(want);
+  b.max_cycles = 64ull * (in.size() + b.expect.size()) + 1000;
   auto& d = h.dut;
-  d.edge_valid_i = 0;
-  d.seg_ready_i = 0;
-  h.reset();
+  const StreamPorts ports{d.edge_valid_i, d.edge_ready_o, d.seg_valid_o, d.seg_ready_i};
+  reset_stream(h, ports);
   Counts n;
-  std::uint64_t bad = 0, got = 0;
   const std::uint64_t start = h.cycles;
-  const std::uint64_t limit = 64ull * (in.size() + want.size()) + 1000;
-  while (!want.empty() || !in.empty()) {
-    if (!d.edge_valid_i && !in.empty() && !gaps.stall()) {
-      const In& i = in.front();
-      d.edge_eol_i = i.eol;
-      d.edge_poly_i = static_cast<std::uint16_t>(i.poly);
-      d.edge_material_i = static_cast<std::uint8_t>(i.material);
-      for (int c = 0; c < NC; ++c) set_bits(d.edge_value_i, c * CB, CB, to_bits(i.value[c], CB));
-      d.edge_valid_i = 1;
-    }
-    d.seg_ready_i = !bp.stall();
-    d.eval();
-    const bool in_fire = d.edge_valid_i && d.edge_ready_o;
-    if (d.edge_valid_i && !d.edge_ready_o) ++n.stalled_inputs;
-    if (d.seg_valid_o && d.seg_ready_i) {
-      if (want.empty()) {
-        ADD_FAILURE() << "unexpected output " << got;
-        return n;
-      }
-      const Out& w = want.front();
-      bool ok = bool(d.seg_eol_o) == w.eol;
-      ChannelVector e{}, f{};
-      for (int c = 0; c < NC; ++c) {
-        e[c] = get_signed(d.seg_e_o, c * CB, CB);
-        f[c] = get_signed(d.seg_f_o, c * CB, CB);
-      }
-      if (ok && !w.eol)
-        ok = int(d.seg_poly_o) == w.seg.poly && int(d.seg_material_o) == w.seg.material && e == w.seg.e && f == w.seg.f;
-      if (!ok && bad++ < 8)
-        ADD_FAILURE() << "output " << got << " (line " << n.lines << "): rtl eol " << int(d.seg_eol_o) << " poly "
-                      << d.seg_poly_o << " material " << int(d.seg_material_o) << " E.x " << e[fmt::ChanX] << " F.x " << f[fmt::ChanX] << "; model eol " << w.eol
-                      << " poly " << w.seg.poly << " material " << w.seg.material << " E.x " << w.seg.e[fmt::ChanX] << " F.x " << w.seg.f[fmt::ChanX];
-      if (w.eol) ++n.lines;
-      else ++n.segments;
-      want.pop_front();
-      ++got;
-    }
-    h.tick();
-    if (in_fire) {
-      if (!in.front().eol) ++n.edges;
-      in.pop_front();
-      d.edge_valid_i = 0;
-    }
-    if (h.cycles - start > limit) {
-      ADD_FAILURE() << "hang: " << in.size() << " inputs and " << want.size() << " outputs left";
-      return n;
-    }
-  }
+  b.run(
+      h, ports, [&] { return !in.empty(); },
+      [&] {
+        const In& i = in.front();
+        d.edge_eol_i = i.eol;
+        d.edge_poly_i = static_cast<std::uint16_t>(i.poly);
+        d.edge_material_i = static_cast<std::uint8_t>(i.material);
+        for (int c = 0; c < NC; ++c) set_bits(d.edge_value_i, c * CB, CB, to_bits(i.value[c], CB));
+        return true;
+      },
+      [&](std::deque<Out>&) {
+        if (!in.front().eol) ++n.edges;
+        in.pop_front();
+      },
+      [&](const Out& w) {
+        bool ok = bool(d.seg_eol_o) == w.eol;
+        ChannelVector e{}, f{};
+        for (int c = 0; c < NC; ++c) {
+          e[c] = get_signed(d.seg_e_o, c * CB, CB);
+          f[c] = get_signed(d.seg_f_o, c * CB, CB);
+        }
+        if (ok && !w.eol)
+          ok = int(d.seg_poly_o) == w.seg.poly && int(d.seg_material_o) == w.seg.material && e == w.seg.e &&
+               f == w.seg.f;
+        const std::uint64_t line = n.lines;
+        if (w.eol) ++n.lines;
+        else ++n.segments;
+        if (ok) return std::string();
+        std::ostringstream diff;
+        diff << "line " << line << ": rtl eol " << int(d.seg_eol_o) << " poly " << d.seg_poly_o << " material "
+               << int(d.seg_material_o) << " E.x " << e[fmt::ChanX] << " F.x " << f[fmt::ChanX] << "; model eol "
+               << w.eol << " poly " << w.seg.poly << " material " << w.seg.material << " E.x "
+               << w.seg.e[fmt::ChanX] << " F.x " << w.seg.f[fmt::ChanX];
+        return diff.str();
+      });
+  n.stalled_inputs = b.in_stalls;
   d.seg_ready_i = 1;
   for (int i = 0; i < 4; ++i) {
     d.eval();
     EXPECT_FALSE(d.seg_valid_o) << "extra output after the stream";
     h.tick();
   }
-  EXPECT_EQ(bad, 0u);
+  EXPECT_EQ(b.mismatches, 0u);
   n.cycles = h.cycles - start;
   std::printf("segment_former: %llu edges, %llu lines, %llu segments checked in %llu cycles\n",
               static_cast<unsigned long long>(n.edges), static_cast<unsigned long long>(n.lines),

@@ -5,10 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <deque>
+#include <sstream>
+#include <string>
 
 #include "Vsegment_interpolator.h"
 #include "rtl_harness.hpp"
 #include "segment_interpolator.hpp"
+#include "stream_bench.hpp"
 
 using namespace watkins;
 using namespace watkins::rtl;
@@ -110,61 +113,49 @@ struct Result {
 Result run(int items, int width, int gap_pct, int bp_pct, std::uint64_t seed, int eol_every = 6) {
   Harness<Vsegment_interpolator> h;
   std::mt19937_64 rng(seed);
-  Stalls gaps{rng, gap_pct}, bp{rng, bp_pct};
-  h.reset();
+  StreamBench<Frag> b(rng, gap_pct, bp_pct);
+  b.max_cycles = 50000000ull;
+  const StreamPorts ports{h.dut.seg_valid_i, h.dut.seg_ready_o, h.dut.frag_valid_o, h.dut.frag_ready_i};
+  reset_stream(h, ports);
   h.dut.width_i = width;
-  h.dut.seg_valid_i = 0;
-  std::deque<Frag> want;
   Item cur;
   int sent = 0;
-  std::uint64_t got = 0, bad = 0, start = h.cycles;
+  const std::uint64_t start = h.cycles;
   Result res;
-  while (sent < items || !want.empty() || h.dut.seg_valid_i) {
-    if (!h.dut.seg_valid_i && sent < items && !gaps.stall()) {
-      cur.eol = rng() % eol_every == 0;
-      cur.seg = random_segment(rng, width);
-      for (int c = 0; c < NC; ++c) {
-        set_bits(h.dut.seg_e_i, c * CB, CB, to_bits(cur.seg.e[c], CB));
-        set_bits(h.dut.seg_f_i, c * CB, CB, to_bits(cur.seg.f[c], CB));
-      }
-      h.dut.seg_material_i = static_cast<std::uint8_t>(cur.seg.material);
-      h.dut.seg_eol_i = cur.eol;
-      h.dut.seg_valid_i = 1;
-    }
-    h.dut.frag_ready_i = !bp.stall();
-    h.dut.eval();
-    const bool in_fire = h.dut.seg_valid_i && h.dut.seg_ready_o;
-    if (h.dut.frag_valid_o && h.dut.frag_ready_i) {
-      if (want.empty()) {
-        ADD_FAILURE() << "unexpected fragment";
-        return res;
-      }
-      const Frag& w = want.front();
-      const bool ok = h.dut.frag_eol_o == w.eol &&
-                      (w.eol || (int(h.dut.frag_x_o) == w.x && h.dut.frag_depth_o == w.depth && h.dut.frag_rgb_o == w.rgb &&
-                                 h.dut.frag_normal_o == w.normal && int(h.dut.frag_material_o) == w.material));
-      if (!ok && bad++ < 8)
-        ADD_FAILURE() << "output " << got << ": rtl eol " << int(h.dut.frag_eol_o) << " x " << h.dut.frag_x_o
-                      << " depth " << h.dut.frag_depth_o << " rgb " << std::hex << h.dut.frag_rgb_o << " normal "
-                      << h.dut.frag_normal_o << std::dec << " material " << int(h.dut.frag_material_o) << "; model eol "
-                      << w.eol << " x " << w.x << " depth " << w.depth << " rgb " << std::hex << w.rgb << " normal "
-                      << w.normal << std::dec << " material " << w.material;
-      res.fragments += !w.eol;
-      want.pop_front();
-      ++got;
-    }
-    if (in_fire) {
-      expected(cur, width, want);
-      ++sent;
-    }
-    h.tick();
-    if (in_fire) h.dut.seg_valid_i = 0;
-    if (h.cycles - start > 50000000ull) {
-      ADD_FAILURE() << "hang";
-      return res;
-    }
-  }
-  EXPECT_EQ(bad, 0u);
+  const bool ran = b.run(
+      h, ports, [&] { return sent < items; },
+      [&] {
+        cur.eol = rng() % eol_every == 0;
+        cur.seg = random_segment(rng, width);
+        for (int c = 0; c < NC; ++c) {
+          set_bits(h.dut.seg_e_i, c * CB, CB, to_bits(cur.seg.e[c], CB));
+          set_bits(h.dut.seg_f_i, c * CB, CB, to_bits(cur.seg.f[c], CB));
+        }
+        h.dut.seg_material_i = static_cast<std::uint8_t>(cur.seg.material);
+        h.dut.seg_eol_i = cur.eol;
+        return true;
+      },
+      [&](std::deque<Frag>& want) {
+        expected(cur, width, want);
+        ++sent;
+      },
+      [&](const Frag& w) {
+        res.fragments += !w.eol;
+        const bool ok = h.dut.frag_eol_o == w.eol &&
+                        (w.eol || (int(h.dut.frag_x_o) == w.x && h.dut.frag_depth_o == w.depth &&
+                                   h.dut.frag_rgb_o == w.rgb && h.dut.frag_normal_o == w.normal &&
+                                   int(h.dut.frag_material_o) == w.material));
+        if (ok) return std::string();
+        std::ostringstream diff;
+        diff << "rtl eol " << int(h.dut.frag_eol_o) << " x " << h.dut.frag_x_o << " depth " << h.dut.frag_depth_o
+             << " rgb " << std::hex << h.dut.frag_rgb_o << " normal " << h.dut.frag_normal_o << std::dec
+             << " material " << int(h.dut.frag_material_o) << "; model eol " << w.eol << " x " << w.x << " depth "
+             << w.depth << " rgb " << std::hex << w.rgb << " normal " << w.normal << std::dec << " material "
+             << w.material;
+        return diff.str();
+      });
+  if (!ran) return res;
+  EXPECT_EQ(b.mismatches, 0u);
   res.cycles = h.cycles - start;
   return res;
 }

@@ -3,10 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <deque>
+#include <string>
 
 #include "Vspan_reciprocal.h"
 #include "rtl_harness.hpp"
 #include "span_reciprocal.hpp"
+#include "stream_bench.hpp"
 
 using namespace watkins;
 using namespace watkins::rtl;
@@ -20,47 +22,34 @@ template <class Next>
 void run(Next next, int gap_pct, int bp_pct, std::uint64_t seed, std::uint64_t* checked) {
   Harness<Vspan_reciprocal> h;
   std::mt19937_64 rng(seed);
-  Stalls gaps{rng, gap_pct}, bp{rng, bp_pct};
-  h.reset();
-  std::deque<i64> inflight;
+  StreamBench<i64> b(rng, gap_pct, bp_pct);  // the dx of each result
+  b.report_limit = 5;
+  const StreamPorts ports{h.dut.valid_i, h.dut.ready_o, h.dut.valid_o, h.dut.ready_i};
+  reset_stream(h, ports);
   std::uint32_t tag = 0, want_tag = 0;
-  bool more = true;
   i64 dx = 0;
-  h.dut.valid_i = 0;
-  std::uint64_t bad = 0;
-  while (more || !inflight.empty() || h.dut.valid_i) {
-    if (!h.dut.valid_i && more && !gaps.stall()) {
-      more = next(dx);
-      if (more) {
+  b.run(
+      h, ports, [] { return true; },
+      [&] {
+        if (!next(dx)) return false;
         h.dut.dx_i = static_cast<std::uint64_t>(dx);
         h.dut.payload_i = tag;
-        h.dut.valid_i = 1;
-      }
-    }
-    h.dut.ready_i = !bp.stall();
-    h.dut.eval();
-    const bool in_fire = h.dut.valid_i && h.dut.ready_o;
-    if (h.dut.valid_o && h.dut.ready_i) {
-      ASSERT_FALSE(inflight.empty());
-      const SpanReciprocal r = SpanReciprocal::of(inflight.front());
-      if (h.dut.recip_o != static_cast<std::uint32_t>(r.recip) || h.dut.p_o != static_cast<std::uint32_t>(r.p) ||
-          h.dut.payload_o != want_tag) {
-        if (bad++ < 5)
-          ADD_FAILURE() << "dx " << inflight.front() << ": rtl recip " << h.dut.recip_o << " p " << int(h.dut.p_o)
-                        << ", model recip " << r.recip << " p " << r.p;
-      }
-      inflight.pop_front();
-      ++want_tag;
-      ++*checked;
-    }
-    if (in_fire) {
-      inflight.push_back(dx);
-      ++tag;
-    }
-    h.tick();
-    if (in_fire) h.dut.valid_i = 0;
-  }
-  EXPECT_EQ(bad, 0u);
+        return true;
+      },
+      [&](std::deque<i64>& inflight) {
+        inflight.push_back(dx);
+        ++tag;
+      },
+      [&](i64 in) {
+        const SpanReciprocal r = SpanReciprocal::of(in);
+        const bool same = h.dut.recip_o == static_cast<std::uint32_t>(r.recip) &&
+                          h.dut.p_o == static_cast<std::uint32_t>(r.p) && h.dut.payload_o == want_tag++;
+        if (same) return std::string();
+        return "dx " + std::to_string(in) + ": rtl recip " + std::to_string(h.dut.recip_o) + " p " +
+               std::to_string(int(h.dut.p_o)) + ", model recip " + std::to_string(r.recip) + " p " + std::to_string(r.p);
+      });
+  *checked = b.checked;
+  EXPECT_EQ(b.mismatches, 0u);
 }
 
 }  // namespace

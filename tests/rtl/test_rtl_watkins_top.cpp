@@ -9,6 +9,7 @@
 #include "watkins_top.hpp"
 #include "prepare.hpp"
 #include "edge_packing.hpp"
+#include "random_scene.hpp"
 #include "rtl_harness.hpp"
 #include "scene.hpp"
 
@@ -20,47 +21,14 @@ namespace {
 constexpr int MaxWidth = 128;      // -GMaxWidth in tests/rtl/CMakeLists.txt
 constexpr int MaxActiveEdges = 16;  // -GMaxActiveEdges
 
-ScreenVertex vtx(double x, double y, double d, std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> C(0, 255);
-  ScreenVertex v;
-  v.x = x, v.y = y, v.depth = d;
-  for (double& c : v.rgb) c = C(rng);
-  return v;
-}
-
+// A w x h scene of `polys` random triangles and quads (bow-ties among them), partly off screen.
 BuiltScene random_scene(int w, int h, int polys, std::mt19937_64& rng) {
-  BuiltScene s;
-  s.name = "random";
-  s.width = w, s.height = h;
-  for (double& c : s.background) c = double(rng() % 256);
-  std::uniform_real_distribution<double> X(-0.3 * w, 1.3 * w), Y(-0.3 * h, 1.3 * h), D(0, 0.999);
-  for (int p = 0; p < polys; ++p) {
-    ScreenPolygon poly;
-    const int nv = (rng() % 2) ? 3 : 4;
-    for (int i = 0; i < nv; ++i) poly.v.push_back(vtx(X(rng), Y(rng), D(rng), rng));
-    s.polygons.push_back(poly);
-  }
-  return s;
-}
-
-// A grid of quads sharing their vertices (so their edges), jittered, over the whole screen.
-BuiltScene mesh_scene(int w, int h, int cols, int rows, std::mt19937_64& rng) {
-  BuiltScene s;
-  s.name = "mesh";
-  s.width = w, s.height = h;
-  std::uniform_real_distribution<double> J(-0.3, 0.3), D(0.1, 0.9);
-  std::vector<ScreenVertex> g;
-  for (int j = 0; j <= rows; ++j)
-    for (int i = 0; i <= cols; ++i)
-      g.push_back(vtx((i + (i % cols ? J(rng) : 0)) * w / cols, (j + (j % rows ? J(rng) : 0)) * h / rows, D(rng), rng));
-  for (int j = 0; j < rows; ++j)
-    for (int i = 0; i < cols; ++i) {
-      ScreenPolygon p;
-      const int a = j * (cols + 1) + i;
-      p.v = {g[a], g[a + 1], g[a + cols + 2], g[a + cols + 1]};
-      s.polygons.push_back(p);
-    }
-  return s;
+  test::RandomSceneSpec spec;
+  spec.min_width = spec.max_width = w;
+  spec.min_height = spec.max_height = h;
+  spec.min_polygons = spec.max_polygons = polys;
+  spec.convex_quads = false;
+  return test::random_scene(rng, spec);
 }
 
 void pack(VlWide<15>& w, const EdgeRecord& e) {  // the bench's packer (testbench/edge_packing.hpp)
@@ -194,7 +162,7 @@ TEST(RtlTop, SharedEdgeMesh) {
   std::mt19937_64 rng(12);
   for (int i = 0; i < 4; ++i) {
     PreparedScene p;
-    ASSERT_TRUE(prepare_ok(mesh_scene(96, 64, 3, 5, rng), p, true));
+    ASSERT_TRUE(prepare_ok(test::mesh_scene(rng, 96, 64, 3, 5), p, true));
     WatkinsTop pipe(MaxActiveEdges);
     const Image ref = pipe.render(p);
     t.frame(p, &ref, 20 * i, 20 * i);
@@ -209,7 +177,7 @@ TEST(RtlTop, CyclesPerFrame) {
   std::mt19937_64 rng(13);
   for (int i = 0; i < 6; ++i) {
     PreparedScene p;
-    const BuiltScene s = i < 3 ? mesh_scene(MaxWidth, 48, 3 + i, 3, rng) : random_scene(MaxWidth, 48, 6, rng);
+    const BuiltScene s = i < 3 ? test::mesh_scene(rng, MaxWidth, 48, 3 + i, 3) : random_scene(MaxWidth, 48, 6, rng);
     if (!prepare_ok(s, p)) continue;
     WatkinsTop pipe(MaxActiveEdges);
     std::vector<std::uint64_t> per_line(p.height, 0);
@@ -258,7 +226,7 @@ TEST(RtlTop, OverflowIsStickyAndNeverHangs) {
   Top t;
   std::mt19937_64 rng(14);
   PreparedScene big;
-  big = prepare(mesh_scene(96, 32, 12, 2, rng), PrepareOptions{1024});
+  big = prepare(test::mesh_scene(rng, 96, 32, 12, 2), PrepareOptions{1024});
   ASSERT_GT(big.needs.max_active_edges, MaxActiveEdges);
   t.frame(big, nullptr, 10, 10);
   EXPECT_TRUE(t.h.dut.overflow_o);

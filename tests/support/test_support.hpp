@@ -1,36 +1,16 @@
-// Small helpers shared by the model tests: build screen-space scenes by hand and run them.
+// Small helpers shared by the model tests: screen-space scenes (scene_builder.hpp) and a run of the
+// fixed-point model over one.
 #pragma once
 
-#include <initializer_list>
 #include <vector>
 
 #include "float_reference.hpp"
 #include "watkins_top.hpp"
 #include "prepare.hpp"
 #include "scene.hpp"
+#include "scene_builder.hpp"
 
 namespace watkins::test {
-
-inline ScreenVertex vtx(double x, double y, double depth = 0.5, double r = 0, double g = 0, double b = 0) {
-  ScreenVertex v;
-  v.x = x, v.y = y, v.depth = depth;
-  v.rgb[0] = r, v.rgb[1] = g, v.rgb[2] = b;
-  return v;
-}
-
-inline ScreenPolygon poly(std::initializer_list<ScreenVertex> vs) {
-  ScreenPolygon p;
-  p.v = vs;
-  return p;
-}
-
-inline BuiltScene screen(int w, int h, std::vector<ScreenPolygon> polys) {
-  BuiltScene s;
-  s.name = "test";
-  s.width = w, s.height = h;
-  s.polygons = std::move(polys);
-  return s;
-}
 
 // Renders with the fixed-point model; counts fragments per pixel when `hits` is given.
 // The active-edge capacity is raised above the default so meshes are not limited by it here.

@@ -6,15 +6,18 @@
 
 #include <cmath>
 #include <deque>
+#include <sstream>
+#include <string>
 
 #include "Vphong_shader.h"
 #include "fixed_point.hpp"
 #include "normalizer.hpp"
-#include "phong_harness.hpp"
 #include "phong_shader.hpp"
+#include "rtl_harness.hpp"
+#include "stream_bench.hpp"
 
 using namespace watkins;
-using namespace watkins::phong;
+using namespace watkins::rtl;
 using Vec = PhongShader::Vec;
 
 namespace {
@@ -38,15 +41,11 @@ Vec unit_of(std::mt19937_64& rng, double bias_x = 0, double bias_y = 0, double b
 struct Bench {
   Harness<Vphong_shader> h;
   std::mt19937_64 rng;
-  Stalls gaps, bp;
-  std::uint64_t checked = 0, bad = 0;
-  explicit Bench(std::uint64_t seed, int gap, int back) : rng(seed), gaps{rng, gap}, bp{rng, back} {
-    h.dut.rst_ni = 0;
-    h.dut.valid_i = 0;
-    h.dut.ready_i = 0;
-    h.tick();
-    h.tick();
-    h.dut.rst_ni = 1;
+  StreamBench<std::size_t> stream;  // the index of each output's pixel
+  const StreamPorts ports{h.dut.valid_i, h.dut.ready_o, h.dut.valid_o, h.dut.ready_i};
+  explicit Bench(std::uint64_t seed, int gap, int back) : rng(seed), stream(rng, gap, back) {
+    stream.report_limit = 5;
+    reset_stream(h, ports);
   }
   // One frame: set L and E on an empty pipe, then stream the pixels.
   void frame(const Vec& L, const Vec& E, const std::vector<PhongShader::Pixel>& px) {
@@ -54,46 +53,37 @@ struct Bench {
     h.dut.eye_i = pack(E);
     h.dut.valid_i = 0;
     h.tick();  // le_q settles
-    std::deque<std::size_t> inflight;
     std::size_t next = 0;
     std::uint32_t tag = 0, want = 0;
-    while (next < px.size() || !inflight.empty() || h.dut.valid_i) {
-      if (!h.dut.valid_i && next < px.size() && !gaps.stall()) {
-        const auto& p = px[next];
-        h.dut.normal_i = pack(p.n);
-        h.dut.cp_i = static_cast<std::uint32_t>(p.cp[0] | (p.cp[1] << 8) | (p.cp[2] << 16));
-        h.dut.d_i = static_cast<std::uint16_t>(p.d);
-        h.dut.w_i = static_cast<std::uint16_t>(p.w);
-        h.dut.shininess_i = static_cast<std::uint8_t>(p.shininess);
-        h.dut.payload_i = tag;
-        h.dut.valid_i = 1;
-      }
-      h.dut.ready_i = !bp.stall();
-      h.dut.eval();
-      const bool in_fire = h.dut.valid_i && h.dut.ready_o;
-      if (h.dut.valid_o && h.dut.ready_i) {
-        ASSERT_FALSE(inflight.empty());
-        const auto& p = px[inflight.front()];
-        const auto want_rgb = PhongShader::shade(p, L, E);
-        const std::uint32_t m = static_cast<std::uint32_t>(want_rgb[0] | (want_rgb[1] << 8) | (want_rgb[2] << 16));
-        if ((h.dut.rgb_o != m || h.dut.payload_o != want) && bad++ < 5) {
+    stream.run(
+        h, ports, [&] { return next < px.size(); },
+        [&] {
+          const auto& p = px[next];
+          h.dut.normal_i = pack(p.n);
+          h.dut.cp_i = static_cast<std::uint32_t>(p.cp[0] | (p.cp[1] << 8) | (p.cp[2] << 16));
+          h.dut.d_i = static_cast<std::uint16_t>(p.d);
+          h.dut.w_i = static_cast<std::uint16_t>(p.w);
+          h.dut.shininess_i = static_cast<std::uint8_t>(p.shininess);
+          h.dut.payload_i = tag;
+          return true;
+        },
+        [&](std::deque<std::size_t>& inflight) {
+          inflight.push_back(next++);
+          ++tag;
+        },
+        [&](std::size_t k) {
+          const auto& p = px[k];
+          const auto want_rgb = PhongShader::shade(p, L, E);
+          const std::uint32_t m = static_cast<std::uint32_t>(want_rgb[0] | (want_rgb[1] << 8) | (want_rgb[2] << 16));
+          const bool same = h.dut.rgb_o == m && h.dut.payload_o == want++;
+          if (same) return std::string();
           const auto t = PhongShader::terms(p, L, E);
-          ADD_FAILURE() << "pixel " << inflight.front() << " n " << p.shininess << " d " << p.d << " W " << p.w
-                        << ": rtl rgb 0x" << std::hex << h.dut.rgb_o << " model 0x" << m << std::dec << " tag "
-                        << h.dut.payload_o << "/" << want << " (cos_i " << t.cos_i << " cs " << t.cs << " pow "
-                        << t.pow << ")";
-        }
-        inflight.pop_front();
-        ++want;
-        ++checked;
-      }
-      if (in_fire) {
-        inflight.push_back(next++);
-        ++tag;
-      }
-      h.tick();
-      if (in_fire) h.dut.valid_i = 0;
-    }
+          std::ostringstream diff;
+          diff << "pixel " << k << " n " << p.shininess << " d " << p.d << " W " << p.w << ": rtl rgb 0x" << std::hex
+               << h.dut.rgb_o << " model 0x" << m << std::dec << " tag " << h.dut.payload_o << "/" << want - 1
+               << " (cos_i " << t.cos_i << " cs " << t.cs << " pow " << t.pow << ")";
+          return diff.str();
+        });
   }
 };
 
@@ -135,8 +125,8 @@ TEST(RtlPhongShader, RandomFramesUnderStalls) {
     b.frame(L, E, px);
     total += px.size();
   }
-  EXPECT_EQ(b.bad, 0u);
-  EXPECT_EQ(b.checked, total);
+  EXPECT_EQ(b.stream.mismatches, 0u);
+  EXPECT_EQ(b.stream.checked, total);
 }
 
 TEST(RtlPhongShader, EveryExponentFullThroughput) {
@@ -149,6 +139,6 @@ TEST(RtlPhongShader, EveryExponentFullThroughput) {
     b.frame(L, E, px);
     total += px.size();
   }
-  EXPECT_EQ(b.bad, 0u);
-  EXPECT_EQ(b.checked, total);
+  EXPECT_EQ(b.stream.mismatches, 0u);
+  EXPECT_EQ(b.stream.checked, total);
 }

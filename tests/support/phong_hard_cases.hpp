@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "test_support.hpp"
+#include "scene_builder.hpp"
 
 namespace watkins::test {
 

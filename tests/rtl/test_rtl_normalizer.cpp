@@ -6,14 +6,17 @@
 #include <array>
 #include <deque>
 #include <functional>
+#include <sstream>
+#include <string>
 
 #include "Vnormalizer.h"
 #include "fixed_point.hpp"
 #include "normalizer.hpp"
-#include "phong_harness.hpp"
+#include "rtl_harness.hpp"
+#include "stream_bench.hpp"
 
 using namespace watkins;
-using namespace watkins::phong;
+using namespace watkins::rtl;
 
 namespace {
 
@@ -30,60 +33,41 @@ std::uint64_t pack(const Vec& v) {
 std::uint64_t run(const std::function<bool(Vec&)>& next, int gap_pct, int bp_pct, std::uint64_t seed) {
   Harness<Vnormalizer> h;
   std::mt19937_64 rng(seed);
-  Stalls gaps{rng, gap_pct}, bp{rng, bp_pct};
-  h.dut.rst_ni = 0;
-  h.dut.valid_i = 0;
-  h.dut.ready_i = 0;
-  h.tick();
-  h.tick();
-  h.dut.rst_ni = 1;
-  std::deque<Vec> inflight;
+  StreamBench<Vec> b(rng, gap_pct, bp_pct);  // the input of each output
+  b.report_limit = 5;
+  const StreamPorts ports{h.dut.valid_i, h.dut.ready_o, h.dut.valid_o, h.dut.ready_i};
+  reset_stream(h, ports);
   std::uint32_t tag = 0, want = 0;
-  bool more = true;
   Vec v{};
-  std::uint64_t checked = 0, bad = 0;
-  while (more || !inflight.empty() || h.dut.valid_i) {
-    if (!h.dut.valid_i && more && !gaps.stall()) {
-      more = next(v);
-      if (more) {
+  b.run(
+      h, ports, [] { return true; },
+      [&] {
+        if (!next(v)) return false;
         h.dut.normal_i = pack(v);
         h.dut.payload_i = tag;
-        h.dut.valid_i = 1;
-      }
-    }
-    h.dut.ready_i = !bp.stall();
-    h.dut.eval();
-    const bool in_fire = h.dut.valid_i && h.dut.ready_o;
-    if (h.dut.valid_o && h.dut.ready_i) {
-      if (inflight.empty()) {
-        ADD_FAILURE() << "output without input";
-        return checked;
-      }
-      const Vec& in = inflight.front();
-      const Normalizer::Unit u = Normalizer::normalize(in[0], in[1], in[2]);
-      bool same = h.dut.payload_o == want && h.dut.null_o == u.null;
-      for (int c = 0; c < 3; ++c)
-        same &= wrap_signed(static_cast<i128>(h.dut.unit_o >> (c * UB)), UB) == u.n[c];
-      if (!same && bad++ < 5)
-        ADD_FAILURE() << "in (" << in[0] << ", " << in[1] << ", " << in[2] << "): rtl ("
-                      << wrap_signed(static_cast<i128>(h.dut.unit_o), UB) << ", "
-                      << wrap_signed(static_cast<i128>(h.dut.unit_o >> UB), UB) << ", "
-                      << wrap_signed(static_cast<i128>(h.dut.unit_o >> 2 * UB), UB) << ") null "
-                      << int(h.dut.null_o) << " tag " << h.dut.payload_o << ", model (" << u.n[0] << ", "
-                      << u.n[1] << ", " << u.n[2] << ") null " << u.null << " tag " << want;
-      inflight.pop_front();
-      ++want;
-      ++checked;
-    }
-    if (in_fire) {
-      inflight.push_back(v);
-      ++tag;
-    }
-    h.tick();
-    if (in_fire) h.dut.valid_i = 0;
-  }
-  EXPECT_EQ(bad, 0u);
-  return checked;
+        return true;
+      },
+      [&](std::deque<Vec>& inflight) {
+        inflight.push_back(v);
+        ++tag;
+      },
+      [&](const Vec& in) {
+        const Normalizer::Unit u = Normalizer::normalize(in[0], in[1], in[2]);
+        bool same = h.dut.payload_o == want && h.dut.null_o == u.null;
+        for (int c = 0; c < 3; ++c) same &= wrap_signed(static_cast<i128>(h.dut.unit_o >> (c * UB)), UB) == u.n[c];
+        ++want;
+        if (same) return std::string();
+        std::ostringstream diff;
+        diff << "in (" << in[0] << ", " << in[1] << ", " << in[2] << "): rtl ("
+             << wrap_signed(static_cast<i128>(h.dut.unit_o), UB) << ", "
+             << wrap_signed(static_cast<i128>(h.dut.unit_o >> UB), UB) << ", "
+             << wrap_signed(static_cast<i128>(h.dut.unit_o >> 2 * UB), UB) << ") null " << int(h.dut.null_o)
+             << " tag " << h.dut.payload_o << ", model (" << u.n[0] << ", " << u.n[1] << ", " << u.n[2]
+             << ") null " << u.null << " tag " << want - 1;
+        return diff.str();
+      });
+  EXPECT_EQ(b.mismatches, 0u);
+  return b.checked;
 }
 
 constexpr i64 Hi = i64{1} << (NB - 1);

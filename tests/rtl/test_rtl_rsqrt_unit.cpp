@@ -9,10 +9,10 @@
 
 #include "Vrsqrt_unit.h"
 #include "normalizer.hpp"
-#include "phong_harness.hpp"
+#include "rtl_harness.hpp"
 
 using namespace watkins;
-using namespace watkins::phong;
+using namespace watkins::rtl;
 
 namespace {
 
