@@ -1,5 +1,5 @@
 // SystemC bench: the Verilated (--sc) watkins_top bound to sc_signals and clocked by one
-// SC_THREAD that also runs the transaction-level source, sink and checker (frame_driver.hpp).
+// SC_THREAD that also runs the drive loop (frame_driver.hpp) through TopPins on the signals.
 // Two Verilated builds of the one top: Phong = 0 (Vwatkins_top) and Phong = 1
 // (Vwatkins_top_phong), each in its own bench module; a run clocks only the one its scenes need.
 //
@@ -24,8 +24,11 @@
 #include "Vwatkins_top___024root.h"  // the public internal stage signals
 #include "Vwatkins_top_phong.h"
 #include "Vwatkins_top_phong___024root.h"
+#include "expectations.hpp"
+#include "formats.hpp"
 #include "fst_trace.hpp"
 #include "frame_driver.hpp"
+#include "top_pins.hpp"
 
 // libsystemc's own main() calls sc_main; our programs have their own main() and run the kernel
 // from ordinary code (run_rtl), but the shared library still needs the symbol.
@@ -34,17 +37,18 @@ int sc_main(int, char**) { return 0; }
 namespace watkins::tb {
 namespace {
 
-constexpr int MaxWidth = 1024;  // the top's MaxWidth parameter default (not overridden here)
+// The top at its default MaxWidth (not overridden in testbench/CMakeLists.txt).
+constexpr int MaxWidth = fmt::DefaultMaxWidth;
 
 template <class Dut>
-struct TopBench : sc_module {
+struct TopBench : sc_module, detail::TopPins {
   sc_signal<bool> clk{"clk"}, rst_n{"rst_n"}, edge_eof{"edge_eof"}, edge_valid{"edge_valid"};
   sc_signal<bool> edge_ready{"edge_ready"}, pixel_covered{"pixel_covered"}, pixel_last{"pixel_last"};
   sc_signal<bool> pixel_valid{"pixel_valid"}, pixel_ready{"pixel_ready"}, overflow{"overflow"};
   sc_signal<bool> sparse{"sparse"};
   sc_signal<uint32_t> pixel_x{"pixel_x"}, pixel_y{"pixel_y"};
   sc_signal<uint32_t> width{"width"}, height{"height"}, background{"background"}, pixel_rgb{"pixel_rgb"};
-  sc_signal<sc_bv<edge_layout::Bits>> edge{"edge"};
+  sc_signal<sc_bv<edge_layout::Bits>> edge{"edge"};  // edge_layout::Bits == fmt::EdgeRecordBits
   sc_signal<uint64_t> light{"light"}, eye{"eye"};
   sc_signal<bool> material_we{"material_we"};
   sc_signal<uint32_t> material_addr{"material_addr"}, material_cp{"material_cp"}, material_d{"material_d"};
@@ -94,27 +98,27 @@ struct TopBench : sc_module {
     }
   }
 
-  // ---- Pins (see frame_driver.hpp) ----
-  void reset_pin(bool v) { rst_n.write(v); }
-  void frame_pins(std::uint32_t w, std::uint32_t h, std::uint32_t bg, bool sp) {
+  // ---- TopPins (top_pins.hpp) ----
+  void reset_pin(bool v) override { rst_n.write(v); }
+  void frame_pins(std::uint32_t w, std::uint32_t h, std::uint32_t bg, bool sp) override {
     width.write(w);
     height.write(h);
     background.write(bg);
     sparse.write(sp);
   }
-  void phong_pins(std::uint64_t l, std::uint64_t e) {
+  void phong_pins(std::uint64_t l, std::uint64_t e) override {
     light.write(l);
     eye.write(e);
   }
-  void material_pin(bool we, int addr, const QuantizedMaterial& m) {
-    material_we.write(we);
-    material_addr.write(static_cast<uint32_t>(addr));
-    material_cp.write(detail::pack_rgb({std::uint8_t(m.cp[0]), std::uint8_t(m.cp[1]), std::uint8_t(m.cp[2])}));
-    material_d.write(static_cast<uint32_t>(m.d));
-    material_w.write(static_cast<uint32_t>(m.w));
-    material_n.write(static_cast<uint32_t>(m.shininess));
+  void material_pins(const detail::MaterialPins& m) override {
+    material_we.write(m.we);
+    material_addr.write(m.addr);
+    material_cp.write(m.cp);
+    material_d.write(m.d);
+    material_w.write(m.w);
+    material_n.write(m.n);
   }
-  void edge_pins(bool valid, bool eof, const EdgeWords& data) {
+  void edge_pins(bool valid, bool eof, const EdgeWords& data) override {
     edge_valid.write(valid);
     edge_eof.write(eof);
     if (data != last_edge_) {  // a 466-bit sc_bv write is the costly one; skip it when unchanged
@@ -123,13 +127,13 @@ struct TopBench : sc_module {
       edge.write(edge_bv_);
     }
   }
-  void ready_pin(bool v) { pixel_ready.write(v); }
-  void settle(std::uint64_t t) {
+  void ready_pin(bool v) override { pixel_ready.write(v); }
+  void settle(std::uint64_t t) override {
     clk.write(false);
     wait(half_);
     trace_.dump(t);
   }
-  detail::PinsOut sample() {
+  detail::PinsOut sample() override {
     detail::PinsOut o;
     o.edge_ready = edge_ready.read();
     o.pixel_valid = pixel_valid.read();
@@ -141,27 +145,23 @@ struct TopBench : sc_module {
     o.overflow = overflow.read();
     return o;
   }
-  void posedge(std::uint64_t t) {
+  void posedge(std::uint64_t t) override {
     clk.write(true);
     wait(half_);
     trace_.dump(t);
   }
-  bool trace_open(const std::string& path) {
-    return trace_.open(dut, path);
-  }
-  void trace_close() {
-    trace_.close();
-  }
-  const detail::StageTaps& stage_taps() {
-    if (!taps_.ae_valid) taps_ = detail::stage_taps(*dut.rootp);
-    return taps_;
-  }
-  std::string stopped() {
+  bool stopped() override {
     VerilatedContext* ctx = dut.contextp();
-    if (!ctx->gotFinish() && !ctx->gotError()) return "";
+    if (!ctx->gotFinish() && !ctx->gotError()) return false;
     ctx->gotFinish(false);
     ctx->gotError(false);
-    return "an assertion, $stop or $finish fired (Verilator's message is on stdout)";
+    return true;
+  }
+  bool trace_open(const std::string& path) override { return trace_.open(dut, path); }
+  void trace_close() override { trace_.close(); }
+  const detail::StageTaps* stage_taps() override {
+    if (!taps_.ae_valid) taps_ = detail::stage_taps(*dut.rootp);
+    return &taps_;
   }
 
  private:
@@ -176,8 +176,8 @@ struct TopBench : sc_module {
 template <class Dut>
 struct Side {
   TopBench<Dut>* top = nullptr;
-  detail::FrameDriver<TopBench<Dut>>* driver = nullptr;
-  explicit Side(const char* name) : top(new TopBench<Dut>(name)), driver(new detail::FrameDriver<TopBench<Dut>>(*top)) {}
+  detail::FrameDriver* driver = nullptr;
+  explicit Side(const char* name) : top(new TopBench<Dut>(name)), driver(new detail::FrameDriver(*top)) {}
 };
 
 struct Bench {
@@ -239,21 +239,15 @@ RtlResult run_rtl_frames(const std::vector<const PreparedScene*>& scenes, const 
                          const std::vector<const Image*>& expected) {
   const bool phong = detail::phong_frames(scenes);
   RtlResult r;
-  std::vector<Image> rendered;
-  std::vector<const Image*> use;
-  std::vector<StageStreams> stages;
-  detail::expected_images(scenes, opt, expected, rendered, use, stages, r, MaxWidth);
+  const detail::Expectations want = detail::expect(scenes, opt, expected, r, MaxWidth);
   Bench& b = bench();
   if (b.dead) throw std::runtime_error("RTL bench: the SystemC kernel stopped in an earlier run");
+  auto work = [&](detail::FrameDriver& d) { d.run(scenes, want.images, want.stages, opt, r); };
   if (phong)
-    run_on(b, b.phong, [&](auto& d) { d.run(scenes, use, stages, opt, r); });
+    run_on(b, b.phong, work);
   else
-    run_on(b, b.gouraud, [&](auto& d) { d.run(scenes, use, stages, opt, r); });
+    run_on(b, b.gouraud, work);
   return r;
-}
-
-RtlResult run_rtl(const PreparedScene& scene, const RtlOptions& opt, const Image* expected) {
-  return run_rtl_frames({&scene}, opt, {expected});
 }
 
 }  // namespace watkins::tb
