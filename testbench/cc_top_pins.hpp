@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "top_pins.hpp"
+#include "verilated_stop.hpp"
 
 namespace watkins::tb::detail {
 
@@ -72,13 +73,7 @@ class CcTopPins final : public TopPins {
     dut_.eval();
     trace_.dump(t);
   }
-  bool stopped() override {
-    VerilatedContext* ctx = dut_.contextp();
-    if (!ctx->gotFinish() && !ctx->gotError()) return false;
-    ctx->gotFinish(false);
-    ctx->gotError(false);
-    return true;
-  }
+  bool stopped() override { return take_stop(*dut_.contextp()); }
   bool trace_open(const std::string& path) override { return trace_.open(dut_, path); }
   void trace_close() override { trace_.close(); }
   const StageTaps* stage_taps() override { return taps_ ? &*taps_ : nullptr; }
