@@ -189,8 +189,8 @@ void StageChecker::segment(long long c) {
 // Shared by the two fragment stages: `same` compares an RTL transfer with the model's item,
 // `text` prints either, `diff` names the differing fields.
 template <class Same, class Text, class Diff>
-void StageChecker::fragment_stage(long long c, Cursor& k, std::vector<StageFragment> StageStreams::*stream, const char* stage,
-                    bool eol, int rtl_x, Same same, Text text, Diff diff) {
+void StageChecker::fragment_stage(long long c, Cursor& k, std::vector<StageFragment> StageStreams::*stream,
+                                  const char* stage, bool eol, int rtl_x, Same same, Text text, Diff diff) {
   ++r_->stage_items;
   const StageFragment* m = next(k, stream);
   if (m && m->eol == eol && (eol || same(*m))) {
