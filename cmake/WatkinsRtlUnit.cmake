@@ -1,18 +1,33 @@
-# watkins_rtl_unit(<bench> TOP <module> SOURCES <rtl files...> [PARAMS -Gx=y ...] [LABELS l...])
+# watkins_rtl_unit(<bench> TOP <module> SOURCES <rtl files...> [PARAMS Name=value ...] [LINK libs...]
+#                  [LABELS l...])
 # One GoogleTest bench around one Verilated RTL unit (--cc, -O3, --assert), linked with the
 # bit-exact model so the bench compares the unit with its twin. Shared by tests/rtl and
 # tests/phong; one Verilated model per unit top.
+#
+# PARAMS is the one source of the unit's parameter overrides: each Name=value goes to Verilator
+# as -GName=value and to the bench's C++ as the definition WATKINS_RTL_PARAM_Name=value, so a
+# bench sizes itself from what the model was built with (e.g.
+# `constexpr int MaxWidth = WATKINS_RTL_PARAM_MaxWidth;`). A leading -G is accepted and dropped.
 find_package(verilator HINTS $ENV{VERILATOR_ROOT} /usr/share/verilator)
 find_package(GTest REQUIRED)
 include(GoogleTest)
 
 function(watkins_rtl_unit bench)
-  cmake_parse_arguments(U "" "TOP" "SOURCES;PARAMS;LABELS" ${ARGN})
+  cmake_parse_arguments(U "" "TOP" "SOURCES;PARAMS;LINK;LABELS" ${ARGN})
   add_executable(${bench} ${CMAKE_CURRENT_SOURCE_DIR}/${bench}.cpp)
   target_include_directories(${bench} PRIVATE ${CMAKE_CURRENT_SOURCE_DIR} ${CMAKE_SOURCE_DIR}/tests/rtl
                              ${CMAKE_SOURCE_DIR}/testbench)
-  target_link_libraries(${bench} PRIVATE watkins_prepare GTest::gtest_main)
+  target_link_libraries(${bench} PRIVATE ${U_LINK} watkins_prepare GTest::gtest_main)
   target_compile_options(${bench} PRIVATE -O3)
+  set(vparams "")
+  foreach(p ${U_PARAMS})
+    string(REGEX REPLACE "^-G" "" p "${p}")
+    if(NOT p MATCHES "^([A-Za-z_][A-Za-z0-9_]*)=(.+)$")
+      message(FATAL_ERROR "watkins_rtl_unit(${bench}): PARAMS expects Name=value, got '${p}'")
+    endif()
+    list(APPEND vparams -G${p})
+    target_compile_definitions(${bench} PRIVATE WATKINS_RTL_PARAM_${CMAKE_MATCH_1}=${CMAKE_MATCH_2})
+  endforeach()
   set(srcs ${CMAKE_SOURCE_DIR}/rtl/watkins_pkg.sv)
   foreach(s ${U_SOURCES})
     list(APPEND srcs ${CMAKE_SOURCE_DIR}/rtl/${s})
@@ -22,7 +37,7 @@ function(watkins_rtl_unit bench)
     TOP_MODULE ${U_TOP}
     PREFIX V${U_TOP}
     OPT_FAST -O3
-    VERILATOR_ARGS -O3 --x-assign fast --x-initial fast --assert -Wno-fatal ${U_PARAMS})
+    VERILATOR_ARGS -O3 --x-assign fast --x-initial fast --assert -Wno-fatal ${vparams})
   if(NOT U_LABELS)
     set(U_LABELS rtl)
   endif()

@@ -4,8 +4,9 @@
 // A packed struct puts its first field at the top: edge_t = {y0, n, poly, material, value, slope},
 // and `logic [NumChannels-1:0][ChannelBits-1:0] value` puts value[NumChannels-1] at the top of its
 // field and value[0] (X) at the bottom. So, from bit 0 up: slope[0..4] at 0 + 42c, value[0..4] at
-// 210 + 42c, material at 420, poly at 424, n at 440, y0 at 453; 466 bits.
-// Verilator stores a 466-bit port as 15 little-endian 32-bit words (VlWide<15> / sc_bv<466>).
+// 210 + 42c, material at 420, poly at 424, n at 440, y0 at 453; fmt::EdgeRecordBits (466) bits.
+// Verilator stores the port as 15 little-endian 32-bit words (VlWide<15> / sc_bv<466>); the
+// fields are cut with the benches' one bit packer (bit_field.hpp).
 #pragma once
 
 #include <array>
@@ -13,6 +14,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "bit_field.hpp"
 #include "edge_record.hpp"
 #include "fixed_point.hpp"
 #include "formats.hpp"
@@ -28,28 +30,10 @@ constexpr int NLsb = PolyLsb + fmt::PolyIdBits;
 constexpr int Y0Lsb = NLsb + fmt::LineBits;
 constexpr int Bits = Y0Lsb + fmt::LineBits;  // $bits(watkins_pkg::edge_t)
 constexpr int Words = (Bits + 31) / 32;
-static_assert(Bits == 466, "edge_t layout changed: update edge_packing.hpp and its test");
+static_assert(Bits == fmt::EdgeRecordBits, "edge_t layout changed: update edge_packing.hpp and its test");
 }  // namespace edge_layout
 
 using EdgeWords = std::array<std::uint32_t, edge_layout::Words>;
-
-// Writes the low `width` bits of v at [lsb, lsb + width) (width <= 64).
-inline void put_bits(EdgeWords& w, int lsb, int width, std::uint64_t v) {
-  for (int i = 0; i < width; ++i) {
-    const int b = lsb + i;
-    const std::uint32_t bit = static_cast<std::uint32_t>((v >> i) & 1u);
-    w[b / 32] = (w[b / 32] & ~(1u << (b % 32))) | (bit << (b % 32));
-  }
-}
-
-inline std::uint64_t get_bits(const EdgeWords& w, int lsb, int width) {
-  std::uint64_t v = 0;
-  for (int i = 0; i < width; ++i) {
-    const int b = lsb + i;
-    v |= static_cast<std::uint64_t>((w[b / 32] >> (b % 32)) & 1u) << i;
-  }
-  return v;
-}
 
 // Throws std::invalid_argument when a field does not fit its width (a preparation bug: the RTL
 // would silently see a different record).
@@ -65,10 +49,10 @@ inline EdgeWords pack_edge(const EdgeRecord& e) {
   check_unsigned("poly", e.poly, fmt::PolyIdBits);
   check_unsigned("material", e.material, fmt::MaterialIdBits);
   EdgeWords w{};
-  put_bits(w, Y0Lsb, fmt::LineBits, static_cast<std::uint64_t>(e.y0));
-  put_bits(w, NLsb, fmt::LineBits, static_cast<std::uint64_t>(e.n));
-  put_bits(w, PolyLsb, fmt::PolyIdBits, static_cast<std::uint64_t>(e.poly));
-  put_bits(w, MaterialLsb, fmt::MaterialIdBits, static_cast<std::uint64_t>(e.material));
+  set_bits(w, Y0Lsb, fmt::LineBits, static_cast<std::uint64_t>(e.y0));
+  set_bits(w, NLsb, fmt::LineBits, static_cast<std::uint64_t>(e.n));
+  set_bits(w, PolyLsb, fmt::PolyIdBits, static_cast<std::uint64_t>(e.poly));
+  set_bits(w, MaterialLsb, fmt::MaterialIdBits, static_cast<std::uint64_t>(e.material));
   for (int c = 0; c < fmt::NumChannels; ++c) {
     for (const bool is_slope : {false, true}) {
       const i64 v = is_slope ? e.slope[c] : e.value[c];
@@ -76,7 +60,7 @@ inline EdgeWords pack_edge(const EdgeRecord& e) {
         throw std::invalid_argument(std::string("pack_edge: ") + (is_slope ? "slope[" : "value[") +
                                     std::to_string(c) + "] = " + std::to_string(v) + " does not fit " +
                                     std::to_string(fmt::ChannelBits) + " signed bits");
-      put_bits(w, (is_slope ? SlopeLsb : ValueLsb) + c * fmt::ChannelBits, fmt::ChannelBits,
+      set_bits(w, (is_slope ? SlopeLsb : ValueLsb) + c * fmt::ChannelBits, fmt::ChannelBits,
                wrap_unsigned(v, fmt::ChannelBits));
     }
   }
@@ -92,10 +76,16 @@ inline EdgeRecord unpack_edge(const EdgeWords& w) {
   e.poly = static_cast<int>(get_bits(w, PolyLsb, fmt::PolyIdBits));
   e.material = static_cast<int>(get_bits(w, MaterialLsb, fmt::MaterialIdBits));
   for (int c = 0; c < fmt::NumChannels; ++c) {
-    e.value[c] = wrap_signed(get_bits(w, ValueLsb + c * fmt::ChannelBits, fmt::ChannelBits), fmt::ChannelBits);
-    e.slope[c] = wrap_signed(get_bits(w, SlopeLsb + c * fmt::ChannelBits, fmt::ChannelBits), fmt::ChannelBits);
+    e.value[c] = get_signed(w, ValueLsb + c * fmt::ChannelBits, fmt::ChannelBits);
+    e.slope[c] = get_signed(w, SlopeLsb + c * fmt::ChannelBits, fmt::ChannelBits);
   }
   return e;
+}
+
+// Writes a packed record to a Verilated edge_t port or signal (VlWide<edge_layout::Words>).
+template <class Port>
+void write_edge(Port& port, const EdgeWords& w) {
+  for (int i = 0; i < edge_layout::Words; ++i) port[i] = w[i];
 }
 
 }  // namespace watkins::tb

@@ -1,5 +1,5 @@
 // SystemC bench: the Verilated (--sc) watkins_top bound to sc_signals and clocked by one
-// SC_THREAD that also runs the transaction-level source, sink and checker (frame_driver.hpp).
+// SC_THREAD that also runs the drive loop (frame_driver.hpp) through TopPins on the signals.
 // Two Verilated builds of the one top: Phong = 0 (Vwatkins_top) and Phong = 1
 // (Vwatkins_top_phong), each in its own bench module; a run clocks only the one its scenes need.
 //
@@ -24,8 +24,13 @@
 #include "Vwatkins_top___024root.h"  // the public internal stage signals
 #include "Vwatkins_top_phong.h"
 #include "Vwatkins_top_phong___024root.h"
+#include "expectations.hpp"
+#include "formats.hpp"
 #include "fst_trace.hpp"
 #include "frame_driver.hpp"
+#include "sc_top_signals.hpp"
+#include "top_pins.hpp"
+#include "verilated_stop.hpp"
 
 // libsystemc's own main() calls sc_main; our programs have their own main() and run the kernel
 // from ordinary code (run_rtl), but the shared library still needs the symbol.
@@ -34,21 +39,13 @@ int sc_main(int, char**) { return 0; }
 namespace watkins::tb {
 namespace {
 
-constexpr int MaxWidth = 1024;  // the top's MaxWidth parameter default (not overridden here)
+// The top at its default MaxWidth (not overridden in testbench/CMakeLists.txt).
+constexpr int MaxWidth = fmt::DefaultMaxWidth;
 
 template <class Dut>
-struct TopBench : sc_module {
-  sc_signal<bool> clk{"clk"}, rst_n{"rst_n"}, edge_eof{"edge_eof"}, edge_valid{"edge_valid"};
-  sc_signal<bool> edge_ready{"edge_ready"}, pixel_covered{"pixel_covered"}, pixel_last{"pixel_last"};
-  sc_signal<bool> pixel_valid{"pixel_valid"}, pixel_ready{"pixel_ready"}, overflow{"overflow"};
-  sc_signal<bool> sparse{"sparse"};
-  sc_signal<uint32_t> pixel_x{"pixel_x"}, pixel_y{"pixel_y"};
-  sc_signal<uint32_t> width{"width"}, height{"height"}, background{"background"}, pixel_rgb{"pixel_rgb"};
-  sc_signal<sc_bv<edge_layout::Bits>> edge{"edge"};
-  sc_signal<uint64_t> light{"light"}, eye{"eye"};
-  sc_signal<bool> material_we{"material_we"};
-  sc_signal<uint32_t> material_addr{"material_addr"}, material_cp{"material_cp"}, material_d{"material_d"};
-  sc_signal<uint32_t> material_w{"material_w"}, material_n{"material_n"};
+struct TopBench : sc_module, detail::TopPins {
+  sc_signal<bool> clk{"clk"};
+  TopSignals io;  // every other port
   Dut dut{"dut"};
 
   sc_event start;
@@ -57,32 +54,7 @@ struct TopBench : sc_module {
 
   SC_HAS_PROCESS(TopBench);
   explicit TopBench(sc_module_name name) : sc_module(name) {
-    dut.clk_i(clk);
-    dut.rst_ni(rst_n);
-    dut.width_i(width);
-    dut.height_i(height);
-    dut.background_i(background);
-    dut.sparse_i(sparse);
-    dut.edge_i(edge);
-    dut.edge_eof_i(edge_eof);
-    dut.edge_valid_i(edge_valid);
-    dut.edge_ready_o(edge_ready);
-    dut.pixel_rgb_o(pixel_rgb);
-    dut.pixel_covered_o(pixel_covered);
-    dut.pixel_x_o(pixel_x);
-    dut.pixel_y_o(pixel_y);
-    dut.pixel_last_o(pixel_last);
-    dut.pixel_valid_o(pixel_valid);
-    dut.pixel_ready_i(pixel_ready);
-    dut.overflow_o(overflow);
-    dut.light_i(light);
-    dut.eye_i(eye);
-    dut.material_we_i(material_we);
-    dut.material_addr_i(material_addr);
-    dut.material_cp_i(material_cp);
-    dut.material_d_i(material_d);
-    dut.material_w_i(material_w);
-    dut.material_n_i(material_n);
+    io.bind(dut, clk);
     SC_THREAD(main);
   }
 
@@ -94,74 +66,64 @@ struct TopBench : sc_module {
     }
   }
 
-  // ---- Pins (see frame_driver.hpp) ----
-  void reset_pin(bool v) { rst_n.write(v); }
-  void frame_pins(std::uint32_t w, std::uint32_t h, std::uint32_t bg, bool sp) {
-    width.write(w);
-    height.write(h);
-    background.write(bg);
-    sparse.write(sp);
+  // ---- TopPins (top_pins.hpp) ----
+  void reset_pin(bool v) override { io.rst_n.write(v); }
+  void frame_pins(std::uint32_t w, std::uint32_t h, std::uint32_t bg, bool sp) override {
+    io.width.write(w);
+    io.height.write(h);
+    io.background.write(bg);
+    io.sparse.write(sp);
   }
-  void phong_pins(std::uint64_t l, std::uint64_t e) {
-    light.write(l);
-    eye.write(e);
+  void phong_pins(std::uint64_t l, std::uint64_t e) override {
+    io.light.write(l);
+    io.eye.write(e);
   }
-  void material_pin(bool we, int addr, const QuantizedMaterial& m) {
-    material_we.write(we);
-    material_addr.write(static_cast<uint32_t>(addr));
-    material_cp.write(detail::pack_rgb({std::uint8_t(m.cp[0]), std::uint8_t(m.cp[1]), std::uint8_t(m.cp[2])}));
-    material_d.write(static_cast<uint32_t>(m.d));
-    material_w.write(static_cast<uint32_t>(m.w));
-    material_n.write(static_cast<uint32_t>(m.shininess));
+  void material_pins(const detail::MaterialPins& m) override {
+    io.material_we.write(m.we);
+    io.material_addr.write(m.addr);
+    io.material_cp.write(m.cp);
+    io.material_d.write(m.d);
+    io.material_w.write(m.w);
+    io.material_n.write(m.n);
   }
-  void edge_pins(bool valid, bool eof, const EdgeWords& data) {
-    edge_valid.write(valid);
-    edge_eof.write(eof);
+  void edge_pins(bool valid, bool eof, const EdgeWords& data) override {
+    io.edge_valid.write(valid);
+    io.edge_eof.write(eof);
     if (data != last_edge_) {  // a 466-bit sc_bv write is the costly one; skip it when unchanged
       last_edge_ = data;
       for (int i = 0; i < edge_layout::Words; ++i) edge_bv_.set_word(i, data[i]);
-      edge.write(edge_bv_);
+      io.edge.write(edge_bv_);
     }
   }
-  void ready_pin(bool v) { pixel_ready.write(v); }
-  void settle(std::uint64_t t) {
+  void ready_pin(bool v) override { io.pixel_ready.write(v); }
+  void settle(std::uint64_t t) override {
     clk.write(false);
     wait(half_);
     trace_.dump(t);
   }
-  detail::PinsOut sample() {
+  detail::PinsOut sample() override {
     detail::PinsOut o;
-    o.edge_ready = edge_ready.read();
-    o.pixel_valid = pixel_valid.read();
-    o.pixel_last = pixel_last.read();
-    o.pixel_covered = pixel_covered.read();
-    o.pixel_rgb = pixel_rgb.read();
-    o.pixel_x = pixel_x.read();
-    o.pixel_y = pixel_y.read();
-    o.overflow = overflow.read();
+    o.edge_ready = io.edge_ready.read();
+    o.pixel_valid = io.pixel_valid.read();
+    o.pixel_last = io.pixel_last.read();
+    o.pixel_covered = io.pixel_covered.read();
+    o.pixel_rgb = io.pixel_rgb.read();
+    o.pixel_x = io.pixel_x.read();
+    o.pixel_y = io.pixel_y.read();
+    o.overflow = io.overflow.read();
     return o;
   }
-  void posedge(std::uint64_t t) {
+  void posedge(std::uint64_t t) override {
     clk.write(true);
     wait(half_);
     trace_.dump(t);
   }
-  bool trace_open(const std::string& path) {
-    return trace_.open(dut, path);
-  }
-  void trace_close() {
-    trace_.close();
-  }
-  const detail::StageTaps& stage_taps() {
+  bool stopped() override { return detail::take_stop(*dut.contextp()); }
+  bool trace_open(const std::string& path) override { return trace_.open(dut, path); }
+  void trace_close() override { trace_.close(); }
+  const detail::StageTaps* stage_taps() override {
     if (!taps_.ae_valid) taps_ = detail::stage_taps(*dut.rootp);
-    return taps_;
-  }
-  std::string stopped() {
-    VerilatedContext* ctx = dut.contextp();
-    if (!ctx->gotFinish() && !ctx->gotError()) return "";
-    ctx->gotFinish(false);
-    ctx->gotError(false);
-    return "an assertion, $stop or $finish fired (Verilator's message is on stdout)";
+    return &taps_;
   }
 
  private:
@@ -176,8 +138,8 @@ struct TopBench : sc_module {
 template <class Dut>
 struct Side {
   TopBench<Dut>* top = nullptr;
-  detail::FrameDriver<TopBench<Dut>>* driver = nullptr;
-  explicit Side(const char* name) : top(new TopBench<Dut>(name)), driver(new detail::FrameDriver<TopBench<Dut>>(*top)) {}
+  detail::FrameDriver* driver = nullptr;
+  explicit Side(const char* name) : top(new TopBench<Dut>(name)), driver(new detail::FrameDriver(*top)) {}
 };
 
 struct Bench {
@@ -239,21 +201,15 @@ RtlResult run_rtl_frames(const std::vector<const PreparedScene*>& scenes, const 
                          const std::vector<const Image*>& expected) {
   const bool phong = detail::phong_frames(scenes);
   RtlResult r;
-  std::vector<Image> rendered;
-  std::vector<const Image*> use;
-  std::vector<StageStreams> stages;
-  detail::expected_images(scenes, opt, expected, rendered, use, stages, r, MaxWidth);
+  const detail::Expectations want = detail::expect(scenes, opt, expected, r, MaxWidth);
   Bench& b = bench();
   if (b.dead) throw std::runtime_error("RTL bench: the SystemC kernel stopped in an earlier run");
+  auto work = [&](detail::FrameDriver& d) { d.run(scenes, want.images, want.stages, opt, r); };
   if (phong)
-    run_on(b, b.phong, [&](auto& d) { d.run(scenes, use, stages, opt, r); });
+    run_on(b, b.phong, work);
   else
-    run_on(b, b.gouraud, [&](auto& d) { d.run(scenes, use, stages, opt, r); });
+    run_on(b, b.gouraud, work);
   return r;
-}
-
-RtlResult run_rtl(const PreparedScene& scene, const RtlOptions& opt, const Image* expected) {
-  return run_rtl_frames({&scene}, opt, {expected});
 }
 
 }  // namespace watkins::tb

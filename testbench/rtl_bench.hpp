@@ -154,13 +154,15 @@ std::string rtl_description();
 // Width of the RTL's line buffer (the top's MaxWidth): wider scenes are refused.
 int rtl_max_width();
 
-// Runs one frame. `expected` (the model image) is rendered here when null and opt.compare is set.
-RtlResult run_rtl(const PreparedScene& scene, const RtlOptions& opt = {}, const Image* expected = nullptr);
-
 // Runs frames back to back in one simulation: the next frame's edges follow the previous frame's
 // end-of-frame beat at once when screen size and background are the same; otherwise the source
 // waits for the previous frame's last pixel before changing width_i/height_i/background_i.
 RtlResult run_rtl_frames(const std::vector<const PreparedScene*>& scenes, const RtlOptions& opt = {},
                          const std::vector<const Image*>& expected = {});
+
+// Runs one frame. `expected` (the model image) is rendered here when null and opt.compare is set.
+inline RtlResult run_rtl(const PreparedScene& scene, const RtlOptions& opt = {}, const Image* expected = nullptr) {
+  return run_rtl_frames({&scene}, opt, {expected});
+}
 
 }  // namespace watkins::tb

@@ -15,6 +15,7 @@
 #include "Vwatkins_top.h"
 #include "edge_packing.hpp"
 #include "prepare.hpp"
+#include "sc_top_signals.hpp"
 #include "scene.hpp"
 
 namespace {
@@ -23,16 +24,7 @@ using namespace watkins;
 
 SC_MODULE(SignalBench) {
   sc_clock clk{"clk", 10, SC_NS};
-  sc_signal<bool> rst_n{"rst_n"}, edge_eof{"edge_eof"}, edge_valid{"edge_valid"}, edge_ready{"edge_ready"};
-  sc_signal<bool> pixel_covered{"pixel_covered"}, pixel_last{"pixel_last"}, pixel_valid{"pixel_valid"};
-  sc_signal<bool> pixel_ready{"pixel_ready"}, overflow{"overflow"}, sparse{"sparse"};
-  sc_signal<uint32_t> pixel_x{"pixel_x"}, pixel_y{"pixel_y"};
-  sc_signal<uint32_t> width{"width"}, height{"height"}, background{"background"}, pixel_rgb{"pixel_rgb"};
-  sc_signal<sc_bv<tb::edge_layout::Bits>> edge{"edge"};
-  sc_signal<uint64_t> light{"light"}, eye{"eye"};  // Phong inputs: unused by the Gouraud top
-  sc_signal<bool> material_we{"material_we"};
-  sc_signal<uint32_t> material_addr{"material_addr"}, material_cp{"material_cp"}, material_d{"material_d"};
-  sc_signal<uint32_t> material_w{"material_w"}, material_n{"material_n"};
+  tb::TopSignals io;  // every other port
   Vwatkins_top dut{"dut"};
 
   std::vector<sc_bv<tb::edge_layout::Bits>> beats;  // the frame's edges, then the end-of-frame beat
@@ -45,32 +37,7 @@ SC_MODULE(SignalBench) {
   sc_time done_at;
 
   SC_CTOR(SignalBench) {
-    dut.clk_i(clk);
-    dut.rst_ni(rst_n);
-    dut.width_i(width);
-    dut.height_i(height);
-    dut.background_i(background);
-    dut.edge_i(edge);
-    dut.edge_eof_i(edge_eof);
-    dut.edge_valid_i(edge_valid);
-    dut.edge_ready_o(edge_ready);
-    dut.pixel_rgb_o(pixel_rgb);
-    dut.pixel_covered_o(pixel_covered);
-    dut.pixel_x_o(pixel_x);
-    dut.pixel_y_o(pixel_y);
-    dut.sparse_i(sparse);
-    dut.pixel_last_o(pixel_last);
-    dut.pixel_valid_o(pixel_valid);
-    dut.pixel_ready_i(pixel_ready);
-    dut.overflow_o(overflow);
-    dut.light_i(light);
-    dut.eye_i(eye);
-    dut.material_we_i(material_we);
-    dut.material_addr_i(material_addr);
-    dut.material_cp_i(material_cp);
-    dut.material_d_i(material_d);
-    dut.material_w_i(material_w);
-    dut.material_n_i(material_n);
+    io.bind(dut, clk);
     SC_THREAD(reset);
     SC_METHOD(source);
     sensitive << clk.posedge_event();
@@ -81,29 +48,29 @@ SC_MODULE(SignalBench) {
   }
 
   void reset() {
-    rst_n.write(false);
+    io.rst_n.write(false);
     wait(40, SC_NS);
-    rst_n.write(true);
-    pixel_ready.write(true);
+    io.rst_n.write(true);
+    io.pixel_ready.write(true);
   }
 
   void present() {
     if (src_frame >= frames) {
-      edge_valid.write(false);
+      io.edge_valid.write(false);
       return;
     }
-    edge_valid.write(true);
-    edge_eof.write(src_beat + 1 == beats.size());
-    edge.write(beats[src_beat]);
+    io.edge_valid.write(true);
+    io.edge_eof.write(src_beat + 1 == beats.size());
+    io.edge.write(beats[src_beat]);
   }
 
   void source() {  // on the rising edge: a transfer if valid and ready were both high before it
-    if (!rst_n.read()) return;
-    if (!edge_valid.read()) {
+    if (!io.rst_n.read()) return;
+    if (!io.edge_valid.read()) {
       present();
       return;
     }
-    if (edge_ready.read()) {
+    if (io.edge_ready.read()) {
       if (++src_beat == beats.size()) {
         src_beat = 0;
         ++src_frame;
@@ -113,10 +80,10 @@ SC_MODULE(SignalBench) {
   }
 
   void sink() {
-    if (!rst_n.read() || !(pixel_valid.read() && pixel_ready.read())) return;
+    if (!io.rst_n.read() || !(io.pixel_valid.read() && io.pixel_ready.read())) return;
     ++sink_pixels;
     const bool last = sink_pixels == pixels_per_frame;
-    if (pixel_last.read() != last) ++bad_last;
+    if (io.pixel_last.read() != last) ++bad_last;
     if (last) {
       sink_pixels = 0;
       if (++sink_frame == frames) {
@@ -152,9 +119,9 @@ int main(int argc, char** argv) {
     b->beats.emplace_back();  // end-of-frame beat
     b->frames = repeat;
     b->pixels_per_frame = static_cast<long long>(prepared.width) * prepared.height;
-    b->width.write(prepared.width);
-    b->height.write(prepared.height);
-    b->background.write((prepared.background[0] << 16) | (prepared.background[1] << 8) | prepared.background[2]);
+    b->io.width.write(prepared.width);
+    b->io.height.write(prepared.height);
+    b->io.background.write((prepared.background[0] << 16) | (prepared.background[1] << 8) | prepared.background[2]);
     const auto t0 = std::chrono::steady_clock::now();
     const std::clock_t cpu0 = std::clock();
     sc_start();

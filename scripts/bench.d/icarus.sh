@@ -18,7 +18,12 @@ t0=$(date +%s.%N)
 yosys -q -p "read_verilog -sv -DSYNTHESIS ${sources[*]}; chparam -set MaxWidth $width watkins_top; \
   hierarchy -top watkins_top; proc; flatten; opt_clean; write_verilog -noattr $work/top.v" \
   >"$work/yosys.log" 2>&1
-iverilog -g2012 -o "$work/tb.vvp" "$work/top.v" "$root/testbench/icarus/tb_watkins.sv"
+# The bench's sizes from the one source of formats (model/twins/formats.hpp, as rtl/watkins_pkg.sv).
+sizes=()
+for name in EdgeRecordBits LineBits UnitBits MaterialIdBits MaterialBits ShininessBits; do
+  sizes+=("-Ptb_watkins.$name=$("$build/watkins_gen_pkg" --value "$name")")
+done
+iverilog -g2012 "${sizes[@]}" -o "$work/tb.vvp" "$work/top.v" "$root/testbench/icarus/tb_watkins.sv"
 t1=$(date +%s.%N)
 out=$(vvp -n "$work/tb.vvp" +dir="$work" | grep -v "WARNING\|\$finish")
 t2=$(date +%s.%N)

@@ -2,10 +2,19 @@
 // written by `yosys ... write_verilog`, since Icarus 11 cannot read the package's packed
 // structs). Reads the hex files of watkins_export, streams the edge records with no gaps and
 // no back-pressure, checks every pixel against the model, prints cycles and mismatches.
+// The sizes are the package's, from the one source of formats (model/twins/formats.hpp):
+// scripts/bench.d/icarus.sh passes each with iverilog -Ptb_watkins.NAME=`watkins_gen_pkg --value NAME`.
 //   vvp tb.vvp +dir=<folder of edges.hex, pixels.hex, frame.hex>
 `timescale 1ns / 1ps
-module tb_watkins;
-  localparam int EdgeBits = 466;       // $bits(watkins_pkg::edge_t), checked by edge_packing.hpp
+module tb_watkins #(
+  parameter int EdgeRecordBits = 0,  // $bits(watkins_pkg::edge_t)
+  parameter int LineBits = 0,        // width_i, height_i
+  parameter int UnitBits = 0,        // one component of light_i, eye_i
+  parameter int MaterialIdBits = 0,  // material_addr_i
+  parameter int MaterialBits = 0,    // material_d_i, material_w_i
+  parameter int ShininessBits = 0    // material_n_i
+);
+  localparam int EdgeBits = EdgeRecordBits;
   localparam int MaxEdges = 1 << 18;
   localparam int MaxPixels = 1 << 20;
 
@@ -23,13 +32,15 @@ module tb_watkins;
 
   watkins_top dut (
     .clk_i(clk), .rst_ni(rst_n),
-    .width_i(frame[0][12:0]), .height_i(frame[1][12:0]), .background_i(frame[2][23:0]), .sparse_i(1'b0),
+    .width_i(frame[0][LineBits-1:0]), .height_i(frame[1][LineBits-1:0]), .background_i(frame[2][23:0]),
+    .sparse_i(1'b0),
     .edge_i(edge_d), .edge_eof_i(eof_d), .edge_valid_i(edge_valid), .edge_ready_o(edge_ready),
     .pixel_rgb_o(rgb), .pixel_covered_o(covered), .pixel_x_o(), .pixel_y_o(), .pixel_last_o(last),
     .pixel_valid_o(pixel_valid), .pixel_ready_i(1'b1), .overflow_o(overflow),
     // Phong inputs: unused by the Gouraud top (Phong = 0) simulated here.
-    .light_i(48'd0), .eye_i(48'd0), .material_we_i(1'b0), .material_addr_i(4'd0), .material_cp_i(24'd0),
-    .material_d_i(9'd0), .material_w_i(9'd0), .material_n_i(8'd0));
+    .light_i({3 * UnitBits{1'b0}}), .eye_i({3 * UnitBits{1'b0}}), .material_we_i(1'b0),
+    .material_addr_i({MaterialIdBits{1'b0}}), .material_cp_i(24'd0), .material_d_i({MaterialBits{1'b0}}),
+    .material_w_i({MaterialBits{1'b0}}), .material_n_i({ShininessBits{1'b0}}));
 
   always #5 clk = ~clk;
 
@@ -38,6 +49,11 @@ module tb_watkins;
   longint cycles;
 
   initial begin
+    if (EdgeRecordBits <= 0 || LineBits <= 0 || UnitBits <= 0 || MaterialIdBits <= 0 || MaterialBits <= 0 ||
+        ShininessBits <= 0) begin
+      $display("tb_watkins: sizes not set (iverilog -Ptb_watkins.NAME=..., see scripts/bench.d/icarus.sh)");
+      $finish;
+    end
     if (!$value$plusargs("dir=%s", dir)) dir = ".";
     $readmemh({dir, "/frame.hex"}, frame);
     $readmemh({dir, "/edges.hex"}, edges);

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <random>
 
+#include "bit_field.hpp"
 #include "fixed_point.hpp"
 #include "verilated.h"
 
@@ -30,28 +31,10 @@ struct Harness {
   }
 };
 
-// Bits [lo, lo+n) of a Verilator wide signal (n <= 64).
-template <class W>
-void set_bits(W& w, int lo, int n, std::uint64_t v) {
-  for (int i = 0; i < n; ++i) {
-    const int b = lo + i;
-    const std::uint32_t bit = (v >> i) & 1u;
-    w[b / 32] = (w[b / 32] & ~(1u << (b % 32))) | (bit << (b % 32));
-  }
-}
-template <class W>
-std::uint64_t get_bits(const W& w, int lo, int n) {
-  std::uint64_t v = 0;
-  for (int i = 0; i < n; ++i) {
-    const int b = lo + i;
-    v |= std::uint64_t((w[b / 32] >> (b % 32)) & 1u) << i;
-  }
-  return v;
-}
-template <class W>
-i64 get_signed(const W& w, int lo, int n) {
-  return wrap_signed(static_cast<i128>(get_bits(w, lo, n)), n);
-}
+// Fields of Verilator wide signals: the benches' one bit packer (testbench/bit_field.hpp).
+using tb::get_bits;
+using tb::get_signed;
+using tb::set_bits;
 inline std::uint64_t to_bits(i64 v, int n) { return wrap_unsigned(v, n); }
 
 // Random stalls: a percentage of cycles with valid low (source) or ready low (sink).

@@ -2,14 +2,16 @@
 // scenes (triangles and quads partly off screen), a jittered quad mesh (shared edges: equal X,
 // ties broken by edge id), frames back to back, random edge-stream gaps and pixel back-pressure,
 // and an active-edge overflow (sticky flag, the frame still completes). A quick check of the
-// top; the full co-simulation is the SystemC bench in testbench/.
+// top at small sizes; the full co-simulation is the SystemC bench in testbench/, and both drive
+// the top with the same loop (testbench/frame_driver.hpp).
 #include <gtest/gtest.h>
 
 #include "Vwatkins_top.h"
-#include "watkins_top.hpp"
+#include "cc_top_pins.hpp"
+#include "frame_driver.hpp"
 #include "prepare.hpp"
-#include "edge_packing.hpp"
 #include "random_scene.hpp"
+#include "watkins_top.hpp"
 #include "rtl_harness.hpp"
 #include "scene.hpp"
 
@@ -18,8 +20,9 @@ using namespace watkins::rtl;
 
 namespace {
 
-constexpr int MaxWidth = 128;      // -GMaxWidth in tests/rtl/CMakeLists.txt
-constexpr int MaxActiveEdges = 16;  // -GMaxActiveEdges
+// The top's parameters as tests/rtl/CMakeLists.txt built it (PARAMS of watkins_rtl_unit).
+constexpr int MaxWidth = WATKINS_RTL_PARAM_MaxWidth;
+constexpr int MaxActiveEdges = WATKINS_RTL_PARAM_MaxActiveEdges;
 
 // A w x h scene of `polys` random triangles and quads (bow-ties among them), partly off screen.
 BuiltScene random_scene(int w, int h, int polys, std::mt19937_64& rng) {
@@ -31,94 +34,34 @@ BuiltScene random_scene(int w, int h, int polys, std::mt19937_64& rng) {
   return test::random_scene(rng, spec);
 }
 
-void pack(VlWide<15>& w, const EdgeRecord& e) {  // the bench's packer (testbench/edge_packing.hpp)
-  const tb::EdgeWords x = tb::pack_edge(e);
-  for (int i = 0; i < tb::edge_layout::Words; ++i) w[i] = x[i];
-}
-
+// The bench's drive loop (testbench/frame_driver.hpp) on this top: the edge source with its
+// gaps, the pixel sink with its back-pressure, and the checks of every pixel (raster order and
+// pixel_x_o/pixel_y_o, pixel_last_o on the last, RGB and coverage against the model) or, in
+// sparse mode, of every beat against sparse_stream(*ref); no pixel after the frame; a watchdog.
 struct Top {
   Harness<Vwatkins_top> h;
-  std::mt19937_64 rng{1};
-  Top() {
-    h.dut.edge_valid_i = 0;
-    h.dut.pixel_ready_i = 0;
-    h.reset();
-  }
+  tb::detail::CcTopPins<Vwatkins_top, tb::detail::NoTrace> pins{h.dut};
+  // overflow_o is sticky until reset: the driver must not reset after an overflowing frame.
+  tb::detail::FrameDriver driver{pins, tb::detail::FrameDriver::Policy{false}};
+  std::uint64_t seed = 1;
   // Streams one frame; compares to `ref` unless null. Returns the cycles from the first edge
-  // beat offered to the last pixel taken.
+  // beat offered to the last pixel taken. gap_pct / bp_pct: percent of cycles with a gap in
+  // the edge stream / with pixel_ready_i low.
   // sparse: sparse_i = 1, the beats compared with sparse_stream(*ref) (ref needed).
   std::uint64_t frame(const PreparedScene& p, const Image* ref, int gap_pct, int bp_pct, bool sparse = false) {
-    Stalls gaps{rng, gap_pct}, bp{rng, bp_pct};
-    auto& d = h.dut;
-    d.width_i = p.width;
-    d.height_i = p.height;
-    d.background_i = (p.background[0] << 16) | (p.background[1] << 8) | p.background[2];
-    d.sparse_i = sparse;
-    std::vector<SparseBeat> beats;
-    if (sparse) beats = sparse_stream(*ref);
-    std::size_t next = 0;
-    bool eof_sent = false;
-    long long pix = 0;
-    const long long total = sparse ? static_cast<long long>(beats.size()) : static_cast<long long>(p.width) * p.height;
-    const std::uint64_t start = h.cycles;
-    int bad = 0;
-    while (pix < total || !eof_sent) {
-      if (!d.edge_valid_i && !eof_sent && !gaps.stall()) {
-        d.edge_eof_i = next == p.edges.size();
-        if (!d.edge_eof_i) pack(d.edge_i, p.edges[next]);
-        d.edge_valid_i = 1;
-      }
-      d.pixel_ready_i = !bp.stall();
-      d.eval();
-      const bool efire = d.edge_valid_i && d.edge_ready_o;
-      if (d.pixel_valid_o && d.pixel_ready_i) {
-        EXPECT_LT(pix, total) << "pixel beyond the frame";
-        if (sparse && pix < total) {
-          const SparseBeat& b = beats[std::size_t(pix)];
-          const std::uint32_t rgb = (std::uint32_t(b.rgb[0]) << 16) | (std::uint32_t(b.rgb[1]) << 8) | b.rgb[2];
-          if ((d.pixel_rgb_o != rgb || bool(d.pixel_covered_o) != b.covered || bool(d.pixel_last_o) != b.last ||
-               int(d.pixel_x_o) != b.x || int(d.pixel_y_o) != b.y) &&
-              bad++ < 8)
-            ADD_FAILURE() << "sparse beat " << pix << ": rtl (" << d.pixel_x_o << "," << d.pixel_y_o << ") " << std::hex
-                          << d.pixel_rgb_o << " cov " << int(d.pixel_covered_o) << " last " << int(d.pixel_last_o)
-                          << ", model (" << std::dec << b.x << "," << b.y << ") " << std::hex << rgb << " cov "
-                          << b.covered << " last " << b.last;
-          ++pix;
-          h.tick();
-          if (efire) {
-            if (d.edge_eof_i) eof_sent = true;
-            else ++next;
-            d.edge_valid_i = 0;
-          }
-          continue;
-        }
-        const int x = static_cast<int>(pix % p.width), y = static_cast<int>(pix / p.width);
-        const bool last = pix == total - 1;
-        EXPECT_EQ(bool(d.pixel_last_o), last) << "pixel " << x << "," << y;
-        EXPECT_EQ(int(d.pixel_x_o), x);
-        EXPECT_EQ(int(d.pixel_y_o), y);
-        if (ref) {
-          const std::uint8_t* r = ref->at(x, y);
-          const std::uint32_t rgb = (std::uint32_t(r[0]) << 16) | (std::uint32_t(r[1]) << 8) | r[2];
-          if ((d.pixel_rgb_o != rgb || bool(d.pixel_covered_o) != ref->is_covered(x, y)) && bad++ < 8)
-            ADD_FAILURE() << "pixel (" << x << "," << y << "): rtl " << std::hex << d.pixel_rgb_o << " cov "
-                          << int(d.pixel_covered_o) << ", model " << rgb << " cov " << ref->is_covered(x, y);
-        }
-        ++pix;
-      }
-      h.tick();
-      if (efire) {
-        if (d.edge_eof_i) eof_sent = true;
-        else ++next;
-        d.edge_valid_i = 0;
-      }
-      if (h.cycles - start > 20ull * total + 100000) {
-        ADD_FAILURE() << "hang: " << pix << " of " << total << " pixels, " << next << " edges";
-        return 0;
-      }
-    }
-    EXPECT_EQ(bad, 0);
-    return h.cycles - start;
+    tb::RtlOptions opt;
+    opt.seed = seed++;
+    opt.gap = gap_pct / 100.0;
+    opt.stall = bp_pct / 100.0;
+    opt.sparse = sparse;
+    tb::RtlResult r;
+    driver.run({&p}, {ref}, {}, opt, r);
+    EXPECT_TRUE(r.assertion.empty()) << r.assertion;
+    EXPECT_FALSE(r.hang) << "hang: " << r.hang_reason;
+    EXPECT_TRUE(r.protocol_error.empty()) << r.protocol_error;
+    EXPECT_EQ(r.mismatches, 0) << r.first_pixel_mismatch;
+    EXPECT_TRUE(r.frames.at(0).complete) << r.summary();
+    return static_cast<std::uint64_t>(r.frames.at(0).cycles());
   }
 };
 
