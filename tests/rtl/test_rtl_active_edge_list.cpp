@@ -26,7 +26,7 @@ using namespace watkins::rtl;
 
 namespace {
 
-constexpr int N = 16;  // -GMaxActiveEdges in tests/rtl/CMakeLists.txt
+constexpr int N = WATKINS_RTL_PARAM_MaxActiveEdges;  // PARAMS in tests/rtl/CMakeLists.txt
 constexpr int CB = fmt::ChannelBits;
 constexpr int NC = fmt::NumChannels;
 constexpr i64 One = i64{1} << fmt::FracBits;
@@ -83,12 +83,6 @@ void sort_and_number(EdgeFrame& f) {
   std::stable_sort(f.edges.begin(), f.edges.end(),
                    [](const EdgeRecord& a, const EdgeRecord& b) { return a.y0 < b.y0; });
   for (std::size_t i = 0; i < f.edges.size(); ++i) f.edges[i].id = static_cast<int>(i);
-}
-
-// Packs an edge record into watkins_pkg::edge_t (the bench's packer, testbench/edge_packing.hpp).
-void pack(VlWide<15>& w, const EdgeRecord& e) {
-  const tb::EdgeWords x = tb::pack_edge(e);
-  for (int i = 0; i < tb::edge_layout::Words; ++i) w[i] = x[i];
 }
 
 i64 rnd(std::mt19937_64& rng, i64 lo, i64 hi) {
@@ -258,7 +252,7 @@ struct Ael {
       else if (started && poke && d.busy_o && rng() % 8 == 0) d.start_i = 1;  // ignored while busy
       if (!d.edge_valid_i && !eof_done && !gaps.stall()) {
         d.edge_eof_i = next == f.edges.size();
-        if (!d.edge_eof_i) pack(d.edge_i, f.edges[next]);
+        if (!d.edge_eof_i) tb::write_edge(d.edge_i, tb::pack_edge(f.edges[next]));
         d.edge_valid_i = 1;
       }
       d.out_ready_i = !bp.stall();

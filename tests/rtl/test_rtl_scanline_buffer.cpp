@@ -19,7 +19,7 @@ using namespace watkins::rtl;
 
 namespace {
 
-constexpr int MaxWidth = 64;  // -GMaxWidth in tests/rtl/CMakeLists.txt
+constexpr int MaxWidth = WATKINS_RTL_PARAM_MaxWidth;  // PARAMS in tests/rtl/CMakeLists.txt
 
 struct In {
   bool eol;

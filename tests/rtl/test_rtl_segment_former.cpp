@@ -23,7 +23,7 @@ using namespace watkins::rtl;
 
 namespace {
 
-constexpr int N = 8;  // -GMaxActiveEdges in tests/rtl/CMakeLists.txt: at most N edges per line
+constexpr int N = WATKINS_RTL_PARAM_MaxActiveEdges;  // PARAMS in tests/rtl/CMakeLists.txt: at most N edges per line
 constexpr int CB = fmt::ChannelBits;
 constexpr int NC = fmt::NumChannels;
 constexpr i64 One = i64{1} << fmt::FracBits;
