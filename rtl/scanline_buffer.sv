@@ -15,7 +15,7 @@
 // pixel_covered_o = 0, background rgb, at (width-1, height-1) carries pixel_last_o instead.
 // pixel_x_o / pixel_y_o give every beat's position in both modes.
 module scanline_buffer #(
-  parameter int unsigned MaxWidth = 1024
+  parameter int unsigned MaxWidth = watkins_pkg::DefaultMaxWidth  // line-buffer depth in pixels
 ) (
   input  logic                              clk_i,
   input  logic                              rst_ni,

@@ -20,7 +20,7 @@
 // keeps the background elsewhere (e.g. a framebuffer cleared once). sparse_i = 0: every pixel.
 module watkins_top #(
   parameter int unsigned MaxActiveEdges = watkins_pkg::MaxActiveEdges,
-  parameter int unsigned MaxWidth = 1024,           // line-buffer depth in pixels
+  parameter int unsigned MaxWidth = watkins_pkg::DefaultMaxWidth,  // line-buffer depth in pixels
   parameter int          Phong = 0                  // 1: per-pixel Phong shading of normals
 ) (
   input  logic                               clk_i,
