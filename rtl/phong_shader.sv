@@ -16,14 +16,14 @@ module phong_shader #(
   input  logic [3*UB-1:0]        light_i,      // {Lz, Ly, Lx}: unit, Q2.14, constant per frame
   input  logic [3*UB-1:0]        eye_i,        // {Ez, Ey, Ex}: unit, Q2.14, constant per frame
   input  logic [3*UB-1:0]        normal_i,     // {Nz, Ny, Nx}: unit normal, Q2.14 (normalizer)
-  input  logic [23:0]            cp_i,         // {B, G, R}: reflectance Cp, 8-bit (255 = 1.0)
+  input  watkins_pkg::rgb_t      cp_i,         // reflectance Cp, 8-bit (255 = 1.0)
   input  logic [MB-1:0]          d_i,          // diffuse coefficient d, 1.0 = 256 (clamped to 1)
   input  logic [MB-1:0]          w_i,          // specular coefficient W, 1.0 = 256
   input  logic [SB-1:0]          shininess_i,  // exponent n, 0..255
   input  logic [PayloadBits-1:0] payload_i,
   input  logic                   valid_i,
   output logic                   ready_o,
-  output logic [23:0]            rgb_o,        // {B, G, R}: shade, 8-bit levels, saturated
+  output watkins_pkg::rgb_t      rgb_o,        // shade, 8-bit levels, saturated
   output logic [PayloadBits-1:0] payload_o,
   output logic                   valid_o,
   input  logic                   ready_i
@@ -77,7 +77,7 @@ module phong_shader #(
 
   // Pixel attributes travel alongside: index s holds the pixel in stage s+1 (valid_q[s]).
   localparam int AttrLast = PowFirst + SB - 1;      // 10: stage 11 feeds stage 12
-  logic [23:0]            cp_q      [AttrLast+1];
+  logic [watkins_pkg::RgbBits-1:0] cp_q [AttrLast+1];  // vectors: yosys 0.23 and struct arrays
   logic [MB-1:0]          w_q       [AttrLast+1];
   logic [SB-1:0]          n_q       [AttrLast];    // last read by the final power stage
   logic [PayloadBits-1:0] payload_q [Stages];
@@ -159,6 +159,8 @@ module phong_shader #(
   end
 
   // ---- stage 12: Cp f per channel, 255 W cos(s)^n (white highlight), D + MF fraction bits ------
+  // Channel c is byte c of rgb_t (B, G, R for c = 0, 1, 2) in Cp and in the shade alike: the
+  // three channels are computed the same way, so the loop need not know which is which.
   logic [LW-1:0] diff_q [3];
   logic [LW-1:0] spec_q;
   always_ff @(posedge clk_i) if (en) begin
@@ -168,7 +170,7 @@ module phong_shader #(
   end
 
   // ---- stage 13: level = saturate(round(Cp f + 255 W pow)) --------------------------------------
-  logic [23:0] rgb_q;
+  logic [watkins_pkg::RgbBits-1:0] rgb_q;
   always_ff @(posedge clk_i) if (en) begin
     for (int c = 0; c < 3; c++) begin
       logic [LW-1:0] lvl;

@@ -21,15 +21,15 @@ module scanline_buffer #(
   input  logic                              rst_ni,
   input  logic [watkins_pkg::LineBits-1:0]  width_i,        // 1..MaxWidth, stable per frame
   input  logic [watkins_pkg::LineBits-1:0]  height_i,       // lines per frame, for pixel_last_o
-  input  logic [23:0]                       background_i,   // {R,G,B} of uncovered pixels
+  input  watkins_pkg::rgb_t                 background_i,   // shade of uncovered pixels
   input  logic                              sparse_i,       // covered pixels only, stable per frame
   input  logic [watkins_pkg::LineBits-1:0]  frag_x_i,       // < width_i
   input  logic [watkins_pkg::DepthBits-1:0] frag_depth_i,   // smaller is nearer
-  input  logic [23:0]                       frag_rgb_i,
+  input  watkins_pkg::rgb_t                 frag_rgb_i,
   input  logic                              frag_eol_i,     // end-of-line marker: the line is complete
   input  logic                              frag_valid_i,
   output logic                              frag_ready_o,
-  output logic [23:0]                       pixel_rgb_o,
+  output watkins_pkg::rgb_t                 pixel_rgb_o,
   output logic                              pixel_covered_o,
   output logic [watkins_pkg::LineBits-1:0]  pixel_x_o,
   output logic [watkins_pkg::LineBits-1:0]  pixel_y_o,
@@ -42,7 +42,8 @@ module scanline_buffer #(
 
   // Bank b holds pixel x at address b * MaxWidth + x.
   logic [watkins_pkg::DepthBits-1:0] depth_q [2 * MaxWidth];
-  logic [23:0]                       rgb_q   [2 * MaxWidth];
+  // Plain vectors, not rgb_t: yosys 0.23 mishandles arrays of structs.
+  logic [watkins_pkg::RgbBits-1:0] rgb_q [2 * MaxWidth];
   logic [2 * MaxWidth - 1:0]         written_q;  // flops: cleared by reset and by reading
 
   logic          wsel_q;           // bank being written; the reader uses the other one

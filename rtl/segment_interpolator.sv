@@ -25,7 +25,7 @@ module segment_interpolator #(
   output logic                                                             seg_ready_o,
   output logic [watkins_pkg::LineBits-1:0]                                 frag_x_o,
   output logic [watkins_pkg::DepthBits-1:0]                                frag_depth_o,
-  output logic [23:0]                                                      frag_rgb_o,  // {R,G,B}
+  output watkins_pkg::rgb_t                                                frag_rgb_o,  // Gouraud shade
   output logic [3*watkins_pkg::NormalInBits-1:0]                           frag_normal_o, // {Nz,Ny,Nx}
   output logic [watkins_pkg::MaterialIdBits-1:0]                          frag_material_o,
   output logic                                                             frag_eol_o,  // end-of-line marker, no fragment
@@ -321,8 +321,9 @@ module segment_interpolator #(
     if (emit_frag) begin
       frag_x_o     <= cur_x;
       frag_depth_o <= level(cur_value[(watkins_pkg::ChanZ - 1)*CB +: CB], DepB'((64'd1 << DepB) - 1));
-      for (int c = 0; c < 3; c++)
-        frag_rgb_o[23 - 8 * c -: 8] <= 8'(level(cur_value[(watkins_pkg::ChanR - 1 + c)*CB +: CB], DepB'(255)));
+      frag_rgb_o.r <= 8'(level(cur_value[(watkins_pkg::ChanR - 1)*CB +: CB], DepB'(255)));
+      frag_rgb_o.g <= 8'(level(cur_value[(watkins_pkg::ChanG - 1)*CB +: CB], DepB'(255)));
+      frag_rgb_o.b <= 8'(level(cur_value[(watkins_pkg::ChanB - 1)*CB +: CB], DepB'(255)));
       for (int c = 0; c < 3; c++)
         frag_normal_o[c*NB +: NB] <= normal_word(cur_value[(watkins_pkg::ChanNx - 1 + c)*CB +: CB]);
       frag_material_o <= cur_material;

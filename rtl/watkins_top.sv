@@ -27,13 +27,13 @@ module watkins_top #(
   input  logic                               rst_ni,          // active-low synchronous reset
   input  logic [watkins_pkg::LineBits-1:0]   width_i,         // frame size, stable for the whole frame (1..MaxWidth)
   input  logic [watkins_pkg::LineBits-1:0]   height_i,        // 1..4096
-  input  logic [23:0]                        background_i,    // {R,G,B} of pixels no polygon covers
+  input  watkins_pkg::rgb_t                  background_i,    // shade of pixels no polygon covers
   input  logic                               sparse_i,        // frame configuration: covered pixels only
   input  watkins_pkg::edge_t                 edge_i,          // edge records, sorted by y0 (ties in stream order)
   input  logic                               edge_eof_i,      // with valid: this beat ends the frame's stream, carries no edge
   input  logic                               edge_valid_i,
   output logic                               edge_ready_o,
-  output logic [23:0]                        pixel_rgb_o,     // {R,G,B}, raster order, every pixel (or covered only)
+  output watkins_pkg::rgb_t                  pixel_rgb_o,     // raster order, every pixel (or covered only)
   output logic                               pixel_covered_o, // some polygon won this pixel
   output logic [watkins_pkg::LineBits-1:0]   pixel_x_o,       // position of the pixel (both modes)
   output logic [watkins_pkg::LineBits-1:0]   pixel_y_o,
@@ -43,12 +43,12 @@ module watkins_top #(
   output logic                               overflow_o,      // sticky until reset: the active-edge list was full
   // Phong only (ignored when Phong = 0). light_i / eye_i: unit vectors towards the light and the
   // eye, {z, y, x} Q2.14, sampled at frame start. Material table: one write per clock, between
-  // frames; entry {Cp {R,G,B} 8-bit, d, W (1.0 = 256), n} as model/phong_shader.hpp defines them.
+  // frames; entry {Cp, d, W (1.0 = 256), n} as model/phong_shader.hpp defines them.
   input  logic [3*watkins_pkg::UnitBits-1:0]       light_i,
   input  logic [3*watkins_pkg::UnitBits-1:0]       eye_i,
   input  logic                                     material_we_i,
   input  logic [watkins_pkg::MaterialIdBits-1:0]   material_addr_i,
-  input  logic [23:0]                              material_cp_i,
+  input  watkins_pkg::rgb_t                        material_cp_i,   // reflectance Cp (255 = 1.0)
   input  logic [watkins_pkg::MaterialBits-1:0]     material_d_i,
   input  logic [watkins_pkg::MaterialBits-1:0]     material_w_i,
   input  logic [watkins_pkg::ShininessBits-1:0]    material_n_i
@@ -62,7 +62,7 @@ module watkins_top #(
   // ------------------------------------------------------------ frame control
   logic          frame_busy_q, ael_busy, start;
   logic [LB-1:0] width_q, height_q;
-  logic [23:0]   background_q;
+  watkins_pkg::rgb_t background_q;
   logic          sparse_q;
 
   assign start = edge_valid_i && !frame_busy_q && !ael_busy;
@@ -150,7 +150,7 @@ module watkins_top #(
   // ------------------------------------------------------------ fragments
   logic [LB-1:0]                     fr_x     /*verilator public_flat_rd*/;
   logic [watkins_pkg::DepthBits-1:0] fr_depth /*verilator public_flat_rd*/;
-  logic [23:0]                       fr_rgb   /*verilator public_flat_rd*/;
+  watkins_pkg::rgb_t                 fr_rgb   /*verilator public_flat_rd*/;
   logic [3*watkins_pkg::NormalInBits-1:0] fr_normal /*verilator public_flat_rd*/;
   logic [MIB-1:0]                    fr_material /*verilator public_flat_rd*/;
   logic                              fr_eol   /*verilator public_flat_rd*/;
@@ -180,7 +180,7 @@ module watkins_top #(
   // sh_*: the fragments the depth test receives, shaded (the bench compares them, too).
   logic [LB-1:0]   sh_x     /*verilator public_flat_rd*/;
   logic [DepB-1:0] sh_depth /*verilator public_flat_rd*/;
-  logic [23:0]     sh_rgb   /*verilator public_flat_rd*/;
+  watkins_pkg::rgb_t sh_rgb /*verilator public_flat_rd*/;
   logic            sh_eol   /*verilator public_flat_rd*/;
   logic            sh_valid /*verilator public_flat_rd*/;
   logic            sh_ready /*verilator public_flat_rd*/;
@@ -197,7 +197,8 @@ module watkins_top #(
     end
 
     // Material table: flops (16 x 50 bits), read combinationally by the shader's input stage.
-    localparam int unsigned EntryBits = 24 + 2 * watkins_pkg::MaterialBits + watkins_pkg::ShininessBits;
+    localparam int unsigned EntryBits = watkins_pkg::RgbBits + 2 * watkins_pkg::MaterialBits
+                                      + watkins_pkg::ShininessBits;
     logic [EntryBits-1:0] material_q [2**MIB];
     always_ff @(posedge clk_i) begin
       if (material_we_i)
@@ -225,10 +226,9 @@ module watkins_top #(
       .ready_i  (nm_ready)
     );
 
-    logic [23:0]                        m_cp;
+    watkins_pkg::rgb_t                  m_cp;
     logic [watkins_pkg::MaterialBits-1:0]  m_d, m_w;
     logic [watkins_pkg::ShininessBits-1:0] m_n;
-    logic [23:0]                        bgr;
     assign {m_cp, m_d, m_w, m_n} = material_q[nm_material];
 
     phong_shader #(
@@ -238,19 +238,18 @@ module watkins_top #(
       .light_i    (light_q),
       .eye_i      (eye_q),
       .normal_i   (nm_unit),
-      .cp_i       ({m_cp[7:0], m_cp[15:8], m_cp[23:16]}),  // the shader's order is {B,G,R}
+      .cp_i       (m_cp),
       .d_i        (m_d),
       .w_i        (m_w),
       .shininess_i(m_n),
       .payload_i  (nm_payload),
       .valid_i    (nm_valid),
       .ready_o    (nm_ready),
-      .rgb_o      (bgr),
+      .rgb_o      (sh_rgb),
       .payload_o  (sh_payload),
       .valid_o    (sh_valid),
       .ready_i    (sh_ready)
     );
-    assign sh_rgb = {bgr[7:0], bgr[15:8], bgr[23:16]};
     assign {sh_eol, sh_x, sh_depth} = sh_payload;
   end else begin : g_gouraud
     assign sh_x     = fr_x;
