@@ -1,7 +1,8 @@
 # watkins_rtl_unit(<bench> TOP <module> SOURCES <rtl files...> [PARAMS -Gx=y ...] [LABELS l...])
 # One GoogleTest bench around one Verilated RTL unit (--cc, -O3, --assert), linked with the
 # bit-exact model so the bench compares the unit with its twin. Shared by tests/rtl and
-# tests/phong; one Verilated model per unit top.
+# tests/phong; one Verilated model per unit top. Verilator searches rtl/ (-y) for the includes
+# (watkins_assert.svh) and for any module SOURCES does not list (e.g. stall_pipe).
 find_package(verilator HINTS $ENV{VERILATOR_ROOT} /usr/share/verilator)
 find_package(GTest REQUIRED)
 include(GoogleTest)
@@ -22,7 +23,8 @@ function(watkins_rtl_unit bench)
     TOP_MODULE ${U_TOP}
     PREFIX V${U_TOP}
     OPT_FAST -O3
-    VERILATOR_ARGS -O3 --x-assign fast --x-initial fast --assert -Wno-fatal ${U_PARAMS})
+    VERILATOR_ARGS -O3 --x-assign fast --x-initial fast --assert -Wno-fatal -y ${CMAKE_SOURCE_DIR}/rtl
+                   ${U_PARAMS})
   if(NOT U_LABELS)
     set(U_LABELS rtl)
   endif()

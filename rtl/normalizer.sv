@@ -5,6 +5,8 @@
 // Latency 8, one normal per clock; every stage registers valid and data; one global stall:
 // ready_o = ready_i || !valid_o (combinational from ready_i and the output valid flop only).
 // The null vector (m = 0) gives (0, 0, 0) with null_o set; any m > 0 gives a unit vector.
+`include "watkins_assert.svh"
+
 module normalizer #(
   parameter int PayloadBits = 1,                              // carried alongside (pixel x, ...)
   localparam int NB = watkins_pkg::NormalInBits,
@@ -116,12 +118,8 @@ module normalizer #(
   assign null_o    = nul7_q;
   assign payload_o = payload_q[Stages-1];
 
-`ifndef SYNTHESIS
-  a_in_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    valid_i && !ready_o |=> valid_i && $stable({normal_i, payload_i}));
-  a_out_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    valid_o && !ready_i |=> valid_o && $stable({unit_o, null_o, payload_o}));
-  c_stall: cover property (@(posedge clk_i) disable iff (!rst_ni) valid_o && !ready_i);
-  c_null: cover property (@(posedge clk_i) disable iff (!rst_ni) valid_o && null_o);
-`endif
+  `WATKINS_ASSERT_HOLD(a_in_hold, valid_i, ready_o, {normal_i, payload_i})
+  `WATKINS_ASSERT_HOLD(a_out_hold, valid_o, ready_i, {unit_o, null_o, payload_o})
+  `WATKINS_COVER(c_stall, valid_o && !ready_i)
+  `WATKINS_COVER(c_null, valid_o && null_o)
 endmodule

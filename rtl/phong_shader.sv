@@ -5,6 +5,8 @@
 // one global stall: ready_o = ready_i || !valid_o (combinational from ready_i and the output
 // valid flop only). light_i / eye_i are frame constants: L.E is registered from them every clock
 // (le_q), so they must be stable from one clock before a frame's first pixel to its last output.
+`include "watkins_assert.svh"
+
 module phong_shader #(
   parameter int PayloadBits = 1,                         // carried alongside (pixel x, ...)
   localparam int UB = watkins_pkg::UnitBits,
@@ -183,11 +185,7 @@ module phong_shader #(
   assign rgb_o     = rgb_q;
   assign payload_o = payload_q[Stages-1];
 
-`ifndef SYNTHESIS
-  a_in_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    valid_i && !ready_o |=> valid_i && $stable({normal_i, cp_i, d_i, w_i, shininess_i, payload_i}));
-  a_out_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    valid_o && !ready_i |=> valid_o && $stable({rgb_o, payload_o}));
-  c_stall: cover property (@(posedge clk_i) disable iff (!rst_ni) valid_o && !ready_i);
-`endif
+  `WATKINS_ASSERT_HOLD(a_in_hold, valid_i, ready_o, {normal_i, cp_i, d_i, w_i, shininess_i, payload_i})
+  `WATKINS_ASSERT_HOLD(a_out_hold, valid_o, ready_i, {rgb_o, payload_o})
+  `WATKINS_COVER(c_stall, valid_o && !ready_i)
 endmodule

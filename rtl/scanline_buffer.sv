@@ -14,6 +14,8 @@
 // covered pixel (in particular when the frame covers none), a terminating beat with
 // pixel_covered_o = 0, background rgb, at (width-1, height-1) carries pixel_last_o instead.
 // pixel_x_o / pixel_y_o give every beat's position in both modes.
+`include "watkins_assert.svh"
+
 module scanline_buffer #(
   parameter int unsigned MaxWidth = watkins_pkg::DefaultMaxWidth  // line-buffer depth in pixels
 ) (
@@ -146,21 +148,15 @@ module scanline_buffer #(
     end
   end
 
-`ifndef SYNTHESIS
-  a_in_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    frag_valid_i && !frag_ready_o |=> frag_valid_i && $stable({frag_x_i, frag_depth_i, frag_rgb_i, frag_eol_i}));
-  a_out_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    pixel_valid_o && !pixel_ready_i |=> pixel_valid_o && $stable({pixel_rgb_o, pixel_covered_o, pixel_last_o, pixel_x_o, pixel_y_o}));
-  a_sparse_covered: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    rd_load && sparse_i && !(rd_last && rd_lastline) |-> found);
-  a_sparse_one_hot: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    $onehot0(lowbit));
-  c_sparse_empty_line: cover property (@(posedge clk_i) disable iff (!rst_ni)
-    rd_step && !rd_emit);
-  a_x_in_line: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    frag_valid_i && !frag_eol_i |-> frag_x_i < width_i);
-  c_same_x_back_to_back: cover property (@(posedge clk_i) disable iff (!rst_ni)
-    frag_fire && !frag_eol_i && $past(frag_fire && !frag_eol_i) && frag_x_i == $past(frag_x_i));
-  c_eol_waits: cover property (@(posedge clk_i) disable iff (!rst_ni) frag_valid_i && !frag_ready_o);
-`endif
+  `WATKINS_ASSERT_HOLD(a_in_hold, frag_valid_i, frag_ready_o, {frag_x_i, frag_depth_i, frag_rgb_i,
+    frag_eol_i})
+  `WATKINS_ASSERT_HOLD(a_out_hold, pixel_valid_o, pixel_ready_i, {pixel_rgb_o, pixel_covered_o,
+    pixel_last_o, pixel_x_o, pixel_y_o})
+  `WATKINS_ASSERT(a_sparse_covered, rd_load && sparse_i && !(rd_last && rd_lastline) |-> found)
+  `WATKINS_ASSERT(a_sparse_one_hot, $onehot0(lowbit))
+  `WATKINS_COVER(c_sparse_empty_line, rd_step && !rd_emit)
+  `WATKINS_ASSERT(a_x_in_line, frag_valid_i && !frag_eol_i |-> frag_x_i < width_i)
+  `WATKINS_COVER(c_same_x_back_to_back,
+    frag_fire && !frag_eol_i && $past(frag_fire && !frag_eol_i) && frag_x_i == $past(frag_x_i))
+  `WATKINS_COVER(c_eol_waits, frag_valid_i && !frag_ready_o)
 endmodule

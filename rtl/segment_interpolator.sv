@@ -11,6 +11,8 @@
 // End-of-line markers pass through in order. Each fragment carries both readings of the three
 // attribute channels: frag_rgb_o (Gouraud shade levels) and frag_normal_o (Phong normal, the
 // channel saturated to NormalInBits); a top uses one and synthesis drops the other.
+`include "watkins_assert.svh"
+
 module segment_interpolator #(
   parameter int unsigned FifoDepth = 4
 ) (
@@ -339,17 +341,10 @@ module segment_interpolator #(
     end
   end
 
-`ifndef SYNTHESIS
-  a_in_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    seg_valid_i && !seg_ready_o |=> seg_valid_i && $stable({seg_e_i, seg_f_i, seg_material_i, seg_eol_i}));
-  a_out_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    frag_valid_o && !frag_ready_i |=> frag_valid_o
-      && $stable({frag_x_o, frag_depth_o, frag_rgb_o, frag_normal_o, frag_material_o, frag_eol_o}));
-  a_x_on_screen: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    frag_valid_o && !frag_eol_o |-> frag_x_o < width_i);
-  c_back_to_back_spans: cover property (@(posedge clk_i) disable iff (!rst_ni)
-    emit_frag && from_head && frag_valid_o && !frag_eol_o);
-  c_empty_dropped: cover property (@(posedge clk_i) disable iff (!rst_ni)
-    sc_valid_q && !sc_keep);
-`endif
+  `WATKINS_ASSERT_HOLD(a_in_hold, seg_valid_i, seg_ready_o, {seg_e_i, seg_f_i, seg_material_i, seg_eol_i})
+  `WATKINS_ASSERT_HOLD(a_out_hold, frag_valid_o, frag_ready_i, {frag_x_o, frag_depth_o, frag_rgb_o,
+    frag_normal_o, frag_material_o, frag_eol_o})
+  `WATKINS_ASSERT(a_x_on_screen, frag_valid_o && !frag_eol_o |-> frag_x_o < width_i)
+  `WATKINS_COVER(c_back_to_back_spans, emit_frag && from_head && frag_valid_o && !frag_eol_o)
+  `WATKINS_COVER(c_empty_dropped, sc_valid_q && !sc_keep)
 endmodule

@@ -5,6 +5,8 @@
 // restoring divider of R+1 stages (one quotient bit each). Latency R+2 = 26 cycles. Every stage
 // is registered; one global stall (ready_o = ready_i || !valid_o) holds the whole pipe.
 // payload_i travels alongside, so the caller keeps its span data in step with the quotient.
+`include "watkins_assert.svh"
+
 module span_reciprocal #(
   parameter int unsigned DxBits      = watkins_pkg::ChannelBits + 1,  // unsigned width of dx
   parameter int unsigned PayloadBits = 1,
@@ -82,11 +84,7 @@ module span_reciprocal #(
   assign p_o       = p_q[Stages-1];
   assign payload_o = payload_q[Stages-1];
 
-`ifndef SYNTHESIS
-  a_in_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    valid_i && !ready_o |=> valid_i && $stable({dx_i, payload_i}));
-  a_out_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    valid_o && !ready_i |=> valid_o && $stable({recip_o, p_o, payload_o}));
-  c_stall: cover property (@(posedge clk_i) disable iff (!rst_ni) valid_o && !ready_i);
-`endif
+  `WATKINS_ASSERT_HOLD(a_in_hold, valid_i, ready_o, {dx_i, payload_i})
+  `WATKINS_ASSERT_HOLD(a_out_hold, valid_o, ready_i, {recip_o, p_o, payload_o})
+  `WATKINS_COVER(c_stall, valid_o && !ready_i)
 endmodule

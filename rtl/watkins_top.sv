@@ -18,6 +18,8 @@
 // the last line has one, otherwise a terminating beat with pixel_covered_o = 0 (background rgb)
 // at (width-1, height-1) -- so a frame covering no pixel is exactly that one beat. The consumer
 // keeps the background elsewhere (e.g. a framebuffer cleared once). sparse_i = 0: every pixel.
+`include "watkins_assert.svh"
+
 module watkins_top #(
   parameter int unsigned MaxActiveEdges = watkins_pkg::MaxActiveEdges,
   parameter int unsigned MaxWidth = watkins_pkg::DefaultMaxWidth,  // line-buffer depth in pixels
@@ -288,20 +290,12 @@ module watkins_top #(
     .pixel_ready_i
   );
 
-`ifndef SYNTHESIS
-  a_edge_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    edge_valid_i && !edge_ready_o |=> edge_valid_i && $stable({edge_i, edge_eof_i}));
-  a_pixel_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    pixel_valid_o && !pixel_ready_i |=> pixel_valid_o
-      && $stable({pixel_rgb_o, pixel_covered_o, pixel_last_o, pixel_x_o, pixel_y_o}));
-  a_frame_size: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    start |-> width_i != '0 && width_i <= LB'(MaxWidth) && height_i != '0
-      && height_i <= LB'(watkins_pkg::MaxScreen));
-  a_overflow_sticky: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    overflow_o |=> overflow_o);
-  a_material_between_frames: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    material_we_i |-> !frame_busy_q);
-  c_frame_done: cover property (@(posedge clk_i) disable iff (!rst_ni)
-    pixel_valid_o && pixel_ready_i && pixel_last_o);
-`endif
+  `WATKINS_ASSERT_HOLD(a_edge_hold, edge_valid_i, edge_ready_o, {edge_i, edge_eof_i})
+  `WATKINS_ASSERT_HOLD(a_pixel_hold, pixel_valid_o, pixel_ready_i, {pixel_rgb_o, pixel_covered_o,
+    pixel_last_o, pixel_x_o, pixel_y_o})
+  `WATKINS_ASSERT(a_frame_size, start |-> width_i != '0 && width_i <= LB'(MaxWidth)
+    && height_i != '0 && height_i <= LB'(watkins_pkg::MaxScreen))
+  `WATKINS_ASSERT(a_overflow_sticky, overflow_o |=> overflow_o)
+  `WATKINS_ASSERT(a_material_between_frames, material_we_i |-> !frame_busy_q)
+  `WATKINS_COVER(c_frame_done, pixel_valid_o && pixel_ready_i && pixel_last_o)
 endmodule
