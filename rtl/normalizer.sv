@@ -2,8 +2,9 @@
 // a unit N; p. 317 asks for "a very fast mechanism for obtaining square roots"), bit-exact twin
 // of model/normalizer.hpp. m = Nx^2+Ny^2+Nz^2 exact, 1/sqrt(m) by rsqrt_unit (even shift, seed
 // table, one Newton-Raphson step), N * 1/sqrt(m) rounded and saturated to UnitBits.
-// Latency 8, one normal per clock; every stage registers valid and data; one global stall:
-// ready_o = ready_i || !valid_o (combinational from ready_i and the output valid flop only).
+// Latency 8, one normal per clock; every stage registers valid and data; one global stall
+// (stall_pipe): ready_o = ready_i || !valid_o (combinational from ready_i and the output valid
+// flop only).
 // The null vector (m = 0) gives (0, 0, 0) with null_o set; any m > 0 gives a unit vector.
 `include "watkins_assert.svh"
 
@@ -30,16 +31,21 @@ module normalizer #(
   localparam int Stages = 1 + RDelay + 2;           // squares, rsqrt, product, round
   localparam int PBits  = NB + F + 3;               // N * y, signed, plus a rounding guard bit
 
-  logic              en;
-  logic [Stages-1:0] valid_q;
-
-  assign en      = ready_i || !valid_q[Stages-1];
-  assign ready_o = en;
-
-  always_ff @(posedge clk_i) begin
-    if (!rst_ni) valid_q <= '0;
-    else if (en) valid_q <= {valid_q[Stages-2:0], valid_i};
-  end
+  // Valid, payload and the stall of every stage; the registers below advance on its en.
+  logic en;
+  stall_pipe #(
+    .Stages     (Stages),
+    .PayloadBits(PayloadBits)
+  ) u_pipe (
+    .clk_i, .rst_ni,
+    .payload_i,
+    .valid_i,
+    .ready_o,
+    .payload_o,
+    .valid_o,
+    .ready_i,
+    .en_o     (en)
+  );
 
   // ---- stage 0: m = Nx^2 + Ny^2 + Nz^2, exact ------------------------------------------------
   logic signed [MBits-1:0] sq [3];
@@ -69,14 +75,11 @@ module normalizer #(
     .null_o (nul)
   );
 
-  // N and the payload wait alongside the rsqrt pipe (stage 0 .. stage 5).
-  logic [3*NB-1:0]        n_q       [RDelay+1];
-  logic [PayloadBits-1:0] payload_q [Stages];
+  // N waits alongside the rsqrt pipe (stage 0 .. stage 5).
+  logic [3*NB-1:0] n_q [RDelay+1];
   always_ff @(posedge clk_i) if (en) begin
-    n_q[0]       <= normal_i;
-    payload_q[0] <= payload_i;
+    n_q[0] <= normal_i;
     for (int s = 1; s <= RDelay; s++) n_q[s] <= n_q[s-1];
-    for (int s = 1; s < Stages; s++) payload_q[s] <= payload_q[s-1];
   end
 
   // ---- stage 6: p = N * y, exact (FracBits + F fraction bits) ----------------------------------
@@ -113,10 +116,8 @@ module normalizer #(
     nul7_q <= nul6_q;
   end
 
-  assign valid_o   = valid_q[Stages-1];
-  assign unit_o    = unit_q;
-  assign null_o    = nul7_q;
-  assign payload_o = payload_q[Stages-1];
+  assign unit_o = unit_q;
+  assign null_o = nul7_q;
 
   `WATKINS_ASSERT_HOLD(a_in_hold, valid_i, ready_o, {normal_i, payload_i})
   `WATKINS_ASSERT_HOLD(a_out_hold, valid_o, ready_i, {unit_o, null_o, payload_o})

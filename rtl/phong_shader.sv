@@ -2,8 +2,8 @@
 // per pixel, light and eye at infinity, cos(s) = R.E = 2(N.L)(N.E) - L.E (Phong's reflected
 // vector, eqs. 4-8), cos(s)^n by square-and-multiply over the 8 bits of n; bit-exact twin of
 // model/phong_shader.hpp. Latency 13, one pixel per clock; every stage registers valid and data;
-// one global stall: ready_o = ready_i || !valid_o (combinational from ready_i and the output
-// valid flop only). light_i / eye_i are frame constants: L.E is registered from them every clock
+// one global stall (stall_pipe): ready_o = ready_i || !valid_o (combinational from ready_i and the
+// output valid flop only). light_i / eye_i are frame constants: L.E is registered from them every clock
 // (le_q), so they must be stable from one clock before a frame's first pixel to its last output.
 `include "watkins_assert.svh"
 
@@ -38,17 +38,24 @@ module phong_shader #(
   localparam int CW  = 2 * D + 6;                   // 2 cos(i) (N.E) - L.E at 2D fraction bits
   localparam int FW  = D + MF + 1;                  // f = cos(i)(1-d) + d <= 1
   localparam int LW  = FW + 8 + 2;                  // a level at D + MF fraction bits, plus sum
-  localparam int PowFirst = 3;                      // acc_q[0] sits in stage 3 (valid_q[2])
+  localparam int PowFirst = 3;                      // acc_q[0] sits in stage 3 (u_pipe.valid_q[2])
   localparam int Stages   = PowFirst + SB + 2;      // 13: dots, round, cos(s), 8 powers, 2 out
 
-  logic              en;
-  logic [Stages-1:0] valid_q;
-  assign en      = ready_i || !valid_q[Stages-1];
-  assign ready_o = en;
-  always_ff @(posedge clk_i) begin
-    if (!rst_ni) valid_q <= '0;
-    else if (en) valid_q <= {valid_q[Stages-2:0], valid_i};
-  end
+  // Valid, payload and the stall of every stage; the registers below advance on its en.
+  logic en;
+  stall_pipe #(
+    .Stages     (Stages),
+    .PayloadBits(PayloadBits)
+  ) u_pipe (
+    .clk_i, .rst_ni,
+    .payload_i,
+    .valid_i,
+    .ready_o,
+    .payload_o,
+    .valid_o,
+    .ready_i,
+    .en_o     (en)
+  );
 
   // Exact dot product of two Q2.14 vectors (28 fraction bits).
   function automatic logic signed [DW-1:0] dot3(input logic [3*UB-1:0] a, input logic [3*UB-1:0] b);
@@ -77,23 +84,20 @@ module phong_shader #(
   logic signed [D+1:0] le_q;
   always_ff @(posedge clk_i) le_q <= round_dot(dot3(light_i, eye_i), 1'b1);
 
-  // Pixel attributes travel alongside: index s holds the pixel in stage s+1 (valid_q[s]).
+  // Pixel attributes travel alongside: index s holds the pixel in stage s+1 (u_pipe.valid_q[s]).
   localparam int AttrLast = PowFirst + SB - 1;      // 10: stage 11 feeds stage 12
   logic [watkins_pkg::RgbBits-1:0] cp_q [AttrLast+1];  // vectors: yosys 0.23 and struct arrays
   logic [MB-1:0]          w_q       [AttrLast+1];
   logic [SB-1:0]          n_q       [AttrLast];    // last read by the final power stage
-  logic [PayloadBits-1:0] payload_q [Stages];
   always_ff @(posedge clk_i) if (en) begin
     cp_q[0]      <= cp_i;
     w_q[0]       <= w_i;
     n_q[0]       <= shininess_i;
-    payload_q[0] <= payload_i;
     for (int s = 1; s <= AttrLast; s++) begin
       cp_q[s] <= cp_q[s-1];
       w_q[s]  <= w_q[s-1];
     end
     for (int s = 1; s < AttrLast; s++) n_q[s] <= n_q[s-1];
-    for (int s = 1; s < Stages; s++) payload_q[s] <= payload_q[s-1];
   end
 
   // ---- stage 1: N.L and N.E, exact -------------------------------------------------------------
@@ -181,9 +185,7 @@ module phong_shader #(
     end
   end
 
-  assign valid_o   = valid_q[Stages-1];
-  assign rgb_o     = rgb_q;
-  assign payload_o = payload_q[Stages-1];
+  assign rgb_o = rgb_q;
 
   `WATKINS_ASSERT_HOLD(a_in_hold, valid_i, ready_o, {normal_i, cp_i, d_i, w_i, shininess_i, payload_i})
   `WATKINS_ASSERT_HOLD(a_out_hold, valid_o, ready_i, {rgb_o, payload_o})

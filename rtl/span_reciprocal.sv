@@ -3,8 +3,8 @@
 // truncated), exactly model/span_reciprocal.hpp: 1/dx ~= recip * 2^-(p+R).
 // Pipelined, one input per clock: 1 stage leading-one detection and normalization, then a
 // restoring divider of R+1 stages (one quotient bit each). Latency R+2 = 26 cycles. Every stage
-// is registered; one global stall (ready_o = ready_i || !valid_o) holds the whole pipe.
-// payload_i travels alongside, so the caller keeps its span data in step with the quotient.
+// is registered; one global stall (ready_o = ready_i || !valid_o, stall_pipe) holds the whole
+// pipe. payload_i travels alongside, so the caller keeps its span data in step with the quotient.
 `include "watkins_assert.svh"
 
 module span_reciprocal #(
@@ -28,12 +28,25 @@ module span_reciprocal #(
   localparam int unsigned Stages = R + 2;  // normalize + R+1 quotient bits
 
   logic                   en;
-  logic [Stages-1:0]      valid_q;
   logic [R-1:0]           m_q       [Stages];  // normalized divisor in [2^(R-1), 2^R)
   logic [R-1:0]           rem_q     [Stages];  // partial remainder, < m
   logic [R:0]             quo_q     [Stages];  // quotient bits so far
   logic [PBits-1:0]       p_q       [Stages];
-  logic [PayloadBits-1:0] payload_q [Stages];
+
+  // Valid, payload and the stall of every stage; the registers below advance on its en.
+  stall_pipe #(
+    .Stages     (Stages),
+    .PayloadBits(PayloadBits)
+  ) u_pipe (
+    .clk_i, .rst_ni,
+    .payload_i,
+    .valid_i,
+    .ready_o,
+    .payload_o,
+    .valid_o,
+    .ready_i,
+    .en_o     (en)
+  );
 
   // Leading-one detection and normalization (dx << (DxBits-1-p) puts the leading one on top;
   // its top R bits are the model's m whether dx is shifted left or right).
@@ -48,41 +61,29 @@ module span_reciprocal #(
     norm = dx_i << (PBits'(DxBits - 1) - lead);
   end
 
-  assign en      = ready_i || !valid_q[Stages-1];
-  assign ready_o = en;
-
-  always_ff @(posedge clk_i) begin
-    if (!rst_ni) valid_q <= '0;
-    else if (en) valid_q <= {valid_q[Stages-2:0], valid_i};
-  end
-
   // Quotient bit R-k in stage k: the numerator 2^(2R-1) has contributed 2^(R-2) to the partial
   // remainder before bit R (smaller than m, so every higher quotient bit is zero).
   always_ff @(posedge clk_i) begin
     if (en) begin
-      m_q[0]       <= norm[DxBits-1 -: R];
-      rem_q[0]     <= R'(1) << (R - 2);
-      quo_q[0]     <= '0;
-      p_q[0]       <= lead;
-      payload_q[0] <= payload_i;
+      m_q[0]   <= norm[DxBits-1 -: R];
+      rem_q[0] <= R'(1) << (R - 2);
+      quo_q[0] <= '0;
+      p_q[0]   <= lead;
       for (int k = 1; k < Stages; k++) begin
         logic [R:0] twice;
         logic       ge;
         twice = {rem_q[k-1], 1'b0};
         ge    = (twice >= {1'b0, m_q[k-1]});
-        rem_q[k]     <= ge ? R'(twice - {1'b0, m_q[k-1]}) : R'(twice);
-        quo_q[k]     <= {quo_q[k-1][R-1:0], ge};
-        m_q[k]       <= m_q[k-1];
-        p_q[k]       <= p_q[k-1];
-        payload_q[k] <= payload_q[k-1];
+        rem_q[k] <= ge ? R'(twice - {1'b0, m_q[k-1]}) : R'(twice);
+        quo_q[k] <= {quo_q[k-1][R-1:0], ge};
+        m_q[k]   <= m_q[k-1];
+        p_q[k]   <= p_q[k-1];
       end
     end
   end
 
-  assign valid_o   = valid_q[Stages-1];
-  assign recip_o   = quo_q[Stages-1];
-  assign p_o       = p_q[Stages-1];
-  assign payload_o = payload_q[Stages-1];
+  assign recip_o = quo_q[Stages-1];
+  assign p_o     = p_q[Stages-1];
 
   `WATKINS_ASSERT_HOLD(a_in_hold, valid_i, ready_o, {dx_i, payload_i})
   `WATKINS_ASSERT_HOLD(a_out_hold, valid_o, ready_i, {recip_o, p_o, payload_o})
