@@ -59,9 +59,9 @@ module active_edge_list #(
                              + watkins_pkg::MaterialIdBits;  // id, polygon, material
   localparam int unsigned EB = LB + TB + 2 * NC * CB;
   logic [EB-1:0]   bank_q [2 * N];
-  localparam int unsigned SB = $clog2(2 * N);
-  function automatic logic [SB-1:0] slot(logic b, logic [IB-1:0] i);
-    slot = b ? SB'(N) + SB'(i) : SB'(i);
+  localparam int unsigned SlotBits = $clog2(2 * N);  // address of an entry in either bank
+  function automatic logic [SlotBits-1:0] slot(logic b, logic [IB-1:0] i);
+    slot = b ? SlotBits'(N) + SlotBits'(i) : SlotBits'(i);
   endfunction
   logic [CntB-1:0] cnt_q  [2];
   logic            sel_q;        // bank streamed for line line_q - 1; the other fills for line_q

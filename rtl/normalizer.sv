@@ -25,11 +25,11 @@ module normalizer #(
   output logic                   valid_o,
   input  logic                   ready_i
 );
-  localparam int MBits  = 2 * NB;                   // 36: m < 3 * 2^34
-  localparam int F      = watkins_pkg::RsqrtBits;
-  localparam int RDelay = 5;                        // rsqrt_unit latency
-  localparam int Stages = 1 + RDelay + 2;           // squares, rsqrt, product, round
-  localparam int PBits  = NB + F + 3;               // N * y, signed, plus a rounding guard bit
+  localparam int MBits      = 2 * NB;                   // 36: m < 3 * 2^34
+  localparam int RsqrtBits  = watkins_pkg::RsqrtBits;   // F below: fraction bits of y
+  localparam int RDelay     = 5;                        // rsqrt_unit latency
+  localparam int Stages     = 1 + RDelay + 2;           // squares, rsqrt, product, round
+  localparam int ScaledBits = NB + RsqrtBits + 3;       // N * y, signed, plus a rounding guard bit
 
   // Valid, payload and the stall of every stage; the registers below advance on its en.
   logic en;
@@ -63,7 +63,7 @@ module normalizer #(
   always_ff @(posedge clk_i) if (en) m_q <= m;
 
   // ---- stages 1..5: y = 1/sqrt(m') with 1/sqrt(m) = y * 2^(j-2) --------------------------------
-  logic [F+1:0] y;
+  logic [RsqrtBits+1:0] y;
   logic [4:0]   j;
   logic         nul;
   rsqrt_unit u_rsqrt (
@@ -83,7 +83,7 @@ module normalizer #(
   end
 
   // ---- stage 6: p = N * y, exact (FracBits + F fraction bits) ----------------------------------
-  logic signed [PBits-1:0] p_q [3];
+  logic signed [ScaledBits-1:0] p_q [3];
   logic        [4:0]       j6_q;
   logic                    nul6_q;
   always_ff @(posedge clk_i) if (en) begin
@@ -97,15 +97,15 @@ module normalizer #(
   // 1/sqrt(m) = y 2^(j-2) and N carries 16 fraction bits, so the shift to 14 is F + 4 - j, in
   // [F-13, F+4]: always a right shift. round = add half, arithmetic shift (round_shift).
   logic [4:0]              sh;
-  logic signed [PBits-1:0] r [3];
+  logic signed [ScaledBits-1:0] r [3];
   logic [3*UB-1:0]         unit;
   always_comb begin
-    sh = 5'(F + 4) - j6_q;
+    sh = 5'(RsqrtBits + 4) - j6_q;
     for (int c = 0; c < 3; c++) begin
-      r[c] = (p_q[c] + (PBits'(1) << (sh - 5'd1))) >>> sh;
-      if (r[c] > PBits'((1 << (UB - 1)) - 1))    unit[c*UB +: UB] = UB'((1 << (UB - 1)) - 1);
-      else if (r[c] < -PBits'(1 << (UB - 1)))    unit[c*UB +: UB] = UB'(1 << (UB - 1));
-      else                                       unit[c*UB +: UB] = r[c][UB-1:0];
+      r[c] = (p_q[c] + (ScaledBits'(1) << (sh - 5'd1))) >>> sh;
+      if (r[c] > ScaledBits'((1 << (UB - 1)) - 1)) unit[c*UB +: UB] = UB'((1 << (UB - 1)) - 1);
+      else if (r[c] < -ScaledBits'(1 << (UB - 1))) unit[c*UB +: UB] = UB'(1 << (UB - 1));
+      else                                         unit[c*UB +: UB] = r[c][UB-1:0];
     end
   end
 

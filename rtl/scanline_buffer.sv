@@ -39,8 +39,8 @@ module scanline_buffer #(
   output logic                              pixel_valid_o,
   input  logic                              pixel_ready_i
 );
-  localparam int unsigned LB = watkins_pkg::LineBits;
-  localparam int unsigned AB = $clog2(2 * MaxWidth);
+  localparam int unsigned LB       = watkins_pkg::LineBits;
+  localparam int unsigned AddrBits = $clog2(2 * MaxWidth);  // both banks
 
   // Bank b holds pixel x at address b * MaxWidth + x.
   logic [watkins_pkg::DepthBits-1:0] depth_q [2 * MaxWidth];
@@ -54,8 +54,8 @@ module scanline_buffer #(
 
   // x < width_i <= MaxWidth, so its high bits are zero.
   /* verilator lint_off UNUSEDSIGNAL */
-  function automatic logic [AB-1:0] addr(logic bank, logic [LB-1:0] x);
-    addr = bank ? AB'(MaxWidth) + AB'(x) : AB'(x);
+  function automatic logic [AddrBits-1:0] addr(logic bank, logic [LB-1:0] x);
+    addr = bank ? AddrBits'(MaxWidth) + AddrBits'(x) : AddrBits'(x);
   endfunction
   /* verilator lint_on UNUSEDSIGNAL */
 
@@ -84,8 +84,8 @@ module scanline_buffer #(
 
   // ------------------------------------------------------------ write side
   logic          frag_fire, wins, rd_load, rd_step, rd_emit, rd_last, rd_lastline, eol_ok;
-  logic [LB-1:0] rd_x;
-  logic [AB-1:0] wa, ra;
+  logic [LB-1:0]       rd_x;
+  logic [AddrBits-1:0] wa, ra;
 
   assign rd_lastline = rline_q == height_i - 1'b1;
   // Full mode: every x. Sparse: the next covered x; an empty line emits nothing unless it is the

@@ -10,8 +10,8 @@
 module span_reciprocal #(
   parameter int unsigned DxBits      = watkins_pkg::ChannelBits + 1,  // unsigned width of dx
   parameter int unsigned PayloadBits = 1,
-  localparam int unsigned R          = watkins_pkg::RecipBits,
-  localparam int unsigned PBits      = $clog2(DxBits)
+  localparam int unsigned RecipBits   = watkins_pkg::RecipBits,     // R below
+  localparam int unsigned ExpBits     = $clog2(DxBits)              // width of p
 ) (
   input  logic                   clk_i,
   input  logic                   rst_ni,
@@ -19,19 +19,19 @@ module span_reciprocal #(
   input  logic [PayloadBits-1:0] payload_i,
   input  logic                   valid_i,
   output logic                   ready_o,
-  output logic [R:0]             recip_o,    // in (2^(R-1), 2^R]
-  output logic [PBits-1:0]       p_o,        // floor(log2 dx)
+  output logic [RecipBits:0]     recip_o,    // in (2^(R-1), 2^R]
+  output logic [ExpBits-1:0]     p_o,        // floor(log2 dx)
   output logic [PayloadBits-1:0] payload_o,
   output logic                   valid_o,
   input  logic                   ready_i
 );
-  localparam int unsigned Stages = R + 2;  // normalize + R+1 quotient bits
+  localparam int unsigned Stages = RecipBits + 2;  // normalize + R+1 quotient bits
 
-  logic                   en;
-  logic [R-1:0]           m_q       [Stages];  // normalized divisor in [2^(R-1), 2^R)
-  logic [R-1:0]           rem_q     [Stages];  // partial remainder, < m
-  logic [R:0]             quo_q     [Stages];  // quotient bits so far
-  logic [PBits-1:0]       p_q       [Stages];
+  logic                 en;
+  logic [RecipBits-1:0] m_q   [Stages];  // normalized divisor in [2^(R-1), 2^R)
+  logic [RecipBits-1:0] rem_q [Stages];  // partial remainder, < m
+  logic [RecipBits:0]   quo_q [Stages];  // quotient bits so far
+  logic [ExpBits-1:0]   p_q   [Stages];
 
   // Valid, payload and the stall of every stage; the registers below advance on its en.
   stall_pipe #(
@@ -50,32 +50,32 @@ module span_reciprocal #(
 
   // Leading-one detection and normalization (dx << (DxBits-1-p) puts the leading one on top;
   // its top R bits are the model's m whether dx is shifted left or right).
-  logic [PBits-1:0]  lead;
+  logic [ExpBits-1:0] lead;
   // Only the top R bits of the normalized width matter (the model truncates the rest).
   /* verilator lint_off UNUSEDSIGNAL */
   logic [DxBits-1:0] norm;
   /* verilator lint_on UNUSEDSIGNAL */
   always_comb begin
     lead = '0;
-    for (int i = 0; i < DxBits; i++) if (dx_i[i]) lead = PBits'(i);
-    norm = dx_i << (PBits'(DxBits - 1) - lead);
+    for (int i = 0; i < DxBits; i++) if (dx_i[i]) lead = ExpBits'(i);
+    norm = dx_i << (ExpBits'(DxBits - 1) - lead);
   end
 
   // Quotient bit R-k in stage k: the numerator 2^(2R-1) has contributed 2^(R-2) to the partial
   // remainder before bit R (smaller than m, so every higher quotient bit is zero).
   always_ff @(posedge clk_i) begin
     if (en) begin
-      m_q[0]   <= norm[DxBits-1 -: R];
-      rem_q[0] <= R'(1) << (R - 2);
+      m_q[0]   <= norm[DxBits-1 -: RecipBits];
+      rem_q[0] <= RecipBits'(1) << (RecipBits - 2);
       quo_q[0] <= '0;
       p_q[0]   <= lead;
       for (int k = 1; k < Stages; k++) begin
-        logic [R:0] twice;
-        logic       ge;
+        logic [RecipBits:0] twice;
+        logic               ge;
         twice = {rem_q[k-1], 1'b0};
         ge    = (twice >= {1'b0, m_q[k-1]});
-        rem_q[k] <= ge ? R'(twice - {1'b0, m_q[k-1]}) : R'(twice);
-        quo_q[k] <= {quo_q[k-1][R-1:0], ge};
+        rem_q[k] <= ge ? RecipBits'(twice - {1'b0, m_q[k-1]}) : RecipBits'(twice);
+        quo_q[k] <= {quo_q[k-1][RecipBits-1:0], ge};
         m_q[k]   <= m_q[k-1];
         p_q[k]   <= p_q[k-1];
       end

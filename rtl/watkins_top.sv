@@ -189,7 +189,7 @@ module watkins_top #(
 
   if (Phong != 0) begin : g_phong
     localparam int unsigned UB = watkins_pkg::UnitBits;
-    localparam int unsigned PB = 1 + LB + DepB;   // {eol, x, depth} rides along
+    localparam int unsigned ShadePayloadBits = 1 + LB + DepB;  // {eol, x, depth} rides along
     logic [3*UB-1:0] light_q, eye_q;
     always_ff @(posedge clk_i) begin
       if (start) begin
@@ -207,14 +207,14 @@ module watkins_top #(
         material_q[material_addr_i] <= {material_cp_i, material_d_i, material_w_i, material_n_i};
     end
 
-    logic [3*UB-1:0] nm_unit;
-    logic [MIB-1:0]  nm_material;
-    logic [PB-1:0]   nm_payload, sh_payload;
-    logic            nm_valid, nm_ready;
-    logic            nm_null_unused;  // a null normal already reads as (0,0,0): cos(i) = 0
+    logic [3*UB-1:0]             nm_unit;
+    logic [MIB-1:0]              nm_material;
+    logic [ShadePayloadBits-1:0] nm_payload, sh_payload;
+    logic                        nm_valid, nm_ready;
+    logic                        nm_null_unused;  // a null normal already reads as (0,0,0): cos(i) = 0
 
     normalizer #(
-      .PayloadBits(MIB + PB)
+      .PayloadBits(MIB + ShadePayloadBits)
     ) u_normalizer (
       .clk_i, .rst_ni,
       .normal_i (fr_normal),
@@ -228,13 +228,13 @@ module watkins_top #(
       .ready_i  (nm_ready)
     );
 
-    watkins_pkg::rgb_t                  m_cp;
+    watkins_pkg::rgb_t                     m_cp;
     logic [watkins_pkg::MaterialBits-1:0]  m_d, m_w;
     logic [watkins_pkg::ShininessBits-1:0] m_n;
     assign {m_cp, m_d, m_w, m_n} = material_q[nm_material];
 
     phong_shader #(
-      .PayloadBits(PB)
+      .PayloadBits(ShadePayloadBits)
     ) u_phong_shader (
       .clk_i, .rst_ni,
       .light_i    (light_q),
