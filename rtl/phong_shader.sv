@@ -3,8 +3,9 @@
 // vector, eqs. 4-8), cos(s)^n by square-and-multiply over the 8 bits of n; bit-exact twin of
 // model/phong_shader.hpp. Latency 13, one pixel per clock; every stage registers valid and data;
 // one global stall (stall_pipe): ready_o = ready_i || !valid_o (combinational from ready_i and the
-// output valid flop only). light_i / eye_i are frame constants: L.E is registered from them every clock
-// (le_q), so they must be stable from one clock before a frame's first pixel to its last output.
+// output valid flop only). light_i / eye_i are frame constants: L.E is registered from them every
+// clock (le_q), so they must be stable from one clock before a frame's first pixel to its last
+// output.
 `include "watkins_assert.svh"
 
 module phong_shader #(

@@ -42,10 +42,10 @@ module scanline_buffer #(
   localparam int unsigned LB       = watkins_pkg::LineBits;
   localparam int unsigned AddrBits = $clog2(2 * MaxWidth);  // both banks
 
-  // Bank b holds pixel x at address b * MaxWidth + x.
+  // Bank b holds pixel x at address b * MaxWidth + x. Shades as plain vectors, not rgb_t: yosys
+  // 0.23 mishandles arrays of structs.
   logic [watkins_pkg::DepthBits-1:0] depth_q [2 * MaxWidth];
-  // Plain vectors, not rgb_t: yosys 0.23 mishandles arrays of structs.
-  logic [watkins_pkg::RgbBits-1:0] rgb_q [2 * MaxWidth];
+  logic [watkins_pkg::RgbBits-1:0]   rgb_q   [2 * MaxWidth];
   logic [2 * MaxWidth - 1:0]         written_q;  // flops: cleared by reset and by reading
 
   logic          wsel_q;           // bank being written; the reader uses the other one
