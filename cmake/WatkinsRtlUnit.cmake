@@ -2,7 +2,8 @@
 #                  [LABELS l...])
 # One GoogleTest bench around one Verilated RTL unit (--cc, -O3, --assert), linked with the
 # bit-exact model so the bench compares the unit with its twin. Shared by tests/rtl and
-# tests/phong; one Verilated model per unit top.
+# tests/rtl; one Verilated model per unit top. Verilator searches rtl/ (-y) for the includes
+# (watkins_assert.svh) and for any module SOURCES does not list (e.g. stall_pipe).
 #
 # PARAMS is the one source of the unit's parameter overrides: each Name=value goes to Verilator
 # as -GName=value and to the bench's C++ as the definition WATKINS_RTL_PARAM_Name=value, so a
@@ -37,7 +38,8 @@ function(watkins_rtl_unit bench)
     TOP_MODULE ${U_TOP}
     PREFIX V${U_TOP}
     OPT_FAST -O3
-    VERILATOR_ARGS -O3 --x-assign fast --x-initial fast --assert -Wno-fatal ${vparams})
+    VERILATOR_ARGS -O3 --x-assign fast --x-initial fast --assert -Wno-fatal -y ${CMAKE_SOURCE_DIR}/rtl
+                   ${vparams})
   if(NOT U_LABELS)
     set(U_LABELS rtl)
   endif()

@@ -9,6 +9,8 @@
 // Per line: about (active + new edges + 3) cycles when nothing stalls. The output data is read
 // from the bank registers (valid/data from registers through a read mux); ready is
 // combinational. An insertion into a full bank drops the edge and sets the sticky overflow_o.
+`include "watkins_assert.svh"
+
 module active_edge_list #(
   parameter int unsigned MaxActiveEdges = watkins_pkg::MaxActiveEdges
 ) (
@@ -57,9 +59,9 @@ module active_edge_list #(
                              + watkins_pkg::MaterialIdBits;  // id, polygon, material
   localparam int unsigned EB = LB + TB + 2 * NC * CB;
   logic [EB-1:0]   bank_q [2 * N];
-  localparam int unsigned SB = $clog2(2 * N);
-  function automatic logic [SB-1:0] slot(logic b, logic [IB-1:0] i);
-    slot = b ? SB'(N) + SB'(i) : SB'(i);
+  localparam int unsigned SlotBits = $clog2(2 * N);  // address of an entry in either bank
+  function automatic logic [SlotBits-1:0] slot(logic b, logic [IB-1:0] i);
+    slot = b ? SlotBits'(N) + SlotBits'(i) : SlotBits'(i);
   endfunction
   logic [CntB-1:0] cnt_q  [2];
   logic            sel_q;        // bank streamed for line line_q - 1; the other fills for line_q
@@ -227,15 +229,10 @@ module active_edge_list #(
 
   assign busy_o = frame_q;
 
-`ifndef SYNTHESIS
-  a_in_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    edge_valid_i && !edge_ready_o |=> edge_valid_i && $stable({edge_i, edge_eof_i}));
-  a_out_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    out_valid_o && !out_ready_i |=> out_valid_o && $stable({out_poly_o, out_material_o, out_value_o, out_eol_o}));
-  a_no_insert_on_swap: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    swap |-> !ins_valid);
-  c_overflow: cover property (@(posedge clk_i) disable iff (!rst_ni) $rose(overflow_o));
-  c_new_and_stepped: cover property (@(posedge clk_i) disable iff (!rst_ni)
-    ins_step && frame_q && head_edge && edge_i.y0 == line_q);
-`endif
+  `WATKINS_ASSERT_HOLD(a_in_hold, edge_valid_i, edge_ready_o, {edge_i, edge_eof_i})
+  `WATKINS_ASSERT_HOLD(a_out_hold, out_valid_o, out_ready_i, {out_poly_o, out_material_o,
+    out_value_o, out_eol_o})
+  `WATKINS_ASSERT(a_no_insert_on_swap, swap |-> !ins_valid)
+  `WATKINS_COVER(c_overflow, $rose(overflow_o))
+  `WATKINS_COVER(c_new_and_stepped, ins_step && frame_q && head_edge && edge_i.y0 == line_q)
 endmodule

@@ -1,6 +1,8 @@
 // edge_incrementer: steps one active edge to the next scan line, value += slope in every
 // channel (wrapping at ChannelBits, as model/twins/edge_incrementer.hpp) and remaining -= 1.
 // Latency 1: valid and data registered; ready_o = ready_i || !valid_o (combinational).
+`include "watkins_assert.svh"
+
 module edge_incrementer #(
   parameter int unsigned NumChannels = watkins_pkg::NumChannels,
   parameter int unsigned PayloadBits = 1  // carried unchanged (polygon id, edge id, ...)
@@ -45,11 +47,7 @@ module edge_incrementer #(
     end
   end
 
-`ifndef SYNTHESIS
-  a_in_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    valid_i && !ready_o |=> valid_i && $stable({value_i, slope_i, remaining_i, payload_i}));
-  a_out_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    valid_o && !ready_i |=> valid_o && $stable({value_o, slope_o, remaining_o, retire_o, payload_o}));
-  c_retire: cover property (@(posedge clk_i) disable iff (!rst_ni) valid_o && retire_o);
-`endif
+  `WATKINS_ASSERT_HOLD(a_in_hold, valid_i, ready_o, {value_i, slope_i, remaining_i, payload_i})
+  `WATKINS_ASSERT_HOLD(a_out_hold, valid_o, ready_i, {value_o, slope_o, remaining_o, retire_o, payload_o})
+  `WATKINS_COVER(c_retire, valid_o && retire_o)
 endmodule

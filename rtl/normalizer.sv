@@ -2,9 +2,12 @@
 // a unit N; p. 317 asks for "a very fast mechanism for obtaining square roots"), bit-exact twin
 // of model/twins/normalizer.hpp. m = Nx^2+Ny^2+Nz^2 exact, 1/sqrt(m) by rsqrt_unit (even shift, seed
 // table, one Newton-Raphson step), N * 1/sqrt(m) rounded and saturated to UnitBits.
-// Latency 8, one normal per clock; every stage registers valid and data; one global stall:
-// ready_o = ready_i || !valid_o (combinational from ready_i and the output valid flop only).
+// Latency 8, one normal per clock; every stage registers valid and data; one global stall
+// (stall_pipe): ready_o = ready_i || !valid_o (combinational from ready_i and the output valid
+// flop only).
 // The null vector (m = 0) gives (0, 0, 0) with null_o set; any m > 0 gives a unit vector.
+`include "watkins_assert.svh"
+
 module normalizer #(
   parameter int PayloadBits = 1,                              // carried alongside (pixel x, ...)
   localparam int NB = watkins_pkg::NormalInBits,
@@ -22,22 +25,27 @@ module normalizer #(
   output logic                   valid_o,
   input  logic                   ready_i
 );
-  localparam int MBits  = 2 * NB;                   // 36: m < 3 * 2^34
-  localparam int F      = watkins_pkg::RsqrtBits;
-  localparam int RDelay = 5;                        // rsqrt_unit latency
-  localparam int Stages = 1 + RDelay + 2;           // squares, rsqrt, product, round
-  localparam int PBits  = NB + F + 3;               // N * y, signed, plus a rounding guard bit
+  localparam int MBits      = 2 * NB;                   // 36: m < 3 * 2^34
+  localparam int RsqrtBits  = watkins_pkg::RsqrtBits;   // F below: fraction bits of y
+  localparam int RDelay     = 5;                        // rsqrt_unit latency
+  localparam int Stages     = 1 + RDelay + 2;           // squares, rsqrt, product, round
+  localparam int ScaledBits = NB + RsqrtBits + 3;       // N * y, signed, plus a rounding guard bit
 
-  logic              en;
-  logic [Stages-1:0] valid_q;
-
-  assign en      = ready_i || !valid_q[Stages-1];
-  assign ready_o = en;
-
-  always_ff @(posedge clk_i) begin
-    if (!rst_ni) valid_q <= '0;
-    else if (en) valid_q <= {valid_q[Stages-2:0], valid_i};
-  end
+  // Valid, payload and the stall of every stage; the registers below advance on its en.
+  logic en;
+  stall_pipe #(
+    .Stages     (Stages),
+    .PayloadBits(PayloadBits)
+  ) u_pipe (
+    .clk_i, .rst_ni,
+    .payload_i,
+    .valid_i,
+    .ready_o,
+    .payload_o,
+    .valid_o,
+    .ready_i,
+    .en_o     (en)
+  );
 
   // ---- stage 0: m = Nx^2 + Ny^2 + Nz^2, exact ------------------------------------------------
   logic signed [MBits-1:0] sq [3];
@@ -55,7 +63,7 @@ module normalizer #(
   always_ff @(posedge clk_i) if (en) m_q <= m;
 
   // ---- stages 1..5: y = 1/sqrt(m') with 1/sqrt(m) = y * 2^(j-2) --------------------------------
-  logic [F+1:0] y;
+  logic [RsqrtBits+1:0] y;
   logic [4:0]   j;
   logic         nul;
   rsqrt_unit u_rsqrt (
@@ -67,18 +75,15 @@ module normalizer #(
     .null_o (nul)
   );
 
-  // N and the payload wait alongside the rsqrt pipe (stage 0 .. stage 5).
-  logic [3*NB-1:0]        n_q       [RDelay+1];
-  logic [PayloadBits-1:0] payload_q [Stages];
+  // N waits alongside the rsqrt pipe (stage 0 .. stage 5).
+  logic [3*NB-1:0] n_q [RDelay+1];
   always_ff @(posedge clk_i) if (en) begin
-    n_q[0]       <= normal_i;
-    payload_q[0] <= payload_i;
+    n_q[0] <= normal_i;
     for (int s = 1; s <= RDelay; s++) n_q[s] <= n_q[s-1];
-    for (int s = 1; s < Stages; s++) payload_q[s] <= payload_q[s-1];
   end
 
   // ---- stage 6: p = N * y, exact (FracBits + F fraction bits) ----------------------------------
-  logic signed [PBits-1:0] p_q [3];
+  logic signed [ScaledBits-1:0] p_q [3];
   logic        [4:0]       j6_q;
   logic                    nul6_q;
   always_ff @(posedge clk_i) if (en) begin
@@ -92,15 +97,15 @@ module normalizer #(
   // 1/sqrt(m) = y 2^(j-2) and N carries 16 fraction bits, so the shift to 14 is F + 4 - j, in
   // [F-13, F+4]: always a right shift. round = add half, arithmetic shift (round_shift).
   logic [4:0]              sh;
-  logic signed [PBits-1:0] r [3];
+  logic signed [ScaledBits-1:0] r [3];
   logic [3*UB-1:0]         unit;
   always_comb begin
-    sh = 5'(F + 4) - j6_q;
+    sh = 5'(RsqrtBits + 4) - j6_q;
     for (int c = 0; c < 3; c++) begin
-      r[c] = (p_q[c] + (PBits'(1) << (sh - 5'd1))) >>> sh;
-      if (r[c] > PBits'((1 << (UB - 1)) - 1))    unit[c*UB +: UB] = UB'((1 << (UB - 1)) - 1);
-      else if (r[c] < -PBits'(1 << (UB - 1)))    unit[c*UB +: UB] = UB'(1 << (UB - 1));
-      else                                       unit[c*UB +: UB] = r[c][UB-1:0];
+      r[c] = (p_q[c] + (ScaledBits'(1) << (sh - 5'd1))) >>> sh;
+      if (r[c] > ScaledBits'((1 << (UB - 1)) - 1)) unit[c*UB +: UB] = UB'((1 << (UB - 1)) - 1);
+      else if (r[c] < -ScaledBits'(1 << (UB - 1))) unit[c*UB +: UB] = UB'(1 << (UB - 1));
+      else                                         unit[c*UB +: UB] = r[c][UB-1:0];
     end
   end
 
@@ -111,17 +116,11 @@ module normalizer #(
     nul7_q <= nul6_q;
   end
 
-  assign valid_o   = valid_q[Stages-1];
-  assign unit_o    = unit_q;
-  assign null_o    = nul7_q;
-  assign payload_o = payload_q[Stages-1];
+  assign unit_o = unit_q;
+  assign null_o = nul7_q;
 
-`ifndef SYNTHESIS
-  a_in_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    valid_i && !ready_o |=> valid_i && $stable({normal_i, payload_i}));
-  a_out_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    valid_o && !ready_i |=> valid_o && $stable({unit_o, null_o, payload_o}));
-  c_stall: cover property (@(posedge clk_i) disable iff (!rst_ni) valid_o && !ready_i);
-  c_null: cover property (@(posedge clk_i) disable iff (!rst_ni) valid_o && null_o);
-`endif
+  `WATKINS_ASSERT_HOLD(a_in_hold, valid_i, ready_o, {normal_i, payload_i})
+  `WATKINS_ASSERT_HOLD(a_out_hold, valid_o, ready_i, {unit_o, null_o, payload_o})
+  `WATKINS_COVER(c_stall, valid_o && !ready_i)
+  `WATKINS_COVER(c_null, valid_o && null_o)
 endmodule

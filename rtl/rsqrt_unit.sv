@@ -4,22 +4,23 @@
 // RsqrtUnit::rsqrt_mant (model/twins/rsqrt_unit.hpp). Latency 5, every stage registered; no
 // handshake: en_i advances every stage at once (the parent owns valid/ready and the stall).
 module rsqrt_unit #(
-  localparam int MBits = 2 * watkins_pkg::NormalInBits,  // m = Nx^2 + Ny^2 + Nz^2, exact
-  localparam int F     = watkins_pkg::RsqrtBits
+  localparam int MBits     = 2 * watkins_pkg::NormalInBits,  // m = Nx^2 + Ny^2 + Nz^2, exact
+  localparam int RsqrtBits = watkins_pkg::RsqrtBits          // F: fraction bits of y
 ) (
-  input  logic             clk_i,
-  input  logic             en_i,    // advance the whole pipe (global stall when low)
-  input  logic [MBits-1:0] m_i,     // squared length, 2*FracBits fraction bits
-  output logic [F+1:0]     y_o,     // 1/sqrt(m'c) with F fraction bits, in [1, 2]; 0 if null_o
-  output logic [4:0]       j_o,     // 1/sqrt(m) = y * 2^(j-2); 0 if null_o
-  output logic             null_o   // m == 0
+  input  logic                 clk_i,
+  input  logic                 en_i,    // advance the whole pipe (global stall when low)
+  input  logic [MBits-1:0]     m_i,     // squared length, 2*FracBits fraction bits
+  output logic [RsqrtBits+1:0] y_o,     // 1/sqrt(m'c) with F fraction bits, in [1, 2]; 0 if null_o
+  output logic [4:0]           j_o,     // 1/sqrt(m) = y * 2^(j-2); 0 if null_o
+  output logic                 null_o   // m == 0
 );
-  localparam int W   = watkins_pkg::RsqrtMantBits;   // mantissa bits of m'
-  localparam int P   = watkins_pkg::RsqrtIndexBits;  // seed index bits
-  localparam int T   = watkins_pkg::RsqrtSeedBits;   // seed fraction bits
-  localparam int G   = watkins_pkg::RsqrtNrBits;     // fraction bits of m'c * y0^2
-  localparam int Sh4 = (W + 1) + 2 * T - G;          // m'c * y0^2 down to G fraction bits
-  localparam int Sh5 = T + G + 1 - F;                // y0 * u / 2 down to F fraction bits
+  // The comments write the formats as the model's formulas do: W, P, T, G and F.
+  localparam int MantBits  = watkins_pkg::RsqrtMantBits;   // W: mantissa bits of m'
+  localparam int IndexBits = watkins_pkg::RsqrtIndexBits;  // P: seed index bits
+  localparam int SeedBits  = watkins_pkg::RsqrtSeedBits;   // T: seed fraction bits
+  localparam int NrBits    = watkins_pkg::RsqrtNrBits;     // G: fraction bits of m'c * y0^2
+  localparam int Sh4 = (MantBits + 1) + 2 * SeedBits - NrBits;  // m'c * y0^2 down to G fraction bits
+  localparam int Sh5 = SeedBits + NrBits + 1 - RsqrtBits;        // y0 * u / 2 down to F fraction bits
 
   // floor(sqrt(v)) bit by bit, exactly Normalizer::isqrt for v < 2^34 (the seeds need v < 2^32:
   // v = 2^(2T+P+3) / (2 idx + 1) with idx >= 2^(P-2)); fewer steps keep elaboration quick.
@@ -42,11 +43,11 @@ module rsqrt_unit #(
   // Seed row idx: round(2^T / sqrt(c)), c = (2 idx + 1) / 2^(P+1) the centre of the row's
   // interval of m' (Normalizer::seed): round(sqrt(x)) = (floor(sqrt(4x)) + 1) / 2.
   /* verilator lint_off UNUSEDSIGNAL */
-  function automatic logic [T:0] seed_fn(input int idx);
+  function automatic logic [SeedBits:0] seed_fn(input int idx);
     logic [63:0] q, r;  // r < 2^(T+1): its top bits are zero
-    q = (64'd1 << (2 * T + P + 3)) / 64'(2 * idx + 1);
+    q = (64'd1 << (2 * SeedBits + IndexBits + 3)) / 64'(2 * idx + 1);
     r = (isqrt(q) + 64'd1) >> 1;
-    seed_fn = r[T:0];
+    seed_fn = r[SeedBits:0];
   endfunction
   /* verilator lint_on UNUSEDSIGNAL */
 
@@ -54,10 +55,10 @@ module rsqrt_unit #(
   // Rows below 2^(P-2) hold 0: only the null vector (mant = 0) reads them, and y = 0 then makes
   // every unit component 0 with no special case. Read synchronously (stage 2's register), so
   // synthesis maps it to block RAM (iCE40: 4 x SB_RAM40_4K) instead of a 15-bit 1024-way mux.
-  logic [T:0] seed_rom [1 << P];
+  logic [SeedBits:0] seed_rom [1 << IndexBits];
   initial begin
-    for (int r = 0; r < (1 << (P - 2)); r++) seed_rom[r] = '0;
-    for (int r = 1 << (P - 2); r < (1 << P); r++) seed_rom[r] = seed_fn(r);
+    for (int r = 0; r < (1 << (IndexBits - 2)); r++) seed_rom[r] = '0;
+    for (int r = 1 << (IndexBits - 2); r < (1 << IndexBits); r++) seed_rom[r] = seed_fn(r);
   end
 
   // ---- stage 1: even-shift normalization m' = (m << 2j) / 2^MBits in [1/4, 1) -------------
@@ -73,22 +74,22 @@ module rsqrt_unit #(
     shifted = m_i << {j1, 1'b0};
   end
 
-  logic [W-1:0] mant_q;
+  logic [MantBits-1:0] mant_q;
   logic [4:0]   j_q   [2:5];
   logic         nul_q [2:5];  // stage-1 result travels as index 1 (mant_q) / j_q[2] onwards
   logic [4:0]   j1_q;
   logic         nul1_q;
   always_ff @(posedge clk_i) if (en_i) begin
-    mant_q <= shifted[MBits-1 -: W];  // 0 for m = 0: reads ROM default 0 below
+    mant_q <= shifted[MBits-1 -: MantBits];  // 0 for m = 0: reads ROM default 0 below
     j1_q   <= j1;
     nul1_q <= (m_i == '0);
   end
 
   // ---- stage 2: seed y0 ---------------------------------------------------------------------
-  logic [P-1:0] idx;
-  logic [T:0]   y0_q  [2:4];
-  logic [W:0]   mc_q  [2:3];  // m'c = mant + half an ulp: {mant, 1}, W+1 fraction bits
-  assign idx = mant_q[W-1 -: P];
+  logic [IndexBits-1:0] idx;
+  logic [SeedBits:0]    y0_q  [2:4];
+  logic [MantBits:0]    mc_q  [2:3];  // m'c = mant + half an ulp: {mant, 1}, W+1 fraction bits
+  assign idx = mant_q[MantBits-1 -: IndexBits];
   always_ff @(posedge clk_i) if (en_i) begin
     y0_q[2]  <= seed_rom[idx];
     mc_q[2]  <= {mant_q, 1'b1};
@@ -97,9 +98,9 @@ module rsqrt_unit #(
   end
 
   // ---- stage 3: y0^2, exact (2T fraction bits) --------------------------------------------
-  logic [2*T+1:0] y0sq_q;
+  logic [2*SeedBits+1:0] y0sq_q;
   always_ff @(posedge clk_i) if (en_i) begin
-    y0sq_q   <= (2*T+2)'(y0_q[2]) * (2*T+2)'(y0_q[2]);
+    y0sq_q   <= (2*SeedBits+2)'(y0_q[2]) * (2*SeedBits+2)'(y0_q[2]);
     y0_q[3]  <= y0_q[2];
     mc_q[3]  <= mc_q[2];
     j_q[3]   <= j_q[2];
@@ -107,9 +108,10 @@ module rsqrt_unit #(
   end
 
   // ---- stage 4: u = 3 - round(m'c * y0^2), G fraction bits (|m'c y0^2 - 1| < 2^-9) ---------
-  localparam int PW4 = (W + 1) + (2 * T + 2) + 1;  // product plus one bit for the rounding add
-  logic [PW4-1:0] prod4;
-  logic [G+1:0]   u_q;
+  // The product plus one bit for the rounding add.
+  localparam int PW4 = (MantBits + 1) + (2 * SeedBits + 2) + 1;
+  logic [PW4-1:0]    prod4;
+  logic [NrBits+1:0] u_q;
   /* verilator lint_off UNUSEDSIGNAL */
   logic [PW4-1:0] t4;  // m'c * y0^2 < 2: the top bits are zero
   /* verilator lint_on UNUSEDSIGNAL */
@@ -118,25 +120,25 @@ module rsqrt_unit #(
     t4    = (prod4 + (PW4'(1) << (Sh4 - 1))) >> Sh4;
   end
   always_ff @(posedge clk_i) if (en_i) begin
-    u_q      <= (G+2)'(3 << G) - t4[G+1:0];
+    u_q      <= (NrBits+2)'(3 << NrBits) - t4[NrBits+1:0];
     y0_q[4]  <= y0_q[3];
     j_q[4]   <= j_q[3];
     nul_q[4] <= nul_q[3];
   end
 
   // ---- stage 5: y = round(y0 * u / 2), F fraction bits: y <- y (3 - m' y^2) / 2 ------------
-  localparam int PW5 = (T + 1) + (G + 2) + 1;
+  localparam int PW5 = (SeedBits + 1) + (NrBits + 2) + 1;
   logic [PW5-1:0] prod5;
   /* verilator lint_off UNUSEDSIGNAL */
   logic [PW5-1:0] y5;  // y <= 2: the top bits are zero
   /* verilator lint_on UNUSEDSIGNAL */
-  logic [F+1:0]   y_q;
+  logic [RsqrtBits+1:0] y_q;
   always_comb begin
     prod5 = PW5'(y0_q[4]) * PW5'(u_q);
     y5    = (prod5 + (PW5'(1) << (Sh5 - 1))) >> Sh5;
   end
   always_ff @(posedge clk_i) if (en_i) begin
-    y_q      <= y5[F+1:0];
+    y_q      <= y5[RsqrtBits+1:0];
     j_q[5]   <= j_q[4];
     nul_q[5] <= nul_q[4];
   end

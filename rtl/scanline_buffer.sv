@@ -14,22 +14,24 @@
 // covered pixel (in particular when the frame covers none), a terminating beat with
 // pixel_covered_o = 0, background rgb, at (width-1, height-1) carries pixel_last_o instead.
 // pixel_x_o / pixel_y_o give every beat's position in both modes.
+`include "watkins_assert.svh"
+
 module scanline_buffer #(
-  parameter int unsigned MaxWidth = 1024
+  parameter int unsigned MaxWidth = watkins_pkg::DefaultMaxWidth  // line-buffer depth in pixels
 ) (
   input  logic                              clk_i,
   input  logic                              rst_ni,
   input  logic [watkins_pkg::LineBits-1:0]  width_i,        // 1..MaxWidth, stable per frame
   input  logic [watkins_pkg::LineBits-1:0]  height_i,       // lines per frame, for pixel_last_o
-  input  logic [23:0]                       background_i,   // {R,G,B} of uncovered pixels
+  input  watkins_pkg::rgb_t                 background_i,   // shade of uncovered pixels
   input  logic                              sparse_i,       // covered pixels only, stable per frame
   input  logic [watkins_pkg::LineBits-1:0]  frag_x_i,       // < width_i
   input  logic [watkins_pkg::DepthBits-1:0] frag_depth_i,   // smaller is nearer
-  input  logic [23:0]                       frag_rgb_i,
+  input  watkins_pkg::rgb_t                 frag_rgb_i,
   input  logic                              frag_eol_i,     // end-of-line marker: the line is complete
   input  logic                              frag_valid_i,
   output logic                              frag_ready_o,
-  output logic [23:0]                       pixel_rgb_o,
+  output watkins_pkg::rgb_t                 pixel_rgb_o,
   output logic                              pixel_covered_o,
   output logic [watkins_pkg::LineBits-1:0]  pixel_x_o,
   output logic [watkins_pkg::LineBits-1:0]  pixel_y_o,
@@ -37,12 +39,13 @@ module scanline_buffer #(
   output logic                              pixel_valid_o,
   input  logic                              pixel_ready_i
 );
-  localparam int unsigned LB = watkins_pkg::LineBits;
-  localparam int unsigned AB = $clog2(2 * MaxWidth);
+  localparam int unsigned LB       = watkins_pkg::LineBits;
+  localparam int unsigned AddrBits = $clog2(2 * MaxWidth);  // both banks
 
-  // Bank b holds pixel x at address b * MaxWidth + x.
+  // Bank b holds pixel x at address b * MaxWidth + x. Shades as plain vectors, not rgb_t: yosys
+  // 0.23 mishandles arrays of structs.
   logic [watkins_pkg::DepthBits-1:0] depth_q [2 * MaxWidth];
-  logic [23:0]                       rgb_q   [2 * MaxWidth];
+  logic [watkins_pkg::RgbBits-1:0]   rgb_q   [2 * MaxWidth];
   logic [2 * MaxWidth - 1:0]         written_q;  // flops: cleared by reset and by reading
 
   logic          wsel_q;           // bank being written; the reader uses the other one
@@ -51,8 +54,8 @@ module scanline_buffer #(
 
   // x < width_i <= MaxWidth, so its high bits are zero.
   /* verilator lint_off UNUSEDSIGNAL */
-  function automatic logic [AB-1:0] addr(logic bank, logic [LB-1:0] x);
-    addr = bank ? AB'(MaxWidth) + AB'(x) : AB'(x);
+  function automatic logic [AddrBits-1:0] addr(logic bank, logic [LB-1:0] x);
+    addr = bank ? AddrBits'(MaxWidth) + AddrBits'(x) : AddrBits'(x);
   endfunction
   /* verilator lint_on UNUSEDSIGNAL */
 
@@ -81,8 +84,8 @@ module scanline_buffer #(
 
   // ------------------------------------------------------------ write side
   logic          frag_fire, wins, rd_load, rd_step, rd_emit, rd_last, rd_lastline, eol_ok;
-  logic [LB-1:0] rd_x;
-  logic [AB-1:0] wa, ra;
+  logic [LB-1:0]       rd_x;
+  logic [AddrBits-1:0] wa, ra;
 
   assign rd_lastline = rline_q == height_i - 1'b1;
   // Full mode: every x. Sparse: the next covered x; an empty line emits nothing unless it is the
@@ -145,21 +148,15 @@ module scanline_buffer #(
     end
   end
 
-`ifndef SYNTHESIS
-  a_in_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    frag_valid_i && !frag_ready_o |=> frag_valid_i && $stable({frag_x_i, frag_depth_i, frag_rgb_i, frag_eol_i}));
-  a_out_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    pixel_valid_o && !pixel_ready_i |=> pixel_valid_o && $stable({pixel_rgb_o, pixel_covered_o, pixel_last_o, pixel_x_o, pixel_y_o}));
-  a_sparse_covered: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    rd_load && sparse_i && !(rd_last && rd_lastline) |-> found);
-  a_sparse_one_hot: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    $onehot0(lowbit));
-  c_sparse_empty_line: cover property (@(posedge clk_i) disable iff (!rst_ni)
-    rd_step && !rd_emit);
-  a_x_in_line: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    frag_valid_i && !frag_eol_i |-> frag_x_i < width_i);
-  c_same_x_back_to_back: cover property (@(posedge clk_i) disable iff (!rst_ni)
-    frag_fire && !frag_eol_i && $past(frag_fire && !frag_eol_i) && frag_x_i == $past(frag_x_i));
-  c_eol_waits: cover property (@(posedge clk_i) disable iff (!rst_ni) frag_valid_i && !frag_ready_o);
-`endif
+  `WATKINS_ASSERT_HOLD(a_in_hold, frag_valid_i, frag_ready_o, {frag_x_i, frag_depth_i, frag_rgb_i,
+    frag_eol_i})
+  `WATKINS_ASSERT_HOLD(a_out_hold, pixel_valid_o, pixel_ready_i, {pixel_rgb_o, pixel_covered_o,
+    pixel_last_o, pixel_x_o, pixel_y_o})
+  `WATKINS_ASSERT(a_sparse_covered, rd_load && sparse_i && !(rd_last && rd_lastline) |-> found)
+  `WATKINS_ASSERT(a_sparse_one_hot, $onehot0(lowbit))
+  `WATKINS_COVER(c_sparse_empty_line, rd_step && !rd_emit)
+  `WATKINS_ASSERT(a_x_in_line, frag_valid_i && !frag_eol_i |-> frag_x_i < width_i)
+  `WATKINS_COVER(c_same_x_back_to_back,
+    frag_fire && !frag_eol_i && $past(frag_fire && !frag_eol_i) && frag_x_i == $past(frag_x_i))
+  `WATKINS_COVER(c_eol_waits, frag_valid_i && !frag_ready_o)
 endmodule

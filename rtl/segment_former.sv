@@ -6,6 +6,8 @@
 // Latency 1: output registered; ready_o = ready_i || !valid_o (combinational).
 // The open table has MaxActiveEdges entries, so it cannot fill: a line carries at most that
 // many edges.
+`include "watkins_assert.svh"
+
 module segment_former #(
   parameter int unsigned MaxActiveEdges = watkins_pkg::MaxActiveEdges
 ) (
@@ -85,13 +87,10 @@ module segment_former #(
     end
   end
 
-`ifndef SYNTHESIS
-  a_in_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    edge_valid_i && !edge_ready_o |=> edge_valid_i && $stable({edge_poly_i, edge_material_i, edge_value_i, edge_eol_i}));
-  a_out_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    seg_valid_o && !seg_ready_i |=> seg_valid_o && $stable({seg_e_o, seg_f_o, seg_poly_o, seg_material_o, seg_eol_o}));
-  a_table_room: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    fire && !edge_eol_i && !hit |-> has_free);
-  c_two_open: cover property (@(posedge clk_i) disable iff (!rst_ni) $countones(open_q) >= 2);
-`endif
+  `WATKINS_ASSERT_HOLD(a_in_hold, edge_valid_i, edge_ready_o, {edge_poly_i, edge_material_i,
+    edge_value_i, edge_eol_i})
+  `WATKINS_ASSERT_HOLD(a_out_hold, seg_valid_o, seg_ready_i, {seg_e_o, seg_f_o, seg_poly_o,
+    seg_material_o, seg_eol_o})
+  `WATKINS_ASSERT(a_table_room, fire && !edge_eol_i && !hit |-> has_free)
+  `WATKINS_COVER(c_two_open, $countones(open_q) >= 2)
 endmodule

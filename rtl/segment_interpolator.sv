@@ -11,6 +11,8 @@
 // End-of-line markers pass through in order. Each fragment carries both readings of the three
 // attribute channels: frag_rgb_o (Gouraud shade levels) and frag_normal_o (Phong normal, the
 // channel saturated to NormalInBits); a top uses one and synthesis drops the other.
+`include "watkins_assert.svh"
+
 module segment_interpolator #(
   parameter int unsigned FifoDepth = 4
 ) (
@@ -25,43 +27,44 @@ module segment_interpolator #(
   output logic                                                             seg_ready_o,
   output logic [watkins_pkg::LineBits-1:0]                                 frag_x_o,
   output logic [watkins_pkg::DepthBits-1:0]                                frag_depth_o,
-  output logic [23:0]                                                      frag_rgb_o,  // {R,G,B}
+  output watkins_pkg::rgb_t                                                frag_rgb_o,  // Gouraud shade
   output logic [3*watkins_pkg::NormalInBits-1:0]                           frag_normal_o, // {Nz,Ny,Nx}
   output logic [watkins_pkg::MaterialIdBits-1:0]                          frag_material_o,
   output logic                                                             frag_eol_o,  // end-of-line marker, no fragment
   output logic                                                             frag_valid_o,
   input  logic                                                             frag_ready_i
 );
-  localparam int unsigned CB   = watkins_pkg::ChannelBits;
-  localparam int unsigned FB   = watkins_pkg::FracBits;
-  localparam int unsigned LB   = watkins_pkg::LineBits;
-  localparam int unsigned R    = watkins_pkg::RecipBits;
-  localparam int unsigned AB   = watkins_pkg::AlphaBits;
-  localparam int unsigned NI   = watkins_pkg::NumChannels - 1;  // interpolated channels Z.. (not X)
-  localparam int unsigned DB   = CB + 1;                        // dx, offset, delta widths
-  localparam int unsigned PB   = $clog2(DB);
-  localparam int unsigned PW   = DB + R + 2;                    // product width, with guard
-  localparam int unsigned XCB  = CB + 1 - FB;                   // signed width of a pixel index
-  localparam int unsigned DepB = watkins_pkg::DepthBits;
-  localparam int unsigned XLo  = watkins_pkg::ChanX * CB;
-  localparam int unsigned NB   = watkins_pkg::NormalInBits;
-  localparam int unsigned MIB  = watkins_pkg::MaterialIdBits;
+  localparam int unsigned CB        = watkins_pkg::ChannelBits;
+  localparam int unsigned FB        = watkins_pkg::FracBits;
+  localparam int unsigned LB        = watkins_pkg::LineBits;
+  localparam int unsigned RecipBits = watkins_pkg::RecipBits;
+  localparam int unsigned AlphaBits = watkins_pkg::AlphaBits;
+  localparam int unsigned NI        = watkins_pkg::NumChannels - 1;  // interpolated channels Z.. (not X)
+  localparam int unsigned DeltaBits = CB + 1;                        // dx, offset, delta widths
+  localparam int unsigned ExpBits   = $clog2(DeltaBits);             // p = floor(log2 dx)
+  localparam int unsigned ProdBits  = DeltaBits + RecipBits + 2;     // products with recip, with guard
+  localparam int unsigned XCB       = CB + 1 - FB;                   // signed width of a pixel index
+  localparam int unsigned DepB      = watkins_pkg::DepthBits;
+  localparam int unsigned XLo       = watkins_pkg::ChanX * CB;
+  localparam int unsigned NB        = watkins_pkg::NormalInBits;
+  localparam int unsigned MIB       = watkins_pkg::MaterialIdBits;
 
   typedef logic signed [CB-1:0] chan_t;
-  typedef logic signed [PW-1:0] prod_t;
-  localparam logic signed [PW-1:0] StepMax = $signed((PW'(1) << (CB - 1)) - PW'(1));  // saturate_signed(., CB)
-  localparam logic signed [PW-1:0] StepMin = -$signed(PW'(1) << (CB - 1));
+  typedef logic signed [ProdBits-1:0] prod_t;
+  // saturate_signed(., CB)
+  localparam logic signed [ProdBits-1:0] StepMax = $signed((ProdBits'(1) << (CB - 1)) - ProdBits'(1));
+  localparam logic signed [ProdBits-1:0] StepMin = -$signed(ProdBits'(1) << (CB - 1));
 
   // ---------------------------------------------------------------- s0: range and clipping
   typedef struct packed {
-    logic                  eol;
-    logic                  empty;   // no pixel centre in [X_E, X_F) on screen
-    logic [MIB-1:0]        material;
-    logic [LB-1:0]         xs;      // first pixel
-    logic [LB-1:0]         xe;      // one past the last pixel
-    logic [DB-1:0]         offset;  // x_start + 1/2 - X_E >= 0, X units
-    logic [NI*CB-1:0]      e;       // E's channels Z..
-    logic [NI*DB-1:0]      delta;   // F - E per channel
+    logic                    eol;
+    logic                    empty;   // no pixel centre in [X_E, X_F) on screen
+    logic [MIB-1:0]          material;
+    logic [LB-1:0]           xs;      // first pixel
+    logic [LB-1:0]           xe;      // one past the last pixel
+    logic [DeltaBits-1:0]    offset;  // x_start + 1/2 - X_E >= 0, X units
+    logic [NI*CB-1:0]        e;       // E's channels Z..
+    logic [NI*DeltaBits-1:0] delta;   // F - E per channel
   } span_pre_t;
 
   // First pixel whose centre is at or right of X: ceil(X - 1/2) = (X + 1/2 - 2^-FB) >> FB.
@@ -74,17 +77,17 @@ module segment_interpolator #(
     first_centre = t[CB:FB];
   endfunction
 
-  logic              s0_valid_q, s0_ready;
-  span_pre_t         s0_q;
-  logic [DB-1:0]     s0_dx_q;
-  span_pre_t         s0_d;
-  logic [DB-1:0]     s0_dx_d;
+  logic                 s0_valid_q, s0_ready;
+  span_pre_t            s0_q;
+  logic [DeltaBits-1:0] s0_dx_q;
+  span_pre_t            s0_d;
+  logic [DeltaBits-1:0] s0_dx_d;
 
   always_comb begin
     logic signed [XCB-1:0] fce, fcf, xs_full, xe_full;
     // offset < dx when the span is not empty, so its top bits are dropped.
     /* verilator lint_off UNUSEDSIGNAL */
-    logic signed [DB+1:0]  off;
+    logic signed [DeltaBits+1:0]  off;
     /* verilator lint_on UNUSEDSIGNAL */
     fce     = first_centre(seg_e_i[XLo +: CB]);
     fcf     = first_centre(seg_f_i[XLo +: CB]);
@@ -95,15 +98,16 @@ module segment_interpolator #(
     s0_d.material = seg_material_i;
     s0_d.xs    = LB'(xs_full);
     s0_d.xe    = LB'(xe_full);
-    off        = $signed((DB + 2)'({s0_d.xs, 1'b1, (FB - 1)'(0)}))
+    off        = $signed((DeltaBits + 2)'({s0_d.xs, 1'b1, (FB - 1)'(0)}))
                - $signed({{3{seg_e_i[XLo+CB-1]}}, seg_e_i[XLo +: CB]});
-    s0_d.offset = DB'(off);
-    s0_dx_d     = DB'($signed({seg_f_i[XLo+CB-1], seg_f_i[XLo +: CB]})
+    s0_d.offset = DeltaBits'(off);
+    s0_dx_d     = DeltaBits'($signed({seg_f_i[XLo+CB-1], seg_f_i[XLo +: CB]})
                     - $signed({seg_e_i[XLo+CB-1], seg_e_i[XLo +: CB]}));
     for (int c = 0; c < NI; c++) begin
       s0_d.e[c*CB +: CB]     = seg_e_i[(c+1)*CB +: CB];
-      s0_d.delta[c*DB +: DB] = DB'($signed({seg_f_i[(c+2)*CB-1], seg_f_i[(c+1)*CB +: CB]})
-                                 - $signed({seg_e_i[(c+2)*CB-1], seg_e_i[(c+1)*CB +: CB]}));
+      s0_d.delta[c*DeltaBits +: DeltaBits] =
+          DeltaBits'($signed({seg_f_i[(c+2)*CB-1], seg_f_i[(c+1)*CB +: CB]})
+                     - $signed({seg_e_i[(c+2)*CB-1], seg_e_i[(c+1)*CB +: CB]}));
     end
   end
 
@@ -121,13 +125,13 @@ module segment_interpolator #(
   end
 
   // ---------------------------------------------------------------- reciprocal
-  logic            rc_valid, tail_en;
-  logic [R:0]      rc_recip;
-  logic [PB-1:0]   rc_p;
-  span_pre_t       rc_span;
+  logic               rc_valid, tail_en;
+  logic [RecipBits:0] rc_recip;
+  logic [ExpBits-1:0] rc_p;
+  span_pre_t          rc_span;
 
   span_reciprocal #(
-    .DxBits     (DB),
+    .DxBits     (DeltaBits),
     .PayloadBits($bits(s0_q))
   ) u_recip (
     .clk_i, .rst_ni,
@@ -143,41 +147,43 @@ module segment_interpolator #(
   );
 
   // ---------------------------------------------------------------- sa: products with recip
-  logic                  sa_valid_q;
-  span_pre_t             sa_span_q;
-  logic [PB-1:0]         sa_p_q;
-  logic [PW-1:0]         sa_pa_q;        // offset * recip, unsigned
-  prod_t                 sa_ps_q [NI];   // delta * recip
+  logic                sa_valid_q;
+  span_pre_t           sa_span_q;
+  logic [ExpBits-1:0]  sa_p_q;
+  logic [ProdBits-1:0] sa_pa_q;       // offset * recip, unsigned
+  prod_t               sa_ps_q [NI];  // delta * recip
   always_ff @(posedge clk_i) begin
     if (tail_en) begin
       sa_span_q <= rc_span;
       sa_p_q    <= rc_p;
-      sa_pa_q   <= PW'(rc_span.offset) * PW'(rc_recip);
+      sa_pa_q   <= ProdBits'(rc_span.offset) * ProdBits'(rc_recip);
       for (int c = 0; c < NI; c++)
-        sa_ps_q[c] <= $signed(rc_span.delta[c*DB +: DB]) * $signed({1'b0, rc_recip});
+        sa_ps_q[c] <= $signed(rc_span.delta[c*DeltaBits +: DeltaBits]) * $signed({1'b0, rc_recip});
     end
   end
 
   // ---------------------------------------------------------------- sb: alpha0 and steps
-  logic                  sb_valid_q;
-  span_pre_t             sb_span_q;
-  logic [AB:0]           sb_alpha_q;     // alpha0 in [0, 2^AB]
-  chan_t                 sb_step_q [NI];
+  logic               sb_valid_q;
+  span_pre_t          sb_span_q;
+  logic [AlphaBits:0] sb_alpha_q;  // alpha0 in [0, 2^AlphaBits]
+  chan_t              sb_step_q [NI];
   always_ff @(posedge clk_i) begin
     if (tail_en) begin
-      logic [PW-1:0] ra;
-      logic [PW-1:0] sh;
+      logic [ProdBits-1:0] ra;
+      logic [ProdBits-1:0] sh;
       prod_t         rs;
       sb_span_q <= sa_span_q;
-      // alpha0 = min(round_shift(offset*recip, p + R - AB), 2^AB); round_shift by 0 is exact.
-      sh = PW'(sa_p_q) + PW'(R) - PW'(AB);
-      ra = (sh == '0) ? sa_pa_q : ((sa_pa_q + (PW'(1) << (sh - 1))) >> sh);
-      sb_alpha_q <= (ra > PW'(1 << AB)) ? (AB + 1)'(1 << AB) : (AB + 1)'(ra);
-      // step = saturate(round_shift(delta*recip, p + R - FB)), shift always > 0.
+      // alpha0 = min(round_shift(offset*recip, p + RecipBits - AlphaBits), 2^AlphaBits); round_shift
+      // by 0 is exact.
+      sh = ProdBits'(sa_p_q) + ProdBits'(RecipBits) - ProdBits'(AlphaBits);
+      ra = (sh == '0) ? sa_pa_q : ((sa_pa_q + (ProdBits'(1) << (sh - 1))) >> sh);
+      sb_alpha_q <= (ra > ProdBits'(1 << AlphaBits)) ? (AlphaBits + 1)'(1 << AlphaBits)
+                                                     : (AlphaBits + 1)'(ra);
+      // step = saturate(round_shift(delta*recip, p + RecipBits - FB)), shift always > 0.
       for (int c = 0; c < NI; c++) begin
-        logic [PW-1:0] s2;
-        s2 = PW'(sa_p_q) + PW'(R) - PW'(FB);
-        rs = (sa_ps_q[c] + $signed(PW'(1) << (s2 - 1))) >>> s2;
+        logic [ProdBits-1:0] s2;
+        s2 = ProdBits'(sa_p_q) + ProdBits'(RecipBits) - ProdBits'(FB);
+        rs = (sa_ps_q[c] + $signed(ProdBits'(1) << (s2 - 1))) >>> s2;
         if (rs > StepMax) sb_step_q[c] <= CB'(StepMax);
         else if (rs < StepMin) sb_step_q[c] <= CB'(StepMin);
         else sb_step_q[c] <= CB'(rs);
@@ -198,7 +204,7 @@ module segment_interpolator #(
       sc_span_q <= sb_span_q;
       for (int c = 0; c < NI; c++) begin
         sc_step_q[c] <= sb_step_q[c];
-        sc_pv_q[c]   <= $signed(sb_span_q.delta[c*DB +: DB]) * $signed({1'b0, sb_alpha_q});
+        sc_pv_q[c]   <= $signed(sb_span_q.delta[c*DeltaBits +: DeltaBits]) * $signed({1'b0, sb_alpha_q});
       end
     end
   end
@@ -239,8 +245,8 @@ module segment_interpolator #(
       /* verilator lint_off UNUSEDSIGNAL */
       prod_t r;
       /* verilator lint_on UNUSEDSIGNAL */
-      // value = wrap(E + round_shift(delta*alpha0, AB)): only the low CB bits survive.
-      r = (sc_pv_q[c] + $signed(PW'(1) << (AB - 1))) >>> AB;
+      // value = wrap(E + round_shift(delta*alpha0, AlphaBits)): only the low CB bits survive.
+      r = (sc_pv_q[c] + $signed(ProdBits'(1) << (AlphaBits - 1))) >>> AlphaBits;
       f_in.value[c*CB +: CB] = sc_span_q.e[c*CB +: CB] + CB'(r);
       f_in.step[c*CB +: CB]  = sc_step_q[c];
     end
@@ -321,8 +327,9 @@ module segment_interpolator #(
     if (emit_frag) begin
       frag_x_o     <= cur_x;
       frag_depth_o <= level(cur_value[(watkins_pkg::ChanZ - 1)*CB +: CB], DepB'((64'd1 << DepB) - 1));
-      for (int c = 0; c < 3; c++)
-        frag_rgb_o[23 - 8 * c -: 8] <= 8'(level(cur_value[(watkins_pkg::ChanR - 1 + c)*CB +: CB], DepB'(255)));
+      frag_rgb_o.r <= 8'(level(cur_value[(watkins_pkg::ChanR - 1)*CB +: CB], DepB'(255)));
+      frag_rgb_o.g <= 8'(level(cur_value[(watkins_pkg::ChanG - 1)*CB +: CB], DepB'(255)));
+      frag_rgb_o.b <= 8'(level(cur_value[(watkins_pkg::ChanB - 1)*CB +: CB], DepB'(255)));
       for (int c = 0; c < 3; c++)
         frag_normal_o[c*NB +: NB] <= normal_word(cur_value[(watkins_pkg::ChanNx - 1 + c)*CB +: CB]);
       frag_material_o <= cur_material;
@@ -338,17 +345,10 @@ module segment_interpolator #(
     end
   end
 
-`ifndef SYNTHESIS
-  a_in_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    seg_valid_i && !seg_ready_o |=> seg_valid_i && $stable({seg_e_i, seg_f_i, seg_material_i, seg_eol_i}));
-  a_out_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    frag_valid_o && !frag_ready_i |=> frag_valid_o
-      && $stable({frag_x_o, frag_depth_o, frag_rgb_o, frag_normal_o, frag_material_o, frag_eol_o}));
-  a_x_on_screen: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    frag_valid_o && !frag_eol_o |-> frag_x_o < width_i);
-  c_back_to_back_spans: cover property (@(posedge clk_i) disable iff (!rst_ni)
-    emit_frag && from_head && frag_valid_o && !frag_eol_o);
-  c_empty_dropped: cover property (@(posedge clk_i) disable iff (!rst_ni)
-    sc_valid_q && !sc_keep);
-`endif
+  `WATKINS_ASSERT_HOLD(a_in_hold, seg_valid_i, seg_ready_o, {seg_e_i, seg_f_i, seg_material_i, seg_eol_i})
+  `WATKINS_ASSERT_HOLD(a_out_hold, frag_valid_o, frag_ready_i, {frag_x_o, frag_depth_o, frag_rgb_o,
+    frag_normal_o, frag_material_o, frag_eol_o})
+  `WATKINS_ASSERT(a_x_on_screen, frag_valid_o && !frag_eol_o |-> frag_x_o < width_i)
+  `WATKINS_COVER(c_back_to_back_spans, emit_frag && from_head && frag_valid_o && !frag_eol_o)
+  `WATKINS_COVER(c_empty_dropped, sc_valid_q && !sc_keep)
 endmodule

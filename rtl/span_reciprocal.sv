@@ -3,13 +3,15 @@
 // truncated), exactly model/twins/span_reciprocal.hpp: 1/dx ~= recip * 2^-(p+R).
 // Pipelined, one input per clock: 1 stage leading-one detection and normalization, then a
 // restoring divider of R+1 stages (one quotient bit each). Latency R+2 = 26 cycles. Every stage
-// is registered; one global stall (ready_o = ready_i || !valid_o) holds the whole pipe.
-// payload_i travels alongside, so the caller keeps its span data in step with the quotient.
+// is registered; one global stall (ready_o = ready_i || !valid_o, stall_pipe) holds the whole
+// pipe. payload_i travels alongside, so the caller keeps its span data in step with the quotient.
+`include "watkins_assert.svh"
+
 module span_reciprocal #(
   parameter int unsigned DxBits      = watkins_pkg::ChannelBits + 1,  // unsigned width of dx
   parameter int unsigned PayloadBits = 1,
-  localparam int unsigned R          = watkins_pkg::RecipBits,
-  localparam int unsigned PBits      = $clog2(DxBits)
+  localparam int unsigned RecipBits   = watkins_pkg::RecipBits,     // R below
+  localparam int unsigned ExpBits     = $clog2(DxBits)              // width of p
 ) (
   input  logic                   clk_i,
   input  logic                   rst_ni,
@@ -17,76 +19,73 @@ module span_reciprocal #(
   input  logic [PayloadBits-1:0] payload_i,
   input  logic                   valid_i,
   output logic                   ready_o,
-  output logic [R:0]             recip_o,    // in (2^(R-1), 2^R]
-  output logic [PBits-1:0]       p_o,        // floor(log2 dx)
+  output logic [RecipBits:0]     recip_o,    // in (2^(R-1), 2^R]
+  output logic [ExpBits-1:0]     p_o,        // floor(log2 dx)
   output logic [PayloadBits-1:0] payload_o,
   output logic                   valid_o,
   input  logic                   ready_i
 );
-  localparam int unsigned Stages = R + 2;  // normalize + R+1 quotient bits
+  localparam int unsigned Stages = RecipBits + 2;  // normalize + R+1 quotient bits
 
-  logic                   en;
-  logic [Stages-1:0]      valid_q;
-  logic [R-1:0]           m_q       [Stages];  // normalized divisor in [2^(R-1), 2^R)
-  logic [R-1:0]           rem_q     [Stages];  // partial remainder, < m
-  logic [R:0]             quo_q     [Stages];  // quotient bits so far
-  logic [PBits-1:0]       p_q       [Stages];
-  logic [PayloadBits-1:0] payload_q [Stages];
+  logic                 en;
+  logic [RecipBits-1:0] m_q   [Stages];  // normalized divisor in [2^(R-1), 2^R)
+  logic [RecipBits-1:0] rem_q [Stages];  // partial remainder, < m
+  logic [RecipBits:0]   quo_q [Stages];  // quotient bits so far
+  logic [ExpBits-1:0]   p_q   [Stages];
+
+  // Valid, payload and the stall of every stage; the registers below advance on its en.
+  stall_pipe #(
+    .Stages     (Stages),
+    .PayloadBits(PayloadBits)
+  ) u_pipe (
+    .clk_i, .rst_ni,
+    .payload_i,
+    .valid_i,
+    .ready_o,
+    .payload_o,
+    .valid_o,
+    .ready_i,
+    .en_o     (en)
+  );
 
   // Leading-one detection and normalization (dx << (DxBits-1-p) puts the leading one on top;
   // its top R bits are the model's m whether dx is shifted left or right).
-  logic [PBits-1:0]  lead;
+  logic [ExpBits-1:0] lead;
   // Only the top R bits of the normalized width matter (the model truncates the rest).
   /* verilator lint_off UNUSEDSIGNAL */
   logic [DxBits-1:0] norm;
   /* verilator lint_on UNUSEDSIGNAL */
   always_comb begin
     lead = '0;
-    for (int i = 0; i < DxBits; i++) if (dx_i[i]) lead = PBits'(i);
-    norm = dx_i << (PBits'(DxBits - 1) - lead);
-  end
-
-  assign en      = ready_i || !valid_q[Stages-1];
-  assign ready_o = en;
-
-  always_ff @(posedge clk_i) begin
-    if (!rst_ni) valid_q <= '0;
-    else if (en) valid_q <= {valid_q[Stages-2:0], valid_i};
+    for (int i = 0; i < DxBits; i++) if (dx_i[i]) lead = ExpBits'(i);
+    norm = dx_i << (ExpBits'(DxBits - 1) - lead);
   end
 
   // Quotient bit R-k in stage k: the numerator 2^(2R-1) has contributed 2^(R-2) to the partial
   // remainder before bit R (smaller than m, so every higher quotient bit is zero).
   always_ff @(posedge clk_i) begin
     if (en) begin
-      m_q[0]       <= norm[DxBits-1 -: R];
-      rem_q[0]     <= R'(1) << (R - 2);
-      quo_q[0]     <= '0;
-      p_q[0]       <= lead;
-      payload_q[0] <= payload_i;
+      m_q[0]   <= norm[DxBits-1 -: RecipBits];
+      rem_q[0] <= RecipBits'(1) << (RecipBits - 2);
+      quo_q[0] <= '0;
+      p_q[0]   <= lead;
       for (int k = 1; k < Stages; k++) begin
-        logic [R:0] twice;
-        logic       ge;
+        logic [RecipBits:0] twice;
+        logic               ge;
         twice = {rem_q[k-1], 1'b0};
         ge    = (twice >= {1'b0, m_q[k-1]});
-        rem_q[k]     <= ge ? R'(twice - {1'b0, m_q[k-1]}) : R'(twice);
-        quo_q[k]     <= {quo_q[k-1][R-1:0], ge};
-        m_q[k]       <= m_q[k-1];
-        p_q[k]       <= p_q[k-1];
-        payload_q[k] <= payload_q[k-1];
+        rem_q[k] <= ge ? RecipBits'(twice - {1'b0, m_q[k-1]}) : RecipBits'(twice);
+        quo_q[k] <= {quo_q[k-1][RecipBits-1:0], ge};
+        m_q[k]   <= m_q[k-1];
+        p_q[k]   <= p_q[k-1];
       end
     end
   end
 
-  assign valid_o   = valid_q[Stages-1];
-  assign recip_o   = quo_q[Stages-1];
-  assign p_o       = p_q[Stages-1];
-  assign payload_o = payload_q[Stages-1];
+  assign recip_o = quo_q[Stages-1];
+  assign p_o     = p_q[Stages-1];
 
-`ifndef SYNTHESIS
-  a_in_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    valid_i && !ready_o |=> valid_i && $stable({dx_i, payload_i}));
-  a_out_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    valid_o && !ready_i |=> valid_o && $stable({recip_o, p_o, payload_o}));
-  c_stall: cover property (@(posedge clk_i) disable iff (!rst_ni) valid_o && !ready_i);
-`endif
+  `WATKINS_ASSERT_HOLD(a_in_hold, valid_i, ready_o, {dx_i, payload_i})
+  `WATKINS_ASSERT_HOLD(a_out_hold, valid_o, ready_i, {recip_o, p_o, payload_o})
+  `WATKINS_COVER(c_stall, valid_o && !ready_i)
 endmodule

@@ -1,6 +1,8 @@
 // stream_fifo: first-in first-out valid/ready buffer of Depth words.
 // Latency 1 (a word written is visible at the head the next cycle); valid_o and data_o come
 // from registers, ready_o = not full (registered); no combinational path from input to output.
+`include "watkins_assert.svh"
+
 module stream_fifo #(
   parameter int unsigned DataBits = 8,
   parameter int unsigned Depth    = 2
@@ -51,11 +53,7 @@ module stream_fifo #(
     if (push) mem_q[wr_q] <= data_i;
   end
 
-`ifndef SYNTHESIS
-  a_in_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    valid_i && !ready_o |=> valid_i && $stable(data_i));
-  a_out_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    valid_o && !ready_i |=> valid_o && $stable(data_o));
-  c_full: cover property (@(posedge clk_i) disable iff (!rst_ni) !ready_o);
-`endif
+  `WATKINS_ASSERT_HOLD(a_in_hold, valid_i, ready_o, data_i)
+  `WATKINS_ASSERT_HOLD(a_out_hold, valid_o, ready_i, data_o)
+  `WATKINS_COVER(c_full, !ready_o)
 endmodule

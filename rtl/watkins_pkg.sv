@@ -45,9 +45,18 @@ package watkins_pkg;
   localparam int SubPixelToFrac = 12;  // FracBits - SubPixelBits
   localparam int ShadeChannels = 3;  // R, G, B
   localparam int EdgeRecordBits = 466;  // $bits(edge_t)
+  localparam int RgbBits = 24;  // $bits(rgb_t)
 
   // One channel value or slope: signed, FracBits fraction bits.
   typedef logic signed [ChannelBits-1:0] channel_t;
+
+  // One shade: an 8-bit level per channel, red in the top byte ({R, G, B}). Every RGB port
+  // and signal of rtl/ (frame background, material Cp, fragment and pixel shades) has it.
+  typedef struct packed {
+    logic [ShadeBits-1:0] r;
+    logic [ShadeBits-1:0] g;
+    logic [ShadeBits-1:0] b;
+  } rgb_t;
 
   // Edge record as scene preparation writes it (model/twins/edge_record.hpp); the edge id
   // is not carried: the active-edge list numbers records in arrival order.

@@ -18,22 +18,24 @@
 // the last line has one, otherwise a terminating beat with pixel_covered_o = 0 (background rgb)
 // at (width-1, height-1) -- so a frame covering no pixel is exactly that one beat. The consumer
 // keeps the background elsewhere (e.g. a framebuffer cleared once). sparse_i = 0: every pixel.
+`include "watkins_assert.svh"
+
 module watkins_top #(
   parameter int unsigned MaxActiveEdges = watkins_pkg::MaxActiveEdges,
-  parameter int unsigned MaxWidth = 1024,           // line-buffer depth in pixels
+  parameter int unsigned MaxWidth = watkins_pkg::DefaultMaxWidth,  // line-buffer depth in pixels
   parameter int          Phong = 0                  // 1: per-pixel Phong shading of normals
 ) (
   input  logic                               clk_i,
   input  logic                               rst_ni,          // active-low synchronous reset
   input  logic [watkins_pkg::LineBits-1:0]   width_i,         // frame size, stable for the whole frame (1..MaxWidth)
   input  logic [watkins_pkg::LineBits-1:0]   height_i,        // 1..4096
-  input  logic [23:0]                        background_i,    // {R,G,B} of pixels no polygon covers
+  input  watkins_pkg::rgb_t                  background_i,    // shade of pixels no polygon covers
   input  logic                               sparse_i,        // frame configuration: covered pixels only
   input  watkins_pkg::edge_t                 edge_i,          // edge records, sorted by y0 (ties in stream order)
   input  logic                               edge_eof_i,      // with valid: this beat ends the frame's stream, carries no edge
   input  logic                               edge_valid_i,
   output logic                               edge_ready_o,
-  output logic [23:0]                        pixel_rgb_o,     // {R,G,B}, raster order, every pixel (or covered only)
+  output watkins_pkg::rgb_t                  pixel_rgb_o,     // raster order, every pixel (or covered only)
   output logic                               pixel_covered_o, // some polygon won this pixel
   output logic [watkins_pkg::LineBits-1:0]   pixel_x_o,       // position of the pixel (both modes)
   output logic [watkins_pkg::LineBits-1:0]   pixel_y_o,
@@ -43,12 +45,12 @@ module watkins_top #(
   output logic                               overflow_o,      // sticky until reset: the active-edge list was full
   // Phong only (ignored when Phong = 0). light_i / eye_i: unit vectors towards the light and the
   // eye, {z, y, x} Q2.14, sampled at frame start. Material table: one write per clock, between
-  // frames; entry {Cp {R,G,B} 8-bit, d, W (1.0 = 256), n} as model/twins/phong_shader.hpp defines them.
+  // frames; entry {Cp, d, W (1.0 = 256), n} as model/twins/phong_shader.hpp defines them.
   input  logic [3*watkins_pkg::UnitBits-1:0]       light_i,
   input  logic [3*watkins_pkg::UnitBits-1:0]       eye_i,
   input  logic                                     material_we_i,
   input  logic [watkins_pkg::MaterialIdBits-1:0]   material_addr_i,
-  input  logic [23:0]                              material_cp_i,
+  input  watkins_pkg::rgb_t                        material_cp_i,   // reflectance Cp (255 = 1.0)
   input  logic [watkins_pkg::MaterialBits-1:0]     material_d_i,
   input  logic [watkins_pkg::MaterialBits-1:0]     material_w_i,
   input  logic [watkins_pkg::ShininessBits-1:0]    material_n_i
@@ -62,7 +64,7 @@ module watkins_top #(
   // ------------------------------------------------------------ frame control
   logic          frame_busy_q, ael_busy, start;
   logic [LB-1:0] width_q, height_q;
-  logic [23:0]   background_q;
+  watkins_pkg::rgb_t background_q;
   logic          sparse_q;
 
   assign start = edge_valid_i && !frame_busy_q && !ael_busy;
@@ -150,7 +152,7 @@ module watkins_top #(
   // ------------------------------------------------------------ fragments
   logic [LB-1:0]                     fr_x     /*verilator public_flat_rd*/;
   logic [watkins_pkg::DepthBits-1:0] fr_depth /*verilator public_flat_rd*/;
-  logic [23:0]                       fr_rgb   /*verilator public_flat_rd*/;
+  watkins_pkg::rgb_t                 fr_rgb   /*verilator public_flat_rd*/;
   logic [3*watkins_pkg::NormalInBits-1:0] fr_normal /*verilator public_flat_rd*/;
   logic [MIB-1:0]                    fr_material /*verilator public_flat_rd*/;
   logic                              fr_eol   /*verilator public_flat_rd*/;
@@ -180,14 +182,14 @@ module watkins_top #(
   // sh_*: the fragments the depth test receives, shaded (the bench compares them, too).
   logic [LB-1:0]   sh_x     /*verilator public_flat_rd*/;
   logic [DepB-1:0] sh_depth /*verilator public_flat_rd*/;
-  logic [23:0]     sh_rgb   /*verilator public_flat_rd*/;
+  watkins_pkg::rgb_t sh_rgb /*verilator public_flat_rd*/;
   logic            sh_eol   /*verilator public_flat_rd*/;
   logic            sh_valid /*verilator public_flat_rd*/;
   logic            sh_ready /*verilator public_flat_rd*/;
 
   if (Phong != 0) begin : g_phong
     localparam int unsigned UB = watkins_pkg::UnitBits;
-    localparam int unsigned PB = 1 + LB + DepB;   // {eol, x, depth} rides along
+    localparam int unsigned ShadePayloadBits = 1 + LB + DepB;  // {eol, x, depth} rides along
     logic [3*UB-1:0] light_q, eye_q;
     always_ff @(posedge clk_i) begin
       if (start) begin
@@ -197,21 +199,22 @@ module watkins_top #(
     end
 
     // Material table: flops (16 x 50 bits), read combinationally by the shader's input stage.
-    localparam int unsigned EntryBits = 24 + 2 * watkins_pkg::MaterialBits + watkins_pkg::ShininessBits;
+    localparam int unsigned EntryBits = watkins_pkg::RgbBits + 2 * watkins_pkg::MaterialBits
+                                      + watkins_pkg::ShininessBits;
     logic [EntryBits-1:0] material_q [2**MIB];
     always_ff @(posedge clk_i) begin
       if (material_we_i)
         material_q[material_addr_i] <= {material_cp_i, material_d_i, material_w_i, material_n_i};
     end
 
-    logic [3*UB-1:0] nm_unit;
-    logic [MIB-1:0]  nm_material;
-    logic [PB-1:0]   nm_payload, sh_payload;
-    logic            nm_valid, nm_ready;
-    logic            nm_null_unused;  // a null normal already reads as (0,0,0): cos(i) = 0
+    logic [3*UB-1:0]             nm_unit;
+    logic [MIB-1:0]              nm_material;
+    logic [ShadePayloadBits-1:0] nm_payload, sh_payload;
+    logic                        nm_valid, nm_ready;
+    logic                        nm_null_unused;  // a null normal already reads as (0,0,0): cos(i) = 0
 
     normalizer #(
-      .PayloadBits(MIB + PB)
+      .PayloadBits(MIB + ShadePayloadBits)
     ) u_normalizer (
       .clk_i, .rst_ni,
       .normal_i (fr_normal),
@@ -225,32 +228,30 @@ module watkins_top #(
       .ready_i  (nm_ready)
     );
 
-    logic [23:0]                        m_cp;
+    watkins_pkg::rgb_t                     m_cp;
     logic [watkins_pkg::MaterialBits-1:0]  m_d, m_w;
     logic [watkins_pkg::ShininessBits-1:0] m_n;
-    logic [23:0]                        bgr;
     assign {m_cp, m_d, m_w, m_n} = material_q[nm_material];
 
     phong_shader #(
-      .PayloadBits(PB)
+      .PayloadBits(ShadePayloadBits)
     ) u_phong_shader (
       .clk_i, .rst_ni,
       .light_i    (light_q),
       .eye_i      (eye_q),
       .normal_i   (nm_unit),
-      .cp_i       ({m_cp[7:0], m_cp[15:8], m_cp[23:16]}),  // the shader's order is {B,G,R}
+      .cp_i       (m_cp),
       .d_i        (m_d),
       .w_i        (m_w),
       .shininess_i(m_n),
       .payload_i  (nm_payload),
       .valid_i    (nm_valid),
       .ready_o    (nm_ready),
-      .rgb_o      (bgr),
+      .rgb_o      (sh_rgb),
       .payload_o  (sh_payload),
       .valid_o    (sh_valid),
       .ready_i    (sh_ready)
     );
-    assign sh_rgb = {bgr[7:0], bgr[15:8], bgr[23:16]};
     assign {sh_eol, sh_x, sh_depth} = sh_payload;
   end else begin : g_gouraud
     assign sh_x     = fr_x;
@@ -289,20 +290,12 @@ module watkins_top #(
     .pixel_ready_i
   );
 
-`ifndef SYNTHESIS
-  a_edge_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    edge_valid_i && !edge_ready_o |=> edge_valid_i && $stable({edge_i, edge_eof_i}));
-  a_pixel_hold: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    pixel_valid_o && !pixel_ready_i |=> pixel_valid_o
-      && $stable({pixel_rgb_o, pixel_covered_o, pixel_last_o, pixel_x_o, pixel_y_o}));
-  a_frame_size: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    start |-> width_i != '0 && width_i <= LB'(MaxWidth) && height_i != '0
-      && height_i <= LB'(watkins_pkg::MaxScreen));
-  a_overflow_sticky: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    overflow_o |=> overflow_o);
-  a_material_between_frames: assert property (@(posedge clk_i) disable iff (!rst_ni)
-    material_we_i |-> !frame_busy_q);
-  c_frame_done: cover property (@(posedge clk_i) disable iff (!rst_ni)
-    pixel_valid_o && pixel_ready_i && pixel_last_o);
-`endif
+  `WATKINS_ASSERT_HOLD(a_edge_hold, edge_valid_i, edge_ready_o, {edge_i, edge_eof_i})
+  `WATKINS_ASSERT_HOLD(a_pixel_hold, pixel_valid_o, pixel_ready_i, {pixel_rgb_o, pixel_covered_o,
+    pixel_last_o, pixel_x_o, pixel_y_o})
+  `WATKINS_ASSERT(a_frame_size, start |-> width_i != '0 && width_i <= LB'(MaxWidth)
+    && height_i != '0 && height_i <= LB'(watkins_pkg::MaxScreen))
+  `WATKINS_ASSERT(a_overflow_sticky, overflow_o |=> overflow_o)
+  `WATKINS_ASSERT(a_material_between_frames, material_we_i |-> !frame_busy_q)
+  `WATKINS_COVER(c_frame_done, pixel_valid_o && pixel_ready_i && pixel_last_o)
 endmodule

@@ -15,6 +15,7 @@ cd "$(dirname "$0")/.."
 PKG=rtl/watkins_pkg.sv
 mapfile -t SRCS < <(ls rtl/*.sv | grep -v "^${PKG}$" | sort)
 VLT=()
+INC=(-Irtl)  # rtl/watkins_assert.svh (yosys finds includes next to the including file)
 [[ -n "$(ls rtl/*.vlt 2>/dev/null)" ]] && VLT=(rtl/*.vlt)
 SYNTH_WIDTH=${SYNTH_WIDTH:-16}
 SYNTH_EDGES=${SYNTH_EDGES:-4}
@@ -22,12 +23,12 @@ LOG=$(mktemp -d)
 trap 'rm -rf "$LOG"' EXIT
 
 echo "== verilator --lint-only -Wall"
-verilator --lint-only -Wall --top-module watkins_top "${VLT[@]}" "$PKG" "${SRCS[@]}"
-verilator --lint-only -Wall --top-module watkins_top -GPhong=1 "${VLT[@]}" "$PKG" "${SRCS[@]}"
+verilator --lint-only -Wall "${INC[@]}" --top-module watkins_top "${VLT[@]}" "$PKG" "${SRCS[@]}"
+verilator --lint-only -Wall "${INC[@]}" --top-module watkins_top -GPhong=1 "${VLT[@]}" "$PKG" "${SRCS[@]}"
 # Every module on its own as well, so parameters the top does not use are checked too.
 for f in "${SRCS[@]}"; do
   m=$(basename "$f" .sv)
-  verilator --lint-only -Wall --top-module "$m" "${VLT[@]}" "$PKG" "${SRCS[@]}"
+  verilator --lint-only -Wall "${INC[@]}" --top-module "$m" "${VLT[@]}" "$PKG" "${SRCS[@]}"
 done
 echo "   clean"
 

@@ -22,6 +22,11 @@ using Vec = PhongShader::Vec;
 
 namespace {
 
+// {R, G, B} as watkins_pkg::rgb_t packs it: red in the top byte.
+std::uint32_t rgb_word(const std::array<int, 3>& c) {
+  return (std::uint32_t(c[0]) << 16) | (std::uint32_t(c[1]) << 8) | std::uint32_t(c[2]);
+}
+
 constexpr int UB = fmt::UnitBits;
 
 std::uint64_t pack(const Vec& v) {
@@ -60,7 +65,7 @@ struct Bench {
         [&] {
           const auto& p = px[next];
           h.dut.normal_i = pack(p.n);
-          h.dut.cp_i = static_cast<std::uint32_t>(p.cp[0] | (p.cp[1] << 8) | (p.cp[2] << 16));
+          h.dut.cp_i = rgb_word(p.cp);  // watkins_pkg::rgb_t: red in the top byte
           h.dut.d_i = static_cast<std::uint16_t>(p.d);
           h.dut.w_i = static_cast<std::uint16_t>(p.w);
           h.dut.shininess_i = static_cast<std::uint8_t>(p.shininess);
@@ -74,7 +79,7 @@ struct Bench {
         [&](std::size_t k) {
           const auto& p = px[k];
           const auto want_rgb = PhongShader::shade(p, L, E);
-          const std::uint32_t m = static_cast<std::uint32_t>(want_rgb[0] | (want_rgb[1] << 8) | (want_rgb[2] << 16));
+          const std::uint32_t m = rgb_word(want_rgb);
           const bool same = h.dut.rgb_o == m && h.dut.payload_o == want++;
           if (same) return std::string();
           const auto t = PhongShader::terms(p, L, E);
