@@ -96,10 +96,10 @@ TEST(EdgePacking, MatchesTheStructInWatkinsPkg) {
   std::stringstream ss;
   ss << in.rdbuf();
   const std::string pkg = ss.str();
-  const auto b = pkg.find("typedef struct packed");
   const auto e = pkg.find("} edge_t;");
-  ASSERT_NE(b, std::string::npos);
   ASSERT_NE(e, std::string::npos);
+  const auto b = pkg.rfind("typedef struct packed", e);  // edge_t's own, not an earlier struct
+  ASSERT_NE(b, std::string::npos);
   const std::string body = pkg.substr(b, e - b);
   const std::regex field(R"(logic\s+((?:\[[^\]]+\])+)\s*(\w+)\s*;)");
   std::vector<std::string> names, dims;
