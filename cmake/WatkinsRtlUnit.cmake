@@ -1,8 +1,10 @@
 # watkins_rtl_unit(<bench> TOP <module> SOURCES <rtl files...> [PARAMS Name=value ...] [LINK libs...]
 #                  [LABELS l...])
+# Known limit: gtest_discover_tests passes only the first of several LABELS to the discovered
+# tests (CMake 3.25 writes the list unquoted), so the Phong benches carry "rtl" alone.
 # One GoogleTest bench around one Verilated RTL unit (--cc, -O3, --assert), linked with the
-# bit-exact model so the bench compares the unit with its twin. Shared by tests/rtl and
-# tests/rtl; one Verilated model per unit top. Verilator searches rtl/ (-y) for the includes
+# bit-exact model so the bench compares the unit with its twin (tests/rtl); one Verilated model
+# per unit top. Verilator searches rtl/ (-y) for the includes
 # (watkins_assert.svh) and for any module SOURCES does not list (e.g. stall_pipe).
 #
 # PARAMS is the one source of the unit's parameter overrides: each Name=value goes to Verilator

@@ -61,7 +61,12 @@ struct Top {
     EXPECT_TRUE(r.protocol_error.empty()) << r.protocol_error;
     EXPECT_EQ(r.mismatches, 0) << r.first_pixel_mismatch;
     EXPECT_TRUE(r.frames.at(0).complete) << r.summary();
-    return static_cast<std::uint64_t>(r.frames.at(0).cycles());
+    // A top that still moves but crawls is a failure too: at most 20 cycles a pixel (or sparse
+    // beat) plus a fixed allowance, as the frame's whole budget.
+    const std::uint64_t total = sparse ? sparse_stream(*ref).size() : std::uint64_t(p.width) * p.height;
+    const auto cycles = static_cast<std::uint64_t>(r.frames.at(0).cycles());
+    EXPECT_LE(cycles, 20ull * total + 100000) << "frame too slow: " << cycles << " cycles for " << total << " pixels";
+    return cycles;
   }
 };
 
