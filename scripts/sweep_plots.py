@@ -23,8 +23,12 @@ def need_matplotlib():
     except ImportError:
         print("sweep_plots: installing matplotlib (pip install --user matplotlib)", file=sys.stderr)
         cmd = [sys.executable, "-m", "pip", "install", "--quiet", "matplotlib"]
-        if subprocess.call(cmd) != 0 and subprocess.call(cmd[:4] + ["--user"] + cmd[4:]) != 0:
-            sys.exit("sweep_plots: cannot install matplotlib (try: apt-get install python3-matplotlib)")
+        apt = ["apt-get", "install", "-y", "-qq", "python3-matplotlib"]
+        if os.geteuid() != 0:
+            apt = ["sudo"] + apt
+        if subprocess.call(cmd) != 0 and subprocess.call(cmd[:4] + ["--user"] + cmd[4:]) != 0 \
+                and subprocess.call(apt) != 0:
+            sys.exit("sweep_plots: cannot install matplotlib (pip or apt-get install python3-matplotlib)")
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -77,7 +81,11 @@ def plot(plt, rows, cost_key, cost_label, err_key, err_label, path, title):
             xs, ys = zip(*front)
             ax.step(xs, ys, where="post", color="black", lw=1, ls="--", label="Pareto front", zorder=2)
             ax.scatter(xs, ys, facecolors="none", edgecolors="black", s=120, zorder=4)
-        ax.set_xscale("log")
+        costs = [num(r, cost_key) for r in mine]
+        if costs and max(costs) > 20 * min(costs):  # bits span decades; cycles a few percent
+            ax.set_xscale("log")
+        else:
+            ax.ticklabel_format(axis="x", style="plain", useOffset=False)
         ax.set_xlabel(cost_label)
         ax.set_ylabel(err_label)
         ax.set_title(f"{os.path.splitext(os.path.basename(scene))[0]}")
