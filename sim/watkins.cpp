@@ -2,6 +2,8 @@
 //   watkins render [SCENE] [--out image.png] [--model fixed|float] [--shading S] [--rule R] [--depth D]
 //                  [--diff d.png] [--cull|--no-cull] [--max-active-edges N]
 //                  [--rtl [--sparse] [--trace out.fst] [--seed N] [--gap P] [--stall P]]
+//   watkins sweep [SCENE ...] [--shadings ...] [--tess ...] [--csv F] [--md F] [--jobs N] [--shard i/N] [--rtl]
+//                  (sim/sweep.cpp)
 #include <CLI/CLI.hpp>
 
 #include <chrono>
@@ -15,6 +17,7 @@
 #include "image_io.hpp"
 #include "prepare.hpp"
 #include "scene.hpp"
+#include "sweep.hpp"
 #include "watkins_top.hpp"
 
 // ==== RTL co-simulation (--rtl): owned by the testbench; see testbench/rtl_bench.hpp ==========
@@ -276,9 +279,12 @@ int main(int argc, char** argv) {
   r->add_option("--max-active-edges", ra.max_active_edges, "active-edge list capacity")
       ->check(CLI::Range(1, 1 << 16))->capture_default_str();
   add_rtl_options(r, ra.rtl);  // --rtl, --trace, --seed, --gap, --stall
+  watkins::sweep::SweepArgs sa;
+  auto* s = watkins::sweep::add_sweep_command(app, sa);
   CLI11_PARSE(app, argc, argv);
   try {
     if (*r) return render(ra);
+    if (*s) return watkins::sweep::run_sweep(sa);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "watkins: error: %s\n", e.what());
     return 1;

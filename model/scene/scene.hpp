@@ -34,6 +34,7 @@ struct BuildOptions {
   std::optional<DepthMode> depth;
   std::optional<bool> cull_backfaces;
   std::optional<ShadingMode> shading;
+  std::optional<bool> flat;  // flat shading (see BuiltScene::flat)
 };
 
 // A material as Phong's eq. (3) uses it: S = Cp [cos(i)(1 - d) + d] + W cos(s)^n.
@@ -51,6 +52,10 @@ struct BuiltScene {
   ShadingRule rule = ShadingRule::Gouraud;
   DepthMode depth = DepthMode::InverseZ;
   ShadingMode shading = ShadingMode::Gouraud;
+  // Flat shading (Gouraud pipeline only): every polygon gets one shade, the vertex rule evaluated
+  // at its centroid with its plane's normal, given to all its vertices — the faceted picture of
+  // Warnock and Romney that Gouraud's interpolation removes (the depth still varies per vertex).
+  bool flat = false;
   // Phong: camera-space unit vectors towards the light and towards the eye (both at infinity,
   // eye = (0, 0, -1)), and the materials ScreenPolygon::material indexes.
   double light[3] = {0, 0, -1};

@@ -97,6 +97,10 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
   out.rule = opt.rule.value_or(sc.shading.rule);
   out.depth = opt.depth.value_or(sc.shading.depth);
   out.shading = opt.shading.value_or(sc.shading.mode);
+  out.flat = opt.flat.value_or(sc.shading.flat);
+  if (out.flat && out.shading == ShadingMode::Phong)
+    throw SceneError(sc.name + ": shading.flat: flat shading gives one shade per polygon to the gouraud pipeline; "
+                     "the phong pipeline shades every pixel");
   const bool cull = opt.cull_backfaces.value_or(sc.shading.cull_backfaces);
   const Camera& cam = sc.camera;
   const View view = make_view(cam);
@@ -239,6 +243,23 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
           for (ScreenVertex& v : poly.v)
             for (double& c : v.normal) c = -c;
         poly.material = materials.index(o.material);  // only materials of emitted polygons count
+        if (out.flat) {
+          // One shade per polygon: the rule at the centroid, with the plane's normal (Newell's
+          // method, so non-planar quads get their best-fit plane), turned like the vertex normals.
+          glm::dvec3 centroid(0.0), plane(0.0), vertex_normals(0.0);
+          for (int k = 0; k < face.n; ++k) {
+            const glm::dvec3& a = m.position[face.idx[k]];
+            const glm::dvec3& b = m.position[face.idx[(k + 1) % face.n]];
+            centroid += a / double(face.n);
+            plane += glm::dvec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+            vertex_normals += m.normal[face.idx[k]];
+          }
+          plane = glm::normalize(plane);
+          if (glm::dot(plane, vertex_normals) < 0) plane = -plane;  // outward, as the surface's normals
+          double rgb[3];
+          shade(centroid, facing(centroid, plane), o.material, rgb);
+          for (ScreenVertex& v : poly.v) std::copy(rgb, rgb + 3, v.rgb);
+        }
         out.polygons.push_back(std::move(poly));
       }
     }

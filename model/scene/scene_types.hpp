@@ -48,6 +48,7 @@ struct Shading {
   bool cull_backfaces = true;
   double specular_m = 8.0;
   ShadingMode mode = ShadingMode::Gouraud;  // "mode": which pipeline shades
+  bool flat = false;                         // "flat": one shade per polygon (BuiltScene::flat)
 };
 
 enum class ObjectType { Sphere, Cone, QuarterTorus, HyperbolicParaboloid, BezierPatch, Mesh, Polygons };

@@ -1,0 +1,422 @@
+// watkins sweep (sweep.hpp). The grid is a list of axes, each a name and its values; a point is
+// one value index per axis (mixed radix, the last axis fastest), numbered 0..N-1 in that order so
+// shards and jobs are reproducible. Adding an axis (fraction bits per channel group, once the
+// formats are run-time) is one more entry in make_axes() and one more read in evaluate().
+//
+// Each point: the scene text with its first object's "u", "v" scaled, built with the point's
+// shading (flat: Gouraud pipeline with one shade per polygon; gouraud-eq1 / -eq2: the depth channel
+// interpolates 1/Z (Gouraud's eq. 1) or Z (eq. 2); phong: the Phong pipeline), prepared, rendered
+// by the fixed-point model (WatkinsTop), the double reference and the analytic truth, compared.
+#include "sweep.hpp"
+
+#include <CLI/CLI.hpp>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <regex>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+#include "analytic_truth.hpp"
+#include "error_stats.hpp"
+#include "float_reference.hpp"
+#include "formats.hpp"
+#include "image_io.hpp"
+#include "prepare.hpp"
+#include "scene.hpp"
+#include "watkins_top.hpp"
+
+#ifdef WATKINS_HAVE_RTL
+#include "rtl_bench.hpp"
+#endif
+
+namespace watkins::sweep {
+
+namespace {
+
+// ---- the grid -------------------------------------------------------------------------------
+
+struct Axis {
+  std::string name;                 // CSV column
+  std::vector<std::string> values;  // as written in the CSV
+};
+
+std::string number(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+std::vector<Axis> make_axes(const SweepArgs& a) {
+  std::vector<Axis> axes;
+  Axis scene{"scene", {}}, shading{"shading", a.shadings}, tess{"tess", {}};
+  for (const std::string& s : a.scenes) scene.values.push_back(s);
+  for (double f : a.tess) tess.values.push_back(number(f));
+  axes.push_back(scene);
+  axes.push_back(shading);
+  axes.push_back(tess);
+  return axes;
+}
+
+// Point k's value index on every axis.
+std::vector<int> decode(const std::vector<Axis>& axes, long long k) {
+  std::vector<int> idx(axes.size());
+  for (std::size_t i = axes.size(); i-- > 0;) {
+    const long long n = static_cast<long long>(axes[i].values.size());
+    idx[i] = static_cast<int>(k % n);
+    k /= n;
+  }
+  return idx;
+}
+
+long long grid_size(const std::vector<Axis>& axes) {
+  long long n = 1;
+  for (const Axis& a : axes) n *= static_cast<long long>(a.values.size());
+  return n;
+}
+
+// ---- hardware cost --------------------------------------------------------------------------
+
+// Storage the hardware needs, from today's compile-time formats (model/twins/formats.hpp). The
+// run-time formats will replace this one function (it will take the point's configuration).
+struct HardwareBits {
+  long long edge_record = 0;  // one edge record
+  long long line_buffer = 0;  // two scan-line buffers (one filled while the other is read out)
+};
+HardwareBits hardware_bits() {
+  HardwareBits b;
+  b.edge_record = fmt::EdgeRecordBits;
+  b.line_buffer = 2LL * fmt::DefaultMaxWidth * (fmt::DepthBits + 3 * fmt::ShadeBits);
+  return b;
+}
+
+// ---- one point --------------------------------------------------------------------------------
+
+struct Result {
+  long long point = 0;
+  std::vector<std::string> axis_values;
+  int u = 0, v = 0;
+  long long polygons = 0, edge_records = 0, active_edges = 0, fragments = 0;
+  ErrorStats truth, double_truth, vs_double;  // model vs truth, double reference vs truth, model vs double
+  double truth_mach = 0, double_truth_mach = 0, vs_double_mach = 0, image_mach = 0;
+  int truth_coverage_differs = 0, vs_double_visibility_differs = 0, vs_double_coverage_differs = 0;
+  bool has_truth = false;
+  long long cycles = -1;
+  std::string cycles_source = "none";  // rtl-sparse, rtl-full-frame, over-rtl-capacity, none (prediction: later)
+  long long rtl_mismatches = -1;
+  HardwareBits bits;
+  double seconds = 0;
+  std::string error;  // the point could not be rendered (the message); the row keeps its axes
+};
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path + ": cannot open scene file");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// The scene text with the first "u" and "v" (the first tessellated object's) scaled by f: u >= 3
+// (a closed ring), v >= 1. Returns the values used.
+std::string retessellate(const std::string& text, const std::string& path, double f, int& u, int& v) {
+  std::string out = text;
+  for (int axis = 0; axis < 2; ++axis) {
+    const std::regex re(axis == 0 ? R"re("u"\s*:\s*(\d+))re" : R"re("v"\s*:\s*(\d+))re");
+    std::smatch m;
+    if (!std::regex_search(out, m, re))
+      throw std::runtime_error(path + ": no tessellated object (\"u\", \"v\") to sweep");
+    const int n0 = std::stoi(m[1].str());
+    const int n = std::max(axis == 0 ? 3 : 1, static_cast<int>(std::lround(n0 * f)));
+    (axis == 0 ? u : v) = n;
+    out = m.prefix().str() + (axis == 0 ? "\"u\": " : "\"v\": ") + std::to_string(n) + m.suffix().str();
+  }
+  return out;
+}
+
+// The render with each pixel's owner turned from polygon id into scene object index (the truth's).
+Image by_object(const BuiltScene& scene, const Image& img) {
+  Image out = img;
+  for (int& o : out.owner)
+    if (o >= 0) o = scene.polygons.at(std::size_t(o)).object;
+  return out;
+}
+
+std::mutex rtl_mutex;  // the SystemC bench is one per process
+
+Result evaluate(const SweepArgs& a, const std::vector<Axis>& axes, long long k) {
+  using Clock = std::chrono::steady_clock;
+  const auto t0 = Clock::now();
+  Result r;
+  r.point = k;
+  const std::vector<int> idx = decode(axes, k);
+  for (std::size_t i = 0; i < axes.size(); ++i) r.axis_values.push_back(axes[i].values[idx[i]]);
+  r.bits = hardware_bits();
+  const std::string& path = axes[0].values[idx[0]];
+  const std::string& shading = axes[1].values[idx[1]];
+  const double f = a.tess.at(idx[2]);
+  try {
+    BuildOptions opt;
+    opt.rule = parse_shading_rule(a.rule);
+    opt.depth = shading == "gouraud-eq2" ? DepthMode::Z : DepthMode::InverseZ;
+    opt.shading = shading == "phong" ? ShadingMode::Phong : ShadingMode::Gouraud;
+    opt.flat = shading == "flat";
+    const std::string text = retessellate(read_text(path), path, f, r.u, r.v);
+    const BuiltScene scene =
+        load_scene_text(text, path, std::filesystem::path(path).parent_path().string(), opt);
+    PrepareOptions popt;
+    popt.max_active_edges = a.max_active_edges;
+    const PreparedScene prepared = prepare(scene, popt);
+    r.polygons = static_cast<long long>(scene.polygons.size());
+    r.edge_records = static_cast<long long>(prepared.edges.size());
+    r.active_edges = prepared.needs.max_active_edges;
+
+    WatkinsTop pipe(a.max_active_edges);
+    Image image = pipe.render(prepared);
+    r.fragments = pipe.stats().fragments;
+    const Image reference = render_float_reference(scene);
+    const ErrorStats vs_double = error_stats(image, reference);
+    const ImageError counts = compare_images(image, reference);
+    r.vs_double = vs_double;
+    r.vs_double_mach = mach_band(image, image.owner, &reference);
+    r.vs_double_visibility_differs = counts.visibility_differs;
+    r.vs_double_coverage_differs = counts.coverage_differs;
+    r.image_mach = mach_band(image, image.owner);
+
+    if (a.rtl) {
+#ifdef WATKINS_HAVE_RTL
+      if (r.active_edges > fmt::MaxActiveEdges) {
+        r.cycles_source = "over-rtl-capacity";
+      } else {
+        tb::RtlOptions ro;
+        ro.sparse = !a.full_frame;
+        std::lock_guard<std::mutex> lock(rtl_mutex);
+        const tb::RtlResult rr = tb::run_rtl(prepared, ro, &image);
+        r.cycles = rr.cycles;
+        r.cycles_source = a.full_frame ? "rtl-full-frame" : "rtl-sparse";
+        r.rtl_mismatches = rr.mismatches + static_cast<long long>(rr.stage_mismatches.size());
+        if (!rr.ok() || rr.overflow) r.error = "RTL run failed: " + rr.summary();
+      }
+#endif
+    }
+
+    const AnalyticTruth truth = render_analytic_truth(scene);
+    r.has_truth = truth.unavailable.empty();
+    if (r.has_truth) {
+      const Image mine = by_object(scene, image), ref = by_object(scene, reference);
+      r.truth = error_stats(mine, truth.image);
+      r.truth_mach = mach_band(mine, image.owner, &truth.image);
+      r.truth_coverage_differs = compare_images(mine, truth.image).coverage_differs;
+      r.double_truth = error_stats(ref, truth.image);
+      r.double_truth_mach = mach_band(ref, reference.owner, &truth.image);
+    }
+  } catch (const std::exception& e) {
+    r.error = e.what();
+  }
+  r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  return r;
+}
+
+// ---- output -------------------------------------------------------------------------------
+
+std::string fixed(double v, int digits) {
+  if (std::isinf(v)) return "inf";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+  return buf;
+}
+
+// CSV cells; an error, a missing truth or no cycles leave cells empty.
+void write_csv(const std::string& path, const std::vector<Axis>& axes, const std::vector<Result>& rows) {
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error(path + ": cannot write");
+  out << "point";
+  for (const Axis& ax : axes) out << ',' << ax.name;
+  out << ",u,v,polygons,edge_records,active_edges,fragments"
+         ",truth_max,truth_mean,truth_rmse,truth_psnr,truth_mach,truth_compared,truth_coverage_differs"
+         ",double_truth_max,double_truth_mean,double_truth_rmse,double_truth_psnr,double_truth_mach"
+         ",double_max,double_mean,double_rmse,double_psnr,double_mach,double_visibility_differs,double_coverage_differs"
+         ",image_mach,cycles,cycles_source,rtl_mismatches,edge_record_bits,line_buffer_bits,active_list_bits"
+         ",seconds,error\n";
+  for (const Result& r : rows) {
+    out << r.point;
+    for (const std::string& v : r.axis_values) out << ',' << v;
+    const bool ok = r.error.empty() || r.polygons > 0;
+    auto stats = [&](const ErrorStats& e, double mach, bool have) {
+      if (!have) return std::string(",,,,,");
+      return "," + std::to_string(e.max_abs) + "," + fixed(e.mean_abs, 4) + "," + fixed(e.rmse, 4) + "," +
+             fixed(e.psnr, 2) + "," + fixed(mach, 2);
+    };
+    out << ',' << r.u << ',' << r.v;
+    if (ok)
+      out << ',' << r.polygons << ',' << r.edge_records << ',' << r.active_edges << ',' << r.fragments;
+    else
+      out << ",,,,";
+    out << stats(r.truth, r.truth_mach, ok && r.has_truth);
+    if (ok && r.has_truth)
+      out << ',' << r.truth.compared << ',' << r.truth_coverage_differs;
+    else
+      out << ",,";
+    out << stats(r.double_truth, r.double_truth_mach, ok && r.has_truth);
+    out << stats(r.vs_double, r.vs_double_mach, ok);
+    if (ok)
+      out << ',' << r.vs_double_visibility_differs << ',' << r.vs_double_coverage_differs << ','
+          << fixed(r.image_mach, 2);
+    else
+      out << ",,,";
+    out << ',' << (r.cycles >= 0 ? std::to_string(r.cycles) : "") << ',' << r.cycles_source << ','
+        << (r.rtl_mismatches >= 0 ? std::to_string(r.rtl_mismatches) : "") << ',' << r.bits.edge_record << ','
+        << r.bits.line_buffer << ',' << (ok ? std::to_string(r.active_edges * r.bits.edge_record) : "") << ','
+        << fixed(r.seconds, 3) << ",\"";
+    for (char c : r.error) out << (c == '"' ? '\'' : c == '\n' ? ' ' : c);
+    out << "\"\n";
+  }
+}
+
+void write_markdown(const std::string& path, const std::vector<Result>& rows) {
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error(path + ": cannot write");
+  out << "| scene | shading | u×v | polygons | active edges | cycles | vs truth max / mean | RMSE | PSNR dB | "
+         "Mach | double vs truth max / mean | vs double max / mean | edge record / line buffer bits |\n"
+         "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const Result& r : rows) {
+    const std::string scene = std::filesystem::path(r.axis_values[0]).stem().string();
+    out << "| " << scene << " | " << r.axis_values[1] << " | " << r.u << "×" << r.v << " | ";
+    if (!r.error.empty() && r.polygons == 0) {
+      out << r.error << " | | | | | | | | | |\n";
+      continue;
+    }
+    out << r.polygons << " | " << r.active_edges << " | "
+        << (r.cycles >= 0 ? std::to_string(r.cycles) : r.cycles_source == "over-rtl-capacity" ? "(over the RTL's " +
+                                                              std::to_string(fmt::MaxActiveEdges) + ")" : "—")
+        << " | ";
+    if (r.has_truth)
+      out << r.truth.max_abs << " / " << fixed(r.truth.mean_abs, 2) << " | " << fixed(r.truth.rmse, 2) << " | "
+          << fixed(r.truth.psnr, 1) << " | " << fixed(r.truth_mach, 1) << " | " << r.double_truth.max_abs << " / "
+          << fixed(r.double_truth.mean_abs, 2) << " | ";
+    else
+      out << "— | — | — | — | — | ";
+    out << r.vs_double.max_abs << " / " << fixed(r.vs_double.mean_abs, 3) << " | " << r.bits.edge_record << " / "
+        << r.bits.line_buffer << " |\n";
+  }
+}
+
+// A progress bar on stderr, only when it is a terminal.
+class Progress {
+ public:
+  Progress(long long total, bool on) : total_(total), on_(on && isatty(2)) {}
+  void step(const std::string& what) {
+    std::lock_guard<std::mutex> lock(m_);
+    ++done_;
+    if (!on_) return;
+    const int width = 30, fill = static_cast<int>(width * done_ / std::max(1LL, total_));
+    std::fprintf(stderr, "\r[%s%s] %lld/%lld %-40.40s", std::string(fill, '#').c_str(),
+                 std::string(width - fill, '.').c_str(), done_, total_, what.c_str());
+    if (done_ == total_) std::fprintf(stderr, "\n");
+    std::fflush(stderr);
+  }
+
+ private:
+  long long total_, done_ = 0;
+  bool on_;
+  std::mutex m_;
+};
+
+void parse_shard(const std::string& s, long long& i, long long& n) {
+  const auto slash = s.find('/');
+  try {
+    if (slash == std::string::npos) throw std::invalid_argument("");
+    i = std::stoll(s.substr(0, slash));
+    n = std::stoll(s.substr(slash + 1));
+  } catch (const std::exception&) {
+    throw std::runtime_error("--shard: expected i/N (0 <= i < N), got \"" + s + "\"");
+  }
+  if (n < 1 || i < 0 || i >= n) throw std::runtime_error("--shard: expected i/N with 0 <= i < N, got \"" + s + "\"");
+}
+
+}  // namespace
+
+CLI::App* add_sweep_command(CLI::App& app, SweepArgs& a) {
+  auto* s = app.add_subcommand("sweep", "error against cost over scenes x shading x tessellation (CSV, markdown)");
+  s->add_option("scenes", a.scenes, "scene files (JSON); default: scenes/sphere.json scenes/cone.json");
+  s->add_option("--shadings", a.shadings, "flat, gouraud-eq1 (depth 1/Z), gouraud-eq2 (depth Z), phong")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"flat", "gouraud-eq1", "gouraud-eq2", "phong"}))
+      ->capture_default_str();
+  s->add_option("--tess", a.tess, "factors on the first object's u and v (u >= 3, v >= 1)")
+      ->delimiter(',')
+      ->check(CLI::Range(0.01, 64.0))
+      ->capture_default_str();
+  s->add_option("--rule", a.rule, "vertex rule of flat and Gouraud shading (phong: eq. 3, the truth's illumination)")
+      ->check(CLI::IsMember({"gouraud", "lambert", "warnock", "romney", "phong"}))
+      ->capture_default_str();
+  s->add_option("--csv", a.csv, "CSV to write (one row per point)")->capture_default_str();
+  s->add_option("--md", a.md, "markdown table to write");
+  s->add_option("--jobs,-j", a.jobs, "points rendered at once (threads)")->check(CLI::Range(1, 256))->capture_default_str();
+  s->add_option("--shard", a.shard, "i/N: run only points k with k mod N == i (0-based; e.g. $SLURM_ARRAY_TASK_ID/N)")
+      ->capture_default_str();
+  s->add_option("--max-active-edges", a.max_active_edges, "the model's active-edge list capacity")
+      ->check(CLI::Range(1, 1 << 16))
+      ->capture_default_str();
+  s->add_flag("--rtl", a.rtl, "cycles per frame from the Verilated RTL (points within its active-edge list)");
+  s->add_flag("--full-frame", a.full_frame, "with --rtl: full-frame output instead of sparse");
+  s->add_flag("--quiet,-q", a.quiet, "no progress bar");
+  return s;
+}
+
+int run_sweep(const SweepArgs& in) {
+  SweepArgs a = in;
+  if (a.scenes.empty()) {
+    const std::string root = WATKINS_SOURCE_DIR;
+    a.scenes = {root + "/scenes/sphere.json", root + "/scenes/cone.json"};
+  }
+  if (a.full_frame && !a.rtl) throw std::runtime_error("--full-frame needs --rtl");
+#ifndef WATKINS_HAVE_RTL
+  if (a.rtl) throw std::runtime_error("--rtl: this build has no RTL simulation (install Verilator and SystemC)");
+#endif
+  long long shard = 0, shards = 1;
+  parse_shard(a.shard, shard, shards);
+  const std::vector<Axis> axes = make_axes(a);
+  std::vector<long long> points;
+  for (long long k = shard; k < grid_size(axes); k += shards) points.push_back(k);
+
+  std::vector<Result> rows(points.size());
+  Progress progress(static_cast<long long>(points.size()), !a.quiet);
+  std::atomic<std::size_t> next{0};
+  auto worker = [&] {
+    for (std::size_t i; (i = next++) < points.size();) {
+      rows[i] = evaluate(a, axes, points[i]);
+      progress.step(std::filesystem::path(rows[i].axis_values[0]).stem().string() + " " + rows[i].axis_values[1] +
+                    " " + std::to_string(rows[i].u) + "x" + std::to_string(rows[i].v));
+    }
+  };
+  std::vector<std::thread> threads;
+  for (int j = 1; j < std::min<int>(a.jobs, static_cast<int>(points.size())); ++j) threads.emplace_back(worker);
+  worker();
+  for (std::thread& t : threads) t.join();
+
+  write_csv(a.csv, axes, rows);
+  if (!a.md.empty()) write_markdown(a.md, rows);
+  int failed = 0, rtl_bad = 0;
+  for (const Result& r : rows) {
+    if (!r.error.empty()) {
+      ++failed;
+      std::fprintf(stderr, "watkins sweep: point %lld (%s %s x%s): %s\n", r.point, r.axis_values[0].c_str(),
+                   r.axis_values[1].c_str(), r.axis_values[2].c_str(), r.error.c_str());
+    }
+    if (r.rtl_mismatches > 0 || r.error.rfind("RTL run failed", 0) == 0) ++rtl_bad;
+  }
+  std::printf("sweep         %zu of %lld points (shard %lld/%lld), %d failed%s; wrote %s%s%s\n", rows.size(),
+              grid_size(axes), shard, shards, failed, rtl_bad ? ", RTL MISMATCH" : "", a.csv.c_str(),
+              a.md.empty() ? "" : ", ", a.md.c_str());
+  return rtl_bad ? 1 : 0;
+}
+
+}  // namespace watkins::sweep

@@ -1,0 +1,34 @@
+// watkins sweep: error against cost over a grid of scenes × shading × tessellation, in process
+// (the model libraries, no subprocess per point). One CSV row per point, a markdown table, a
+// progress bar on a terminal; --jobs N threads and --shard i/N for batch systems. See sweep.cpp.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace CLI {
+class App;
+}
+
+namespace watkins::sweep {
+
+struct SweepArgs {
+  std::vector<std::string> scenes;  // scene files; default: the sphere and the cone
+  std::vector<std::string> shadings{"flat", "gouraud-eq1", "gouraud-eq2", "phong"};
+  std::vector<double> tess{0.5, 1, 2, 4};  // factors on the first object's u and v
+  std::string rule = "phong";  // vertex rule of flat and Gouraud (the truth needs eq. 3)
+  std::string csv = "sweep.csv", md;
+  int jobs = 1;
+  std::string shard = "0/1";  // i/N: this process runs the points k with k mod N == i
+  int max_active_edges = 1024;  // the model's active-edge list (the RTL's is fmt::MaxActiveEdges)
+  bool rtl = false;             // cycles from the Verilated RTL (sparse output unless full_frame)
+  bool full_frame = false;
+  bool quiet = false;           // no progress bar
+};
+
+// Registers `watkins sweep` and its options on `app`; returns the subcommand.
+CLI::App* add_sweep_command(CLI::App& app, SweepArgs& args);
+// Runs the sweep; returns the exit code (1 when the RTL differs from the model at some point).
+int run_sweep(const SweepArgs& args);
+
+}  // namespace watkins::sweep

@@ -1,0 +1,249 @@
+// watkins sweep: the error statistics it adds (PSNR, the Mach-band measure) on hand-made images,
+// the flat shading rule of the scene front end, and a tiny sweep through the command line whose
+// CSV columns and values are checked.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "error_stats.hpp"
+#include "scene.hpp"
+
+namespace watkins {
+namespace {
+
+// One row of pixels, all covered, grey levels `v`, polygon ids `poly`.
+Image row(const std::vector<int>& v, const std::vector<int>& poly) {
+  Image img(static_cast<int>(v.size()), 1);
+  for (std::size_t x = 0; x < v.size(); ++x) {
+    for (int c = 0; c < 3; ++c) img.rgb[x * 3 + c] = static_cast<std::uint8_t>(v[x]);
+    img.covered[x] = 1;
+    img.owner[x] = poly[x];
+  }
+  return img;
+}
+
+const std::vector<int> kTwoPolygons{0, 0, 0, 0, 1, 1, 1, 1};
+
+TEST(MachBand, KinkInSlopeAtAnEdge) {  // Gouraud's Fig. 1b: continuous value, slope 10 then 20
+  const Image img = row({0, 10, 20, 30, 40, 60, 80, 100}, kTwoPolygons);
+  EXPECT_DOUBLE_EQ(mach_band(img, img.owner), 10.0);  // d = 10, 10, 20 around the edge
+}
+
+TEST(MachBand, StepInValueAtAnEdge) {  // Fig. 1a: flat shading's step of 30 levels
+  const Image img = row({50, 50, 50, 50, 80, 80, 80, 80}, kTwoPolygons);
+  EXPECT_DOUBLE_EQ(mach_band(img, img.owner), 30.0);
+}
+
+TEST(MachBand, KinkInsideOnePolygonIsNotCounted) {
+  const Image img = row({0, 10, 20, 30, 50, 70, 90, 110}, std::vector<int>(8, 0));
+  EXPECT_DOUBLE_EQ(mach_band(img, img.owner), 0.0);
+}
+
+TEST(MachBand, ColumnsCountToo) {
+  Image img(1, 8);
+  const int v[8] = {0, 0, 0, 0, 40, 40, 40, 40};
+  for (int y = 0; y < 8; ++y) {
+    for (int c = 0; c < 3; ++c) img.rgb[y * 3 + c] = static_cast<std::uint8_t>(v[y]);
+    img.covered[y] = 1;
+    img.owner[y] = y < 4 ? 3 : 7;
+  }
+  EXPECT_DOUBLE_EQ(mach_band(img, img.owner), 40.0);
+}
+
+TEST(MachBand, AgainstAReferenceOnlyTheDifferenceCounts) {
+  const Image img = row({0, 10, 20, 30, 40, 60, 80, 100}, kTwoPolygons);
+  Image ref = img;  // the same kink in the reference: no error in the derivative
+  EXPECT_DOUBLE_EQ(mach_band(img, img.owner, &ref), 0.0);
+  ref = row({0, 10, 20, 30, 40, 50, 60, 70}, kTwoPolygons);  // the reference is a straight ramp
+  EXPECT_DOUBLE_EQ(mach_band(img, img.owner, &ref), 10.0);
+  ref.covered[5] = 0;  // p3 not shown by the reference: the edge is not measured
+  EXPECT_DOUBLE_EQ(mach_band(img, img.owner, &ref), 0.0);
+}
+
+TEST(MachBand, IntensityIsTheMeanOfRGB) {
+  Image img = row({0, 0, 0, 0, 0, 0, 0, 0}, kTwoPolygons);
+  for (int x = 4; x < 8; ++x) img.rgb[x * 3 + 0] = 30;  // red steps by 30: intensity by 10
+  EXPECT_DOUBLE_EQ(mach_band(img, img.owner), 10.0);
+}
+
+TEST(ErrorStats, PsnrAndRmse) {
+  const Image a = row({100, 100, 100, 100}, {0, 0, 0, 0});
+  Image b = row({110, 110, 110, 110}, {0, 0, 0, 0});
+  ErrorStats e = error_stats(a, b);
+  EXPECT_EQ(e.compared, 4);
+  EXPECT_EQ(e.max_abs, 10);
+  EXPECT_DOUBLE_EQ(e.rmse, 10.0);
+  EXPECT_NEAR(e.psnr, 20 * std::log10(25.5), 1e-12);  // 28.13 dB
+  b = row({100, 100, 102, 102}, {0, 0, 0, 0});
+  e = error_stats(a, b);
+  EXPECT_DOUBLE_EQ(e.mean_abs, 1.0);
+  EXPECT_NEAR(e.rmse, std::sqrt(2.0), 1e-12);
+  EXPECT_NEAR(e.psnr, 20 * std::log10(255 / std::sqrt(2.0)), 1e-12);  // 45.12 dB
+  EXPECT_TRUE(std::isinf(error_stats(a, a).psnr));
+  b.owner[0] = 5;  // another polygon: not compared
+  EXPECT_EQ(error_stats(a, b).compared, 3);
+}
+
+std::string sphere_text(bool flat) {
+  return std::string(R"({"screen": {"width": 64, "height": 48},
+    "camera": {"type": "lookat", "eye": [0, 0, -6], "target": [0, 0, 0], "fov_deg": 40},
+    "light": {"type": "directional", "direction": [-1, 1, -1]},
+    "shading": {"rule": "phong", "flat": )") +
+         (flat ? "true" : "false") + R"(},
+    "objects": [{"type": "sphere", "radius": 1.5, "u": 12, "v": 6}]})";
+}
+
+TEST(FlatShading, OneShadePerPolygonFromTheRuleAtTheCentroid) {
+  const BuiltScene flat = load_scene_text(sphere_text(true), "flat", ".");
+  const BuiltScene smooth = load_scene_text(sphere_text(false), "smooth", ".");
+  ASSERT_TRUE(flat.flat);
+  ASSERT_EQ(flat.polygons.size(), smooth.polygons.size());
+  std::set<std::array<double, 3>> shades;
+  for (std::size_t i = 0; i < flat.polygons.size(); ++i) {
+    const ScreenPolygon& p = flat.polygons[i];
+    for (const ScreenVertex& v : p.v)
+      for (int c = 0; c < 3; ++c) EXPECT_EQ(v.rgb[c], p.v[0].rgb[c]) << "polygon " << i;
+    shades.insert({p.v[0].rgb[0], p.v[0].rgb[1], p.v[0].rgb[2]});
+    // Between the darkest and the brightest of its smooth vertex shades (the centroid's plane
+    // normal is a mean of the vertex normals, roughly), within a few levels.
+    double lo = 255, hi = 0;
+    for (const ScreenVertex& v : smooth.polygons[i].v) lo = std::min(lo, v.rgb[1]), hi = std::max(hi, v.rgb[1]);
+    EXPECT_GE(p.v[0].rgb[1], lo - 8) << "polygon " << i;
+    EXPECT_LE(p.v[0].rgb[1], hi + 8) << "polygon " << i;
+    for (std::size_t k = 0; k < p.v.size(); ++k) {  // geometry untouched
+      EXPECT_EQ(p.v[k].x, smooth.polygons[i].v[k].x);
+      EXPECT_EQ(p.v[k].depth, smooth.polygons[i].v[k].depth);
+    }
+  }
+  EXPECT_GT(shades.size(), flat.polygons.size() / 2) << "facets must differ in shade";
+}
+
+TEST(FlatShading, OptionOverridesTheFileAndPhongRejectsIt) {
+  BuildOptions opt;
+  opt.flat = true;
+  EXPECT_TRUE(load_scene_text(sphere_text(false), "s", ".", opt).flat);
+  opt.shading = ShadingMode::Phong;
+  try {
+    load_scene_text(sphere_text(false), "s", ".", opt);
+    FAIL() << "flat with the phong pipeline must be rejected";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("shading.flat"), std::string::npos) << e.what();
+  }
+}
+
+// ---- the command line -----------------------------------------------------------------------
+
+std::string run(const std::string& args, int* code) {
+  const std::string cmd = std::string(WATKINS_CLI) + " " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  std::string out;
+  std::array<char, 4096> buf;
+  while (p && fgets(buf.data(), buf.size(), p)) out += buf.data();
+  const int status = p ? pclose(p) : -1;
+  *code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return out;
+}
+
+std::vector<std::map<std::string, std::string>> read_csv(const std::string& path, std::vector<std::string>* header) {
+  std::ifstream in(path);
+  std::string line;
+  std::vector<std::map<std::string, std::string>> rows;
+  auto split = [](const std::string& l) {
+    std::vector<std::string> cells;
+    std::string cell;
+    bool quoted = false;
+    for (char c : l) {
+      if (c == '"') quoted = !quoted;
+      else if (c == ',' && !quoted) cells.push_back(cell), cell.clear();
+      else cell += c;
+    }
+    cells.push_back(cell);
+    return cells;
+  };
+  if (!std::getline(in, line)) return rows;
+  *header = split(line);
+  while (std::getline(in, line)) {
+    const std::vector<std::string> cells = split(line);
+    std::map<std::string, std::string> r;
+    for (std::size_t i = 0; i < header->size() && i < cells.size(); ++i) r[(*header)[i]] = cells[i];
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+TEST(SweepCli, TinySweepWritesTheColumnsAndPhongBeatsGouraudOnTheSphere) {
+  char tmpl[] = "/tmp/watkins_sweep_XXXXXX";
+  ASSERT_NE(mkdtemp(tmpl), nullptr);
+  const std::string dir = tmpl, csv = dir + "/s.csv", md = dir + "/s.md";
+  int code = 0;
+  const std::string out = run("sweep " + std::string(WATKINS_SOURCE_DIR) +
+                                  "/scenes/sphere.json --shadings gouraud-eq1,phong --tess 0.5 --jobs 2 --csv " +
+                                  csv + " --md " + md,
+                              &code);
+  ASSERT_EQ(code, 0) << out;
+  std::vector<std::string> header;
+  const auto rows = read_csv(csv, &header);
+  for (const char* col : {"point", "scene", "shading", "tess", "u", "v", "polygons", "truth_max", "truth_mean",
+                          "truth_rmse", "truth_psnr", "truth_mach", "double_truth_max", "double_max", "double_mach",
+                          "cycles", "cycles_source", "edge_record_bits", "line_buffer_bits", "active_list_bits"})
+    EXPECT_NE(std::find(header.begin(), header.end(), col), header.end()) << "missing column " << col;
+  ASSERT_EQ(rows.size(), 2u);
+  const auto& g = rows[0];
+  const auto& p = rows[1];
+  EXPECT_EQ(g.at("shading"), "gouraud-eq1");
+  EXPECT_EQ(p.at("shading"), "phong");
+  EXPECT_EQ(g.at("u"), "16");  // the sphere's 32x16 halved
+  EXPECT_EQ(g.at("v"), "8");
+  EXPECT_EQ(g.at("edge_record_bits"), "466");
+  EXPECT_EQ(g.at("cycles_source"), "none");
+  EXPECT_EQ(g.at("error"), "");
+  EXPECT_LT(std::stoi(p.at("truth_max")), std::stoi(g.at("truth_max")));  // the highlight
+  EXPECT_LT(std::stod(p.at("truth_mean")), std::stod(g.at("truth_mean")));
+  EXPECT_GT(std::stod(p.at("truth_psnr")), std::stod(g.at("truth_psnr")));
+  EXPECT_GT(std::stod(g.at("truth_mach")), std::stod(p.at("truth_mach")));  // Gouraud's kinks at the edges
+  EXPECT_LT(std::stod(g.at("double_mean")), 0.1);  // quantization: a small fraction of a level on average
+  std::ifstream m(md);
+  std::stringstream text;
+  text << m.rdbuf();
+  EXPECT_NE(text.str().find("| sphere | phong | 16×8 |"), std::string::npos) << text.str();
+  std::system(("rm -rf " + dir).c_str());
+}
+
+TEST(SweepCli, ShardsSplitTheGrid) {
+  char tmpl[] = "/tmp/watkins_sweep_XXXXXX";
+  ASSERT_NE(mkdtemp(tmpl), nullptr);
+  const std::string dir = tmpl;
+  std::set<std::string> points;
+  for (int i = 0; i < 2; ++i) {
+    int code = 0;
+    const std::string csv = dir + "/s" + std::to_string(i) + ".csv";
+    const std::string out = run("sweep " + std::string(WATKINS_SOURCE_DIR) +
+                                    "/scenes/cone.json --shadings flat,gouraud-eq2,phong --tess 0.5 -q --shard " +
+                                    std::to_string(i) + "/2 --csv " + csv,
+                                &code);
+    ASSERT_EQ(code, 0) << out;
+    std::vector<std::string> header;
+    for (const auto& r : read_csv(csv, &header)) EXPECT_TRUE(points.insert(r.at("point")).second);
+  }
+  EXPECT_EQ(points, (std::set<std::string>{"0", "1", "2"}));
+  int code = 0;
+  EXPECT_NE(run("sweep --shard 2/2", &code).find("--shard"), std::string::npos);
+  EXPECT_EQ(code, 1);
+  std::system(("rm -rf " + dir).c_str());
+}
+
+}  // namespace
+}  // namespace watkins
