@@ -3,6 +3,7 @@
 // on every shipped scene and on random scenes, Gouraud and Phong tops, full-frame and sparse.
 #include <gtest/gtest.h>
 
+#include <random>
 #include <string>
 #include <vector>
 
@@ -88,6 +89,38 @@ TEST_P(CycleModelRandom, EqualsRtl) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Batches, CycleModelRandom, ::testing::Range(0, 4));  // 4 x 25 x 2 shadings
+
+// Harder timing: many small polygons and bow-ties (lines with many edges and short spans, where the
+// active-edge list and the span setup rather than the pixels set the pace), tall thin and wide flat
+// frames, and jittered meshes (shared edges, equal X on a line).
+TEST(CycleModel, StressScenesEqualRtl) {
+  const int seeds = 60;
+  int ran = 0;
+  for (int k = 0; k < seeds; ++k) {
+    std::mt19937_64 rng(77000 + static_cast<std::uint64_t>(k));
+    RandomSceneSpec spec;
+    switch (k % 4) {
+      case 0: spec.min_polygons = 20, spec.max_polygons = 40, spec.convex_quads = false; break;
+      case 1: spec.min_width = 1, spec.max_width = 12, spec.min_height = 30, spec.max_height = 200; break;
+      case 2: spec.min_width = 100, spec.max_width = 400, spec.min_height = 1, spec.max_height = 12; break;
+      case 3: spec.max_polygons = 30, spec.snap_one_in = 2; break;
+    }
+    std::vector<BuiltScene> scenes{random_scene(rng, spec), mesh_scene(rng, 20 + k, 16 + k % 7, 1 + k % 9, 1 + k % 5)};
+    for (BuiltScene& scene : scenes) {
+      PreparedScene prepared;
+      try {
+        prepared = prepare(scene);
+      } catch (const SceneError&) {  // too many active edges for the hardware
+        continue;
+      }
+      if (prepared.width > rtl_max_width()) continue;
+      expect_predicted(scene.name + " " + std::to_string(k), prepared);
+      if (HasFailure()) return;
+      ++ran;
+    }
+  }
+  EXPECT_GE(ran, seeds);
+}
 
 // Shapes the random scenes rarely draw: an empty frame, a one-line and a one-column frame, a
 // frame whose last line is uncovered, many one-pixel spans back to back (the interpolator's FIFO
