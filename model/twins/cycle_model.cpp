@@ -2,13 +2,14 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
 #include "scan_lines.hpp"
-#include "segment_interpolator.hpp"
 
 namespace watkins {
 namespace {
@@ -30,6 +31,16 @@ struct Streams {
   std::vector<int> record_y0;        // the edge-record stream
 };
 
+// The pixels [x_start, x_end) of a segment's span, clipped as SegmentInterpolator::setup() clips
+// them (timing needs neither the reciprocal nor the values, which cost most of setup()).
+std::pair<int, int> span_range(const Segment& seg, int width) {
+  constexpr i64 one = i64{1} << fmt::FracBits, half = one / 2;
+  auto first_centre = [](i64 x) { return static_cast<i64>(floor_shift(x - half + one - 1, fmt::FracBits)); };
+  const i64 xs = std::max<i64>(first_centre(seg.e[fmt::ChanX]), 0);
+  const i64 xe = std::min<i64>(first_centre(seg.f[fmt::ChanX]), width);
+  return {static_cast<int>(xs), static_cast<int>(std::max(xe, xs))};
+}
+
 Streams front_half(const Frame& frame, bool sparse, int capacity) {
   Streams s;
   s.line_begin.reserve(std::size_t(frame.height) + 1);
@@ -48,10 +59,9 @@ Streams front_half(const Frame& frame, bool sparse, int capacity) {
     }
     spans.clear();
     for (const Segment& seg : sl.segments) {
-      const SpanSetup span = SegmentInterpolator::setup(seg, frame.width);
-      const int n = std::max(span.x_end - span.x_start, 0);
-      s.items.push_back(Streams::Item{false, n});
-      if (n > 0) spans.emplace_back(span.x_start, span.x_end);
+      const auto [xs, xe] = span_range(seg, frame.width);
+      s.items.push_back(Streams::Item{false, xe - xs});
+      if (xe > xs) spans.emplace_back(xs, xe);
     }
     s.items.push_back(Streams::Item{true, 0});
     if (!sparse) {
@@ -126,6 +136,20 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
   bool rd_busy_q = false;
   int rd_left = 0, rline_q = 0, lines_written = 0;
 
+  // Every register but the two down-counters (reader steps, stepper pixels left). When a cycle
+  // leaves all of them as they were and only counts down, the cycles after it repeat it until a
+  // counter reaches the value that changes a handshake: those are skipped in one go (a line read
+  // out behind a stalled pipeline, a long span behind full queues).
+  auto key = [&] {
+    return std::make_tuple(frame_q, drain_q, line_q, rd_q, cnt_stream, cnt_fill, out_done_q, inc_done_q,
+                           eol_sent_q, next_record, eof_taken, inc_valid_q, inc_retire_q, sf_valid_q,
+                           s0_valid_q, recip_valid, recip_out, sa_valid, sb_valid, sc_valid, sa_item, sb_item,
+                           sc_item, fifo[0], fifo[1], fifo[2], fifo[3], fifo_head, fifo_count, step_active,
+                           frag_valid_q, frag_eol_q, norm.valid, norm.eol, shade.valid, shade.eol, rd_busy_q,
+                           rline_q, lines_written);
+  };
+  static_assert(InterpFifoDepth == 4, "key() lists the FIFO's words");
+
   CyclePrediction out;
   long long last_progress = 0;
   for (long long t = 1;; ++t) {
@@ -184,6 +208,12 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
     const bool swap = live && (line_q == 0 || eol_sent_q) && !inc_valid_q && src_done;
 
     // ================= registers =================
+    const bool rd_counts = rd_busy_q && !rd_last;
+    const bool step_counts = emit_frag && !from_head;
+    // (Worth a look only when a counter has some way to go.)
+    const bool may_repeat = (rd_counts && rd_left > 8) || (step_counts && step_left > 8);
+    decltype(key()) before;
+    if (may_repeat) before = key();
     // scanline_buffer reader (pixel_ready_i high: it steps every cycle it is busy)
     if (rd_busy_q) {
       if (st.read_emits[std::size_t(rline_q)] || rline_q == height - 1) {  // rd_load
@@ -281,6 +311,20 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
     }
     if (drain_q && edge_valid && head_eof) frame_q = drain_q = false;
     if (ae_fire || eol_fire || push) last_progress = t;
+    if (may_repeat && key() == before) {
+      long long n = std::numeric_limits<long long>::max();
+      if (rd_counts) n = std::min<long long>(n, rd_left - 1);
+      if (step_counts) n = std::min<long long>(n, step_left - 1);
+      if (n > 0) {
+        t += n;
+        if (rd_counts) {
+          rd_left -= static_cast<int>(n);
+          if (st.read_emits[std::size_t(rline_q)] || rline_q == height - 1) out.pixels += n;
+        }
+        if (step_counts) step_left -= static_cast<int>(n);
+        last_progress = t;
+      }
+    }
     if (t - last_progress > 10'000'000)
       throw std::logic_error("cycle model: no progress for 10^7 cycles at cycle " + std::to_string(t));
   }
