@@ -102,6 +102,9 @@ struct StallPipe {
 }  // namespace
 
 CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_active_edges) {
+  if (frame.width < 1 || frame.height < 1)  // the top asserts a_frame_size: no frame to time
+    throw std::invalid_argument("cycle model: frame size " + std::to_string(frame.width) + "x" +
+                                std::to_string(frame.height));
   const bool sparse = output == PixelOutput::Sparse;
   const bool phong = frame.shading == ShadingMode::Phong;
   const Streams st = front_half(frame, sparse, max_active_edges);

@@ -38,7 +38,8 @@ struct CyclePrediction {
 
 // Predicts the frame's cycles on watkins_top with Phong = (frame.shading == Phong), sparse_i as
 // `output`, starting idle (after reset or a finished frame), no input gaps and no output stalls.
-// Throws CapacityError when the frame overflows an active-edge list of `max_active_edges`.
+// Throws CapacityError when the frame overflows an active-edge list of `max_active_edges`, and
+// std::invalid_argument for an empty frame size.
 CyclePrediction predict_cycles(const Frame& frame, PixelOutput output,
                                int max_active_edges = fmt::MaxActiveEdges);
 
