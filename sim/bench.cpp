@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 
+#include "cycle_model.hpp"
 #include "float_reference.hpp"
 #include "watkins_top.hpp"
 #include "prepare.hpp"
@@ -56,6 +57,12 @@ int main(int argc, char** argv) {
                 fragments / t_fixed / 1e6, pixels / t_fixed / 1e6);
     std::printf("double reference    %.3f ms/frame  %.2f M fragments/s\n", t_float * 1e3,
                 fragments / t_float / 1e6);
+    for (const PixelOutput out : {PixelOutput::FullFrame, PixelOutput::Sparse}) {
+      const long long cycles = predict_cycles(prepared, out, 1 << 20).cycles;
+      const double t = best_seconds([&] { predict_cycles(prepared, out, 1 << 20); }, budget);
+      std::printf("cycle model         %.3f ms/frame  %lld RTL cycles (%s)  %.1f M predicted cycles/s\n", t * 1e3,
+                  cycles, out == PixelOutput::Sparse ? "sparse" : "full-frame", cycles / t / 1e6);
+    }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "watkins_bench: error: %s\n", e.what());
     return 1;

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "analytic_truth.hpp"
+#include "cycle_model.hpp"
 #include "float_reference.hpp"
 #include "image_io.hpp"
 #include "prepare.hpp"
@@ -70,7 +71,7 @@ void check_rtl_args(const RtlArgs& a, const std::string& model) {
 // Runs the RTL on the prepared scene, compares with the model image, prints the statistics and
 // replaces `image` with the RTL's. Returns the exit code: 1 on mismatch, hang or protocol error.
 int run_rtl_mode(const RtlArgs& a, const watkins::PreparedScene& prepared, watkins::Image& image,
-                 long long fragments) {
+                 long long fragments, long long predicted) {
 #ifdef WATKINS_HAVE_RTL
   namespace tb = watkins::tb;
   tb::RtlOptions opt;
@@ -83,6 +84,8 @@ int run_rtl_mode(const RtlArgs& a, const watkins::PreparedScene& prepared, watki
   std::printf("rtl           %s\n", tb::rtl_description().c_str());
   std::printf("rtl cycles    %lld (first edge beat offered to last pixel; %s output; gap %.2f, stall %.2f, seed %llu)\n",
               r.cycles, a.sparse ? "sparse" : "full-frame", a.gap, a.stall, a.seed);
+  std::printf("rtl predicted %lld cycles (cycle model, no gaps or stalls)%s\n", predicted,
+              a.gap > 0 || a.stall > 0 ? "" : predicted == r.cycles ? ": equal" : ": DIFFERS");
   std::printf("rtl pixels    %lld, fragments %lld (model), %.3f fragments/cycle, %.3f pixels/cycle\n", r.pixels,
               fragments, r.cycles ? double(fragments) / r.cycles : 0.0, r.cycles ? double(r.pixels) / r.cycles : 0.0);
   std::printf("rtl vs model  %lld mismatching pixels%s%s\n", r.mismatches, r.mismatches ? "; first: " : "",
@@ -106,7 +109,7 @@ int run_rtl_mode(const RtlArgs& a, const watkins::PreparedScene& prepared, watki
   }
   return 0;
 #else
-  (void)a, (void)prepared, (void)image, (void)fragments;
+  (void)a, (void)prepared, (void)image, (void)fragments, (void)predicted;
   return 1;
 #endif
 }
@@ -229,7 +232,13 @@ int render(const RenderArgs& a) {
     std::printf("vs double     max |d| %d levels, mean |d| %.4f levels, %d pixels > 1 level "
                 "(over %d pixels showing the same polygon); %d pixels change polygon, %d change coverage\n",
                 e.max_abs, e.mean_abs, e.over_one, e.compared, e.visibility_differs, e.coverage_differs);
-    if (a.rtl.enabled) rtl_status = run_rtl_mode(a.rtl, prepared, result, s.fragments);  // --rtl
+    const auto t3 = Clock::now();
+    const CyclePrediction full = predict_cycles(prepared, PixelOutput::FullFrame, a.max_active_edges);
+    const CyclePrediction sparse = predict_cycles(prepared, PixelOutput::Sparse, a.max_active_edges);
+    std::printf("predicted     %lld cycles (full-frame), %lld cycles (sparse): the RTL with no gaps or stalls "
+                "(cycle model, %.3f s)\n", full.cycles, sparse.cycles, seconds_since(t3));
+    if (a.rtl.enabled)  // --rtl
+      rtl_status = run_rtl_mode(a.rtl, prepared, result, s.fragments, (a.rtl.sparse ? sparse : full).cycles);
   } else {
     result = reference;
     std::printf("double model  %lld fragments, %.3f s\n", fstats.fragments, t_ref);

@@ -1,0 +1,337 @@
+#include "cycle_model.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "scan_lines.hpp"
+
+namespace watkins {
+namespace {
+
+using namespace rtl_timing;
+
+// What the control of each stage reads from the data, per scan line, from the twins.
+struct Streams {
+  std::vector<int> line_begin;       // active edges of line y: [line_begin[y], line_begin[y+1])
+  std::vector<std::uint8_t> retire;  // the edge ends after this line (edge_incrementer retire_o)
+  std::vector<std::uint8_t> closes;  // the edge closes a segment (segment_former hit)
+  struct Item {                      // segment_former output: a segment, or a line's end marker
+    bool eol = false;
+    int pixels = 0;                  // span pixels (0: empty span, dropped before the FIFO)
+  };
+  std::vector<Item> items;
+  std::vector<int> read_steps;       // scanline_buffer reader steps per line
+  std::vector<std::uint8_t> read_emits;  // each step emits a pixel (sparse: the line covers one)
+  std::vector<int> record_y0;        // the edge-record stream
+};
+
+// The pixels [x_start, x_end) of a segment's span, clipped as SegmentInterpolator::setup() clips
+// them (timing needs neither the reciprocal nor the values, which cost most of setup()).
+std::pair<int, int> span_range(const Segment& seg, int width) {
+  constexpr i64 one = i64{1} << fmt::FracBits, half = one / 2;
+  auto first_centre = [](i64 x) { return static_cast<i64>(floor_shift(x - half + one - 1, fmt::FracBits)); };
+  const i64 xs = std::max<i64>(first_centre(seg.e[fmt::ChanX]), 0);
+  const i64 xe = std::min<i64>(first_centre(seg.f[fmt::ChanX]), width);
+  return {static_cast<int>(xs), static_cast<int>(std::max(xe, xs))};
+}
+
+Streams front_half(const Frame& frame, bool sparse, int capacity) {
+  Streams s;
+  s.line_begin.reserve(std::size_t(frame.height) + 1);
+  s.read_steps.reserve(std::size_t(frame.height));
+  std::vector<int> open;  // polygons with an unpaired edge on this line
+  std::vector<std::pair<int, int>> spans;
+  walk_scan_lines(frame.edges, frame.height, capacity, [&](const ScanLine& sl) {
+    s.line_begin.push_back(static_cast<int>(s.retire.size()));
+    open.clear();
+    for (const ActiveEdge& e : sl.active.edges()) {
+      s.retire.push_back(e.remaining <= 1);
+      const auto it = std::find(open.begin(), open.end(), e.rec.poly);
+      s.closes.push_back(it != open.end());
+      if (it != open.end()) open.erase(it);
+      else open.push_back(e.rec.poly);
+    }
+    spans.clear();
+    for (const Segment& seg : sl.segments) {
+      const auto [xs, xe] = span_range(seg, frame.width);
+      s.items.push_back(Streams::Item{false, xe - xs});
+      if (xe > xs) spans.emplace_back(xs, xe);
+    }
+    s.items.push_back(Streams::Item{true, 0});
+    if (!sparse) {
+      s.read_steps.push_back(frame.width);
+      s.read_emits.push_back(1);
+      return;
+    }
+    // Covered pixels = the union of the line's spans (a fragment always writes an empty pixel).
+    std::sort(spans.begin(), spans.end());
+    int covered = 0, reach = 0;
+    for (const auto& [a, b] : spans) {
+      const int from = std::max(a, reach);
+      if (b > from) covered += b - from;
+      reach = std::max(reach, b);
+    }
+    s.read_steps.push_back(std::max(covered, 1));  // an empty line costs one step
+    s.read_emits.push_back(covered > 0);
+  });
+  s.line_begin.push_back(static_cast<int>(s.retire.size()));
+  s.record_y0.reserve(frame.edges.size());
+  for (const EdgeRecord& r : frame.edges) s.record_y0.push_back(r.y0);
+  return s;
+}
+
+// A Stages-deep stall_pipe carrying one flag per beat (the end-of-line marker).
+struct StallPipe {
+  std::uint64_t valid = 0, eol = 0;
+  int stages = 0;
+  bool out_valid() const { return (valid >> (stages - 1)) & 1; }
+  bool out_eol() const { return (eol >> (stages - 1)) & 1; }
+  void shift(bool v, bool e) {
+    const std::uint64_t mask = (std::uint64_t{1} << stages) - 1;
+    valid = ((valid << 1) | std::uint64_t(v)) & mask;
+    eol = ((eol << 1) | std::uint64_t(v && e)) & mask;
+  }
+};
+
+}  // namespace
+
+CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_active_edges) {
+  if (frame.width < 1 || frame.height < 1)  // the top asserts a_frame_size: no frame to time
+    throw std::invalid_argument("cycle model: frame size " + std::to_string(frame.width) + "x" +
+                                std::to_string(frame.height));
+  const bool sparse = output == PixelOutput::Sparse;
+  const bool phong = frame.shading == ShadingMode::Phong;
+  const Streams st = front_half(frame, sparse, max_active_edges);
+  const int height = frame.height;
+  const std::size_t records = st.record_y0.size();
+
+  // ---- active_edge_list (+ edge_incrementer): as after the start cycle 0 (start_i high).
+  bool frame_q = true, drain_q = false;
+  int line_q = 0, rd_q = 0, cnt_stream = 0, cnt_fill = 0;
+  bool out_done_q = false, inc_done_q = false, eol_sent_q = false;
+  std::size_t next_record = 0;
+  bool eof_taken = false;
+  bool inc_valid_q = false, inc_retire_q = false;
+  // ---- segment_former
+  bool sf_valid_q = false;
+  // ---- segment_interpolator: s0, span_reciprocal, sa/sb/sc, FIFO, stepper. Items pass every
+  // stage in order, so a stage's item is its position in st.items, counted where it leaves.
+  bool s0_valid_q = false;
+  std::uint64_t recip_valid = 0;
+  const std::uint64_t recip_mask = (std::uint64_t{1} << RecipStages) - 1;
+  std::size_t recip_out = 0;  // items that left the reciprocal
+  bool sa_valid = false, sb_valid = false, sc_valid = false;
+  std::size_t sa_item = 0, sb_item = 0, sc_item = 0;
+  std::size_t fifo[InterpFifoDepth] = {};
+  int fifo_head = 0, fifo_count = 0;
+  bool step_active = false;
+  int step_left = 0;
+  bool frag_valid_q = false, frag_eol_q = false;
+  // ---- Phong: normalizer -> phong_shader
+  StallPipe norm{0, 0, NormalizerStages}, shade{0, 0, ShaderStages};
+  // ---- scanline_buffer reader
+  bool rd_busy_q = false;
+  int rd_left = 0, rline_q = 0, lines_written = 0;
+
+  // Every register but the two down-counters (reader steps, stepper pixels left). When a cycle
+  // leaves all of them as they were and only counts down, the cycles after it repeat it until a
+  // counter reaches the value that changes a handshake: those are skipped in one go (a line read
+  // out behind a stalled pipeline, a long span behind full queues).
+  auto key = [&] {
+    return std::make_tuple(frame_q, drain_q, line_q, rd_q, cnt_stream, cnt_fill, out_done_q, inc_done_q,
+                           eol_sent_q, next_record, eof_taken, inc_valid_q, inc_retire_q, sf_valid_q,
+                           s0_valid_q, recip_valid, recip_out, sa_valid, sb_valid, sc_valid, sa_item, sb_item,
+                           sc_item, fifo[0], fifo[1], fifo[2], fifo[3], fifo_head, fifo_count, step_active,
+                           frag_valid_q, frag_eol_q, norm.valid, norm.eol, shade.valid, shade.eol, rd_busy_q,
+                           rline_q, lines_written);
+  };
+  static_assert(InterpFifoDepth == 4, "key() lists the FIFO's words");
+
+  CyclePrediction out;
+  long long last_progress = 0;
+  for (long long t = 1;; ++t) {
+    // ================= combinational, from the outputs back =================
+    const bool rd_last = rd_busy_q && rd_left == 1;
+    const bool eol_ok = !rd_busy_q || rd_last;
+    const bool sh_valid = phong ? shade.out_valid() : frag_valid_q;
+    const bool sh_eol = phong ? shade.out_eol() : frag_eol_q;
+    const bool sh_ready = !sh_eol || eol_ok;
+    const bool eol_fire = sh_valid && sh_eol && sh_ready;
+    bool fr_ready = sh_ready, en_shade = false, en_norm = false;
+    if (phong) {
+      en_shade = sh_ready || !shade.out_valid();
+      en_norm = en_shade || !norm.out_valid();
+      fr_ready = en_norm;
+    }
+    // stepper and FIFO head
+    const bool head_valid = fifo_count > 0;
+    const Streams::Item& head = st.items[head_valid ? fifo[fifo_head] : 0];
+    const bool out_free = !frag_valid_q || fr_ready;
+    const bool from_head = !step_active && head_valid && !head.eol;
+    const bool emit_frag = out_free && (step_active || from_head);
+    const bool emit_eol = out_free && !step_active && head_valid && head.eol;
+    const bool pop = emit_eol || (emit_frag && from_head);
+    // sc -> FIFO
+    const Streams::Item& sc = st.items[sc_valid ? sc_item : 0];
+    const bool sc_keep = sc.eol || sc.pixels > 0;
+    const bool fifo_ready = fifo_count != InterpFifoDepth;
+    const bool push = sc_valid && sc_keep && fifo_ready;
+    const bool tail_en = !sc_valid || !sc_keep || fifo_ready;
+    // reciprocal, s0, segment former
+    const bool rc_valid = (recip_valid >> (RecipStages - 1)) & 1;
+    const bool en_recip = tail_en || !rc_valid;
+    const bool seg_ready = !s0_valid_q || en_recip;
+    const bool sf_ready = seg_ready || !sf_valid_q;
+    // active-edge list output
+    const bool streaming = frame_q && !drain_q && line_q != 0;
+    const bool have_edge = streaming && rd_q < cnt_stream;
+    const std::size_t g = have_edge ? std::size_t(st.line_begin[line_q - 1] + rd_q) : 0;
+    const bool ae_valid = (have_edge && !out_done_q) || (streaming && !have_edge && !eol_sent_q);
+    const bool ae_fire = ae_valid && sf_ready;
+    const bool inc_fire = have_edge && !inc_done_q;  // the incrementer is always ready
+    const bool advance = have_edge && (out_done_q || ae_fire) && (inc_done_q || inc_fire);
+    // active-edge list input
+    const bool edge_valid = !eof_taken;
+    const bool head_eof = next_record == records;
+    const int y0 = head_eof ? 0 : st.record_y0[next_record];
+    const bool ins_step = inc_valid_q && !inc_retire_q;
+    const bool head_edge = edge_valid && !head_eof;
+    const bool live = frame_q && !drain_q;
+    const bool take_new = live && head_edge && line_q < height && y0 == line_q && !ins_step;
+    const bool drop_late = live && head_edge && y0 < line_q;
+    const bool edge_ready = take_new || drop_late || (drain_q && edge_valid);
+    const bool ins_valid = ins_step || take_new;
+    const bool src_done = line_q == height || (edge_valid && (head_eof || y0 > line_q));
+    const bool swap = live && (line_q == 0 || eol_sent_q) && !inc_valid_q && src_done;
+
+    // ================= registers =================
+    const bool rd_counts = rd_busy_q && !rd_last;
+    const bool step_counts = emit_frag && !from_head;
+    // (Worth a look only when a counter has some way to go.)
+    const bool may_repeat = (rd_counts && rd_left > 8) || (step_counts && step_left > 8);
+    decltype(key()) before;
+    if (may_repeat) before = key();
+    // scanline_buffer reader (pixel_ready_i high: it steps every cycle it is busy)
+    if (rd_busy_q) {
+      if (st.read_emits[std::size_t(rline_q)] || rline_q == height - 1) {  // rd_load
+        if (out.pixels++ == 0) out.first_pixel = t + 1;
+      }
+      if (rd_last) {
+        if (rline_q == height - 1) {
+          out.cycles = t + 2;  // the pixel loaded now is taken next cycle; cycle 0 counts
+          break;
+        }
+        rd_busy_q = false;
+        ++rline_q;
+      } else {
+        --rd_left;
+      }
+    }
+    if (eol_fire) {
+      if (lines_written >= height) throw std::logic_error("cycle model: more line markers than lines");
+      rd_busy_q = true;
+      rd_left = st.read_steps[std::size_t(lines_written++)];
+    }
+    // Phong pipes (each stage's valid shifts on its own enable)
+    if (phong) {
+      const bool nv = norm.out_valid(), ne = norm.out_eol();
+      if (en_norm) norm.shift(frag_valid_q, frag_eol_q);
+      if (en_shade) shade.shift(nv, ne);
+    }
+    // stepper
+    if (out_free) frag_valid_q = emit_frag || emit_eol;
+    if (emit_frag) {
+      frag_eol_q = false;
+      const int left = (from_head ? head.pixels : step_left) - 1;
+      step_left = left;
+      step_active = left > 0;
+    } else if (emit_eol) {
+      frag_eol_q = true;
+    }
+    // FIFO
+    if (pop) {
+      fifo_head = (fifo_head + 1) % InterpFifoDepth;
+      --fifo_count;
+    }
+    if (push) {
+      fifo[(fifo_head + fifo_count) % InterpFifoDepth] = sc_item;
+      ++fifo_count;
+    }
+    // sa -> sb -> sc, reciprocal, s0
+    if (tail_en) {
+      sc_valid = sb_valid;
+      sc_item = sb_item;
+      sb_valid = sa_valid;
+      sb_item = sa_item;
+      sa_valid = rc_valid;
+      if (rc_valid) sa_item = recip_out++;
+    }
+    if (en_recip) recip_valid = ((recip_valid << 1) | std::uint64_t(s0_valid_q)) & recip_mask;
+    if (seg_ready) s0_valid_q = sf_valid_q;
+    // segment former
+    if (sf_ready) {
+      const bool emits = ae_fire && (!have_edge || st.closes[g]);
+      sf_valid_q = emits;
+    }
+    // edge incrementer
+    inc_valid_q = inc_fire;
+    if (inc_fire) inc_retire_q = st.retire[g];
+    // active-edge list
+    if (advance) {
+      ++rd_q;
+      out_done_q = inc_done_q = false;
+    } else {
+      if (ae_fire && have_edge) out_done_q = true;
+      if (inc_fire) inc_done_q = true;
+    }
+    if (ae_fire && !have_edge) eol_sent_q = true;
+    if (edge_valid && edge_ready) {
+      if (head_eof) eof_taken = true;
+      else ++next_record;
+      last_progress = t;
+    }
+    if (ins_valid) ++cnt_fill;
+    if (swap) {
+      if (line_q == height) {
+        drain_q = true;
+      } else {
+        const int want = st.line_begin[std::size_t(line_q) + 1] - st.line_begin[std::size_t(line_q)];
+        if (cnt_fill != want)
+          throw std::logic_error("cycle model: line " + std::to_string(line_q) + " holds " +
+                                 std::to_string(cnt_fill) + " active edges, the twin " + std::to_string(want));
+        cnt_stream = cnt_fill;
+        cnt_fill = 0;
+        ++line_q;
+        rd_q = 0;
+        eol_sent_q = false;
+      }
+    }
+    if (drain_q && edge_valid && head_eof) frame_q = drain_q = false;
+    if (ae_fire || eol_fire || push) last_progress = t;
+    if (may_repeat && key() == before) {
+      long long n = std::numeric_limits<long long>::max();
+      if (rd_counts) n = std::min<long long>(n, rd_left - 1);
+      if (step_counts) n = std::min<long long>(n, step_left - 1);
+      if (n > 0) {
+        t += n;
+        if (rd_counts) {
+          rd_left -= static_cast<int>(n);
+          if (st.read_emits[std::size_t(rline_q)] || rline_q == height - 1) out.pixels += n;
+        }
+        if (step_counts) step_left -= static_cast<int>(n);
+        last_progress = t;
+      }
+    }
+    if (t - last_progress > 10'000'000)
+      throw std::logic_error("cycle model: no progress for 10^7 cycles at cycle " + std::to_string(t));
+  }
+  return out;
+}
+
+}  // namespace watkins

@@ -1,0 +1,46 @@
+// Cycle model of rtl/watkins_top.sv: the cycles a frame takes on the RTL when nothing stalls it
+// (edge beats offered back to back, pixel_ready_i always high), counted as the SystemC bench
+// counts them: from the cycle the frame's first edge beat is offered to the cycle its last pixel
+// is taken, inclusive (testbench/frame_driver.cpp, RtlFrame::cycles()).
+//
+// Not a closed formula: the handshakes between the stages decide the count (a line's edges wait
+// for the segment former, spans queue in the interpolator's FIFO, an end-of-line marker waits at
+// the ping-pong line buffer for the reader), so this is a clocked model of the pipeline's
+// control only — every valid/ready register and counter of active_edge_list, edge_incrementer,
+// segment_former, segment_interpolator (s0, span_reciprocal, sa/sb/sc, stream_fifo, stepper),
+// [Phong: normalizer, phong_shader] and scanline_buffer — driven by the twins' own streams
+// (walk_scan_lines: each line's active edges with their retire flags, the segment former's
+// pairing, each span's pixel range). No channel arithmetic runs per cycle, so it is exact and
+// far faster than Verilator.
+#pragma once
+
+#include "frame.hpp"
+#include "formats.hpp"
+
+namespace watkins {
+
+// The latencies and depths of the RTL the cycle model clocks (rtl/*.sv; a change there must be
+// made here too, and tests/cosim/test_cycle_model.cpp fails until it is).
+namespace rtl_timing {
+constexpr int RecipStages = fmt::RecipBits + 2;  // span_reciprocal: normalize + R+1 quotient bits
+constexpr int InterpFifoDepth = 4;               // segment_interpolator's FifoDepth
+constexpr int NormalizerStages = 8;              // normalizer: squares, rsqrt_unit (5), product, round
+constexpr int ShaderStages = 13;                 // phong_shader: dots, round, cos(s), 8 powers, 2 out
+}  // namespace rtl_timing
+
+enum class PixelOutput { FullFrame, Sparse };  // watkins_top's sparse_i = 0 / 1
+
+struct CyclePrediction {
+  long long cycles = 0;       // first edge beat offered .. last pixel taken, inclusive
+  long long first_pixel = 0;  // cycle (from the first beat offered, = 0) the first pixel is taken
+  long long pixels = 0;       // beats on the pixel stream
+};
+
+// Predicts the frame's cycles on watkins_top with Phong = (frame.shading == Phong), sparse_i as
+// `output`, starting idle (after reset or a finished frame), no input gaps and no output stalls.
+// Throws CapacityError when the frame overflows an active-edge list of `max_active_edges`, and
+// std::invalid_argument for an empty frame size.
+CyclePrediction predict_cycles(const Frame& frame, PixelOutput output,
+                               int max_active_edges = fmt::MaxActiveEdges);
+
+}  // namespace watkins

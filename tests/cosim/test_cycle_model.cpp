@@ -1,0 +1,147 @@
+// The cycle model (model/twins/cycle_model.hpp) against the Verilated top: with no input gaps and
+// no output stalls, the predicted cycles per frame must equal the bench's `rtl cycles` exactly,
+// on every shipped scene and on random scenes, Gouraud and Phong tops, full-frame and sparse.
+#include <gtest/gtest.h>
+
+#include <random>
+#include <string>
+#include <vector>
+
+#include "build_options.hpp"
+#include "cosim_support.hpp"
+#include "cycle_model.hpp"
+#include "prepare.hpp"
+#include "random_scene.hpp"
+#include "rtl_bench.hpp"
+#include "scene.hpp"
+#include "scene_builder.hpp"
+
+using namespace watkins;
+using namespace watkins::tb;
+using namespace watkins::tb::test;
+using namespace watkins::test;
+
+namespace {
+
+// The frame on the RTL at full speed in both output modes; the prediction must equal its cycles.
+// Pixels are not compared here (the other co-simulation tests do that): cycles only.
+void expect_predicted(const std::string& name, const PreparedScene& p) {
+  for (const bool sparse : {false, true}) {
+    RtlOptions o;
+    o.gap = 0;
+    o.stall = 0;
+    o.sparse = sparse;
+    o.compare = false;
+    const RtlResult r = run_rtl(p, o);
+    const std::string what = name + (p.shading == ShadingMode::Phong ? " phong" : " gouraud") +
+                             (sparse ? " sparse" : " full-frame") + " " + std::to_string(p.width) + "x" +
+                             std::to_string(p.height) + ", " + std::to_string(p.edges.size()) + " edge records";
+    ASSERT_TRUE(r.ok()) << what << ": " << r.summary();
+    const CyclePrediction c = predict_cycles(p, sparse ? PixelOutput::Sparse : PixelOutput::FullFrame);
+    EXPECT_EQ(c.cycles, r.cycles) << what;
+    EXPECT_EQ(c.pixels, r.pixels) << what;
+  }
+}
+
+void expect_predicted_shipped(const std::string& name, ShadingMode mode) {
+  if (name == "<none>") GTEST_SKIP() << "no scenes/*.json yet";
+  BuiltScene scene;
+  PreparedScene prepared;
+  try {
+    scene = load_scene(WATKINS_SOURCE_DIR "/scenes/" + name, shading_options(mode));
+    prepared = prepare(scene);
+  } catch (const SceneError& e) {
+    GTEST_SKIP() << "the scene does not load or fit in this mode: " << e.what();
+  }
+  if (prepared.width > rtl_max_width()) GTEST_SKIP() << "wider than the RTL line buffer";
+  expect_predicted(name, prepared);
+}
+
+class CycleModelShipped : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(CycleModelShipped, GouraudEqualsRtl) { expect_predicted_shipped(GetParam(), ShadingMode::Gouraud); }
+TEST_P(CycleModelShipped, PhongEqualsRtl) { expect_predicted_shipped(GetParam(), ShadingMode::Phong); }
+
+INSTANTIATE_TEST_SUITE_P(Scenes, CycleModelShipped, ::testing::ValuesIn(shipped_scenes()), scene_test_name);
+
+class CycleModelRandom : public ::testing::TestWithParam<int> {};
+
+constexpr int ScenesPerBatch = 25;
+
+TEST_P(CycleModelRandom, EqualsRtl) {
+  int ran = 0;
+  for (int k = 0; k < ScenesPerBatch; ++k) {
+    const std::uint64_t seed = 9000 + static_cast<std::uint64_t>(GetParam()) * ScenesPerBatch + k;
+    for (const bool phong : {false, true}) {
+      const BuiltScene scene = phong ? random_phong_scene(seed) : random_scene(seed);
+      PreparedScene prepared;
+      try {
+        prepared = prepare(scene);
+      } catch (const SceneError&) {  // too many active edges for the hardware
+        continue;
+      }
+      expect_predicted(scene.name, prepared);
+      if (HasFailure()) return;  // one report per batch is enough
+      ++ran;
+    }
+  }
+  EXPECT_GE(ran, 2 * ScenesPerBatch * 4 / 5) << "most random scenes fit the hardware";
+}
+
+INSTANTIATE_TEST_SUITE_P(Batches, CycleModelRandom, ::testing::Range(0, 4));  // 4 x 25 x 2 shadings
+
+// Harder timing: many small polygons and bow-ties (lines with many edges and short spans, where the
+// active-edge list and the span setup rather than the pixels set the pace), tall thin and wide flat
+// frames, and jittered meshes (shared edges, equal X on a line).
+TEST(CycleModel, StressScenesEqualRtl) {
+  const int seeds = 60;
+  int ran = 0;
+  for (int k = 0; k < seeds; ++k) {
+    std::mt19937_64 rng(77000 + static_cast<std::uint64_t>(k));
+    RandomSceneSpec spec;
+    switch (k % 4) {
+      case 0: spec.min_polygons = 20, spec.max_polygons = 40, spec.convex_quads = false; break;
+      case 1: spec.min_width = 1, spec.max_width = 12, spec.min_height = 30, spec.max_height = 200; break;
+      case 2: spec.min_width = 100, spec.max_width = 400, spec.min_height = 1, spec.max_height = 12; break;
+      case 3: spec.max_polygons = 30, spec.snap_one_in = 2; break;
+    }
+    std::vector<BuiltScene> scenes{random_scene(rng, spec), mesh_scene(rng, 20 + k, 16 + k % 7, 1 + k % 9, 1 + k % 5)};
+    for (BuiltScene& scene : scenes) {
+      PreparedScene prepared;
+      try {
+        prepared = prepare(scene);
+      } catch (const SceneError&) {  // too many active edges for the hardware
+        continue;
+      }
+      if (prepared.width > rtl_max_width()) continue;
+      expect_predicted(scene.name + " " + std::to_string(k), prepared);
+      if (HasFailure()) return;
+      ++ran;
+    }
+  }
+  EXPECT_GE(ran, seeds);
+}
+
+// Shapes the random scenes rarely draw: an empty frame, a one-line and a one-column frame, a
+// frame whose last line is uncovered, many one-pixel spans back to back (the interpolator's FIFO
+// runs dry and full), a tall frame with long empty stretches.
+TEST(CycleModel, CornerFramesEqualRtl) {
+  expect_predicted("empty", prepare(screen(13, 5, {}, "empty", {1, 2, 3})));
+  expect_predicted("one line", prepare(screen(40, 1, {poly({vtx(2, -3, 0.3, 200, 10, 10), vtx(30, -2, 0.5, 10, 200, 10),
+                                                            vtx(12, 4, 0.7, 10, 10, 200)})}, "one line")));
+  expect_predicted("one column", prepare(screen(1, 30, {poly({vtx(-3, 2, 0.3, 200, 10, 10), vtx(3, 5, 0.5, 10, 200, 10),
+                                                              vtx(0, 25, 0.7, 10, 10, 200)})}, "one column")));
+  expect_predicted("inner triangle",
+                   prepare(screen(30, 20, {poly({vtx(5, 4, 0.3, 200, 10, 10), vtx(25, 6, 0.5, 10, 200, 10),
+                                                 vtx(12, 14, 0.7, 10, 10, 200)})}, "inner triangle")));
+  std::vector<ScreenPolygon> slivers;
+  for (int i = 0; i < 30; ++i) {
+    const double x = 1 + 2 * i;
+    slivers.push_back(poly({vtx(x, 1, 0.5, 10, 20, 30), vtx(x + 1.2, 1, 0.5, 10, 20, 30), vtx(x + 0.6, 40, 0.4, 90, 20, 30)}));
+  }
+  expect_predicted("slivers", prepare(screen(64, 48, slivers, "slivers")));
+  expect_predicted("tall", prepare(screen(8, 400, {poly({vtx(1, 350, 0.3, 1, 2, 3), vtx(7, 352, 0.3, 1, 2, 3),
+                                                         vtx(4, 399, 0.3, 1, 2, 3)})}, "tall")));
+}
+
+}  // namespace

@@ -1,0 +1,89 @@
+// The cycle model (model/twins/cycle_model.hpp) without the RTL: counts worked by hand from the
+// RTL's latencies, and bounds every frame must meet. (tests/cosim/test_cycle_model.cpp holds it
+// equal to Verilator's cycles.)
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "build_options.hpp"
+#include "cycle_model.hpp"
+#include "prepare.hpp"
+#include "scene.hpp"
+#include "scene_builder.hpp"
+#include "twin_error.hpp"
+#include "watkins_top.hpp"
+
+using namespace watkins;
+using namespace watkins::test;
+
+namespace {
+
+PreparedScene with_shading(PreparedScene p, ShadingMode mode) {
+  p.shading = mode;
+  if (mode == ShadingMode::Phong && p.materials.empty()) p.materials.resize(1);
+  return p;
+}
+
+// An empty W x H frame, by hand. The active-edge list: cycle 0 starts the frame, cycle 1 swaps
+// to line 1 (the stream's head is its EOF beat), and from cycle 2 each line is its end-of-line
+// marker (one cycle) and the swap (one): 2 cycles per line. The first marker reaches the line
+// buffer at cycle 35: segment former 3, s0 4, span_reciprocal 5..30, sa/sb/sc 31..33, FIFO 34,
+// the stepper's output register 35. Full-frame: each line's read-out (W cycles) hides the next
+// marker, so the last pixel is read at 35 + H*W and taken one cycle later: H*W + 37 cycles
+// counting cycle 0. Sparse: an empty line is one read step, so the list's 2 cycles per line set
+// the pace: the last line's marker arrives at 35 + 2(H-1), is read one cycle later and taken
+// the next: 2H + 36. The Phong top's 21 stages (normalizer 8, shader 13) delay it all by 21.
+TEST(CycleModel, EmptyFrameByHand) {
+  for (const auto& [w, h] : {std::pair{13, 5}, std::pair{320, 240}, std::pair{1, 1}, std::pair{40, 60}}) {
+    const PreparedScene g = prepare(screen(w, h, {}, "empty"));
+    const PreparedScene p = with_shading(g, ShadingMode::Phong);
+    EXPECT_EQ(predict_cycles(g, PixelOutput::FullFrame).cycles, w * h + 37) << w << "x" << h;
+    EXPECT_EQ(predict_cycles(p, PixelOutput::FullFrame).cycles, w * h + 37 + 21) << w << "x" << h;
+    EXPECT_EQ(predict_cycles(g, PixelOutput::Sparse).cycles, 2 * h + 36) << w << "x" << h;
+    EXPECT_EQ(predict_cycles(p, PixelOutput::Sparse).cycles, 2 * h + 36 + 21) << w << "x" << h;
+    EXPECT_EQ(predict_cycles(g, PixelOutput::FullFrame).pixels, w * h);
+    EXPECT_EQ(predict_cycles(g, PixelOutput::Sparse).pixels, 1);  // the terminating beat
+  }
+}
+
+// Every shipped scene: full-frame output costs at least a pixel per cycle; sparse output at least
+// a cycle per covered pixel and never more than full-frame; as many sparse beats as the model's
+// sparse stream; the full-frame Phong top exactly 21 cycles more (its pipeline only delays the
+// read-out, which sets the pace).
+TEST(CycleModel, ShippedScenesMeetTheBounds) {
+  int checked = 0;
+  for (const auto& e : std::filesystem::directory_iterator(WATKINS_SOURCE_DIR "/scenes")) {
+    if (e.path().extension() != ".json") continue;
+    const std::string name = e.path().filename().string();
+    PreparedScene g;
+    try {
+      g = prepare(load_scene(e.path().string(), shading_options(ShadingMode::Gouraud)));
+    } catch (const SceneError&) {
+      continue;
+    }
+    const Image img = WatkinsTop().render(g);
+    const long long beats = static_cast<long long>(sparse_stream(img).size());
+    const CyclePrediction full = predict_cycles(g, PixelOutput::FullFrame);
+    const CyclePrediction sparse = predict_cycles(g, PixelOutput::Sparse);
+    EXPECT_GE(full.cycles, static_cast<long long>(g.width) * g.height) << name;
+    EXPECT_EQ(full.pixels, static_cast<long long>(g.width) * g.height) << name;
+    EXPECT_EQ(sparse.pixels, beats) << name;
+    EXPECT_GE(sparse.cycles, beats) << name;
+    EXPECT_LE(sparse.cycles, full.cycles) << name;
+    const PreparedScene p = with_shading(g, ShadingMode::Phong);
+    EXPECT_EQ(predict_cycles(p, PixelOutput::FullFrame).cycles, full.cycles + 21) << name;
+    ++checked;
+  }
+  EXPECT_GT(checked, 5);
+}
+
+TEST(CycleModel, OverflowIsACapacityError) {
+  std::vector<ScreenPolygon> many;
+  for (int i = 0; i < 6; ++i) many.push_back(poly({vtx(1 + i, 1), vtx(30 - i, 2), vtx(15, 20)}));
+  const PreparedScene p = prepare(screen(32, 24, many, "stack"), PrepareOptions{64});
+  EXPECT_THROW(predict_cycles(p, PixelOutput::FullFrame, 4), CapacityError);
+  EXPECT_NO_THROW(predict_cycles(p, PixelOutput::FullFrame, 64));
+}
+
+}  // namespace
