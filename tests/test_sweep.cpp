@@ -208,7 +208,9 @@ TEST(SweepCli, TinySweepWritesTheColumnsAndPhongBeatsGouraudOnTheSphere) {
   EXPECT_EQ(g.at("u"), "16");  // the sphere's 32x16 halved
   EXPECT_EQ(g.at("v"), "8");
   EXPECT_EQ(g.at("edge_record_bits"), "466");
-  EXPECT_EQ(g.at("cycles_source"), "none");
+  EXPECT_EQ(g.at("cycles_source"), "predicted-sparse");  // the cycle model, no Verilator
+  EXPECT_EQ(g.at("cycles"), "37062");  // what the RTL takes on this frame (README, --rtl --sparse)
+  EXPECT_EQ(p.at("cycles"), "37083");
   EXPECT_EQ(g.at("error"), "");
   EXPECT_LT(std::stoi(p.at("truth_max")), std::stoi(g.at("truth_max")));  // the highlight
   EXPECT_LT(std::stod(p.at("truth_mean")), std::stod(g.at("truth_mean")));
