@@ -19,8 +19,21 @@ int SceneNeeds::bits_for_value(int channel) const {
                    bits(slope_max[channel])});
 }
 
+namespace {
+int signed_bits(i128 v) {
+  int b = 1;
+  while (!fits_signed(v, b)) ++b;
+  return b;
+}
+}  // namespace
+
 SceneNeeds measure_needs(const Frame& frame, int polygons) {
+  return measure_needs(frame, polygons, Config{}.channels(ShadingMode::Gouraud));
+}
+
+SceneNeeds measure_needs(const Frame& frame, int polygons, const ChannelFormats& formats) {
   SceneNeeds needs;
+  needs.value_bits.fill(1);
   needs.polygons = polygons;
   needs.edges = static_cast<int>(frame.edges.size());
   for (int c = 0; c < fmt::NumChannels; ++c) {
@@ -42,14 +55,24 @@ SceneNeeds measure_needs(const Frame& frame, int polygons) {
 
   // The active-edge list and the widest span, from the pipeline's own front half (an unbounded
   // list, so the need is measured rather than refused here).
-  walk_scan_lines(frame.edges, frame.height, std::numeric_limits<int>::max(), [&](const ScanLine& line) {
+  walk_scan_lines(frame.edges, frame.height, std::numeric_limits<int>::max(), formats, [&](const ScanLine& line) {
     if (line.active.size() > needs.max_active_edges) {
       needs.max_active_edges = line.active.size();
       needs.max_active_line = line.y;
     }
+    for (const ActiveEdge& e : line.active.edges())
+      for (int c = 0; c < fmt::NumChannels; ++c)
+        needs.value_bits[c] = std::max(needs.value_bits[c], signed_bits(e.rec.value[c]));
     for (const Segment& s : line.segments) {
-      const SpanSetup span = SegmentInterpolator::setup(s, frame.width);
-      needs.max_segment_pixels = std::max(needs.max_segment_pixels, span.x_end - span.x_start);
+      const SpanSetup span = SegmentInterpolator::setup(s, frame.width, formats);
+      const int pixels = span.x_end - span.x_start;
+      needs.max_segment_pixels = std::max(needs.max_segment_pixels, pixels);
+      if (pixels <= 0) continue;
+      // Span values step linearly from the first pixel: the ends are the extremes.
+      for (int c = fmt::ChanZ; c < fmt::NumChannels; ++c) {
+        const i128 first = span.value[c], last = first + static_cast<i128>(pixels - 1) * span.step[c];
+        needs.value_bits[c] = std::max({needs.value_bits[c], signed_bits(first), signed_bits(last)});
+      }
     }
   });
   return needs;

@@ -12,7 +12,10 @@ namespace watkins {
 
 class ActiveEdgeList {
  public:
-  explicit ActiveEdgeList(int capacity) : capacity_(capacity) {}
+  // Widths from the configuration, for the RTL half: entries MaxActiveEdges = capacity
+  // (Config::max_active_edges); each entry's channel words ChannelFormats::bits[c].
+  explicit ActiveEdgeList(int capacity, const ChannelFormats& formats = Config{}.channels(ShadingMode::Gouraud))
+      : capacity_(capacity), formats_(formats) {}
 
   // Adds an edge on its first scan line. Returns false (and drops nothing) when full.
   bool insert(const EdgeRecord& rec);
@@ -26,6 +29,7 @@ class ActiveEdgeList {
  private:
   void sort();
   int capacity_;
+  ChannelFormats formats_;
   std::vector<ActiveEdge> edges_;
 };
 
