@@ -60,7 +60,8 @@ QuantizedVertex quantize_vertex(const ScreenVertex& v, ShadingMode shading, cons
                      std::to_string(cfg.x.int_bits) + " holds [" + std::to_string(-lim) + ", " + std::to_string(lim) +
                      ") pixels (raise x.int_bits)");
   }
-  // depth_bits + frac_bits < depth.bits() (Config::check), so the largest depth fits.
+  // The depth may need fewer integer bits than depth_bits + 1 when the scene is near: the edge
+  // and span checks of prepare() decide.
   const int fz = cfg.depth.frac_bits;
   const i64 depth_max = (i64{1} << cfg.depth_bits) - 1;
   q.ch[fmt::ChanZ] = std::min<i64>(quantize(v.depth, cfg.depth_bits + fz), (depth_max << fz) | ((i64{1} << fz) - 1));

@@ -35,24 +35,26 @@ std::string Config::check() const {
   struct Group {
     const char* name;
     const ChannelFormat& f;
-    int min_int, min_frac;
-    const char* why_int;
+    int min_frac;
+    int natural_int;  // signed integer bits of the group's largest quantity, before any scene
   };
-  const Group groups[] = {
-      {"x", x, MinXInt, MinXFrac, "sign and one integer bit"},
-      {"depth", depth, depth_bits + 1, 0, "depth_bits plus the sign"},
-      {"shade", shade, MinShadeInt, 0, "levels 0..255 plus the sign"},
-      {"normal", normal, MinNormalInt, 0, "components in [-1, 1] plus the sign"},
-  };
+  const Group groups[] = {{"x", x, MinXFrac, fmt::VertexIntBits},
+                          {"depth", depth, 0, depth_bits + 1},
+                          {"shade", shade, 0, fmt::ShadeBits + 1},
+                          {"normal", normal, 0, 2}};
   if (std::string e = range("depth_bits", depth_bits, 1, MaxDepthBits); !e.empty()) return e;
   for (const Group& g : groups) {
     const std::string n = g.name;
-    if (g.f.int_bits < g.min_int)
-      return n + ".int_bits: " + std::to_string(g.f.int_bits) + " is below " + std::to_string(g.min_int) + " (" +
-             g.why_int + ")";
+    if (g.f.int_bits < MinIntBits)
+      return n + ".int_bits: " + std::to_string(g.f.int_bits) + " is below " + std::to_string(MinIntBits) +
+             " (the sign bit)";
     if (g.f.frac_bits < g.min_frac)
       return n + ".frac_bits: " + std::to_string(g.f.frac_bits) + " is below " + std::to_string(g.min_frac) +
              (n == "x" ? " (X holds the vertices' 1/16 pixel exactly)" : "");
+    if (g.f.frac_bits + g.natural_int > MaxWordBits)
+      return n + ".frac_bits: " + std::to_string(g.f.frac_bits) + " is above " +
+             std::to_string(MaxWordBits - g.natural_int) + " (the model quantizes in " +
+             std::to_string(MaxWordBits) + "-bit words)";
     if (g.f.bits() > MaxWordBits)
       return n + ": int_bits + frac_bits = " + std::to_string(g.f.bits()) + " exceeds the model's " +
              std::to_string(MaxWordBits) + "-bit words";

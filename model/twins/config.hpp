@@ -60,9 +60,9 @@ struct Config {
   // Limits a configuration must respect (validate() checks them).
   static constexpr int MaxWordBits = 62;      // the model keeps every word in 64 bits, products in 128
   static constexpr int MinXFrac = fmt::SubPixelBits;   // X holds the vertices' 1/16 pixel exactly
-  static constexpr int MinXInt = 2;           // sign + at least one integer bit
-  static constexpr int MinShadeInt = fmt::ShadeBits + 1;  // levels 0..255, signed
-  static constexpr int MinNormalInt = 2;      // components in [-1, 1], signed
+  // Integer bits have no minimum beyond the sign: whether the values fit is the scene's
+  // question, answered by prepare() (vertices, edge values on every line, span values).
+  static constexpr int MinIntBits = 1;
   static constexpr int MaxDepthBits = 32;     // the fragment's depth word
 
   // The slot formats of the edge record for `shading`.
