@@ -6,6 +6,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "signed_bits.hpp"
 
 namespace watkins {
 namespace {
@@ -99,13 +100,6 @@ QuantizedMaterial quantize_material(const PhongMaterial& m) {
 }
 
 namespace {
-
-// Signed bits that hold v.
-int signed_bits(i128 v) {
-  int b = 1;
-  while (!fits_signed(v, b)) ++b;
-  return b;
-}
 
 // make_edge_record, also reporting the signed bits each channel's values need on the edge's
 // first and last scan line, before any wrap (values step linearly: the ends are the extremes).

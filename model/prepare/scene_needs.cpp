@@ -6,6 +6,7 @@
 
 #include "scan_lines.hpp"
 #include "segment_interpolator.hpp"
+#include "signed_bits.hpp"
 
 namespace watkins {
 
@@ -18,14 +19,6 @@ int SceneNeeds::bits_for_value(int channel) const {
   return std::max({bits(value_min[channel]), bits(value_max[channel]), bits(slope_min[channel]),
                    bits(slope_max[channel])});
 }
-
-namespace {
-int signed_bits(i128 v) {
-  int b = 1;
-  while (!fits_signed(v, b)) ++b;
-  return b;
-}
-}  // namespace
 
 SceneNeeds measure_needs(const Frame& frame, int polygons) {
   return measure_needs(frame, polygons, Config{}.channels(ShadingMode::Gouraud));

@@ -2,6 +2,10 @@
 // Edges enter at their first scan line, are stepped by the edge_incrementer after each line and
 // retire after n lines. Order is (X, edge id): ids are unique, so the order is total and the
 // RTL's insertion sort reproduces it exactly.
+//
+// Widths from the configuration (config.hpp), for the RTL half: MaxActiveEdges = max_active_edges;
+// each entry's value and slope words per slot at ChannelFormats::bits[c]; the X comparison of the
+// insertion sort is bits[ChanX] wide; poly clog2(max_polygons), material clog2(max_materials).
 #pragma once
 
 #include <vector>

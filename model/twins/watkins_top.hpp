@@ -4,6 +4,13 @@
 // raster order (every pixel of the screen). Gouraud shading (frame.shading) writes the
 // interpolated shade; Phong shading normalizes the interpolated normal and shades it with the
 // fragment's material, per pixel, before the depth test.
+//
+// From the configuration (config.hpp), for the RTL half: the top's parameters become one per
+// group -- XBits/XFracBits, DepthChanBits/DepthFracBits, AttrBits/AttrFracBits (= the shade
+// group's when Phong = 0, the normal group's when Phong = 1), DepthBits = depth_bits,
+// MaxActiveEdges, MaxWidth, and the id widths clog2(max_polygons), clog2(max_materials); the
+// normalizer and phong_shader keep their package formats (the interpolator converts the normal
+// to FracBits fraction bits, NormalInBits wide, at its fragment output).
 #pragma once
 
 #include <array>
