@@ -253,6 +253,7 @@ static PreparedScene prepare_unnamed(const BuiltScene& scene, const Config& cfg)
   // Edge values wrapped on some scan line would step (and sort) wrong: refuse before the walk.
   check_channel_bits(edge_bits, formats, scene.shading, "edge");
   out.needs = measure_needs(out, out.polygons, formats);
+  for (int c = 0; c < fmt::NumChannels; ++c) out.needs.value_bits[c] = std::max(out.needs.value_bits[c], edge_bits[c]);
   const SceneNeeds& needs = out.needs;
   check_channel_bits(needs.value_bits, formats, scene.shading, "span");
   if (needs.max_active_edges > cfg.max_active_edges)

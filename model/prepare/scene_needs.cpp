@@ -36,6 +36,10 @@ SceneNeeds measure_needs(const Frame& frame, int polygons, const ChannelFormats&
   for (const auto& e : frame.edges) {
     needs.max_edge_lines = std::max(needs.max_edge_lines, e.n);
     for (int c = 0; c < fmt::NumChannels; ++c) {
+      // Edge values step linearly: the first and last scan line are the extremes (exact when
+      // the slope did not wrap; prepare() adds the exact figure from the edge setup).
+      const i128 last = static_cast<i128>(e.value[c]) + static_cast<i128>(e.n - 1) * e.slope[c];
+      needs.value_bits[c] = std::max({needs.value_bits[c], signed_bits(e.value[c]), signed_bits(last)});
       needs.value_min[c] = std::min(needs.value_min[c], e.value[c]);
       needs.value_max[c] = std::max(needs.value_max[c], e.value[c]);
       needs.slope_min[c] = std::min(needs.slope_min[c], e.slope[c]);
@@ -53,9 +57,6 @@ SceneNeeds measure_needs(const Frame& frame, int polygons, const ChannelFormats&
       needs.max_active_edges = line.active.size();
       needs.max_active_line = line.y;
     }
-    for (const ActiveEdge& e : line.active.edges())
-      for (int c = 0; c < fmt::NumChannels; ++c)
-        needs.value_bits[c] = std::max(needs.value_bits[c], signed_bits(e.rec.value[c]));
     for (const Segment& s : line.segments) {
       const SpanSetup span = SegmentInterpolator::setup(s, frame.width, formats);
       const int pixels = span.x_end - span.x_start;
