@@ -4,10 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <dirent.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -86,6 +89,37 @@ TEST(Config, FileErrorsNameTheField) {
   EXPECT_EQ(err(R"({"max_width": "wide"})"), "c.json: max_width: expected an integer, got \"wide\"");
   EXPECT_EQ(err("{"), err("{").substr(0, 0) + err("{"));  // malformed JSON: one message
   EXPECT_NE(err("{").find("c.json: malformed JSON"), std::string::npos);
+}
+
+// `watkins_gen_pkg --config F`: the configuration's parameters for the RTL side; the default
+// configuration gives today's widths (and watkins_pkg itself does not change, test_formats.cpp).
+TEST(Config, GeneratorPrintsTheParametersOfAConfiguration) {
+  char tmpl[] = "/tmp/watkins_cfgpkg_XXXXXX";
+  const int fd = mkstemp(tmpl);
+  ASSERT_GE(fd, 0);
+  const std::string path = tmpl;
+  auto generate = [&](const std::string& text) {
+    FILE* f = std::fopen(path.c_str(), "w");
+    std::fputs(text.c_str(), f);
+    std::fclose(f);
+    std::string out;
+    FILE* p = popen((std::string(WATKINS_GEN_PKG) + " --config " + path + " 2>&1").c_str(), "r");
+    char buf[512];
+    while (p && std::fgets(buf, sizeof buf, p)) out += buf;
+    if (p) pclose(p);
+    return out;
+  };
+  const std::string def = generate("{}");
+  EXPECT_NE(def.find("localparam int XChanBits = 42;"), std::string::npos) << def;
+  EXPECT_NE(def.find("localparam int EdgeRecordBitsGouraud = 466;"), std::string::npos) << def;
+  EXPECT_NE(def.find("localparam int PolyIdBits = 16;"), std::string::npos) << def;
+  const std::string narrow = generate(R"({"shade": {"int_bits": 9, "frac_bits": 8}, "max_materials": 4})");
+  EXPECT_NE(narrow.find("localparam int ShadeChanBits = 17;"), std::string::npos) << narrow;
+  EXPECT_NE(narrow.find("localparam int MaterialIdBits = 2;"), std::string::npos) << narrow;
+  EXPECT_NE(narrow.find("localparam int EdgeRecordBitsGouraud = 314;"), std::string::npos) << narrow;
+  EXPECT_NE(generate(R"({"x": {"frac_bits": 1}})").find("x.frac_bits: 1 is below 4"), std::string::npos);
+  close(fd);
+  std::remove(path.c_str());
 }
 
 // Narrower shade fraction bits F on the Gouraud scenes. X and depth keep their formats, so
