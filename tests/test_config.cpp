@@ -82,6 +82,8 @@ TEST(Config, FileErrorsNameTheField) {
   EXPECT_EQ(err(R"({"x": 3})"), "c.json: x: expected an object, got 3");
   EXPECT_EQ(err(R"({"x": {"frac_bits": 3}})"),
             "c.json: x.frac_bits: 3 is below 4 (X holds the vertices' 1/16 pixel exactly)");
+  EXPECT_EQ(err(R"({"x": {"frac_bits": 24}})"),
+            "c.json: x.frac_bits: 24 is above 23 (the span step shifts by p + RecipBits - x.frac_bits >= 1)");
   EXPECT_EQ(err(R"({"depth": {"int_bits": 0}})"), "c.json: depth.int_bits: 0 is below 1 (the sign bit)");
   EXPECT_EQ(err(R"({"normal": {"int_bits": 40, "frac_bits": 30}})"),
             "c.json: normal: int_bits + frac_bits = 70 exceeds the model's 62-bit words");

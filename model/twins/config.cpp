@@ -51,6 +51,9 @@ std::string Config::check() const {
     if (g.f.frac_bits < g.min_frac)
       return n + ".frac_bits: " + std::to_string(g.f.frac_bits) + " is below " + std::to_string(g.min_frac) +
              (n == "x" ? " (X holds the vertices' 1/16 pixel exactly)" : "");
+    if (n == "x" && g.f.frac_bits > MaxXFrac)
+      return "x.frac_bits: " + std::to_string(g.f.frac_bits) + " is above " + std::to_string(MaxXFrac) +
+             " (the span step shifts by p + RecipBits - x.frac_bits >= 1)";
     if (g.f.frac_bits + g.natural_int > MaxWordBits)
       return n + ".frac_bits: " + std::to_string(g.f.frac_bits) + " is above " +
              std::to_string(MaxWordBits - g.natural_int) + " (the model quantizes in " +

@@ -9,8 +9,9 @@
 // The edge record's channel slots 2..4 carry the shade (Gouraud) or the normal (Phong), so a
 // configuration resolves to five slot formats per shading mode (ChannelFormats).
 //
-// What the RTL takes from it (the RTL half of issue 9; every width below is a parameter there):
-//   slot widths      ChannelFormats::bits[c]  = XBits, DepthChanBits, ShadeChanBits|NormalChanBits
+// What the RTL takes from it (the RTL half of issue 9; every width below is a parameter there,
+// named as `watkins_gen_pkg --config F` prints them in watkins_cfg_pkg):
+//   slot widths      ChannelFormats::bits[c]  = XChanBits, DepthChanBits, ShadeChanBits|NormalChanBits
 //   slot fractions   ChannelFormats::frac[c]  = XFracBits, DepthFracBits, ShadeFracBits|NormalFracBits
 //   depth_bits       DepthBits (fragment depth, scan-line buffer depth word)
 //   max_active_edges MaxActiveEdges; max_width MaxWidth (line buffer);
@@ -60,6 +61,9 @@ struct Config {
   // Limits a configuration must respect (validate() checks them).
   static constexpr int MaxWordBits = 62;      // the model keeps every word in 64 bits, products in 128
   static constexpr int MinXFrac = fmt::SubPixelBits;   // X holds the vertices' 1/16 pixel exactly
+  // The per-pixel step is round_shift(delta * recip, p + RecipBits - x.frac_bits) with p >= 0:
+  // the shift stays a right shift of at least one bit (the RTL adds half of it).
+  static constexpr int MaxXFrac = fmt::RecipBits - 1;
   // Integer bits have no minimum beyond the sign: whether the values fit is the scene's
   // question, answered by prepare() (vertices, edge values on every line, span values).
   static constexpr int MinIntBits = 1;

@@ -6,8 +6,8 @@
 // fragment's material, per pixel, before the depth test.
 //
 // From the configuration (config.hpp), for the RTL half: the top's parameters become one per
-// group -- XBits/XFracBits, DepthChanBits/DepthFracBits, AttrBits/AttrFracBits (= the shade
-// group's when Phong = 0, the normal group's when Phong = 1), DepthBits = depth_bits,
+// group -- XChanBits/XFracBits, DepthChanBits/DepthFracBits, and the attribute slots' width and
+// fraction (ShadeChanBits/ShadeFracBits when Phong = 0, NormalChanBits/NormalFracBits when 1), DepthBits = depth_bits,
 // MaxActiveEdges, MaxWidth, and the id widths clog2(max_polygons), clog2(max_materials); the
 // normalizer and phong_shader keep their package formats (the interpolator converts the normal
 // to FracBits fraction bits, NormalInBits wide, at its fragment output).
