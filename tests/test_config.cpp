@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@
 #include "float_reference.hpp"
 #include "image_io.hpp"
 #include "prepare.hpp"
+#include "random_scene.hpp"
 #include "scene.hpp"
 #include "watkins_top.hpp"
 
@@ -238,7 +240,9 @@ TEST(NarrowConfig, TooNarrowForTheSceneIsRefused) {
   EXPECT_NE(err(c).find("depth.int_bits 20, needs 25"), std::string::npos) << err(c);
   c = Config{};
   c.x.int_bits = 9;  // [-256, 256) pixels
-  EXPECT_NE(err(c).find("does not fit the X channel: x.int_bits = 9 holds [-256, 256) pixels"), std::string::npos)
+  EXPECT_NE(err(c).find("edge values of channel X need 26 signed bits; the configuration's x word is 25 "
+                        "(x.int_bits 9, needs 10)"),
+            std::string::npos)
       << err(c);
   c = Config{};
   c.max_width = 256;
@@ -266,6 +270,47 @@ TEST(NarrowConfig, TooNarrowForTheSceneIsRefused) {
   EXPECT_LT(tight.edge_record_bits(ShadingMode::Gouraud), fmt::EdgeRecordBits);
   // And renders the same image as the default (no value wraps at these widths).
   EXPECT_EQ(render(prepare(sphere, tight), tight).rgb, render(p, Config{}).rgb);
+}
+
+// Random fractions on random scenes (Gouraud and Phong): at the integer bits SceneNeeds reports
+// the scene is accepted and renders exactly as with wide words (nothing wrapped); one bit fewer
+// in any group is refused, naming that group. So the range checks are exact, not just safe.
+TEST(NarrowConfig, ReportedIntegerBitsAreExactlyEnough) {
+  std::mt19937_64 rng(9);
+  for (std::uint64_t seed = 1; seed <= 120; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const bool phong = seed % 2 == 0;
+    const BuiltScene scene = phong ? test::random_phong_scene(seed) : test::random_scene(seed);
+    auto draw = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+    Config wide;
+    wide.max_active_edges = 1024;
+    wide.x.frac_bits = draw(Config::MinXFrac, Config::MaxXFrac);
+    wide.depth.frac_bits = draw(0, 20);
+    wide.shade.frac_bits = draw(0, 20);
+    wide.normal.frac_bits = draw(0, 20);
+    for (ChannelFormat* g : {&wide.x, &wide.depth, &wide.shade, &wide.normal}) g->int_bits = Config::MaxWordBits - g->frac_bits;
+    const PreparedScene pw = prepare(scene, wide);
+    const Image iw = render(pw, wide);
+    Config tight = wide;
+    const ShadingMode mode = scene.shading;
+    ChannelFormat* group_of[fmt::NumChannels] = {&tight.x, &tight.depth, phong ? &tight.normal : &tight.shade,
+                                                 phong ? &tight.normal : &tight.shade,
+                                                 phong ? &tight.normal : &tight.shade};
+    for (ChannelFormat* g : group_of) g->int_bits = 1;
+    for (int c = 0; c < fmt::NumChannels; ++c)
+      group_of[c]->int_bits = std::max(group_of[c]->int_bits, pw.needs.int_bits_needed(c, group_of[c]->frac_bits));
+    const PreparedScene pt = prepare(scene, tight);
+    EXPECT_EQ(render(pt, tight).rgb, iw.rgb);
+    for (int c : {fmt::ChanX, fmt::ChanZ, fmt::ChanR}) {
+      if (group_of[c]->int_bits == 1) continue;
+      Config less = tight;
+      ChannelFormat* g = c == fmt::ChanX ? &less.x : c == fmt::ChanZ ? &less.depth : phong ? &less.normal : &less.shade;
+      --g->int_bits;
+      const std::string e = error_of([&] { prepare(scene, less); });
+      EXPECT_NE(e.find(std::string("the configuration's ") + channel_group_name(c, mode) + " word"), std::string::npos)
+          << e;
+    }
+  }
 }
 
 TEST(NarrowConfig, PhongMaterialsCapacity) {

@@ -54,15 +54,10 @@ QuantizedVertex quantize_vertex(const ScreenVertex& v, ShadingMode shading, cons
   q.y16 = quantize(v.y, fmt::SubPixelBits);
   if (q.x16 >= static_cast<i64>(kVertexLimit) * kSub || q.y16 >= static_cast<i64>(kVertexLimit) * kSub)
     throw SceneError("vertex rounds to the edge of the representable range [-8192, 8192) pixels");
+  // Vertex channels are exact integers here, never held by the hardware: whether the X word (or
+  // any other) is wide enough is decided by the values the pipeline holds, which prepare()
+  // checks on every edge and span (an off-screen vertex may lie outside the X word).
   q.ch[fmt::ChanX] = q.x16 * (i64{1} << (cfg.x.frac_bits - fmt::SubPixelBits));
-  if (!fits_signed(q.ch[fmt::ChanX], cfg.x.bits())) {
-    const long long lim = 1LL << (cfg.x.int_bits - 1);
-    throw SceneError("vertex x " + number_text(v.x) + " does not fit the X channel: x.int_bits = " +
-                     std::to_string(cfg.x.int_bits) + " holds [" + std::to_string(-lim) + ", " + std::to_string(lim) +
-                     ") pixels (raise x.int_bits)");
-  }
-  // The depth may need fewer integer bits than depth_bits + 1 when the scene is near: the edge
-  // and span checks of prepare() decide.
   const int fz = cfg.depth.frac_bits;
   const i64 depth_max = (i64{1} << cfg.depth_bits) - 1;
   q.ch[fmt::ChanZ] = std::min<i64>(quantize(v.depth, cfg.depth_bits + fz), (depth_max << fz) | ((i64{1} << fz) - 1));

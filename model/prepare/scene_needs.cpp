@@ -36,9 +36,11 @@ SceneNeeds measure_needs(const Frame& frame, int polygons, const ChannelFormats&
   for (const auto& e : frame.edges) {
     needs.max_edge_lines = std::max(needs.max_edge_lines, e.n);
     for (int c = 0; c < fmt::NumChannels; ++c) {
-      // Edge values step linearly: the first and last scan line are the extremes (exact when
-      // the slope did not wrap; prepare() adds the exact figure from the edge setup).
-      const i128 last = static_cast<i128>(e.value[c]) + static_cast<i128>(e.n - 1) * e.slope[c];
+      // Edge values step linearly: the first and last scan line are the extremes. The slope may
+      // be wrapped to its word; stepping modulo the word gives the true last value whenever it
+      // fits (prepare() checks that with the exact figures of the edge setup).
+      const i64 last = wrap_signed(static_cast<i128>(e.value[c]) + static_cast<i128>(e.n - 1) * e.slope[c],
+                                   formats.bits[c]);
       needs.value_bits[c] = std::max({needs.value_bits[c], signed_bits(e.value[c]), signed_bits(last)});
       needs.value_min[c] = std::min(needs.value_min[c], e.value[c]);
       needs.value_max[c] = std::max(needs.value_max[c], e.value[c]);
