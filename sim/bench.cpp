@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 
+#include "config_file.hpp"
 #include "cycle_model.hpp"
 #include "float_reference.hpp"
 #include "watkins_top.hpp"
@@ -36,17 +37,21 @@ int main(int argc, char** argv) {
   std::string scene_path;
   double budget = 1.0;
   app.add_option("scene", scene_path, "scene file (default: the embedded default scene)");
+  std::string config_path;
   app.add_option("--seconds", budget, "time budget per measurement")->capture_default_str();
+  app.add_option("--config", config_path, "hardware configuration (docs/config-format.md); default: formats.hpp");
   CLI11_PARSE(app, argc, argv);
   try {
     using namespace watkins;
     const BuiltScene scene = load_scene_or_default(scene_path);
-    const PreparedScene prepared = prepare(scene, PrepareOptions{1 << 20});
-    WatkinsTop pipe(1 << 20);
+    Config cfg = config_path.empty() ? Config{} : load_config(config_path);
+    cfg.max_active_edges = 1 << 20;  // measure speed, not capacity
+    const PreparedScene prepared = prepare(scene, cfg);
+    WatkinsTop pipe(cfg);
     pipe.render(prepared);
     const long long fragments = pipe.stats().fragments;
     const double pixels = double(scene.width) * scene.height;
-    const double t_prep = best_seconds([&] { prepare(scene, PrepareOptions{1 << 20}); }, budget);
+    const double t_prep = best_seconds([&] { prepare(scene, cfg); }, budget);
     const double t_fixed = best_seconds([&] { pipe.render(prepared); }, budget);
     const double t_float = best_seconds([&] { render_float_reference(scene); }, budget);
     std::printf("scene               %s (%dx%d, %zu polygons, %zu edge records, %lld fragments)\n",

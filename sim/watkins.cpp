@@ -1,6 +1,6 @@
 // watkins: the command line of the Watkins pipeline model.
 //   watkins render [SCENE] [--out image.png] [--model fixed|float] [--shading S] [--rule R] [--depth D]
-//                  [--diff d.png] [--cull|--no-cull] [--max-active-edges N]
+//                  [--diff d.png] [--cull|--no-cull] [--max-active-edges N] [--config F]
 //                  [--rtl [--sparse] [--trace out.fst] [--seed N] [--gap P] [--stall P]]
 //   watkins sweep [SCENE ...] [--shadings ...] [--tess ...] [--csv F] [--md F] [--jobs N] [--shard i/N] [--rtl]
 //                  (sim/sweep.cpp)
@@ -13,6 +13,7 @@
 #include <string>
 
 #include "analytic_truth.hpp"
+#include "config_file.hpp"
 #include "cycle_model.hpp"
 #include "float_reference.hpp"
 #include "image_io.hpp"
@@ -66,6 +67,18 @@ void check_rtl_args(const RtlArgs& a, const std::string& model) {
                            "); install Verilator and SystemC (libsystemc-dev) and re-run cmake");
 #endif
   if (model != "fixed") throw std::runtime_error("--rtl compares with the fixed model; drop --model " + model);
+}
+
+// The Verilated RTL is built for the default formats (rtl/watkins_pkg.sv): refuse another
+// configuration rather than compare two different pipelines. The active-edge list capacity is
+// a run-time input of the bench as before.
+void check_rtl_config(const RtlArgs& a, const watkins::Config& cfg) {
+  if (!a.enabled) return;
+  watkins::Config def;
+  def.max_active_edges = cfg.max_active_edges;
+  if (cfg != def)
+    throw std::runtime_error("--rtl: the RTL is built for the default configuration (rtl/watkins_pkg.sv); "
+                             "--config differs from it (an RTL build per configuration is the next step of issue 9)");
 }
 
 // Runs the RTL on the prepared scene, compares with the model image, prints the statistics and
@@ -131,21 +144,29 @@ struct RenderArgs {
   std::string shading, rule, depth, diff, truth, truth_diff;
   bool cull = false, no_cull = false;
   int max_active_edges = watkins::fmt::MaxActiveEdges;
+  bool max_active_edges_given = false;  // --max-active-edges overrides the configuration's
+  std::string config;                   // --config F (docs/config-format.md)
   RtlArgs rtl;  // --rtl and its options
 };
 
-void print_needs(const watkins::SceneNeeds& n, watkins::ShadingMode shading) {
+void print_needs(const watkins::SceneNeeds& n, watkins::ShadingMode shading, const watkins::Config& cfg) {
   using namespace watkins;
   std::printf("needs         active edges %d (scan line %d), widest span %d px, longest edge %d lines\n",
               n.max_active_edges, n.max_active_line, n.max_segment_pixels, n.max_edge_lines);
-  static const char* gouraud[fmt::NumChannels] = {"X", "Z", "R", "G", "B"};
-  static const char* phong[fmt::NumChannels] = {"X", "Z", "Nx", "Ny", "Nz"};
-  const char* const* names = shading == ShadingMode::Phong ? phong : gouraud;
+  const ChannelFormats f = cfg.channels(shading);
   for (int c = 0; c < fmt::NumChannels; ++c)
-    std::printf("  channel %s  value [%lld, %lld]  slope [%lld, %lld]  -> %d of %d bits\n", names[c],
+    std::printf("  channel %s  value [%lld, %lld]  slope [%lld, %lld]  -> %d of %d bits\n", channel_name(c, shading),
                 static_cast<long long>(n.value_min[c]), static_cast<long long>(n.value_max[c]),
                 static_cast<long long>(n.slope_min[c]), static_cast<long long>(n.slope_max[c]),
-                n.bits_for_value(c), fmt::ChannelBits);
+                n.bits_for_value(c), f.bits[c]);
+  // Per group: integer bits (sign included) every value the pipeline holds needs, at the
+  // configuration's fraction bits (slopes may wrap: they step the same values).
+  for (int c = fmt::ChanX; c <= fmt::ChanR; ++c) {
+    int need = 0;
+    for (int k = c; k < (c == fmt::ChanR ? fmt::NumChannels : c + 1); ++k) need = std::max(need, n.value_bits[k]);
+    std::printf("  group %-6s values need %d bits: int %d of %d, frac %d\n", channel_group_name(c, shading), need,
+                need - f.frac[c], f.bits[c] - f.frac[c], f.frac[c]);
+  }
 }
 
 // The error of the algorithm: the double reference (and the fixed-point model) against the exact
@@ -194,10 +215,11 @@ int render(const RenderArgs& a) {
   check_rtl_args(a.rtl, a.model);  // --rtl
 
   const auto t0 = Clock::now();
+  Config cfg = a.config.empty() ? Config{} : load_config(a.config);
+  if (a.max_active_edges_given || a.config.empty()) cfg.max_active_edges = a.max_active_edges;
+  check_rtl_config(a.rtl, cfg);  // --rtl
   const BuiltScene scene = load_scene_or_default(a.scene, opt);
-  PrepareOptions popt;
-  popt.max_active_edges = a.max_active_edges;
-  const PreparedScene prepared = prepare(scene, popt);
+  const PreparedScene prepared = prepare(scene, cfg);
   const double t_prep = seconds_since(t0);
 
   std::printf("scene         %s  %dx%d  shading %s  rule %s  depth %s\n", scene.name.c_str(), scene.width,
@@ -208,8 +230,12 @@ int render(const RenderArgs& a) {
                 scene.eye[2]);
   std::printf("polygons      %zu (culled %d back faces, %d clipped, %d degenerate)\n",
               scene.polygons.size(), scene.culled_backfaces, scene.near_clipped, scene.degenerate);
-  std::printf("edge records  %zu\n", prepared.edges.size());
-  print_needs(prepared.needs, prepared.shading);
+  std::printf("edge records  %zu (%d bits each)\n", prepared.edges.size(), cfg.edge_record_bits(prepared.shading));
+  if (!a.config.empty())
+    std::printf("config        %s: x %d.%d, depth %d.%d (depth_bits %d), shade %d.%d, normal %d.%d\n",
+                a.config.c_str(), cfg.x.int_bits, cfg.x.frac_bits, cfg.depth.int_bits, cfg.depth.frac_bits,
+                cfg.depth_bits, cfg.shade.int_bits, cfg.shade.frac_bits, cfg.normal.int_bits, cfg.normal.frac_bits);
+  print_needs(prepared.needs, prepared.shading, cfg);
 
   const auto t1 = Clock::now();
   FloatReferenceStats fstats;
@@ -219,7 +245,7 @@ int render(const RenderArgs& a) {
   Image result;          // the fixed model's image, or the RTL's with --rtl
   int rtl_status = 0;  // --rtl: 1 when the RTL differs from the model
   if (a.model == "fixed") {
-    WatkinsTop pipe(a.max_active_edges);
+    WatkinsTop pipe(cfg);
     const auto t2 = Clock::now();
     result = pipe.render(prepared);
     const double t_model = seconds_since(t2);
@@ -233,8 +259,8 @@ int render(const RenderArgs& a) {
                 "(over %d pixels showing the same polygon); %d pixels change polygon, %d change coverage\n",
                 e.max_abs, e.mean_abs, e.over_one, e.compared, e.visibility_differs, e.coverage_differs);
     const auto t3 = Clock::now();
-    const CyclePrediction full = predict_cycles(prepared, PixelOutput::FullFrame, a.max_active_edges);
-    const CyclePrediction sparse = predict_cycles(prepared, PixelOutput::Sparse, a.max_active_edges);
+    const CyclePrediction full = predict_cycles(prepared, PixelOutput::FullFrame, cfg.max_active_edges, cfg);
+    const CyclePrediction sparse = predict_cycles(prepared, PixelOutput::Sparse, cfg.max_active_edges, cfg);
     std::printf("predicted     %lld cycles (full-frame), %lld cycles (sparse): the RTL with no gaps or stalls "
                 "(cycle model, %.3f s)\n", full.cycles, sparse.cycles, seconds_since(t3));
     if (a.rtl.enabled)  // --rtl
@@ -285,12 +311,16 @@ int main(int argc, char** argv) {
   r->add_option("--diff", ra.diff, "PNG of |model - double reference| x16 (magenta: coverage differs)");
   r->add_flag("--cull", ra.cull, "cull back faces");
   r->add_flag("--no-cull", ra.no_cull, "keep back faces");
-  r->add_option("--max-active-edges", ra.max_active_edges, "active-edge list capacity")
+  CLI::Option* mae = r->add_option("--max-active-edges", ra.max_active_edges, "active-edge list capacity "
+                                                                              "(overrides the configuration's)")
       ->check(CLI::Range(1, 1 << 16))->capture_default_str();
+  r->add_option("--config", ra.config, "hardware configuration (JSON, docs/config-format.md): the format of each "
+                                       "channel group and the capacities; default: model/twins/formats.hpp");
   add_rtl_options(r, ra.rtl);  // --rtl, --trace, --seed, --gap, --stall
   watkins::sweep::SweepArgs sa;
   auto* s = watkins::sweep::add_sweep_command(app, sa);
   CLI11_PARSE(app, argc, argv);
+  ra.max_active_edges_given = mae->count() > 0;
   try {
     if (*r) return render(ra);
     if (*s) return watkins::sweep::run_sweep(sa);

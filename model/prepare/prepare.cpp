@@ -2,9 +2,11 @@
 #include "prepare.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 
+#include "signed_bits.hpp"
 
 namespace watkins {
 namespace {
@@ -40,7 +42,7 @@ std::string where(int poly, int vertex) {
 
 }  // namespace
 
-QuantizedVertex quantize_vertex(const ScreenVertex& v, ShadingMode shading) {
+QuantizedVertex quantize_vertex(const ScreenVertex& v, ShadingMode shading, const Config& cfg) {
   QuantizedVertex q;
   auto in_range = [](double c) { return std::isfinite(c) && c >= -kVertexLimit && c < kVertexLimit; };
   if (!in_range(v.x) || !in_range(v.y))
@@ -52,17 +54,22 @@ QuantizedVertex quantize_vertex(const ScreenVertex& v, ShadingMode shading) {
   q.y16 = quantize(v.y, fmt::SubPixelBits);
   if (q.x16 >= static_cast<i64>(kVertexLimit) * kSub || q.y16 >= static_cast<i64>(kVertexLimit) * kSub)
     throw SceneError("vertex rounds to the edge of the representable range [-8192, 8192) pixels");
-  q.ch[fmt::ChanX] = q.x16 * (i64{1} << fmt::SubPixelToFrac);
-  q.ch[fmt::ChanZ] = std::min<i64>(quantize(v.depth, fmt::DepthBits + fmt::FracBits),
-                                   (fmt::DepthMax << fmt::FracBits) | ((i64{1} << fmt::FracBits) - 1));
+  // Vertex channels are exact integers here, never held by the hardware: whether the X word (or
+  // any other) is wide enough is decided by the values the pipeline holds, which prepare()
+  // checks on every edge and span (an off-screen vertex may lie outside the X word).
+  q.ch[fmt::ChanX] = q.x16 * (i64{1} << (cfg.x.frac_bits - fmt::SubPixelBits));
+  const int fz = cfg.depth.frac_bits;
+  const i64 depth_max = (i64{1} << cfg.depth_bits) - 1;
+  q.ch[fmt::ChanZ] = std::min<i64>(quantize(v.depth, cfg.depth_bits + fz), (depth_max << fz) | ((i64{1} << fz) - 1));
   if (shading == ShadingMode::Phong) {
-    for (int c = 0; c < 3; ++c) q.ch[fmt::ChanNx + c] = quantize_unit(v.normal[c], fmt::FracBits, "vertex normal");
+    for (int c = 0; c < 3; ++c)
+      q.ch[fmt::ChanNx + c] = quantize_unit(v.normal[c], cfg.normal.frac_bits, "vertex normal");
     return q;
   }
   for (int c = 0; c < fmt::ShadeChannels; ++c) {
     if (!(v.rgb[c] >= 0.0 && v.rgb[c] <= fmt::ShadeMax))
       throw SceneError("vertex shade " + std::to_string(v.rgb[c]) + " is outside [0, 255]");
-    q.ch[fmt::ChanR + c] = quantize(v.rgb[c], fmt::FracBits);
+    q.ch[fmt::ChanR + c] = quantize(v.rgb[c], cfg.shade.frac_bits);
   }
   return q;
 }
@@ -87,8 +94,12 @@ QuantizedMaterial quantize_material(const PhongMaterial& m) {
   return q;
 }
 
-bool make_edge_record(const QuantizedVertex& a, const QuantizedVertex& b, int poly, int height,
-                      EdgeRecord& out) {
+namespace {
+
+// make_edge_record, also reporting the signed bits each channel's values need on the edge's
+// first and last scan line, before any wrap (values step linearly: the ends are the extremes).
+bool edge_setup(const QuantizedVertex& a, const QuantizedVertex& b, int poly, int height,
+                const ChannelFormats& formats, EdgeRecord& out, std::array<int, fmt::NumChannels>* bits) {
   if (a.y16 == b.y16) return false;  // horizontal: its polygon's other edges bound the span
   // Canonical order, top vertex first, so two polygons sharing the edge step identical X.
   const QuantizedVertex& top = a.y16 < b.y16 ? a : b;
@@ -108,22 +119,38 @@ bool make_edge_record(const QuantizedVertex& a, const QuantizedVertex& b, int po
     const i128 delta = static_cast<i128>(bot.ch[c]) - top.ch[c];
     // ΔS = (S2 − S1)/n per scan line (Gouraud), here per unit of y so sub-pixel vertices step
     // exactly; rounded once. The prestep to the first centre is computed exactly, rounded once.
-    out.slope[c] = wrap_signed(round_div(delta * kSub, dy), fmt::ChannelBits);
-    out.value[c] = wrap_signed(top.ch[c] + round_div(delta * (y_centre - top.y16), dy),
-                               fmt::ChannelBits);
+    const i128 slope = round_div(delta * kSub, dy);
+    const i128 first = top.ch[c] + round_div(delta * (y_centre - top.y16), dy);
+    out.slope[c] = wrap_signed(slope, formats.bits[c]);
+    out.value[c] = wrap_signed(first, formats.bits[c]);
+    if (bits) (*bits)[c] = std::max(signed_bits(first), signed_bits(first + (out.n - 1) * slope));
   }
   return true;
 }
 
-static PreparedScene prepare_unnamed(const BuiltScene& scene, const PrepareOptions& opt);
+}  // namespace
+
+bool make_edge_record(const QuantizedVertex& a, const QuantizedVertex& b, int poly, int height,
+                      const ChannelFormats& formats, EdgeRecord& out) {
+  return edge_setup(a, b, poly, height, formats, out, nullptr);
+}
+
+bool make_edge_record(const QuantizedVertex& a, const QuantizedVertex& b, int poly, int height,
+                      EdgeRecord& out) {
+  return make_edge_record(a, b, poly, height, Config{}.channels(ShadingMode::Gouraud), out);
+}
+
+static PreparedScene prepare_unnamed(const BuiltScene& scene, const Config& cfg);
 
 // Phong's frame constants: the materials (at most 2^MaterialIdBits), light and eye in Q2.14.
-static void prepare_phong_constants(const BuiltScene& scene, PreparedScene& out) {
-  const std::size_t max_materials = fmt::MaxMaterials;
+static void prepare_phong_constants(const BuiltScene& scene, const Config& cfg, PreparedScene& out) {
+  const std::size_t max_materials = cfg.max_materials;
   if (scene.materials.size() > max_materials)
     throw SceneError("scene needs " + std::to_string(scene.materials.size()) + " materials; the material id is " +
-                     std::to_string(fmt::MaterialIdBits) + " bits and holds " + std::to_string(max_materials) +
-                     " (merge materials, or raise MaterialIdBits in model/twins/formats.hpp and the RTL to match)");
+                     std::to_string(id_bits(cfg.max_materials)) + " bits and holds " + std::to_string(max_materials) +
+                     (cfg.max_materials == fmt::MaxMaterials
+                          ? " (merge materials, or raise MaterialIdBits in model/twins/formats.hpp and the RTL to match)"
+                          : " (max_materials of the configuration)"));
   for (std::size_t m = 0; m < scene.materials.size(); ++m) {
     try {
       out.materials.push_back(quantize_material(scene.materials[m]));
@@ -136,23 +163,45 @@ static void prepare_phong_constants(const BuiltScene& scene, PreparedScene& out)
 }
 
 PreparedScene prepare(const BuiltScene& scene, const PrepareOptions& opt) {
+  Config cfg;
+  cfg.max_active_edges = opt.max_active_edges;
+  return prepare(scene, cfg);
+}
+
+PreparedScene prepare(const BuiltScene& scene, const Config& cfg) {
+  if (const std::string e = cfg.check(); !e.empty()) throw SceneError("configuration: " + e);
   try {
-    return prepare_unnamed(scene, opt);
+    return prepare_unnamed(scene, cfg);
   } catch (const SceneError& e) {
     throw SceneError(scene.name + ": " + e.what());  // every message names the scene
   }
 }
 
-static PreparedScene prepare_unnamed(const BuiltScene& scene, const PrepareOptions& opt) {
-  if (scene.width < 1 || scene.width > fmt::MaxScreen || scene.height < 1 ||
+// Refuses a frame whose channel values need more bits than their words hold.
+static void check_channel_bits(const std::array<int, fmt::NumChannels>& need, const ChannelFormats& formats,
+                               ShadingMode shading, const char* where) {
+  for (int c = 0; c < fmt::NumChannels; ++c)
+    if (need[c] > formats.bits[c]) {
+      const char* group = channel_group_name(c, shading);
+      throw SceneError(std::string(where) + " values of channel " + channel_name(c, shading) + " need " +
+                       std::to_string(need[c]) + " signed bits; the configuration's " + group + " word is " +
+                       std::to_string(formats.bits[c]) + " (" + group + ".int_bits " +
+                       std::to_string(formats.bits[c] - formats.frac[c]) + ", needs " +
+                       std::to_string(need[c] - formats.frac[c]) + ")");
+    }
+}
+
+static PreparedScene prepare_unnamed(const BuiltScene& scene, const Config& cfg) {
+  if (scene.width < 1 || scene.width > cfg.max_width || scene.height < 1 ||
       scene.height > fmt::MaxScreen)
     throw SceneError("screen " + std::to_string(scene.width) + "x" + std::to_string(scene.height) +
-                     " exceeds the pipeline's limit of " + std::to_string(fmt::MaxScreen) + "x" +
-                     std::to_string(fmt::MaxScreen));
-  const std::size_t max_polys = fmt::MaxPolygons;
+                     " exceeds the pipeline's limit of " + std::to_string(cfg.max_width) + "x" +
+                     std::to_string(fmt::MaxScreen) +
+                     (cfg.max_width == fmt::MaxScreen ? "" : " (max_width of the configuration)"));
+  const std::size_t max_polys = cfg.max_polygons;
   if (scene.polygons.size() > max_polys)
     throw SceneError("scene has " + std::to_string(scene.polygons.size()) +
-                     " polygons; the polygon id is " + std::to_string(fmt::PolyIdBits) +
+                     " polygons; the polygon id is " + std::to_string(id_bits(cfg.max_polygons)) +
                      " bits (at most " + std::to_string(max_polys) + ")");
 
   PreparedScene out;
@@ -164,7 +213,9 @@ static PreparedScene prepare_unnamed(const BuiltScene& scene, const PrepareOptio
   out.polygons = static_cast<int>(scene.polygons.size());
   out.shading = scene.shading;
   const bool phong = scene.shading == ShadingMode::Phong;
-  if (phong) prepare_phong_constants(scene, out);
+  if (phong) prepare_phong_constants(scene, cfg, out);
+  const ChannelFormats formats = cfg.channels(scene.shading);
+  std::array<int, fmt::NumChannels> edge_bits{};  // bits the edge values need, before any wrap
 
   for (std::size_t p = 0; p < scene.polygons.size(); ++p) {
     const auto& poly = scene.polygons[p];
@@ -174,16 +225,18 @@ static PreparedScene prepare_unnamed(const BuiltScene& scene, const PrepareOptio
     std::vector<QuantizedVertex> q;
     for (std::size_t i = 0; i < poly.v.size(); ++i) {
       try {
-        q.push_back(quantize_vertex(poly.v[i], scene.shading));
+        q.push_back(quantize_vertex(poly.v[i], scene.shading, cfg));
       } catch (const SceneError& e) {
         throw SceneError(where(static_cast<int>(p), static_cast<int>(i)) + ": " + e.what());
       }
     }
     for (std::size_t i = 0; i < q.size(); ++i) {
       EdgeRecord e;
-      if (make_edge_record(q[i], q[(i + 1) % q.size()], static_cast<int>(p), scene.height, e)) {
+      std::array<int, fmt::NumChannels> bits{};
+      if (edge_setup(q[i], q[(i + 1) % q.size()], static_cast<int>(p), scene.height, formats, e, &bits)) {
         e.material = phong ? poly.material : 0;
         out.edges.push_back(e);
+        for (int c = 0; c < fmt::NumChannels; ++c) edge_bits[c] = std::max(edge_bits[c], bits[c]);
       }
     }
   }
@@ -192,12 +245,16 @@ static PreparedScene prepare_unnamed(const BuiltScene& scene, const PrepareOptio
                    [](const EdgeRecord& a, const EdgeRecord& b) { return a.y0 < b.y0; });
   for (std::size_t i = 0; i < out.edges.size(); ++i) out.edges[i].id = static_cast<int>(i);
 
-  out.needs = measure_needs(out, out.polygons);
+  // Edge values wrapped on some scan line would step (and sort) wrong: refuse before the walk.
+  check_channel_bits(edge_bits, formats, scene.shading, "edge");
+  out.needs = measure_needs(out, out.polygons, formats);
+  for (int c = 0; c < fmt::NumChannels; ++c) out.needs.value_bits[c] = std::max(out.needs.value_bits[c], edge_bits[c]);
   const SceneNeeds& needs = out.needs;
-  if (needs.max_active_edges > opt.max_active_edges)
+  check_channel_bits(needs.value_bits, formats, scene.shading, "span");
+  if (needs.max_active_edges > cfg.max_active_edges)
     throw SceneError("scene needs " + std::to_string(needs.max_active_edges) +
                      " active edges on scan line " + std::to_string(needs.max_active_line) +
-                     "; the active-edge list holds " + std::to_string(opt.max_active_edges) +
+                     "; the active-edge list holds " + std::to_string(cfg.max_active_edges) +
                      " (raise --max-active-edges, and the RTL's MaxActiveEdges, to match)");
   return out;
 }

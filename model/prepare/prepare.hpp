@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "config.hpp"
 #include "frame.hpp"
 #include "scene.hpp"
 #include "scene_needs.hpp"
@@ -18,6 +19,7 @@ struct QuantizedVertex {
   ChannelVector ch{};    // channel values at the vertex (X = x16 << SubPixelToFrac)
 };
 
+// Shorthand for the default configuration with another active-edge list capacity.
 struct PrepareOptions {
   int max_active_edges = fmt::MaxActiveEdges;  // capacity of the active-edge list
 };
@@ -31,18 +33,29 @@ struct PreparedScene : Frame {
 
 // Channels ChanR.. carry the shade (Gouraud) or the unit normal (Phong, ChanNx..); throws
 // SceneError when a value is out of range.
-QuantizedVertex quantize_vertex(const ScreenVertex& v, ShadingMode shading = ShadingMode::Gouraud);
+// Each channel is rounded to its group's fraction bits in `config` and must fit its word.
+QuantizedVertex quantize_vertex(const ScreenVertex& v, ShadingMode shading = ShadingMode::Gouraud,
+                                const Config& config = Config{});
 // A material in the phong_shader's formats; throws SceneError when a value does not fit.
 QuantizedMaterial quantize_material(const PhongMaterial& m);
 
 // Edge record of the edge from a to b for a screen of `height` lines; false when it crosses no
 // pixel centre on screen (horizontal, between two centres, or above/below the screen).
+// Values and slopes wrap to the channel words of `formats` (a slope wrapped to its word steps the
+// same values; prepare() checks that the values themselves fit).
+bool make_edge_record(const QuantizedVertex& a, const QuantizedVertex& b, int poly, int height,
+                      const ChannelFormats& formats, EdgeRecord& out);
 bool make_edge_record(const QuantizedVertex& a, const QuantizedVertex& b, int poly, int height,
                       EdgeRecord& out);
 
 // Throws SceneError when a capacity limit is exceeded (naming the limit, the need and the line).
 // Gouraud scenes carry material id 0 on every edge (the id is unused there, so any number of
 // materials fits); Phong scenes carry each polygon's material and need at most 2^MaterialIdBits.
+// The frame for the pipeline built for `config` (which must pass Config::check()). Besides the
+// capacities, every channel value the pipeline will hold — vertices, edge values on every scan
+// line, span values on every pixel — must fit its group's word: a configuration too narrow for
+// the scene is refused with a SceneError naming the group and the bits it needs, never wrapped.
+PreparedScene prepare(const BuiltScene& scene, const Config& config);
 PreparedScene prepare(const BuiltScene& scene, const PrepareOptions& opt = {});
 
 }  // namespace watkins

@@ -6,6 +6,7 @@
 
 #include "scan_lines.hpp"
 #include "segment_interpolator.hpp"
+#include "signed_bits.hpp"
 
 namespace watkins {
 
@@ -20,7 +21,12 @@ int SceneNeeds::bits_for_value(int channel) const {
 }
 
 SceneNeeds measure_needs(const Frame& frame, int polygons) {
+  return measure_needs(frame, polygons, Config{}.channels(ShadingMode::Gouraud));
+}
+
+SceneNeeds measure_needs(const Frame& frame, int polygons, const ChannelFormats& formats) {
   SceneNeeds needs;
+  needs.value_bits.fill(1);
   needs.polygons = polygons;
   needs.edges = static_cast<int>(frame.edges.size());
   for (int c = 0; c < fmt::NumChannels; ++c) {
@@ -30,6 +36,12 @@ SceneNeeds measure_needs(const Frame& frame, int polygons) {
   for (const auto& e : frame.edges) {
     needs.max_edge_lines = std::max(needs.max_edge_lines, e.n);
     for (int c = 0; c < fmt::NumChannels; ++c) {
+      // Edge values step linearly: the first and last scan line are the extremes. The slope may
+      // be wrapped to its word; stepping modulo the word gives the true last value whenever it
+      // fits (prepare() checks that with the exact figures of the edge setup).
+      const i64 last = wrap_signed(static_cast<i128>(e.value[c]) + static_cast<i128>(e.n - 1) * e.slope[c],
+                                   formats.bits[c]);
+      needs.value_bits[c] = std::max({needs.value_bits[c], signed_bits(e.value[c]), signed_bits(last)});
       needs.value_min[c] = std::min(needs.value_min[c], e.value[c]);
       needs.value_max[c] = std::max(needs.value_max[c], e.value[c]);
       needs.slope_min[c] = std::min(needs.slope_min[c], e.slope[c]);
@@ -42,14 +54,21 @@ SceneNeeds measure_needs(const Frame& frame, int polygons) {
 
   // The active-edge list and the widest span, from the pipeline's own front half (an unbounded
   // list, so the need is measured rather than refused here).
-  walk_scan_lines(frame.edges, frame.height, std::numeric_limits<int>::max(), [&](const ScanLine& line) {
+  walk_scan_lines(frame.edges, frame.height, std::numeric_limits<int>::max(), formats, [&](const ScanLine& line) {
     if (line.active.size() > needs.max_active_edges) {
       needs.max_active_edges = line.active.size();
       needs.max_active_line = line.y;
     }
     for (const Segment& s : line.segments) {
-      const SpanSetup span = SegmentInterpolator::setup(s, frame.width);
-      needs.max_segment_pixels = std::max(needs.max_segment_pixels, span.x_end - span.x_start);
+      const SpanSetup span = SegmentInterpolator::setup(s, frame.width, formats);
+      const int pixels = span.x_end - span.x_start;
+      needs.max_segment_pixels = std::max(needs.max_segment_pixels, pixels);
+      if (pixels <= 0) continue;
+      // Span values step linearly from the first pixel: the ends are the extremes.
+      for (int c = fmt::ChanZ; c < fmt::NumChannels; ++c) {
+        const i128 first = span.value[c], last = first + static_cast<i128>(pixels - 1) * span.step[c];
+        needs.value_bits[c] = std::max({needs.value_bits[c], signed_bits(first), signed_bits(last)});
+      }
     }
   });
   return needs;

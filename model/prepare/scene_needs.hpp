@@ -4,6 +4,9 @@
 // the value ranges from the edge records.
 #pragma once
 
+#include <array>
+
+#include "config.hpp"
 #include "edge_record.hpp"
 #include "frame.hpp"
 
@@ -19,9 +22,18 @@ struct SceneNeeds {
   ChannelVector value_min{}, value_max{};  // ranges of edge-record channel values
   ChannelVector slope_min{}, slope_max{};  // and of their per-scan-line slopes
   int bits_for_value(int channel) const;   // signed bits the channel's values and slopes need
+  // Signed bits of every value channel c holds in the pipeline: edge values on every scan line
+  // and span values on every pixel (exact, before any wrap). Slopes are not counted: a slope
+  // wrapped to the word steps the same values (addition modulo 2^bits).
+  std::array<int, fmt::NumChannels> value_bits{};
+  // Integer bits (sign included) channel c needs at fraction bits `frac`.
+  int int_bits_needed(int channel, int frac) const { return value_bits[channel] - frac; }
 };
 
 // Measures `frame`, made of `polygons` polygons.
+// Measures `frame`, made of `polygons` polygons, on the pipeline whose channel slots have
+// `formats` (the default configuration's when not given).
+SceneNeeds measure_needs(const Frame& frame, int polygons, const ChannelFormats& formats);
 SceneNeeds measure_needs(const Frame& frame, int polygons);
 
 }  // namespace watkins

@@ -17,7 +17,7 @@ bool ActiveEdgeList::insert(const EdgeRecord& rec) {
 }
 
 void ActiveEdgeList::advance() {
-  for (auto& e : edges_) EdgeIncrementer::step(e);
+  for (auto& e : edges_) EdgeIncrementer::step(e, formats_);
   edges_.erase(std::remove_if(edges_.begin(), edges_.end(),
                               [](const ActiveEdge& e) { return e.remaining <= 0; }),
                edges_.end());

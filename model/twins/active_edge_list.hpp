@@ -2,6 +2,10 @@
 // Edges enter at their first scan line, are stepped by the edge_incrementer after each line and
 // retire after n lines. Order is (X, edge id): ids are unique, so the order is total and the
 // RTL's insertion sort reproduces it exactly.
+//
+// Widths from the configuration (config.hpp), for the RTL half: MaxActiveEdges = max_active_edges;
+// each entry's value and slope words per slot at ChannelFormats::bits[c]; the X comparison of the
+// insertion sort is bits[ChanX] wide; poly clog2(max_polygons), material clog2(max_materials).
 #pragma once
 
 #include <vector>
@@ -12,7 +16,10 @@ namespace watkins {
 
 class ActiveEdgeList {
  public:
-  explicit ActiveEdgeList(int capacity) : capacity_(capacity) {}
+  // Widths from the configuration, for the RTL half: entries MaxActiveEdges = capacity
+  // (Config::max_active_edges); each entry's channel words ChannelFormats::bits[c].
+  explicit ActiveEdgeList(int capacity, const ChannelFormats& formats = Config{}.channels(ShadingMode::Gouraud))
+      : capacity_(capacity), formats_(formats) {}
 
   // Adds an edge on its first scan line. Returns false (and drops nothing) when full.
   bool insert(const EdgeRecord& rec);
@@ -26,6 +33,7 @@ class ActiveEdgeList {
  private:
   void sort();
   int capacity_;
+  ChannelFormats formats_;
   std::vector<ActiveEdge> edges_;
 };
 

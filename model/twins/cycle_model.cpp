@@ -33,21 +33,22 @@ struct Streams {
 
 // The pixels [x_start, x_end) of a segment's span, clipped as SegmentInterpolator::setup() clips
 // them (timing needs neither the reciprocal nor the values, which cost most of setup()).
-std::pair<int, int> span_range(const Segment& seg, int width) {
-  constexpr i64 one = i64{1} << fmt::FracBits, half = one / 2;
-  auto first_centre = [](i64 x) { return static_cast<i64>(floor_shift(x - half + one - 1, fmt::FracBits)); };
+std::pair<int, int> span_range(const Segment& seg, int width, int x_frac_bits) {
+  const i64 one = i64{1} << x_frac_bits, half = one / 2;
+  auto first_centre = [&](i64 x) { return static_cast<i64>(floor_shift(x - half + one - 1, x_frac_bits)); };
   const i64 xs = std::max<i64>(first_centre(seg.e[fmt::ChanX]), 0);
   const i64 xe = std::min<i64>(first_centre(seg.f[fmt::ChanX]), width);
   return {static_cast<int>(xs), static_cast<int>(std::max(xe, xs))};
 }
 
-Streams front_half(const Frame& frame, bool sparse, int capacity) {
+Streams front_half(const Frame& frame, bool sparse, int capacity, const Config& cfg) {
+  const int x_frac_bits = cfg.x.frac_bits;
   Streams s;
   s.line_begin.reserve(std::size_t(frame.height) + 1);
   s.read_steps.reserve(std::size_t(frame.height));
   std::vector<int> open;  // polygons with an unpaired edge on this line
   std::vector<std::pair<int, int>> spans;
-  walk_scan_lines(frame.edges, frame.height, capacity, [&](const ScanLine& sl) {
+  walk_scan_lines(frame.edges, frame.height, capacity, cfg.channels(frame.shading), [&](const ScanLine& sl) {
     s.line_begin.push_back(static_cast<int>(s.retire.size()));
     open.clear();
     for (const ActiveEdge& e : sl.active.edges()) {
@@ -59,7 +60,7 @@ Streams front_half(const Frame& frame, bool sparse, int capacity) {
     }
     spans.clear();
     for (const Segment& seg : sl.segments) {
-      const auto [xs, xe] = span_range(seg, frame.width);
+      const auto [xs, xe] = span_range(seg, frame.width, x_frac_bits);
       s.items.push_back(Streams::Item{false, xe - xs});
       if (xe > xs) spans.emplace_back(xs, xe);
     }
@@ -101,13 +102,14 @@ struct StallPipe {
 
 }  // namespace
 
-CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_active_edges) {
+CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_active_edges,
+                               const Config& cfg) {
   if (frame.width < 1 || frame.height < 1)  // the top asserts a_frame_size: no frame to time
     throw std::invalid_argument("cycle model: frame size " + std::to_string(frame.width) + "x" +
                                 std::to_string(frame.height));
   const bool sparse = output == PixelOutput::Sparse;
   const bool phong = frame.shading == ShadingMode::Phong;
-  const Streams st = front_half(frame, sparse, max_active_edges);
+  const Streams st = front_half(frame, sparse, max_active_edges, cfg);
   const int height = frame.height;
   const std::size_t records = st.record_y0.size();
 

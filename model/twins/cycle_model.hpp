@@ -14,6 +14,7 @@
 // far faster than Verilator.
 #pragma once
 
+#include "config.hpp"
 #include "frame.hpp"
 #include "formats.hpp"
 
@@ -39,8 +40,9 @@ struct CyclePrediction {
 // Predicts the frame's cycles on watkins_top with Phong = (frame.shading == Phong), sparse_i as
 // `output`, starting idle (after reset or a finished frame), no input gaps and no output stalls.
 // Throws CapacityError when the frame overflows an active-edge list of `max_active_edges`, and
-// std::invalid_argument for an empty frame size.
+// std::invalid_argument for an empty frame size. `cfg`: the configuration the frame was prepared
+// for (its channel widths step the edges; its X fraction bits place the spans' pixel centres).
 CyclePrediction predict_cycles(const Frame& frame, PixelOutput output,
-                               int max_active_edges = fmt::MaxActiveEdges);
+                               int max_active_edges = fmt::MaxActiveEdges, const Config& cfg = Config{});
 
 }  // namespace watkins

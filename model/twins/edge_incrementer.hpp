@@ -1,7 +1,13 @@
 // Twin of rtl/edge_incrementer.sv: steps one active edge to the next scan line by adding each
 // channel's slope (Watkins: "for the next scan line it is sufficient to add the slope").
+//
+// Widths from the configuration (config.hpp), for the RTL half:
+//   value_o[c], slope_i[c]   ChannelFormats::bits[c] (slot c's word: X, Z, R|Nx, G|Ny, B|Nz);
+//                            the sum keeps the low bits[c] bits (wrap_signed below)
+//   remaining                LineBits (not configurable)
 #pragma once
 
+#include "config.hpp"
 #include "edge_record.hpp"
 
 namespace watkins {
@@ -12,7 +18,15 @@ struct ActiveEdge {
 };
 
 struct EdgeIncrementer {
-  // One scan line: value += slope in every channel, wrapping like a ChannelBits register.
+  // One scan line: value += slope in every channel, wrapping like a register of the channel's
+  // width. A slope wrapped to the word steps the same values (addition modulo 2^bits), so only
+  // the values must fit; scene preparation checks that they do.
+  static void step(ActiveEdge& e, const ChannelFormats& f) {
+    for (int c = 0; c < fmt::NumChannels; ++c)
+      e.rec.value[c] = wrap_signed(static_cast<i128>(e.rec.value[c]) + e.rec.slope[c], f.bits[c]);
+    --e.remaining;
+  }
+  // The default configuration (today's ChannelBits words).
   static void step(ActiveEdge& e) {
     for (int c = 0; c < fmt::NumChannels; ++c)
       e.rec.value[c] = wrap_signed(static_cast<i128>(e.rec.value[c]) + e.rec.slope[c],

@@ -3,6 +3,11 @@
 // lines, X and Z at the highest point and their slopes — plus the shade S and its slope
 // ΔS = (S2 − S1)/n. We keep a channel vector instead of named fields so the same record carries
 // X, Z and R, G, B (Gouraud) or Nx, Ny, Nz (Phong). rtl/watkins_pkg.sv has the same layout.
+//
+// Widths from the configuration (config.hpp, Config::edge_record_bits): value[c] and slope[c]
+// are ChannelFormats::bits[c] wide in the RTL's edge_t (X, depth, then shade or normal by the
+// top's Phong parameter), poly clog2(max_polygons), material clog2(max_materials); y0 and n
+// LineBits. Here every channel is held in an i64, already wrapped to its slot's width.
 #pragma once
 
 #include <array>

@@ -10,13 +10,11 @@ namespace watkins {
 using i64 = std::int64_t;
 using i128 = __int128;
 
-// floor(v / 2^s) for any sign of v; s in [0, 126].
+// floor(v / 2^s) for any sign of v; s in [0, 126]. Only non-negative numbers are shifted:
+// for v < 0, ~v = -v - 1 >= 0 and floor(v / 2^s) = ~(~v >> s). Cheap for a run-time s too
+// (a division by a run-time power of two would be a library call on 128 bits).
 constexpr i128 floor_shift(i128 v, int s) {
-  if (s == 0) return v;
-  const i128 d = static_cast<i128>(1) << s;
-  i128 q = v / d;
-  if ((v % d) != 0 && v < 0) --q;  // C++ division truncates toward zero; floor instead.
-  return q;
+  return v < 0 ? ~(~v >> s) : v >> s;
 }
 
 // round(v / 2^s), ties toward +infinity: floor((v + 2^(s-1)) / 2^s). Same rule as the RTL's

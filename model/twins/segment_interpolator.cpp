@@ -5,61 +5,90 @@
 namespace watkins {
 namespace {
 
-constexpr i64 kOne = i64{1} << fmt::FracBits;  // one pixel in X channel units
-constexpr i64 kHalf = kOne / 2;
-
-// First pixel whose centre x + 1/2 is at or right of X: ceil(X − 1/2).
-i64 first_centre_at_or_after(i64 x) { return static_cast<i64>(floor_shift(x - kHalf + kOne - 1, fmt::FracBits)); }
+// First pixel whose centre x + 1/2 is at or right of X: ceil(X − 1/2), X with fx fraction bits.
+i64 first_centre_at_or_after(i64 x, int fx) {
+  return static_cast<i64>(floor_shift(x - (i64{1} << (fx - 1)) + (i64{1} << fx) - 1, fx));
+}
 
 }  // namespace
 
-SpanSetup SegmentInterpolator::setup(const Segment& s, int width) {
+SpanSetup SegmentInterpolator::setup(const Segment& s, int width, const ChannelFormats& formats) {
   SpanSetup span;
+  span.formats = formats;
   span.poly = s.poly;
   span.material = s.material;
+  const int fx = formats.x_frac();
   const i64 xe = s.e[fmt::ChanX], xf = s.f[fmt::ChanX];
-  span.x_start = static_cast<int>(std::max<i64>(first_centre_at_or_after(xe), 0));
-  span.x_end = static_cast<int>(std::min<i64>(first_centre_at_or_after(xf), width));
+  span.x_start = static_cast<int>(std::max<i64>(first_centre_at_or_after(xe, fx), 0));
+  span.x_end = static_cast<int>(std::min<i64>(first_centre_at_or_after(xf, fx), width));
   if (span.x_end <= span.x_start) {
     span.x_end = span.x_start;  // empty span: no reciprocal needed
     return span;
   }
   const i64 dx = xf - xe;  // > 0: a pixel centre lies in [X_E, X_F)
   const SpanReciprocal r = SpanReciprocal::of(dx);
-  const i64 offset = (static_cast<i64>(span.x_start) << fmt::FracBits) + kHalf - xe;  // >= 0
+  const i64 offset = static_cast<i64>(span.x_start) * (i64{1} << fx) + (i64{1} << (fx - 1)) - xe;  // >= 0
   // α0 in 2^-AlphaBits units; α0 <= 1 up to the reciprocal's error, so clamp at one.
   const i64 alpha0 = static_cast<i64>(std::min<i128>(
       round_shift(static_cast<i128>(offset) * r.recip, r.p + fmt::RecipBits - fmt::AlphaBits),
       i128{1} << fmt::AlphaBits));
   for (int c = fmt::ChanZ; c < fmt::NumChannels; ++c) {
     const i128 delta = static_cast<i128>(s.f[c]) - s.e[c];
-    // ΔS per pixel = Δ·2^F/dx = Δ·recip·2^-(p+R-F). Saturation only matters when dx < 1 pixel,
+    // ΔS per pixel = Δ·2^Fx/dx = Δ·recip·2^-(p+R-Fx). Saturation only matters when dx < 1 pixel,
     // where the span holds at most one pixel and the step is never used.
-    span.step[c] = saturate_signed(round_shift(delta * r.recip, r.p + fmt::RecipBits - fmt::FracBits),
-                                   fmt::ChannelBits);
-    span.value[c] = wrap_signed(s.e[c] + round_shift(delta * alpha0, fmt::AlphaBits), fmt::ChannelBits);
+    span.step[c] = saturate_signed(round_shift(delta * r.recip, r.p + fmt::RecipBits - fx), formats.bits[c]);
+    span.value[c] = wrap_signed(s.e[c] + round_shift(delta * alpha0, fmt::AlphaBits), formats.bits[c]);
   }
   return span;
 }
 
+// The per-pixel path works in 64 bits: a channel word is at most Config::MaxWordBits (62) bits,
+// so a value plus a step, or plus half an ulp, cannot overflow.
+namespace {
+
+// round(v / 2^s), ties toward +infinity, as round_shift.
+inline i64 round_shift64(i64 v, int s) {
+  if (s == 0) return v;
+  const i64 t = v + (i64{1} << (s - 1));
+  return t < 0 ? ~(~t >> s) : t >> s;
+}
+
+// wrap_signed for words of at most 62 bits.
+inline i64 wrap64(i64 v, int bits) {
+  const i64 m = (i64{1} << bits) - 1;
+  const i64 u = v & m;
+  return (u >> (bits - 1)) ? u - (i64{1} << bits) : u;
+}
+
+inline i64 clamp64(i64 v, i64 lo, i64 hi) { return v < lo ? lo : (v > hi ? hi : v); }
+
+}  // namespace
+
 Fragment SegmentInterpolator::fragment(const SpanSetup& span, int x, const ChannelVector& value) {
+  const ChannelFormats& fm = span.formats;
   Fragment f;
   f.x = x;
   f.poly = span.poly;
   f.material = span.material;
   f.depth = static_cast<std::uint32_t>(
-      clamp_i(round_shift(value[fmt::ChanZ], fmt::FracBits), 0, fmt::DepthMax));
+      clamp64(round_shift64(value[fmt::ChanZ], fm.frac[fmt::ChanZ]), 0, (i64{1} << fm.depth_bits) - 1));
   for (int c = 0; c < fmt::ShadeChannels; ++c)
     f.rgb[c] = static_cast<std::uint8_t>(
-        clamp_i(round_shift(value[fmt::ChanR + c], fmt::FracBits), 0, fmt::ShadeMax));
-  for (int c = 0; c < 3; ++c)
-    f.normal[c] = saturate_signed(value[fmt::ChanNx + c], fmt::NormalInBits);
+        clamp64(round_shift64(value[fmt::ChanR + c], fm.frac[fmt::ChanR + c]), 0, fmt::ShadeMax));
+  constexpr i64 normal_hi = (i64{1} << (fmt::NormalInBits - 1)) - 1;
+  for (int c = 0; c < 3; ++c) {
+    // The normalizer reads FracBits fraction bits whatever the normal's channel format.
+    const int shift = fm.frac[fmt::ChanNx + c] - fmt::FracBits;
+    const i64 v = value[fmt::ChanNx + c];
+    f.normal[c] = shift >= 0 ? clamp64(round_shift64(v, shift), -normal_hi - 1, normal_hi)
+                             : saturate_signed(static_cast<i128>(v) * (i128{1} << -shift), fmt::NormalInBits);
+  }
   return f;
 }
 
 void SegmentInterpolator::step(const SpanSetup& span, ChannelVector& value) {
   for (int c = fmt::ChanZ; c < fmt::NumChannels; ++c)
-    value[c] = wrap_signed(static_cast<i128>(value[c]) + span.step[c], fmt::ChannelBits);
+    value[c] = wrap64(value[c] + span.step[c], span.formats.bits[c]);
 }
 
 }  // namespace watkins

@@ -3,11 +3,31 @@
 // the first pixel centre right of X_E gets its value by direct interpolation with
 // α0 = (x_c − X_E)/(X_F − X_E) (the sub-pixel prestep, which also absorbs clipping at x = 0).
 // Pixels covered: centres x + 1/2 in [X_E, X_F), clipped to [0, width).
+//
+// Widths and shifts from the configuration (config.hpp, ChannelFormats f; slot c = X, Z, R|Nx,
+// G|Ny, B|Nz; Fx = f.frac[ChanX]), for the RTL half:
+//   s0  first_centre(X): half = 2^(Fx-1), floor by >> Fx; pixel index X >> Fx
+//       offset = (x_start << Fx) + 2^(Fx-1) - X_E: width bits[ChanX] + 1
+//       dx = X_F - X_E: DxBits = bits[ChanX] + 1 (span_reciprocal's DxBits)
+//       delta[c] = F[c] - E[c]: bits[c] + 1 per channel (no longer one DeltaBits for all)
+//   sa  offset * recip: (bits[ChanX] + 1) + (RecipBits + 1); delta[c] * recip: bits[c] + RecipBits + 3
+//   sb  alpha0 shift p + RecipBits - AlphaBits (as today);
+//       step[c] = saturate(round_shift(delta[c]*recip, p + RecipBits - Fx), bits[c]) -- the shift
+//       uses X's fraction bits (ΔS per pixel = Δ·2^Fx/dx), the saturation the channel's word
+//   sc  delta[c] * alpha0: bits[c] + AlphaBits + 2
+//   FIFO and stepper value[c], step[c]: bits[c] each (span_t grows from the sum, not 4·CB)
+//   value[c] = wrap(E[c] + round_shift(delta[c]*alpha0, AlphaBits), bits[c]); step adds wrap at bits[c]
+//   fragment depth  clamp(round_shift(Z, f.frac[ChanZ]), 0, 2^f.depth_bits - 1): DepthBits output
+//   fragment rgb    clamp(round_shift(v, f.frac[ChanR+c]), 0, 255)
+//   fragment normal saturate(v scaled from f.frac[ChanNx+c] to FracBits fraction bits, NormalInBits):
+//                   v << (FracBits - fn) when fn < FracBits, round_shift(v, fn - FracBits) when
+//                   larger (the normalizer's input format does not change with the configuration)
 #pragma once
 
 #include <array>
 #include <cstdint>
 
+#include "config.hpp"
 #include "segment_former.hpp"
 #include "span_reciprocal.hpp"
 
@@ -30,10 +50,14 @@ struct SpanSetup {
   int material = 0;
   ChannelVector value{};       // channel values at pixel x_start (X unused)
   ChannelVector step{};        // per-pixel increments (X unused)
+  ChannelFormats formats = Config{}.channels(ShadingMode::Gouraud);  // of the channel slots
 };
 
 struct SegmentInterpolator {
-  static SpanSetup setup(const Segment& s, int width);
+  static SpanSetup setup(const Segment& s, int width, const ChannelFormats& formats);
+  static SpanSetup setup(const Segment& s, int width) {  // the default configuration
+    return setup(s, width, Config{}.channels(ShadingMode::Gouraud));
+  }
   // Fragment at pixel x_start + k of a span whose values have been stepped k times.
   static Fragment fragment(const SpanSetup& span, int x, const ChannelVector& value);
   // One α step: value += step in every interpolated channel.

@@ -48,7 +48,8 @@ Image WatkinsTop::render(const Frame& frame, const PipelineObserver& observe) {
   stats_ = PipelineStats{};
   Image img(frame.width, frame.height);
   ScanlineBuffer line(frame.width, frame.background);
-  walk_scan_lines(frame.edges, frame.height, max_active_edges_, [&](const ScanLine& sl) {
+  const ChannelFormats formats = config_.channels(frame.shading);
+  walk_scan_lines(frame.edges, frame.height, max_active_edges_, formats, [&](const ScanLine& sl) {
     const int y = sl.y;
     stats_.edges += sl.entered;
     stats_.max_active_edges = std::max(stats_.max_active_edges, sl.active.size());
@@ -61,7 +62,7 @@ Image WatkinsTop::render(const Frame& frame, const PipelineObserver& observe) {
     if (observe.segments_end) observe.segments_end(y);
     line.clear();
     for (const auto& s : sl.segments) {
-      const SpanSetup span = SegmentInterpolator::setup(s, frame.width);
+      const SpanSetup span = SegmentInterpolator::setup(s, frame.width, formats);
       ChannelVector v = span.value;
       for (int x = span.x_start; x < span.x_end; ++x) {
         Fragment f = SegmentInterpolator::fragment(span, x, v);

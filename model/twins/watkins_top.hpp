@@ -4,6 +4,13 @@
 // raster order (every pixel of the screen). Gouraud shading (frame.shading) writes the
 // interpolated shade; Phong shading normalizes the interpolated normal and shades it with the
 // fragment's material, per pixel, before the depth test.
+//
+// From the configuration (config.hpp), for the RTL half: the top's parameters become one per
+// group -- XChanBits/XFracBits, DepthChanBits/DepthFracBits, and the attribute slots' width and
+// fraction (ShadeChanBits/ShadeFracBits when Phong = 0, NormalChanBits/NormalFracBits when 1), DepthBits = depth_bits,
+// MaxActiveEdges, MaxWidth, and the id widths clog2(max_polygons), clog2(max_materials); the
+// normalizer and phong_shader keep their package formats (the interpolator converts the normal
+// to FracBits fraction bits, NormalInBits wide, at its fragment output).
 #pragma once
 
 #include <array>
@@ -12,6 +19,7 @@
 #include <vector>
 
 #include "active_edge_list.hpp"
+#include "config.hpp"
 #include "frame.hpp"
 #include "image.hpp"
 #include "scanline_buffer.hpp"
@@ -62,8 +70,14 @@ std::vector<SparseBeat> sparse_stream(const Image& img);
 
 class WatkinsTop {
  public:
+  // The default configuration with an active-edge list of `max_active_edges` entries.
   explicit WatkinsTop(int max_active_edges = fmt::MaxActiveEdges)
       : max_active_edges_(max_active_edges) {}
+  // The pipeline built for `config`: its channel formats (per the frame's shading mode) and its
+  // active-edge list. Capacities other than the list (width, materials, polygons) are checked
+  // by scene preparation, which must be given the same configuration.
+  explicit WatkinsTop(const Config& config)
+      : max_active_edges_(config.max_active_edges), config_(config) {}
   // Renders the frame. Throws CapacityError if the active-edge list would overflow.
   Image render(const Frame& frame, const FragmentObserver& observe = nullptr);
   // The same, reporting every stage stream to `observe`.
@@ -72,6 +86,7 @@ class WatkinsTop {
 
  private:
   int max_active_edges_;
+  Config config_;
   PipelineStats stats_;
 };
 

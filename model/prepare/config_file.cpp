@@ -1,0 +1,110 @@
+#include "config_file.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "scene_error.hpp"
+
+namespace watkins {
+namespace {
+
+using nlohmann::json;
+
+std::string show(const json& j) {
+  std::string s = j.dump();
+  return s.size() > 40 ? s.substr(0, 37) + "..." : s;
+}
+
+class ConfigReader {
+ public:
+  explicit ConfigReader(std::string name) : name_(std::move(name)) {}
+  [[noreturn]] void fail(const std::string& field, const std::string& what) const {
+    throw SceneError(name_ + ": " + (field.empty() ? "" : field + ": ") + what);
+  }
+  void keys(const json& j, const std::string& field, std::initializer_list<const char*> allowed) const {
+    if (!j.is_object()) fail(field, "expected an object, got " + show(j));
+    for (auto it = j.begin(); it != j.end(); ++it) {
+      bool ok = false;
+      for (const char* a : allowed) ok = ok || it.key() == a;
+      if (!ok) fail(field, "unknown key \"" + it.key() + "\"");
+    }
+  }
+  // An integer at j[key] when present (kept otherwise).
+  void integer(const json& j, const std::string& field, const char* key, int& out) const {
+    auto it = j.find(key);
+    if (it == j.end()) return;
+    const std::string f = field.empty() ? key : field + "." + key;
+    if (!it->is_number()) fail(f, "expected an integer, got " + show(*it));
+    const double x = it->get<double>();
+    if (!(std::isfinite(x) && x == std::floor(x) && std::fabs(x) < 1e9)) fail(f, "expected an integer, got " + show(*it));
+    out = static_cast<int>(x);
+  }
+  void group(const json& j, const char* key, ChannelFormat& out) const {
+    auto it = j.find(key);
+    if (it == j.end()) return;
+    keys(*it, key, {"int_bits", "frac_bits"});
+    integer(*it, key, "int_bits", out.int_bits);
+    integer(*it, key, "frac_bits", out.frac_bits);
+  }
+
+ private:
+  std::string name_;
+};
+
+}  // namespace
+
+Config parse_config(const std::string& text, const std::string& name) {
+  json root;
+  try {
+    root = json::parse(text);
+  } catch (const json::exception& e) {
+    throw SceneError(name + ": malformed JSON: " + e.what());
+  }
+  const ConfigReader r(name);
+  r.keys(root, "", {"x", "depth", "shade", "normal", "depth_bits", "max_active_edges", "max_width",
+                    "max_materials", "max_polygons"});
+  Config c;
+  r.group(root, "x", c.x);
+  r.group(root, "depth", c.depth);
+  r.group(root, "shade", c.shade);
+  r.group(root, "normal", c.normal);
+  r.integer(root, "", "depth_bits", c.depth_bits);
+  r.integer(root, "", "max_active_edges", c.max_active_edges);
+  r.integer(root, "", "max_width", c.max_width);
+  r.integer(root, "", "max_materials", c.max_materials);
+  r.integer(root, "", "max_polygons", c.max_polygons);
+  if (const std::string e = c.check(); !e.empty()) throw SceneError(name + ": " + e);
+  return c;
+}
+
+Config load_config(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw SceneError(path + ": cannot open configuration file");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return parse_config(s.str(), path);
+}
+
+std::string config_json(const Config& c) {
+  auto group = [](const ChannelFormat& f) {
+    return "{\"int_bits\": " + std::to_string(f.int_bits) + ", \"frac_bits\": " + std::to_string(f.frac_bits) + "}";
+  };
+  std::ostringstream o;
+  o << "{\n"
+    << "  \"x\": " << group(c.x) << ",\n"
+    << "  \"depth\": " << group(c.depth) << ",\n"
+    << "  \"shade\": " << group(c.shade) << ",\n"
+    << "  \"normal\": " << group(c.normal) << ",\n"
+    << "  \"depth_bits\": " << c.depth_bits << ",\n"
+    << "  \"max_active_edges\": " << c.max_active_edges << ",\n"
+    << "  \"max_width\": " << c.max_width << ",\n"
+    << "  \"max_materials\": " << c.max_materials << ",\n"
+    << "  \"max_polygons\": " << c.max_polygons << "\n"
+    << "}\n";
+  return o.str();
+}
+
+}  // namespace watkins

@@ -1,0 +1,20 @@
+// Configuration files (docs/config-format.md): a JSON object with the format of each channel
+// group and the capacities, every key optional (a missing key keeps the default, which is
+// today's formats.hpp). Bad input is a SceneError of one line naming the file and the field,
+// like scenes: "narrow.json: shade.frac_bits: expected an integer, got 2.5".
+#pragma once
+
+#include <string>
+
+#include "config.hpp"
+
+namespace watkins {
+
+// Parses `text`; `name` prefixes every message. The result passes Config::check().
+Config parse_config(const std::string& text, const std::string& name);
+// Reads and parses the file at `path`.
+Config load_config(const std::string& path);
+// The configuration as a file parse_config reads back (every key written).
+std::string config_json(const Config& config);
+
+}  // namespace watkins

@@ -1,0 +1,72 @@
+#include "config.hpp"
+
+namespace watkins {
+
+const char* channel_name(int c, ShadingMode shading) {
+  static const char* gouraud[fmt::NumChannels] = {"X", "Z", "R", "G", "B"};
+  static const char* phong[fmt::NumChannels] = {"X", "Z", "Nx", "Ny", "Nz"};
+  return (shading == ShadingMode::Phong ? phong : gouraud)[c];
+}
+
+const char* channel_group_name(int c, ShadingMode shading) {
+  if (c == fmt::ChanX) return "x";
+  if (c == fmt::ChanZ) return "depth";
+  return shading == ShadingMode::Phong ? "normal" : "shade";
+}
+
+int id_bits(int n) {
+  int b = 1;
+  while ((1LL << b) < n) ++b;
+  return b;
+}
+
+int Config::edge_record_bits(ShadingMode shading) const {
+  const ChannelFormats f = channels(shading);
+  int words = 0;
+  for (int c = 0; c < fmt::NumChannels; ++c) words += f.bits[c];
+  return 2 * fmt::LineBits + id_bits(max_polygons) + id_bits(max_materials) + 2 * words;
+}
+
+std::string Config::check() const {
+  auto range = [](const std::string& field, int v, int lo, int hi) -> std::string {
+    if (v >= lo && v <= hi) return "";
+    return field + ": " + std::to_string(v) + " is outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  };
+  struct Group {
+    const char* name;
+    const ChannelFormat& f;
+    int min_frac;
+    int natural_int;  // signed integer bits of the group's largest quantity, before any scene
+  };
+  const Group groups[] = {{"x", x, MinXFrac, fmt::VertexIntBits},
+                          {"depth", depth, 0, depth_bits + 1},
+                          {"shade", shade, 0, fmt::ShadeBits + 1},
+                          {"normal", normal, 0, 2}};
+  if (std::string e = range("depth_bits", depth_bits, 1, MaxDepthBits); !e.empty()) return e;
+  for (const Group& g : groups) {
+    const std::string n = g.name;
+    if (g.f.int_bits < MinIntBits)
+      return n + ".int_bits: " + std::to_string(g.f.int_bits) + " is below " + std::to_string(MinIntBits) +
+             " (the sign bit)";
+    if (g.f.frac_bits < g.min_frac)
+      return n + ".frac_bits: " + std::to_string(g.f.frac_bits) + " is below " + std::to_string(g.min_frac) +
+             (n == "x" ? " (X holds the vertices' 1/16 pixel exactly)" : "");
+    if (n == "x" && g.f.frac_bits > MaxXFrac)
+      return "x.frac_bits: " + std::to_string(g.f.frac_bits) + " is above " + std::to_string(MaxXFrac) +
+             " (the span step shifts by p + RecipBits - x.frac_bits >= 1)";
+    if (g.f.frac_bits + g.natural_int > MaxWordBits)
+      return n + ".frac_bits: " + std::to_string(g.f.frac_bits) + " is above " +
+             std::to_string(MaxWordBits - g.natural_int) + " (the model quantizes in " +
+             std::to_string(MaxWordBits) + "-bit words)";
+    if (g.f.bits() > MaxWordBits)
+      return n + ": int_bits + frac_bits = " + std::to_string(g.f.bits()) + " exceeds the model's " +
+             std::to_string(MaxWordBits) + "-bit words";
+  }
+  if (std::string e = range("max_active_edges", max_active_edges, 1, 1 << 30); !e.empty()) return e;
+  if (std::string e = range("max_width", max_width, 1, fmt::MaxScreen); !e.empty()) return e;
+  if (std::string e = range("max_materials", max_materials, 1, fmt::MaxMaterials); !e.empty()) return e;
+  if (std::string e = range("max_polygons", max_polygons, 1, fmt::MaxPolygons); !e.empty()) return e;
+  return "";
+}
+
+}  // namespace watkins

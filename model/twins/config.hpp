@@ -1,0 +1,105 @@
+// A hardware configuration chosen at run time: the fixed-point format of each channel group
+// (X, depth, shade R G B, normal Nx Ny Nz) and the capacities of the pipeline. The twins and
+// scene preparation take their widths from it, so one binary models any configuration; the
+// default is exactly today's compile-time formats (formats.hpp, rtl/watkins_pkg.sv), bit for bit.
+//
+// A channel group's word is signed two's complement, int_bits + frac_bits wide; int_bits
+// counts the sign bit. Values are in the group's own unit scaled by 2^frac_bits: X in pixels,
+// depth in 2^-depth_bits of [0, 1), shade in 8-bit levels, the normal in units of 1.0.
+// The edge record's channel slots 2..4 carry the shade (Gouraud) or the normal (Phong), so a
+// configuration resolves to five slot formats per shading mode (ChannelFormats).
+//
+// What the RTL takes from it (the RTL half of issue 9; every width below is a parameter there,
+// named as `watkins_gen_pkg --config F` prints them in watkins_cfg_pkg):
+//   slot widths      ChannelFormats::bits[c]  = XChanBits, DepthChanBits, ShadeChanBits|NormalChanBits
+//   slot fractions   ChannelFormats::frac[c]  = XFracBits, DepthFracBits, ShadeFracBits|NormalFracBits
+//   depth_bits       DepthBits (fragment depth, scan-line buffer depth word)
+//   max_active_edges MaxActiveEdges; max_width MaxWidth (line buffer);
+//   max_materials    MaterialIdBits = clog2(max_materials); max_polygons PolyIdBits = clog2(max_polygons)
+// Each twin's header lists which of its registers takes which of these.
+#pragma once
+
+#include <array>
+#include <string>
+
+#include "formats.hpp"
+#include "shading_mode.hpp"
+
+namespace watkins {
+
+// One channel group's format: a signed word of int_bits + frac_bits bits.
+struct ChannelFormat {
+  int int_bits = fmt::ChannelBits - fmt::FracBits;  // includes the sign bit
+  int frac_bits = fmt::FracBits;
+  constexpr int bits() const { return int_bits + frac_bits; }
+  constexpr bool operator==(const ChannelFormat& o) const {
+    return int_bits == o.int_bits && frac_bits == o.frac_bits;
+  }
+  constexpr bool operator!=(const ChannelFormat& o) const { return !(*this == o); }
+};
+
+// The five channel slots of the edge record (X, Z, then R G B or Nx Ny Nz) for one shading
+// mode: what the twins read. bits[c] is slot c's register width, frac[c] its fraction bits.
+struct ChannelFormats {
+  std::array<int, fmt::NumChannels> bits{};
+  std::array<int, fmt::NumChannels> frac{};
+  int depth_bits = fmt::DepthBits;  // fragment depth: clamp(round(Z), 0, 2^depth_bits - 1)
+  int x_frac() const { return frac[fmt::ChanX]; }
+};
+
+struct Config {
+  ChannelFormat x;       // X, pixels
+  ChannelFormat depth;   // Z (1/Z or Z), 2^-depth_bits units
+  ChannelFormat shade;   // R, G, B, 8-bit levels (Gouraud)
+  ChannelFormat normal;  // Nx, Ny, Nz, units of 1.0 (Phong)
+  int depth_bits = fmt::DepthBits;               // depth resolution: [0, 1) -> [0, 2^depth_bits)
+  int max_active_edges = fmt::MaxActiveEdges;    // active-edge list entries
+  int max_width = fmt::MaxScreen;                // scan-line buffer pixels (screen width limit)
+  int max_materials = fmt::MaxMaterials;         // Phong material table entries
+  int max_polygons = fmt::MaxPolygons;           // polygons per frame (polygon ids)
+
+  // Limits a configuration must respect (validate() checks them).
+  static constexpr int MaxWordBits = 62;      // the model keeps every word in 64 bits, products in 128
+  static constexpr int MinXFrac = fmt::SubPixelBits;   // X holds the vertices' 1/16 pixel exactly
+  // The per-pixel step is round_shift(delta * recip, p + RecipBits - x.frac_bits) with p >= 0:
+  // the shift stays a right shift of at least one bit (the RTL adds half of it).
+  static constexpr int MaxXFrac = fmt::RecipBits - 1;
+  // Integer bits have no minimum beyond the sign: whether the values fit is the scene's
+  // question, answered by prepare() (vertices, edge values on every line, span values).
+  static constexpr int MinIntBits = 1;
+  static constexpr int MaxDepthBits = 32;     // the fragment's depth word
+
+  // The slot formats of the edge record for `shading`.
+  ChannelFormats channels(ShadingMode shading) const {
+    ChannelFormats f;
+    const ChannelFormat& attr = shading == ShadingMode::Phong ? normal : shade;
+    const ChannelFormat slot[fmt::NumChannels] = {x, depth, attr, attr, attr};
+    for (int c = 0; c < fmt::NumChannels; ++c) {
+      f.bits[c] = slot[c].bits();
+      f.frac[c] = slot[c].frac_bits;
+    }
+    f.depth_bits = depth_bits;
+    return f;
+  }
+  // Bits of one edge record ($bits(edge_t) of the RTL built for this configuration).
+  int edge_record_bits(ShadingMode shading) const;
+  // "" when valid, else the first problem as "field: message" (e.g. "x.frac_bits: ...").
+  std::string check() const;
+
+  bool operator==(const Config& o) const {
+    return x == o.x && depth == o.depth && shade == o.shade && normal == o.normal &&
+           depth_bits == o.depth_bits && max_active_edges == o.max_active_edges &&
+           max_width == o.max_width && max_materials == o.max_materials && max_polygons == o.max_polygons;
+  }
+  bool operator!=(const Config& o) const { return !(*this == o); }
+};
+
+// Names of channel slot c for messages: X, Z, R, G, B or X, Z, Nx, Ny, Nz; and of its group
+// (the configuration's field): x, depth, shade or normal.
+const char* channel_name(int c, ShadingMode shading);
+const char* channel_group_name(int c, ShadingMode shading);
+
+// ceil(log2(n)) for n >= 1: the id width that numbers n things (at least 1 bit).
+int id_bits(int n);
+
+}  // namespace watkins

@@ -1,0 +1,92 @@
+// `watkins render --config F`: a narrower configuration renders and says so; a bad file or a
+// configuration too narrow for the scene is one clear line, exit code 1, no image.
+#include <gtest/gtest.h>
+
+#include <sys/stat.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+namespace {
+
+struct CliRun {
+  int exit_code;
+  std::string output;  // stdout and stderr
+};
+
+CliRun run(const std::string& args) {
+  const std::string cmd = std::string(WATKINS_CLI) + " " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  std::string out;
+  std::array<char, 4096> buf;
+  while (p && fgets(buf.data(), buf.size(), p)) out += buf.data();
+  const int status = p ? pclose(p) : -1;
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+class CliConfig : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    char tmpl[] = "/tmp/watkins_cfg_XXXXXX";
+    ASSERT_NE(mkdtemp(tmpl), nullptr);
+    dir_ = tmpl;
+  }
+  void TearDown() override { std::system(("rm -rf " + dir_).c_str()); }
+  std::string write(const std::string& name, const std::string& text) {
+    const std::string path = dir_ + "/" + name;
+    std::ofstream(path) << text;
+    return path;
+  }
+  bool exists(const std::string& path) {
+    struct stat st;
+    return stat(path.c_str(), &st) == 0;
+  }
+  std::string dir_;
+};
+
+TEST_F(CliConfig, NarrowConfigurationRenders) {
+  const std::string cfg = write("narrow.json", R"({"x": {"int_bits": 11, "frac_bits": 8}, "shade": {"int_bits": 9, "frac_bits": 8}})");
+  const std::string png = dir_ + "/out.png";
+  const CliRun r = run("render " WATKINS_SOURCE_DIR "/scenes/sphere.json --config " + cfg + " --out " + png);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("config        " + cfg + ": x 11.8"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("edge records  590 (270 bits each)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("group shade  values need 17 bits: int 9 of 9, frac 8"), std::string::npos) << r.output;
+  EXPECT_TRUE(exists(png));
+}
+
+TEST_F(CliConfig, BadFileIsOneLineNamingTheField) {
+  const std::string cfg = write("bad.json", R"({"shade": {"frac_bits": 2.5}})");
+  const std::string png = dir_ + "/out.png";
+  const CliRun r = run("render --config " + cfg + " --out " + png);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.output, "watkins: error: " + cfg + ": shade.frac_bits: expected an integer, got 2.5\n");
+  EXPECT_FALSE(exists(png));
+}
+
+TEST_F(CliConfig, TooNarrowForTheSceneIsRefused) {
+  const std::string cfg = write("narrow.json", R"({"depth": {"int_bits": 20}})");
+  const std::string png = dir_ + "/out.png";
+  const CliRun r = run("render " WATKINS_SOURCE_DIR "/scenes/sphere.json --config " + cfg + " --out " + png);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find("edge values of channel Z need 41 signed bits; the configuration's depth word is 36 "
+                          "(depth.int_bits 20, needs 25)"),
+            std::string::npos)
+      << r.output;
+  EXPECT_FALSE(exists(png));
+}
+
+TEST_F(CliConfig, RtlRefusesAnotherConfiguration) {
+  const std::string cfg = write("narrow.json", R"({"shade": {"frac_bits": 8}})");
+  const CliRun r = run("render --rtl --config " + cfg + " --out " + dir_ + "/out.png");
+  EXPECT_EQ(r.exit_code, 1);
+  // Either this build has no RTL, or the RTL is built for the default configuration only.
+  EXPECT_TRUE(r.output.find("--rtl: the RTL is built for the default configuration") != std::string::npos ||
+              r.output.find("--rtl: this build has no RTL simulation") != std::string::npos)
+      << r.output;
+}
+
+}  // namespace

@@ -1,0 +1,337 @@
+// Run-time configurations (model/twins/config.hpp, docs/config-format.md): the default is today's
+// formats.hpp exactly; configuration files are validated field by field; narrower shade formats
+// cost the error derived below and no more; a configuration too narrow for a scene is refused.
+#include <gtest/gtest.h>
+
+#include <dirent.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "config_file.hpp"
+#include "float_reference.hpp"
+#include "image_io.hpp"
+#include "prepare.hpp"
+#include "random_scene.hpp"
+#include "scene.hpp"
+#include "watkins_top.hpp"
+
+namespace {
+
+using namespace watkins;
+
+std::string error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::vector<std::string> shipped_scenes() {
+  std::vector<std::string> out;
+  const std::string dir = WATKINS_SOURCE_DIR "/scenes";
+  if (DIR* d = opendir(dir.c_str())) {
+    while (dirent* e = readdir(d)) {
+      const std::string n = e->d_name;
+      if (n.size() > 5 && n.substr(n.size() - 5) == ".json") out.push_back(dir + "/" + n);
+    }
+    closedir(d);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+Image render(const PreparedScene& p, const Config& cfg) { return WatkinsTop(cfg).render(p); }
+
+TEST(Config, DefaultIsTodaysFormats) {
+  const Config c;
+  EXPECT_EQ(c.check(), "");
+  for (ShadingMode m : {ShadingMode::Gouraud, ShadingMode::Phong}) {
+    EXPECT_EQ(c.edge_record_bits(m), fmt::EdgeRecordBits);
+    const ChannelFormats f = c.channels(m);
+    for (int ch = 0; ch < fmt::NumChannels; ++ch) {
+      EXPECT_EQ(f.bits[ch], fmt::ChannelBits);
+      EXPECT_EQ(f.frac[ch], fmt::FracBits);
+    }
+    EXPECT_EQ(f.depth_bits, fmt::DepthBits);
+  }
+  EXPECT_EQ(id_bits(c.max_polygons), fmt::PolyIdBits);
+  EXPECT_EQ(id_bits(c.max_materials), fmt::MaterialIdBits);
+  EXPECT_EQ(c.max_active_edges, fmt::MaxActiveEdges);
+  // An empty file is the default; a written file reads back.
+  EXPECT_TRUE(parse_config("{}", "c.json") == c);
+  Config n;
+  n.shade = {9, 6};
+  n.x = {12, 8};
+  n.max_width = 640;
+  EXPECT_TRUE(parse_config(config_json(n), "c.json") == n);
+}
+
+TEST(Config, FileErrorsNameTheField) {
+  auto err = [](const std::string& text) { return error_of([&] { parse_config(text, "c.json"); }); };
+  EXPECT_EQ(err(R"({"shade": {"frac_bits": 2.5}})"), "c.json: shade.frac_bits: expected an integer, got 2.5");
+  EXPECT_EQ(err(R"({"shade": {"fracbits": 2}})"), "c.json: shade: unknown key \"fracbits\"");
+  EXPECT_EQ(err(R"({"colour": {}})"), "c.json: unknown key \"colour\"");
+  EXPECT_EQ(err(R"({"x": 3})"), "c.json: x: expected an object, got 3");
+  EXPECT_EQ(err(R"({"x": {"frac_bits": 3}})"),
+            "c.json: x.frac_bits: 3 is below 4 (X holds the vertices' 1/16 pixel exactly)");
+  EXPECT_EQ(err(R"({"x": {"frac_bits": 24}})"),
+            "c.json: x.frac_bits: 24 is above 23 (the span step shifts by p + RecipBits - x.frac_bits >= 1)");
+  EXPECT_EQ(err(R"({"depth": {"int_bits": 0}})"), "c.json: depth.int_bits: 0 is below 1 (the sign bit)");
+  EXPECT_EQ(err(R"({"normal": {"int_bits": 40, "frac_bits": 30}})"),
+            "c.json: normal: int_bits + frac_bits = 70 exceeds the model's 62-bit words");
+  EXPECT_EQ(err(R"({"max_materials": 17})"), "c.json: max_materials: 17 is outside [1, 16]");
+  EXPECT_EQ(err(R"({"max_width": "wide"})"), "c.json: max_width: expected an integer, got \"wide\"");
+  EXPECT_EQ(err("{"), err("{").substr(0, 0) + err("{"));  // malformed JSON: one message
+  EXPECT_NE(err("{").find("c.json: malformed JSON"), std::string::npos);
+}
+
+// `watkins_gen_pkg --config F`: the configuration's parameters for the RTL side; the default
+// configuration gives today's widths (and watkins_pkg itself does not change, test_formats.cpp).
+TEST(Config, GeneratorPrintsTheParametersOfAConfiguration) {
+  char tmpl[] = "/tmp/watkins_cfgpkg_XXXXXX";
+  const int fd = mkstemp(tmpl);
+  ASSERT_GE(fd, 0);
+  const std::string path = tmpl;
+  auto generate = [&](const std::string& text) {
+    FILE* f = std::fopen(path.c_str(), "w");
+    std::fputs(text.c_str(), f);
+    std::fclose(f);
+    std::string out;
+    FILE* p = popen((std::string(WATKINS_GEN_PKG) + " --config " + path + " 2>&1").c_str(), "r");
+    char buf[512];
+    while (p && std::fgets(buf, sizeof buf, p)) out += buf;
+    if (p) pclose(p);
+    return out;
+  };
+  const std::string def = generate("{}");
+  EXPECT_NE(def.find("localparam int XChanBits = 42;"), std::string::npos) << def;
+  EXPECT_NE(def.find("localparam int EdgeRecordBitsGouraud = 466;"), std::string::npos) << def;
+  EXPECT_NE(def.find("localparam int PolyIdBits = 16;"), std::string::npos) << def;
+  const std::string narrow = generate(R"({"shade": {"int_bits": 9, "frac_bits": 8}, "max_materials": 4})");
+  EXPECT_NE(narrow.find("localparam int ShadeChanBits = 17;"), std::string::npos) << narrow;
+  EXPECT_NE(narrow.find("localparam int MaterialIdBits = 2;"), std::string::npos) << narrow;
+  EXPECT_NE(narrow.find("localparam int EdgeRecordBitsGouraud = 314;"), std::string::npos) << narrow;
+  EXPECT_NE(generate(R"({"x": {"frac_bits": 1}})").find("x.frac_bits: 1 is below 4"), std::string::npos);
+  close(fd);
+  std::remove(path.c_str());
+}
+
+// Narrower shade fraction bits F on the Gouraud scenes. X and depth keep their formats, so
+// coverage, spans, α0 and visibility are identical; only the shade values move. Against the
+// exact interpolation v* of the exact vertex shades over the same spans, with q = 2^-(F+1):
+//   vertex quantization ≤ q, edge prestep ≤ q, slope drift ≤ (L-1) q over L lines,
+//   value at the span start: interpolated edge error + rounding q + α0/reciprocal error,
+//   per-pixel step drift ≤ (W-1) q over W pixels, reciprocal error ≤ 255·2^-23 over a span,
+// so |v - v*| ≤ (L + W + 1) q + 2^-13 levels, L the longest edge and W the widest span.
+// Two configurations differ by at most the sum of their bounds before rounding to levels,
+// e = (L + W + 1)(q_F + q_16) + 2^-12, and by at most ceil(e) levels after rounding and clamping.
+// So every pixel's error against the double reference grows by at most ceil(e) over the default.
+TEST(NarrowConfig, ShadeErrorGrowsWithinTheDerivedBound) {
+  int gouraud_scenes = 0;
+  for (const std::string& path : shipped_scenes()) {
+    SCOPED_TRACE(path);
+    const BuiltScene scene = load_scene(path);
+    if (scene.shading != ShadingMode::Gouraud) continue;
+    ++gouraud_scenes;
+    const Config wide;
+    const PreparedScene pw = prepare(scene, wide);
+    const Image iw = render(pw, wide);
+    const Image ref = render_float_reference(scene);
+    const ImageError ew = compare_images(iw, ref);
+    const int L = pw.needs.max_edge_lines, W = pw.needs.max_segment_pixels;
+    double previous_mean = ew.mean_abs;
+    for (int f : {12, 8, 5, 3, 1}) {
+      SCOPED_TRACE("shade.frac_bits " + std::to_string(f));
+      Config narrow;
+      narrow.shade.frac_bits = f;
+      const PreparedScene pn = prepare(scene, narrow);
+      const Image in = render(pn, narrow);
+      ASSERT_EQ(in.covered, iw.covered);
+      ASSERT_EQ(in.owner, iw.owner);
+      const double e = (L + W + 1) * (std::ldexp(1.0, -(f + 1)) + std::ldexp(1.0, -(fmt::FracBits + 1))) +
+                       std::ldexp(1.0, -12);
+      const int bound = static_cast<int>(std::ceil(e));
+      int worst = 0, worst_vs_ref_growth = 0;
+      for (std::size_t i = 0; i < in.rgb.size(); ++i) {
+        worst = std::max(worst, std::abs(int(in.rgb[i]) - int(iw.rgb[i])));
+        worst_vs_ref_growth = std::max(
+            worst_vs_ref_growth, std::abs(int(in.rgb[i]) - int(ref.rgb[i])) - std::abs(int(iw.rgb[i]) - int(ref.rgb[i])));
+      }
+      EXPECT_LE(worst, bound) << "L " << L << " W " << W << " e " << e;
+      EXPECT_LE(worst_vs_ref_growth, bound);
+      const ImageError en = compare_images(in, ref);
+      EXPECT_LE(en.max_abs, ew.max_abs + bound);
+      // The mean error against the double reference grows as the fraction shrinks (up to noise
+      // of a thousandth of a level where the extra error is far below a level).
+      EXPECT_GE(en.mean_abs, previous_mean - 1e-3);
+      if (f <= 3) EXPECT_GT(en.mean_abs, ew.mean_abs);
+      previous_mean = en.mean_abs;
+    }
+  }
+  EXPECT_GE(gouraud_scenes, 5);
+}
+
+// Narrower normal fraction bits on every shipped scene shaded with Phong's pipeline: the normals
+// move, coverage and visibility do not, and the error against the double reference grows (the
+// specular power amplifies a normal's error, so no small bound holds here: measured, not derived).
+TEST(NarrowConfig, NormalErrorGrowsUnderPhong) {
+  for (const std::string& path : shipped_scenes()) {
+    SCOPED_TRACE(path);
+    BuildOptions opt;
+    opt.shading = ShadingMode::Phong;
+    const BuiltScene scene = load_scene(path, opt);
+    const Image ref = render_float_reference(scene);
+    const Image iw = render(prepare(scene, Config{}), Config{});
+    double previous = compare_images(iw, ref).mean_abs;
+    const double wide = previous;
+    // From 16 to 12 bits the extra error is far below the existing one and the mean may move
+    // either way by a hundredth of a level (hypar); from 8 bits down it grows every time.
+    for (int f : {8, 6, 4}) {
+      Config c;
+      c.normal.frac_bits = f;
+      const Image in = render(prepare(scene, c), c);
+      ASSERT_EQ(in.covered, iw.covered);
+      ASSERT_EQ(in.owner, iw.owner);
+      const double mean = compare_images(in, ref).mean_abs;
+      EXPECT_GE(mean, previous - 1e-3) << "normal.frac_bits " << f;
+      previous = mean;
+    }
+    EXPECT_GT(previous, wide);
+  }
+}
+
+// A Phong frame does not read the shade group, and a Gouraud frame not the normal group.
+TEST(NarrowConfig, UnusedGroupChangesNothing) {
+  for (const std::string& path : shipped_scenes()) {
+    SCOPED_TRACE(path);
+    const BuiltScene scene = load_scene(path);
+    Config c;
+    if (scene.shading == ShadingMode::Phong) c.shade = {1, 0};
+    else c.normal = {1, 0};
+    const Image a = render(prepare(scene, Config{}), Config{});
+    const Image b = render(prepare(scene, c), c);
+    EXPECT_EQ(a.rgb, b.rgb);
+    EXPECT_EQ(a.covered, b.covered);
+  }
+}
+
+TEST(NarrowConfig, TooNarrowForTheSceneIsRefused) {
+  const BuiltScene sphere = load_scene(WATKINS_SOURCE_DIR "/scenes/sphere.json");  // 320x240, X up to ~270 px
+  auto err = [&](const Config& c) { return error_of([&] { prepare(sphere, c); }); };
+  Config c;
+  c.shade.int_bits = 8;  // levels up to 255 need 9 signed integer bits
+  EXPECT_NE(err(c).find("edge values of channel R need 25 signed bits; the configuration's shade word is 24 "
+                        "(shade.int_bits 8, needs 9)"),
+            std::string::npos)
+      << err(c);
+  c = Config{};
+  c.depth.int_bits = 20;
+  EXPECT_NE(err(c).find("values of channel Z need"), std::string::npos) << err(c);
+  EXPECT_NE(err(c).find("depth.int_bits 20, needs 25"), std::string::npos) << err(c);
+  c = Config{};
+  c.x.int_bits = 9;  // [-256, 256) pixels
+  EXPECT_NE(err(c).find("edge values of channel X need 26 signed bits; the configuration's x word is 25 "
+                        "(x.int_bits 9, needs 10)"),
+            std::string::npos)
+      << err(c);
+  c = Config{};
+  c.max_width = 256;
+  EXPECT_NE(err(c).find("screen 320x240 exceeds the pipeline's limit of 256x4096 (max_width of the configuration)"),
+            std::string::npos)
+      << err(c);
+  c = Config{};
+  c.max_polygons = 100;
+  EXPECT_NE(err(c).find("polygons; the polygon id is 7 bits (at most 100)"), std::string::npos) << err(c);
+  c = Config{};
+  c.max_active_edges = 8;
+  EXPECT_NE(err(c).find("active edges on scan line"), std::string::npos) << err(c);
+  c = Config{};
+  c.shade.frac_bits = 70;
+  EXPECT_EQ(err(c), "configuration: shade.frac_bits: 70 is above 53 (the model quantizes in 62-bit words)");
+  // Exactly wide enough passes: the integer bits the scene reports it needs.
+  const PreparedScene p = prepare(sphere, Config{});
+  Config tight;
+  tight.shade.int_bits = p.needs.int_bits_needed(fmt::ChanR, fmt::FracBits);
+  tight.x.int_bits = p.needs.int_bits_needed(fmt::ChanX, fmt::FracBits);
+  tight.depth.int_bits = p.needs.int_bits_needed(fmt::ChanZ, fmt::FracBits);
+  for (int ch = fmt::ChanR; ch < fmt::NumChannels; ++ch)
+    tight.shade.int_bits = std::max(tight.shade.int_bits, p.needs.int_bits_needed(ch, fmt::FracBits));
+  EXPECT_EQ(err(tight), "");
+  EXPECT_LT(tight.edge_record_bits(ShadingMode::Gouraud), fmt::EdgeRecordBits);
+  // And renders the same image as the default (no value wraps at these widths).
+  EXPECT_EQ(render(prepare(sphere, tight), tight).rgb, render(p, Config{}).rgb);
+}
+
+// Random fractions on random scenes (Gouraud and Phong): at the integer bits SceneNeeds reports
+// the scene is accepted and renders exactly as with wide words (nothing wrapped); one bit fewer
+// in any group is refused, naming that group. So the range checks are exact, not just safe.
+TEST(NarrowConfig, ReportedIntegerBitsAreExactlyEnough) {
+  std::mt19937_64 rng(9);
+  for (std::uint64_t seed = 1; seed <= 120; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const bool phong = seed % 2 == 0;
+    const BuiltScene scene = phong ? test::random_phong_scene(seed) : test::random_scene(seed);
+    auto draw = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+    Config wide;
+    wide.max_active_edges = 1024;
+    wide.x.frac_bits = draw(Config::MinXFrac, Config::MaxXFrac);
+    wide.depth.frac_bits = draw(0, 20);
+    wide.shade.frac_bits = draw(0, 20);
+    wide.normal.frac_bits = draw(0, 20);
+    for (ChannelFormat* g : {&wide.x, &wide.depth, &wide.shade, &wide.normal}) g->int_bits = Config::MaxWordBits - g->frac_bits;
+    const PreparedScene pw = prepare(scene, wide);
+    const Image iw = render(pw, wide);
+    Config tight = wide;
+    const ShadingMode mode = scene.shading;
+    ChannelFormat* group_of[fmt::NumChannels] = {&tight.x, &tight.depth, phong ? &tight.normal : &tight.shade,
+                                                 phong ? &tight.normal : &tight.shade,
+                                                 phong ? &tight.normal : &tight.shade};
+    for (ChannelFormat* g : group_of) g->int_bits = 1;
+    for (int c = 0; c < fmt::NumChannels; ++c)
+      group_of[c]->int_bits = std::max(group_of[c]->int_bits, pw.needs.int_bits_needed(c, group_of[c]->frac_bits));
+    const PreparedScene pt = prepare(scene, tight);
+    EXPECT_EQ(render(pt, tight).rgb, iw.rgb);
+    for (int c : {fmt::ChanX, fmt::ChanZ, fmt::ChanR}) {
+      if (group_of[c]->int_bits == 1) continue;
+      Config less = tight;
+      ChannelFormat* g = c == fmt::ChanX ? &less.x : c == fmt::ChanZ ? &less.depth : phong ? &less.normal : &less.shade;
+      --g->int_bits;
+      const std::string e = error_of([&] { prepare(scene, less); });
+      EXPECT_NE(e.find(std::string("the configuration's ") + channel_group_name(c, mode) + " word"), std::string::npos)
+          << e;
+    }
+  }
+}
+
+TEST(NarrowConfig, PhongMaterialsCapacity) {
+  std::string objs;
+  for (int i = 0; i < 2; ++i) {
+    const std::string k = std::to_string(i);
+    objs += std::string(i ? "," : "") + R"({"type": "polygons", "material": "m)" + k + R"(", "polygons": [{"vertices": [
+      {"x": 1, "y": )" + k + R"(, "depth": 0.5, "normal": [0, 0, -1], "rgb": [1, 1, 1]},
+      {"x": 30, "y": )" + k + R"(, "depth": 0.5, "normal": [0, 0, -1], "rgb": [1, 1, 1]},
+      {"x": 16, "y": 31, "depth": 0.5, "normal": [0, 0, -1], "rgb": [1, 1, 1]}]}]})";
+  }
+  const std::string text = R"({"screen": {"width": 32, "height": 32}, "shading": {"mode": "phong"},
+    "materials": {"m0": {"color": [0.5, 0.5, 0.5]}, "m1": {"color": [1, 0, 0]}}, "objects": [)" + objs + "]}";
+  const BuiltScene s = load_scene_text(text, "s.json", ".");
+  ASSERT_EQ(s.materials.size(), 2u);
+  Config c;
+  c.max_materials = 1;
+  EXPECT_EQ(error_of([&] { prepare(s, c); }),
+            "s.json: scene needs 2 materials; the material id is 1 bits and holds 1 (max_materials of the configuration)");
+  c.max_materials = 2;
+  EXPECT_EQ(error_of([&] { prepare(s, c); }), "");
+}
+
+}  // namespace
