@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "shipped_scenes.hpp"
 #include "config_file.hpp"
 #include "float_reference.hpp"
 #include "image_io.hpp"
@@ -36,19 +37,7 @@ std::string error_of(const std::function<void()>& f) {
   return "";
 }
 
-std::vector<std::string> shipped_scenes() {
-  std::vector<std::string> out;
-  const std::string dir = WATKINS_SOURCE_DIR "/scenes";
-  if (DIR* d = opendir(dir.c_str())) {
-    while (dirent* e = readdir(d)) {
-      const std::string n = e->d_name;
-      if (n.size() > 5 && n.substr(n.size() - 5) == ".json") out.push_back(dir + "/" + n);
-    }
-    closedir(d);
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
+std::vector<std::string> shipped_scenes() { return watkins::test::shipped_scene_paths(); }
 
 Image render(const PreparedScene& p, const Config& cfg) { return WatkinsTop(cfg).render(p); }
 

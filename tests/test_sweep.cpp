@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_run.hpp"
 #include "error_stats.hpp"
 #include "scene.hpp"
 
@@ -147,14 +148,9 @@ TEST(FlatShading, OptionOverridesTheFileAndPhongRejectsIt) {
 // ---- the command line -----------------------------------------------------------------------
 
 std::string run(const std::string& args, int* code) {
-  const std::string cmd = std::string(WATKINS_CLI) + " " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf;
-  while (p && fgets(buf.data(), buf.size(), p)) out += buf.data();
-  const int status = p ? pclose(p) : -1;
-  *code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return out;
+  const test::CliRun r = test::run_cli(args);
+  *code = r.exit_code;
+  return r.output;
 }
 
 std::vector<std::map<std::string, std::string>> read_csv(const std::string& path, std::vector<std::string>* header) {

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "shipped_scenes.hpp"
 #include "watkins_top.hpp"
 #include "prepare.hpp"
 #include "rtl_bench.hpp"
@@ -46,12 +47,7 @@ inline RtlOptions random_options(std::uint64_t seed) {
 
 // The scenes/*.json file names, sorted ("<none>" when there are none yet).
 inline std::vector<std::string> shipped_scenes() {
-  std::vector<std::string> v;
-  const std::filesystem::path dir = WATKINS_SOURCE_DIR "/scenes";
-  std::error_code ec;
-  for (const auto& e : std::filesystem::directory_iterator(dir, ec))
-    if (e.path().extension() == ".json") v.push_back(e.path().filename().string());
-  std::sort(v.begin(), v.end());
+  std::vector<std::string> v = watkins::test::shipped_scene_names();
   if (v.empty()) v.push_back("<none>");
   return v;
 }
