@@ -26,19 +26,8 @@ bool exists(const std::string& path) {
   return stat(path.c_str(), &st) == 0;
 }
 
-class Cli : public ::testing::Test {
+class Cli : public ::testing::Test, protected watkins::test::ScratchDir {
  protected:
-  void SetUp() override {
-    char tmpl[] = "/tmp/watkins_cli_XXXXXX";
-    ASSERT_NE(mkdtemp(tmpl), nullptr);
-    dir_ = tmpl;
-  }
-  void TearDown() override { std::system(("rm -rf " + dir_).c_str()); }
-  std::string write(const std::string& name, const std::string& text) {
-    const std::string path = dir_ + "/" + name;
-    std::ofstream(path) << text;
-    return path;
-  }
   // Renders `scene_text` and expects failure with `message` in the output and no image.
   void expect_rejected(const std::string& scene_text, const std::string& message) {
     const std::string scene = write("scene.json", scene_text);
@@ -54,7 +43,6 @@ class Cli : public ::testing::Test {
       {"vertices": [)" + v0 + R"(, {"x": 12, "y": 2, "depth": 0.5, "rgb": [1, 2, 3]},
                     {"x": 8, "y": 12, "depth": 0.5, "rgb": [1, 2, 3]}]}]}]})";
   }
-  std::string dir_;
 };
 
 TEST_F(Cli, DefaultSceneRendersAndReportsError) {

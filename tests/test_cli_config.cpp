@@ -17,24 +17,12 @@ namespace {
 using watkins::test::CliRun;
 CliRun run(const std::string& args) { return watkins::test::run_cli(args); }
 
-class CliConfig : public ::testing::Test {
+class CliConfig : public ::testing::Test, protected watkins::test::ScratchDir {
  protected:
-  void SetUp() override {
-    char tmpl[] = "/tmp/watkins_cfg_XXXXXX";
-    ASSERT_NE(mkdtemp(tmpl), nullptr);
-    dir_ = tmpl;
-  }
-  void TearDown() override { std::system(("rm -rf " + dir_).c_str()); }
-  std::string write(const std::string& name, const std::string& text) {
-    const std::string path = dir_ + "/" + name;
-    std::ofstream(path) << text;
-    return path;
-  }
   bool exists(const std::string& path) {
     struct stat st;
     return stat(path.c_str(), &st) == 0;
   }
-  std::string dir_;
 };
 
 TEST_F(CliConfig, NarrowConfigurationRenders) {
