@@ -2,8 +2,8 @@
 """Plots of a `watkins sweep`: error against the analytic truth against cycles per frame and
 against bits (the active-edge list the scene needs, edge records x edge-record bits), one marker
 per shading, Pareto fronts (no other point both cheaper and better) drawn as steps; and the
-eq. (1) vs eq. (2) comparison printed as a markdown table. Those use the points at the default
-fractions (16 bits in every group).
+eq. (1) vs eq. (2) comparison printed as a markdown table (points at the default fractions, 16
+bits in every group).
 
 With a fraction-bits axis (several attr_frac values): error against the configuration's
 edge-record bits — mean and max, against the truth and against the double reference — one marker
@@ -11,6 +11,7 @@ per shading and a Pareto front per shading; and the crossover table: per scene, 
 tessellation, the attribute fraction width at which the model's mean error against the double
 reference (quantization) equals the double reference's mean error against the truth (the
 algorithm's own error), interpolated between the bracketing widths on a log scale of the error.
+A CSV with that axis gets only these (the others are the default sweep's).
 
     scripts/sweep_plots.py SWEEP.csv [MORE.csv ...] [--out docs] [--summary docs/sweep_eq1_eq2.md]
                            [--prefix sweep] [--crossover docs/sweep_frac_crossover.md]
@@ -234,8 +235,7 @@ def main():
         if a.crossover:
             with open(a.crossover, "w") as f:
                 f.write(table)
-    if not rows:
-        return
+        return  # a fraction-bits sweep: the plots at the default fractions are the default sweep's
     have_cycles = any(num(r, "cycles") is not None for r in rows)
     for err, label in (("truth_mean", "mean |Δ| vs analytic truth (8-bit levels)"),
                        ("truth_max", "max |Δ| vs analytic truth (8-bit levels)")):
