@@ -274,8 +274,13 @@ Result evaluate(const SweepArgs& a, const std::vector<Axis>& axes, long long k) 
       if (r.active_edges <= fmt::MaxActiveEdges && default_fractions) {
         tb::RtlOptions ro;
         ro.sparse = !a.full_frame;
+        // Its frame is prepared for the default configuration: the point's words wrap slopes to
+        // the point's widths, which the RTL's wider words would not sign-extend the same way.
+        PrepareOptions popt;
+        popt.max_active_edges = a.max_active_edges;
+        const PreparedScene rtl_frame = prepare(scene, popt);
         std::lock_guard<std::mutex> lock(rtl_mutex);
-        const tb::RtlResult rr = tb::run_rtl(prepared, ro, &image);
+        const tb::RtlResult rr = tb::run_rtl(rtl_frame, ro, &image);
         r.cycles = rr.cycles;
         r.cycles_source = a.full_frame ? "rtl-full-frame" : "rtl-sparse";
         r.rtl_mismatches = rr.mismatches + static_cast<long long>(rr.stage_mismatches.size());
