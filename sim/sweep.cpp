@@ -1,7 +1,15 @@
 // watkins sweep (sweep.hpp). The grid is a list of axes, each a name and its values; a point is
 // one value index per axis (mixed radix, the last axis fastest), numbered 0..N-1 in that order so
-// shards and jobs are reproducible. Adding an axis (fraction bits per channel group, once the
-// formats are run-time) is one more entry in make_axes() and one more read in evaluate().
+// shards and jobs are reproducible. Adding an axis is one more entry in make_axes() and one more
+// read in evaluate().
+//
+// Axes: scene, shading, tess, then the fraction bits of the channel groups (attr_frac: the
+// shading's attribute group — shade for flat and Gouraud, normal for Phong; x_frac; depth_frac).
+// A point's configuration (watkins::Config) has those fractions and, for every group, exactly the
+// integer bits its scene needs at them (point_config()); the capacities stay the default's except
+// the active-edge list (--max-active-edges) and the line width (the scene's screen width). Its
+// cost is that configuration's edge-record and line-buffer bits; a configuration Config::check()
+// or prepare() refuses leaves its message in the point's `error` and the sweep goes on.
 //
 // Each point: the scene text with its first object's "u", "v" scaled, built with the point's
 // shading (flat: Gouraud pipeline with one shade per polygon; gouraud-eq1 / -eq2: the depth channel
@@ -12,6 +20,7 @@
 #include <CLI/CLI.hpp>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -25,6 +34,7 @@
 #include <thread>
 
 #include "analytic_truth.hpp"
+#include "config.hpp"
 #include "cycle_model.hpp"
 #include "error_stats.hpp"
 #include "float_reference.hpp"
@@ -63,6 +73,14 @@ std::vector<Axis> make_axes(const SweepArgs& a) {
   axes.push_back(scene);
   axes.push_back(shading);
   axes.push_back(tess);
+  auto bits_axis = [](const std::string& name, const std::vector<int>& v) {
+    Axis ax{name, {}};
+    for (int b : v) ax.values.push_back(std::to_string(b));
+    return ax;
+  };
+  axes.push_back(bits_axis("attr_frac", a.attr_frac));
+  axes.push_back(bits_axis("x_frac", a.x_frac));
+  axes.push_back(bits_axis("depth_frac", a.depth_frac));
   return axes;
 }
 
@@ -85,17 +103,53 @@ long long grid_size(const std::vector<Axis>& axes) {
 
 // ---- hardware cost --------------------------------------------------------------------------
 
-// Storage the hardware needs, from today's compile-time formats (model/twins/formats.hpp). The
-// run-time formats will replace this one function (it will take the point's configuration).
+// Storage the hardware built for `cfg` needs: one edge record ($bits(edge_t)) and the ping-pong
+// scan-line buffer (one line filled while the other is read out), each pixel a depth word and
+// 8-bit R, G, B, over cfg.max_width pixels (the sweep sets it to the scene's screen width).
 struct HardwareBits {
   long long edge_record = 0;  // one edge record
-  long long line_buffer = 0;  // two scan-line buffers (one filled while the other is read out)
+  long long line_buffer = 0;  // two scan-line buffers
 };
-HardwareBits hardware_bits() {
+HardwareBits hardware_bits(const Config& cfg, ShadingMode shading) {
   HardwareBits b;
-  b.edge_record = fmt::EdgeRecordBits;
-  b.line_buffer = 2LL * fmt::DefaultMaxWidth * (fmt::DepthBits + 3 * fmt::ShadeBits);
+  b.edge_record = cfg.edge_record_bits(shading);
+  b.line_buffer = 2LL * cfg.max_width * (cfg.depth_bits + 3 * fmt::ShadeBits);
   return b;
+}
+
+// The channel group a slot belongs to in `cfg` (shade or normal for slots R..B).
+ChannelFormat& group_of(Config& cfg, int c, ShadingMode shading) {
+  if (c == fmt::ChanX) return cfg.x;
+  if (c == fmt::ChanZ) return cfg.depth;
+  return shading == ShadingMode::Phong ? cfg.normal : cfg.shade;
+}
+
+// The point's configuration: the given fractions, capacities as the default's except the
+// active-edge list and the line width (the scene's screen width), and in every group the integer
+// bits the scene needs at those fractions, exactly (measured on a prepare() with the widest words
+// the fractions allow; test_config's NarrowConfig tests hold one bit fewer refused). Throws
+// std::runtime_error ("configuration: ...") when Config::check() refuses the fractions and
+// SceneError when the scene cannot be prepared at them.
+Config point_config(const BuiltScene& scene, int attr_frac, int x_frac, int depth_frac, int max_active_edges,
+                    PreparedScene* prepared) {
+  Config cfg;
+  cfg.max_active_edges = max_active_edges;
+  cfg.max_width = scene.width;
+  cfg.x.frac_bits = x_frac;
+  cfg.depth.frac_bits = depth_frac;
+  (scene.shading == ShadingMode::Phong ? cfg.normal : cfg.shade).frac_bits = attr_frac;
+  for (ChannelFormat* g : {&cfg.x, &cfg.depth, &cfg.shade, &cfg.normal})
+    g->int_bits = std::max(Config::MinIntBits, Config::MaxWordBits - g->frac_bits);
+  if (std::string e = cfg.check(); !e.empty()) throw std::runtime_error("configuration: " + e);
+  const SceneNeeds needs = prepare(scene, cfg).needs;
+  for (int c = 0; c < fmt::NumChannels; ++c) group_of(cfg, c, scene.shading).int_bits = Config::MinIntBits;
+  for (int c = 0; c < fmt::NumChannels; ++c) {
+    ChannelFormat& g = group_of(cfg, c, scene.shading);
+    g.int_bits = std::max(g.int_bits, needs.int_bits_needed(c, g.frac_bits));
+  }
+  if (std::string e = cfg.check(); !e.empty()) throw std::runtime_error("configuration: " + e);
+  *prepared = prepare(scene, cfg);  // the configuration's own preparation (it refuses a wrap)
+  return cfg;
 }
 
 // ---- one point --------------------------------------------------------------------------------
@@ -105,6 +159,9 @@ struct Result {
   std::vector<std::string> axis_values;
   int u = 0, v = 0;
   long long polygons = 0, edge_records = 0, active_edges = 0, fragments = 0;
+  int attr_frac = 0, x_frac = 0, depth_frac = 0;   // the point's fractions (also its axes)
+  int attr_int = 0, x_int = 0, depth_int = 0;      // integer bits the scene needs at them (0: unknown)
+  std::string attr_group;                          // shade or normal
   ErrorStats truth, double_truth, vs_double;  // model vs truth, double reference vs truth, model vs double
   double truth_mach = 0, double_truth_mach = 0, vs_double_mach = 0, image_mach = 0;
   int truth_coverage_differs = 0, vs_double_visibility_differs = 0, vs_double_coverage_differs = 0;
@@ -161,10 +218,13 @@ Result evaluate(const SweepArgs& a, const std::vector<Axis>& axes, long long k) 
   r.point = k;
   const std::vector<int> idx = decode(axes, k);
   for (std::size_t i = 0; i < axes.size(); ++i) r.axis_values.push_back(axes[i].values[idx[i]]);
-  r.bits = hardware_bits();
   const std::string& path = axes[0].values[idx[0]];
   const std::string& shading = axes[1].values[idx[1]];
   const double f = a.tess.at(idx[2]);
+  r.attr_frac = a.attr_frac.at(idx[3]);
+  r.x_frac = a.x_frac.at(idx[4]);
+  r.depth_frac = a.depth_frac.at(idx[5]);
+  r.attr_group = shading == "phong" ? "normal" : "shade";
   try {
     BuildOptions opt;
     opt.rule = parse_shading_rule(a.rule);
@@ -174,14 +234,17 @@ Result evaluate(const SweepArgs& a, const std::vector<Axis>& axes, long long k) 
     const std::string text = retessellate(read_text(path), path, f, r.u, r.v);
     const BuiltScene scene =
         load_scene_text(text, path, std::filesystem::path(path).parent_path().string(), opt);
-    PrepareOptions popt;
-    popt.max_active_edges = a.max_active_edges;
-    const PreparedScene prepared = prepare(scene, popt);
+    PreparedScene prepared;
+    const Config cfg = point_config(scene, r.attr_frac, r.x_frac, r.depth_frac, a.max_active_edges, &prepared);
+    r.bits = hardware_bits(cfg, scene.shading);
+    r.x_int = cfg.x.int_bits;
+    r.depth_int = cfg.depth.int_bits;
+    r.attr_int = (scene.shading == ShadingMode::Phong ? cfg.normal : cfg.shade).int_bits;
     r.polygons = static_cast<long long>(scene.polygons.size());
     r.edge_records = static_cast<long long>(prepared.edges.size());
     r.active_edges = prepared.needs.max_active_edges;
 
-    WatkinsTop pipe(a.max_active_edges);
+    WatkinsTop pipe(cfg);
     Image image = pipe.render(prepared);
     r.fragments = pipe.stats().fragments;
     const Image reference = render_float_reference(scene);
@@ -196,16 +259,28 @@ Result evaluate(const SweepArgs& a, const std::vector<Axis>& axes, long long k) 
     // Cycles from the cycle model (model/twins/cycle_model.hpp, equal to Verilator's without
     // stalls); --rtl replaces them with the Verilated run's where the RTL holds the scene.
     const CyclePrediction predicted = predict_cycles(
-        prepared, a.full_frame ? PixelOutput::FullFrame : PixelOutput::Sparse, a.max_active_edges);
+        prepared, a.full_frame ? PixelOutput::FullFrame : PixelOutput::Sparse, a.max_active_edges, cfg);
     r.cycles = predicted.cycles;
     r.cycles_source = a.full_frame ? "predicted-full-frame" : "predicted-sparse";
     if (a.rtl) {
 #ifdef WATKINS_HAVE_RTL
-      if (r.active_edges <= fmt::MaxActiveEdges) {
+      // The Verilated RTL is built for the default fractions; integer bits the scene does not
+      // use change no value, so it checks every point at the default fractions.
+      const Config def;
+      const bool default_fractions = cfg.x.frac_bits == def.x.frac_bits &&
+                                     cfg.depth.frac_bits == def.depth.frac_bits &&
+                                     cfg.shade.frac_bits == def.shade.frac_bits &&
+                                     cfg.normal.frac_bits == def.normal.frac_bits;
+      if (r.active_edges <= fmt::MaxActiveEdges && default_fractions) {
         tb::RtlOptions ro;
         ro.sparse = !a.full_frame;
+        // Its frame is prepared for the default configuration: the point's words wrap slopes to
+        // the point's widths, which the RTL's wider words would not sign-extend the same way.
+        PrepareOptions popt;
+        popt.max_active_edges = a.max_active_edges;
+        const PreparedScene rtl_frame = prepare(scene, popt);
         std::lock_guard<std::mutex> lock(rtl_mutex);
-        const tb::RtlResult rr = tb::run_rtl(prepared, ro, &image);
+        const tb::RtlResult rr = tb::run_rtl(rtl_frame, ro, &image);
         r.cycles = rr.cycles;
         r.cycles_source = a.full_frame ? "rtl-full-frame" : "rtl-sparse";
         r.rtl_mismatches = rr.mismatches + static_cast<long long>(rr.stage_mismatches.size());
@@ -246,7 +321,7 @@ void write_csv(const std::string& path, const std::vector<Axis>& axes, const std
   if (!out) throw std::runtime_error(path + ": cannot write");
   out << "point";
   for (const Axis& ax : axes) out << ',' << ax.name;
-  out << ",u,v,polygons,edge_records,active_edges,fragments"
+  out << ",attr_group,x_int,depth_int,attr_int,u,v,polygons,edge_records,active_edges,fragments"
          ",truth_max,truth_mean,truth_rmse,truth_psnr,truth_mach,truth_compared,truth_coverage_differs"
          ",double_truth_max,double_truth_mean,double_truth_rmse,double_truth_psnr,double_truth_mach"
          ",double_max,double_mean,double_rmse,double_psnr,double_mach,double_visibility_differs,double_coverage_differs"
@@ -261,6 +336,8 @@ void write_csv(const std::string& path, const std::vector<Axis>& axes, const std
       return "," + std::to_string(e.max_abs) + "," + fixed(e.mean_abs, 4) + "," + fixed(e.rmse, 4) + "," +
              fixed(e.psnr, 2) + "," + fixed(mach, 2);
     };
+    auto known = [](int bits) { return bits > 0 ? std::to_string(bits) : std::string(); };
+    out << ',' << r.attr_group << ',' << known(r.x_int) << ',' << known(r.depth_int) << ',' << known(r.attr_int);
     out << ',' << r.u << ',' << r.v;
     if (ok)
       out << ',' << r.polygons << ',' << r.edge_records << ',' << r.active_edges << ',' << r.fragments;
@@ -279,8 +356,10 @@ void write_csv(const std::string& path, const std::vector<Axis>& axes, const std
     else
       out << ",,,";
     out << ',' << (r.cycles >= 0 ? std::to_string(r.cycles) : "") << ',' << r.cycles_source << ','
-        << (r.rtl_mismatches >= 0 ? std::to_string(r.rtl_mismatches) : "") << ',' << r.bits.edge_record << ','
-        << r.bits.line_buffer << ',' << (ok ? std::to_string(r.active_edges * r.bits.edge_record) : "") << ','
+        << (r.rtl_mismatches >= 0 ? std::to_string(r.rtl_mismatches) : "") << ','
+        << (r.bits.edge_record > 0 ? std::to_string(r.bits.edge_record) : "") << ','
+        << (r.bits.line_buffer > 0 ? std::to_string(r.bits.line_buffer) : "") << ','
+        << (ok && r.bits.edge_record > 0 ? std::to_string(r.active_edges * r.bits.edge_record) : "") << ','
         << fixed(r.seconds, 3) << ",\"";
     for (char c : r.error) out << (c == '"' ? '\'' : c == '\n' ? ' ' : c);
     out << "\"\n";
@@ -291,13 +370,15 @@ void write_markdown(const std::string& path, const std::vector<Result>& rows) {
   std::ofstream out(path);
   if (!out) throw std::runtime_error(path + ": cannot write");
   out << "| scene | shading | u×v | polygons | active edges | cycles | vs truth max / mean | RMSE | PSNR dB | "
-         "Mach | double vs truth max / mean | vs double max / mean | edge record / line buffer bits |\n"
-         "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+         "Mach | double vs truth max / mean | vs double max / mean | edge record / line buffer bits | "
+         "frac x / depth / attr | int x / depth / attr |\n"
+         "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Result& r : rows) {
     const std::string scene = std::filesystem::path(r.axis_values[0]).stem().string();
     out << "| " << scene << " | " << r.axis_values[1] << " | " << r.u << "×" << r.v << " | ";
     if (!r.error.empty() && r.polygons == 0) {
-      out << r.error << " | | | | | | | | | |\n";
+      out << r.error << " | | | | | | | | | | " << r.x_frac << " / " << r.depth_frac << " / " << r.attr_frac
+          << " | |\n";
       continue;
     }
     out << r.polygons << " | " << r.active_edges << " | "
@@ -311,7 +392,8 @@ void write_markdown(const std::string& path, const std::vector<Result>& rows) {
     else
       out << "— | — | — | — | — | ";
     out << r.vs_double.max_abs << " / " << fixed(r.vs_double.mean_abs, 3) << " | " << r.bits.edge_record << " / "
-        << r.bits.line_buffer << " |\n";
+        << r.bits.line_buffer << " | " << r.x_frac << " / " << r.depth_frac << " / " << r.attr_frac << " | "
+        << r.x_int << " / " << r.depth_int << " / " << r.attr_int << " |\n";
   }
 }
 
@@ -351,7 +433,8 @@ void parse_shard(const std::string& s, long long& i, long long& n) {
 }  // namespace
 
 CLI::App* add_sweep_command(CLI::App& app, SweepArgs& a) {
-  auto* s = app.add_subcommand("sweep", "error against cost over scenes x shading x tessellation (CSV, markdown)");
+  auto* s = app.add_subcommand(
+      "sweep", "error against cost over scenes x shading x tessellation x fraction bits (CSV, markdown)");
   s->add_option("scenes", a.scenes, "scene files (JSON); default: scenes/sphere.json scenes/cone.json");
   s->add_option("--shadings", a.shadings, "flat, gouraud-eq1 (depth 1/Z), gouraud-eq2 (depth Z), phong")
       ->delimiter(',')
@@ -360,6 +443,14 @@ CLI::App* add_sweep_command(CLI::App& app, SweepArgs& a) {
   s->add_option("--tess", a.tess, "factors on the first object's u and v (u >= 3, v >= 1)")
       ->delimiter(',')
       ->check(CLI::Range(0.01, 64.0))
+      ->capture_default_str();
+  s->add_option("--frac-bits", a.attr_frac,
+                "fraction bits of the shading's attribute group: shade (flat, Gouraud) or normal (Phong)")
+      ->delimiter(',')
+      ->capture_default_str();
+  s->add_option("--x-frac-bits", a.x_frac, "fraction bits of X (pixels)")->delimiter(',')->capture_default_str();
+  s->add_option("--depth-frac-bits", a.depth_frac, "fraction bits of the depth channel")
+      ->delimiter(',')
       ->capture_default_str();
   s->add_option("--rule", a.rule, "vertex rule of flat and Gouraud shading (phong: eq. 3, the truth's illumination)")
       ->check(CLI::IsMember({"gouraud", "lambert", "warnock", "romney", "phong"}))
@@ -401,7 +492,8 @@ int run_sweep(const SweepArgs& in) {
     for (std::size_t i; (i = next++) < points.size();) {
       rows[i] = evaluate(a, axes, points[i]);
       progress.step(std::filesystem::path(rows[i].axis_values[0]).stem().string() + " " + rows[i].axis_values[1] +
-                    " " + std::to_string(rows[i].u) + "x" + std::to_string(rows[i].v));
+                    " " + std::to_string(rows[i].u) + "x" + std::to_string(rows[i].v) + " frac " +
+                    std::to_string(rows[i].attr_frac));
     }
   };
   std::vector<std::thread> threads;
@@ -415,8 +507,9 @@ int run_sweep(const SweepArgs& in) {
   for (const Result& r : rows) {
     if (!r.error.empty()) {
       ++failed;
-      std::fprintf(stderr, "watkins sweep: point %lld (%s %s x%s): %s\n", r.point, r.axis_values[0].c_str(),
-                   r.axis_values[1].c_str(), r.axis_values[2].c_str(), r.error.c_str());
+      std::fprintf(stderr, "watkins sweep: point %lld (%s %s x%s, frac attr %d x %d depth %d): %s\n", r.point,
+                   r.axis_values[0].c_str(), r.axis_values[1].c_str(), r.axis_values[2].c_str(), r.attr_frac,
+                   r.x_frac, r.depth_frac, r.error.c_str());
     }
     if (r.rtl_mismatches > 0 || r.error.rfind("RTL run failed", 0) == 0) ++rtl_bad;
   }

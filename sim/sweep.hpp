@@ -1,4 +1,5 @@
-// watkins sweep: error against cost over a grid of scenes × shading × tessellation, in process
+// watkins sweep: error against cost over a grid of scenes × shading × tessellation × fraction
+// bits per channel group, in process
 // (the model libraries, no subprocess per point). One CSV row per point, a markdown table, a
 // progress bar on a terminal; --jobs N threads and --shard i/N for batch systems. See sweep.cpp.
 #pragma once
@@ -16,6 +17,11 @@ struct SweepArgs {
   std::vector<std::string> scenes;  // scene files; default: the sphere and the cone
   std::vector<std::string> shadings{"flat", "gouraud-eq1", "gouraud-eq2", "phong"};
   std::vector<double> tess{0.5, 1, 2, 4};  // factors on the first object's u and v
+  // Fraction bits per channel group (axes attr_frac, x_frac, depth_frac). attr_frac is the
+  // shading's attribute group: shade (R G B) for flat and Gouraud, normal (Nx Ny Nz) for Phong.
+  // Integer bits are not an axis: each point gets exactly the ones its scene needs at its
+  // fractions (SceneNeeds::int_bits_needed), so the configuration is the smallest that holds it.
+  std::vector<int> attr_frac{16}, x_frac{16}, depth_frac{16};  // default: formats.hpp's FracBits
   std::string rule = "phong";  // vertex rule of flat and Gouraud (the truth needs eq. 3)
   std::string csv = "sweep.csv", md;
   int jobs = 1;

@@ -203,7 +203,9 @@ TEST(SweepCli, TinySweepWritesTheColumnsAndPhongBeatsGouraudOnTheSphere) {
   EXPECT_EQ(p.at("shading"), "phong");
   EXPECT_EQ(g.at("u"), "16");  // the sphere's 32x16 halved
   EXPECT_EQ(g.at("v"), "8");
-  EXPECT_EQ(g.at("edge_record_bits"), "466");
+  // The configuration's own edge record: default fractions, the integer bits the sphere needs.
+  EXPECT_LT(std::stoi(g.at("edge_record_bits")), 466);
+  EXPECT_EQ(g.at("line_buffer_bits"), std::to_string(2 * 320 * (24 + 24)));  // the sphere's 320-px line
   EXPECT_EQ(g.at("cycles_source"), "predicted-sparse");  // the cycle model, no Verilator
   EXPECT_EQ(g.at("cycles"), "37062");  // what the RTL takes on this frame (README, --rtl --sparse)
   EXPECT_EQ(p.at("cycles"), "37083");
@@ -217,6 +219,58 @@ TEST(SweepCli, TinySweepWritesTheColumnsAndPhongBeatsGouraudOnTheSphere) {
   std::stringstream text;
   text << m.rdbuf();
   EXPECT_NE(text.str().find("| sphere | phong | 16×8 |"), std::string::npos) << text.str();
+  std::system(("rm -rf " + dir).c_str());
+}
+
+// The fraction-bits axis: two attribute fractions and one the configuration refuses (shade
+// 60 + its 9 natural integer bits exceed the model's 62-bit words). Fewer fraction bits: a
+// smaller edge record, an error against the double reference that does not fall; the refused
+// point keeps its axes and its message, and the sweep still finishes (exit 0).
+TEST(SweepCli, FractionBitsAxis) {
+  char tmpl[] = "/tmp/watkins_sweep_XXXXXX";
+  ASSERT_NE(mkdtemp(tmpl), nullptr);
+  const std::string dir = tmpl, csv = dir + "/s.csv";
+  int code = 0;
+  const std::string out = run("sweep " + std::string(WATKINS_SOURCE_DIR) +
+                                  "/scenes/sphere.json --shadings gouraud-eq1 --tess 0.5 --frac-bits 2,16,60 "
+                                  "--x-frac-bits 8 -q --jobs 2 --csv " + csv,
+                              &code);
+  ASSERT_EQ(code, 0) << out;
+  EXPECT_NE(out.find("1 failed"), std::string::npos) << out;
+  std::vector<std::string> header;
+  const auto rows = read_csv(csv, &header);
+  for (const char* col : {"attr_frac", "x_frac", "depth_frac", "attr_group", "x_int", "depth_int", "attr_int"})
+    EXPECT_NE(std::find(header.begin(), header.end(), col), header.end()) << "missing column " << col;
+  ASSERT_EQ(rows.size(), 3u);
+  const auto &lo = rows[0], &hi = rows[1], &refused = rows[2];
+  EXPECT_EQ(lo.at("attr_frac"), "2");
+  EXPECT_EQ(hi.at("attr_frac"), "16");
+  for (const auto* r : {&lo, &hi, &refused}) {
+    EXPECT_EQ(r->at("x_frac"), "8");
+    EXPECT_EQ(r->at("depth_frac"), "16");
+    EXPECT_EQ(r->at("attr_group"), "shade");
+  }
+  EXPECT_EQ(lo.at("error"), "");
+  EXPECT_EQ(hi.at("error"), "");
+  // The shade's integer bits: 8-bit levels and a sign, give or take a rounding (9 or 10).
+  for (const auto* r : {&lo, &hi}) {
+    EXPECT_GE(std::stoi(r->at("attr_int")), 9);
+    EXPECT_LE(std::stoi(r->at("attr_int")), 10);
+  }
+  EXPECT_EQ(lo.at("x_int"), hi.at("x_int"));
+  EXPECT_EQ(lo.at("depth_int"), hi.at("depth_int"));
+  const int lo_bits = std::stoi(lo.at("edge_record_bits")), hi_bits = std::stoi(hi.at("edge_record_bits"));
+  EXPECT_LT(lo_bits, hi_bits);
+  EXPECT_LT(lo_bits, 466);
+  // Only the shade words differ: value and slope of R, G, B.
+  EXPECT_EQ(hi_bits - lo_bits,
+            2 * 3 * ((16 + std::stoi(hi.at("attr_int"))) - (2 + std::stoi(lo.at("attr_int")))));
+  EXPECT_GE(std::stod(lo.at("double_mean")), std::stod(hi.at("double_mean")));
+  EXPECT_GT(std::stod(lo.at("double_mean")), 0.0);
+  EXPECT_EQ(lo.at("double_truth_mean"), hi.at("double_truth_mean"));  // the algorithm's own error
+  EXPECT_NE(refused.at("error").find("shade.frac_bits"), std::string::npos) << refused.at("error");
+  EXPECT_EQ(refused.at("truth_mean"), "");
+  EXPECT_EQ(refused.at("edge_record_bits"), "");
   std::system(("rm -rf " + dir).c_str());
 }
 
