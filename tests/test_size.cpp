@@ -195,6 +195,20 @@ TEST_F(Size, DefaultOutputNameIsTheSceneStem) {
   EXPECT_NO_THROW(load_config(dir_ + "/mesh.config.json"));
 }
 
+// docs/size/ holds the shipped scenes' configurations (scripts/size_table); they must stay what
+// `watkins size` finds, on the scenes that search fastest.
+TEST_F(Size, ShippedConfigurationsAreCurrent) {
+  for (const char* scene : {"cone", "mesh", "highlight", "default"})
+    for (const char* shading : {"gouraud", "phong"}) {
+      const std::string name = std::string(scene) + "." + shading + ".json";
+      const CliRun r = run(std::string("size " WATKINS_SOURCE_DIR "/scenes/") + scene + ".json --shading " + shading +
+                           " --out " + dir_ + "/" + name);
+      ASSERT_EQ(r.exit_code, 0) << r.output;
+      EXPECT_EQ(load_config(dir_ + "/" + name), load_config(WATKINS_SOURCE_DIR "/docs/size/" + name))
+          << name << ": re-run scripts/size_table";
+    }
+}
+
 TEST_F(Size, BadInputIsOneLineAndWritesNothing) {
   const std::string out = dir_ + "/bad.json";
   struct Bad {
