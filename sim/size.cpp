@@ -116,13 +116,14 @@ class Judge {
     ++evaluations_;
     Point p;
     p.w = w;
+    PreparedScene prepared;
     try {
       p.cfg = sized_config(w);
+      prepared = prepare(scene_, p.cfg);
     } catch (const SceneError& e) {
       p.refused = e.what();
       return p;
     }
-    const PreparedScene prepared = prepare(scene_, p.cfg);
     WatkinsTop top(p.cfg);
     const Image img = top.render(prepared);
     p.err = compare_images(img, reference_);
