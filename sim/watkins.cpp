@@ -4,6 +4,7 @@
 //                  [--rtl [--sparse] [--trace out.fst] [--seed N] [--gap P] [--stall P]]
 //   watkins sweep [SCENE ...] [--shadings ...] [--tess ...] [--csv F] [--md F] [--jobs N] [--shard i/N] [--rtl]
 //                  (sim/sweep.cpp)
+//   watkins size [SCENE] [--bound L] [--shading S] [--out F]   (sim/size.cpp)
 #include <CLI/CLI.hpp>
 
 #include <chrono>
@@ -19,6 +20,7 @@
 #include "image_io.hpp"
 #include "prepare.hpp"
 #include "scene.hpp"
+#include "size.hpp"
 #include "sweep.hpp"
 #include "watkins_top.hpp"
 
@@ -319,11 +321,14 @@ int main(int argc, char** argv) {
   add_rtl_options(r, ra.rtl);  // --rtl, --trace, --seed, --gap, --stall
   watkins::sweep::SweepArgs sa;
   auto* s = watkins::sweep::add_sweep_command(app, sa);
+  watkins::size::SizeArgs za;
+  auto* z = watkins::size::add_size_command(app, za);
   CLI11_PARSE(app, argc, argv);
   ra.max_active_edges_given = mae->count() > 0;
   try {
     if (*r) return render(ra);
     if (*s) return watkins::sweep::run_sweep(sa);
+    if (*z) return watkins::size::run_size(za);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "watkins: error: %s\n", e.what());
     return 1;

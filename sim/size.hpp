@@ -1,0 +1,28 @@
+// watkins size: the smallest hardware configuration a scene needs (issue 9, part 2). A search,
+// not a formula: fraction bits per channel group and depth_bits lowered one bit at a time while
+// the fixed-point image stays within L levels of the double reference, integer bits and
+// capacities exactly what the scene needs. See size.cpp.
+#pragma once
+
+#include <string>
+
+namespace CLI {
+class App;
+}
+
+namespace watkins::size {
+
+struct SizeArgs {
+  std::string scene;          // scene file; the embedded default scene when empty
+  std::string bound = "1";    // levels; parsed by run_size so bad input is one line
+  std::string out;            // configuration file; default <scene stem>.config.json
+  std::string shading;        // gouraud | phong; default the scene's
+};
+
+// Registers `watkins size` and its options on `app`; returns the subcommand.
+CLI::App* add_size_command(CLI::App& app, SizeArgs& args);
+// Runs the search, prints the report and writes the configuration; returns the exit code.
+// Bad input throws (one line, no file written).
+int run_size(const SizeArgs& args);
+
+}  // namespace watkins::size
