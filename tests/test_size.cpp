@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "cli_run.hpp"
 #include "config_file.hpp"
 #include "float_reference.hpp"
 #include "image_io.hpp"
@@ -46,16 +47,7 @@ bool exists(const std::string& path) {
   return stat(path.c_str(), &st) == 0;
 }
 
-class Size : public ::testing::Test {
- protected:
-  void SetUp() override {
-    char tmpl[] = "/tmp/watkins_size_XXXXXX";
-    ASSERT_NE(mkdtemp(tmpl), nullptr);
-    dir_ = tmpl;
-  }
-  void TearDown() override { std::system(("rm -rf " + dir_).c_str()); }
-  std::string dir_;
-};
+class Size : public ::testing::Test, protected test::ScratchDir {};
 
 Image render_with(const BuiltScene& scene, Config cfg) {
   const PreparedScene prepared = prepare(scene, cfg);

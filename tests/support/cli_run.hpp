@@ -20,8 +20,10 @@ struct CliRun {
   std::string output;  // stdout and stderr
 };
 
-inline CliRun run_cli(const std::string& args) {
-  const std::string cmd = std::string(WATKINS_CLI) + " " + args + " 2>&1";
+// Runs `watkins ARGS` (in folder `cwd` when given).
+inline CliRun run_cli(const std::string& args, const std::string& cwd = "") {
+  const std::string cmd =
+      (cwd.empty() ? "" : "cd " + cwd + " && ") + std::string(WATKINS_CLI) + " " + args + " 2>&1";
   FILE* p = popen(cmd.c_str(), "r");
   std::string out;
   std::array<char, 4096> buf;
