@@ -30,10 +30,7 @@ fi
 
 [ "${1:-}" = "--no-build" ] && exit 0
 build="${WATKINS_BUILD:-$root/build}"
-if [ "${1:-}" = "--main" ]; then
-  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DWATKINS_TESTS=OFF -DWATKINS_RTL_CC_HARNESS=OFF >/dev/null
-  cmake --build "$build" -j"${WATKINS_JOBS:-2}" --target watkins
-else
-  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DWATKINS_TESTS=ON -DWATKINS_RTL_CC_HARNESS=ON >/dev/null
-  cmake --build "$build" -j"${WATKINS_JOBS:-2}"
-fi
+all=ON target=()
+[ "${1:-}" = "--main" ] && all=OFF target=(--target watkins)
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DWATKINS_TESTS=$all -DWATKINS_RTL_CC_HARNESS=$all >/dev/null
+cmake --build "$build" -j"${WATKINS_JOBS:-2}" "${target[@]}"
