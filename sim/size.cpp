@@ -29,6 +29,7 @@
 
 #include "config_file.hpp"
 #include "float_reference.hpp"
+#include "hardware_cost.hpp"
 #include "image_io.hpp"
 #include "prepare.hpp"
 #include "scene.hpp"
@@ -54,12 +55,6 @@ const char* dim_name(int d, ShadingMode shading) {
 Widths default_widths() {
   const Config d;
   return {d.x.frac_bits, d.shade.frac_bits, d.depth_bits, d.depth.frac_bits};
-}
-
-// The line buffer the RTL's scanline_buffer holds: two banks of max_width pixels, each a depth
-// word of depth_bits and an RGB8 shade.
-long long line_buffer_bits(const Config& c) {
-  return 2LL * c.max_width * (c.depth_bits + 3 * fmt::ShadeBits);
 }
 
 // One rendered point of the search.
