@@ -68,8 +68,7 @@ std::string number(double v) {
 
 std::vector<Axis> make_axes(const SweepArgs& a) {
   std::vector<Axis> axes;
-  Axis scene{"scene", {}}, shading{"shading", a.shadings}, tess{"tess", {}};
-  for (const std::string& s : a.scenes) scene.values.push_back(s);
+  Axis scene{"scene", a.scenes}, shading{"shading", a.shadings}, tess{"tess", {}};
   for (double f : a.tess) tess.values.push_back(number(f));
   axes.push_back(scene);
   axes.push_back(shading);
