@@ -29,6 +29,7 @@
 
 #include "config_file.hpp"
 #include "float_reference.hpp"
+#include "hardware_cost.hpp"
 #include "image_io.hpp"
 #include "prepare.hpp"
 #include "scene.hpp"
@@ -54,12 +55,6 @@ const char* dim_name(int d, ShadingMode shading) {
 Widths default_widths() {
   const Config d;
   return {d.x.frac_bits, d.shade.frac_bits, d.depth_bits, d.depth.frac_bits};
-}
-
-// The line buffer the RTL's scanline_buffer holds: two banks of max_width pixels, each a depth
-// word of depth_bits and an RGB8 shade.
-long long line_buffer_bits(const Config& c) {
-  return 2LL * c.max_width * (c.depth_bits + 3 * fmt::ShadeBits);
 }
 
 // One rendered point of the search.
@@ -90,13 +85,13 @@ class Judge {
     allowance_.assign(n, bound_);
     grid_flip_.assign(n, 0);
     for (std::size_t i = 0; i < n; ++i) {
-      if (flips(img, i)) {
+      if (geometry_differs(img, reference_, i)) {
         grid_flip_[i] = 1;
         ++default_flips_;
         continue;
       }
       if (!img.covered[i]) continue;
-      const int e = pixel_error(img, i);
+      const int e = pixel_max_abs(img, reference_, i);
       if (e > bound_) {
         allowance_[i] = e;
         ++default_over_;
@@ -129,12 +124,12 @@ class Judge {
     p.err = compare_images(img, reference_);
     const std::size_t n = allowance_.size();
     for (std::size_t i = 0; i < n; ++i) {
-      if (flips(img, i)) {
+      if (geometry_differs(img, reference_, i)) {
         if (!grid_flip_[i]) ++p.extra_flips;
         continue;
       }
       if (!img.covered[i] || grid_flip_[i]) continue;  // the default's geometry differs here: no shade bound
-      const int e = pixel_error(img, i);
+      const int e = pixel_max_abs(img, reference_, i);
       if (e > allowance_[i]) {
         ++p.over_bound;
         if (e - allowance_[i] > p.worst_excess) {
@@ -188,14 +183,6 @@ class Judge {
 
  private:
   ChannelFormat& attr(Config& c) const { return scene_.shading == ShadingMode::Phong ? c.normal : c.shade; }
-  bool flips(const Image& img, std::size_t i) const {
-    return img.covered[i] != reference_.covered[i] || (img.covered[i] && img.owner[i] != reference_.owner[i]);
-  }
-  int pixel_error(const Image& img, std::size_t i) const {
-    int e = 0;
-    for (int c = 0; c < 3; ++c) e = std::max(e, std::abs(int(img.rgb[i * 3 + c]) - int(reference_.rgb[i * 3 + c])));
-    return e;
-  }
 
   const BuiltScene& scene_;
   int bound_;

@@ -39,6 +39,7 @@
 #include "error_stats.hpp"
 #include "float_reference.hpp"
 #include "formats.hpp"
+#include "hardware_cost.hpp"
 #include "image_io.hpp"
 #include "prepare.hpp"
 #include "scene.hpp"
@@ -67,8 +68,7 @@ std::string number(double v) {
 
 std::vector<Axis> make_axes(const SweepArgs& a) {
   std::vector<Axis> axes;
-  Axis scene{"scene", {}}, shading{"shading", a.shadings}, tess{"tess", {}};
-  for (const std::string& s : a.scenes) scene.values.push_back(s);
+  Axis scene{"scene", a.scenes}, shading{"shading", a.shadings}, tess{"tess", {}};
   for (double f : a.tess) tess.values.push_back(number(f));
   axes.push_back(scene);
   axes.push_back(shading);
@@ -104,8 +104,8 @@ long long grid_size(const std::vector<Axis>& axes) {
 // ---- hardware cost --------------------------------------------------------------------------
 
 // Storage the hardware built for `cfg` needs: one edge record ($bits(edge_t)) and the ping-pong
-// scan-line buffer (one line filled while the other is read out), each pixel a depth word and
-// 8-bit R, G, B, over cfg.max_width pixels (the sweep sets it to the scene's screen width).
+// scan-line buffer (hardware_cost.hpp) over cfg.max_width pixels (the sweep sets it to the
+// scene's screen width).
 struct HardwareBits {
   long long edge_record = 0;  // one edge record
   long long line_buffer = 0;  // two scan-line buffers
@@ -113,7 +113,7 @@ struct HardwareBits {
 HardwareBits hardware_bits(const Config& cfg, ShadingMode shading) {
   HardwareBits b;
   b.edge_record = cfg.edge_record_bits(shading);
-  b.line_buffer = 2LL * cfg.max_width * (cfg.depth_bits + 3 * fmt::ShadeBits);
+  b.line_buffer = line_buffer_bits(cfg);
   return b;
 }
 

@@ -3,14 +3,9 @@
 // CSV columns and values are checked.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <set>
@@ -180,10 +175,11 @@ std::vector<std::map<std::string, std::string>> read_csv(const std::string& path
   return rows;
 }
 
-TEST(SweepCli, TinySweepWritesTheColumnsAndPhongBeatsGouraudOnTheSphere) {
-  char tmpl[] = "/tmp/watkins_sweep_XXXXXX";
-  ASSERT_NE(mkdtemp(tmpl), nullptr);
-  const std::string dir = tmpl, csv = dir + "/s.csv", md = dir + "/s.md";
+// Each test's CSV and markdown go to its own scratch directory, removed after the test.
+class SweepCli : public ::testing::Test, protected test::ScratchDir {};
+
+TEST_F(SweepCli, TinySweepWritesTheColumnsAndPhongBeatsGouraudOnTheSphere) {
+  const std::string dir = dir_, csv = dir + "/s.csv", md = dir + "/s.md";
   int code = 0;
   const std::string out = run("sweep " + std::string(WATKINS_SOURCE_DIR) +
                                   "/scenes/sphere.json --shadings gouraud-eq1,phong --tess 0.5 --jobs 2 --csv " +
@@ -219,17 +215,14 @@ TEST(SweepCli, TinySweepWritesTheColumnsAndPhongBeatsGouraudOnTheSphere) {
   std::stringstream text;
   text << m.rdbuf();
   EXPECT_NE(text.str().find("| sphere | phong | 16×8 |"), std::string::npos) << text.str();
-  std::system(("rm -rf " + dir).c_str());
 }
 
 // The fraction-bits axis: two attribute fractions and one the configuration refuses (shade
 // 60 + its 9 natural integer bits exceed the model's 62-bit words). Fewer fraction bits: a
 // smaller edge record, an error against the double reference that does not fall; the refused
 // point keeps its axes and its message, and the sweep still finishes (exit 0).
-TEST(SweepCli, FractionBitsAxis) {
-  char tmpl[] = "/tmp/watkins_sweep_XXXXXX";
-  ASSERT_NE(mkdtemp(tmpl), nullptr);
-  const std::string dir = tmpl, csv = dir + "/s.csv";
+TEST_F(SweepCli, FractionBitsAxis) {
+  const std::string dir = dir_, csv = dir + "/s.csv";
   int code = 0;
   const std::string out = run("sweep " + std::string(WATKINS_SOURCE_DIR) +
                                   "/scenes/sphere.json --shadings gouraud-eq1 --tess 0.5 --frac-bits 2,16,60 "
@@ -271,13 +264,10 @@ TEST(SweepCli, FractionBitsAxis) {
   EXPECT_NE(refused.at("error").find("shade.frac_bits"), std::string::npos) << refused.at("error");
   EXPECT_EQ(refused.at("truth_mean"), "");
   EXPECT_EQ(refused.at("edge_record_bits"), "");
-  std::system(("rm -rf " + dir).c_str());
 }
 
-TEST(SweepCli, ShardsSplitTheGrid) {
-  char tmpl[] = "/tmp/watkins_sweep_XXXXXX";
-  ASSERT_NE(mkdtemp(tmpl), nullptr);
-  const std::string dir = tmpl;
+TEST_F(SweepCli, ShardsSplitTheGrid) {
+  const std::string dir = dir_;
   std::set<std::string> points;
   for (int i = 0; i < 2; ++i) {
     int code = 0;
@@ -294,7 +284,6 @@ TEST(SweepCli, ShardsSplitTheGrid) {
   int code = 0;
   EXPECT_NE(run("sweep --shard 2/2", &code).find("--shard"), std::string::npos);
   EXPECT_EQ(code, 1);
-  std::system(("rm -rf " + dir).c_str());
 }
 
 }  // namespace

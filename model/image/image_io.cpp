@@ -46,6 +46,16 @@ ImageError compare_images(const Image& a, const Image& b) {
   return e;
 }
 
+bool geometry_differs(const Image& a, const Image& b, std::size_t i) {
+  return a.covered[i] != b.covered[i] || (a.covered[i] && a.owner[i] != b.owner[i]);
+}
+
+int pixel_max_abs(const Image& a, const Image& b, std::size_t i) {
+  int worst = 0;
+  for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(int(a.rgb[i * 3 + c]) - int(b.rgb[i * 3 + c])));
+  return worst;
+}
+
 Image diff_image(const Image& a, const Image& b, int gain) {
   Image d(a.width, a.height);
   for (int y = 0; y < a.height; ++y)

@@ -2,6 +2,7 @@
 // frames (model, RTL, double reference, analytic truth).
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 #include "image.hpp"
@@ -25,6 +26,11 @@ struct ImageError {
   int differing = 0;         // pixels (any) whose RGB differs at all
 };
 ImageError compare_images(const Image& a, const Image& b);
+
+// Pixel i (row-major) as compare_images judges it: geometry differs when it is covered in one
+// image only or by different polygons; otherwise its error is the largest |Δ| over R, G, B.
+bool geometry_differs(const Image& a, const Image& b, std::size_t i);
+int pixel_max_abs(const Image& a, const Image& b, std::size_t i);
 
 // |a − b| per pixel, scaled by `gain` so small errors are visible; magenta where coverage or the
 // visible polygon differs.
