@@ -20,10 +20,6 @@ int SceneNeeds::bits_for_value(int channel) const {
                    bits(slope_max[channel])});
 }
 
-SceneNeeds measure_needs(const Frame& frame, int polygons) {
-  return measure_needs(frame, polygons, Config{}.channels(ShadingMode::Gouraud));
-}
-
 SceneNeeds measure_needs(const Frame& frame, int polygons, const ChannelFormats& formats) {
   SceneNeeds needs;
   needs.value_bits.fill(1);
