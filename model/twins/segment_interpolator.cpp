@@ -1,6 +1,7 @@
 #include "segment_interpolator.hpp"
 
 #include <algorithm>
+#include <tuple>
 
 namespace watkins {
 namespace {
@@ -12,6 +13,12 @@ i64 first_centre_at_or_after(i64 x, int fx) {
 
 }  // namespace
 
+std::pair<int, int> SegmentInterpolator::pixels(const Segment& s, int width, int x_frac_bits) {
+  const i64 x_start = std::max<i64>(first_centre_at_or_after(s.e[fmt::ChanX], x_frac_bits), 0);
+  const i64 x_end = std::min<i64>(first_centre_at_or_after(s.f[fmt::ChanX], x_frac_bits), width);
+  return {static_cast<int>(x_start), static_cast<int>(std::max(x_end, x_start))};
+}
+
 SpanSetup SegmentInterpolator::setup(const Segment& s, int width, const ChannelFormats& formats) {
   SpanSetup span;
   span.formats = formats;
@@ -19,12 +26,8 @@ SpanSetup SegmentInterpolator::setup(const Segment& s, int width, const ChannelF
   span.material = s.material;
   const int fx = formats.x_frac();
   const i64 xe = s.e[fmt::ChanX], xf = s.f[fmt::ChanX];
-  span.x_start = static_cast<int>(std::max<i64>(first_centre_at_or_after(xe, fx), 0));
-  span.x_end = static_cast<int>(std::min<i64>(first_centre_at_or_after(xf, fx), width));
-  if (span.x_end <= span.x_start) {
-    span.x_end = span.x_start;  // empty span: no reciprocal needed
-    return span;
-  }
+  std::tie(span.x_start, span.x_end) = pixels(s, width, fx);
+  if (span.x_end == span.x_start) return span;  // empty span: no reciprocal needed
   const i64 dx = xf - xe;  // > 0: a pixel centre lies in [X_E, X_F)
   const SpanReciprocal r = SpanReciprocal::of(dx);
   const i64 offset = static_cast<i64>(span.x_start) * (i64{1} << fx) + (i64{1} << (fx - 1)) - xe;  // >= 0
