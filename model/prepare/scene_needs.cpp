@@ -11,17 +11,8 @@
 namespace watkins {
 
 int SceneNeeds::bits_for_value(int channel) const {
-  auto bits = [](i64 v) {
-    int b = 1;
-    while (!fits_signed(v, b)) ++b;
-    return b;
-  };
-  return std::max({bits(value_min[channel]), bits(value_max[channel]), bits(slope_min[channel]),
-                   bits(slope_max[channel])});
-}
-
-SceneNeeds measure_needs(const Frame& frame, int polygons) {
-  return measure_needs(frame, polygons, Config{}.channels(ShadingMode::Gouraud));
+  return std::max({signed_bits(value_min[channel]), signed_bits(value_max[channel]),
+                   signed_bits(slope_min[channel]), signed_bits(slope_max[channel])});
 }
 
 SceneNeeds measure_needs(const Frame& frame, int polygons, const ChannelFormats& formats) {

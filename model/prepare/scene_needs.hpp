@@ -30,10 +30,8 @@ struct SceneNeeds {
   int int_bits_needed(int channel, int frac) const { return value_bits[channel] - frac; }
 };
 
-// Measures `frame`, made of `polygons` polygons.
 // Measures `frame`, made of `polygons` polygons, on the pipeline whose channel slots have
-// `formats` (the default configuration's when not given).
+// `formats`.
 SceneNeeds measure_needs(const Frame& frame, int polygons, const ChannelFormats& formats);
-SceneNeeds measure_needs(const Frame& frame, int polygons);
 
 }  // namespace watkins

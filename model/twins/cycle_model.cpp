@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "scan_lines.hpp"
+#include "segment_interpolator.hpp"
 
 namespace watkins {
 namespace {
@@ -31,16 +32,6 @@ struct Streams {
   std::vector<int> record_y0;        // the edge-record stream
 };
 
-// The pixels [x_start, x_end) of a segment's span, clipped as SegmentInterpolator::setup() clips
-// them (timing needs neither the reciprocal nor the values, which cost most of setup()).
-std::pair<int, int> span_range(const Segment& seg, int width, int x_frac_bits) {
-  const i64 one = i64{1} << x_frac_bits, half = one / 2;
-  auto first_centre = [&](i64 x) { return static_cast<i64>(floor_shift(x - half + one - 1, x_frac_bits)); };
-  const i64 xs = std::max<i64>(first_centre(seg.e[fmt::ChanX]), 0);
-  const i64 xe = std::min<i64>(first_centre(seg.f[fmt::ChanX]), width);
-  return {static_cast<int>(xs), static_cast<int>(std::max(xe, xs))};
-}
-
 Streams front_half(const Frame& frame, bool sparse, int capacity, const Config& cfg) {
   const int x_frac_bits = cfg.x.frac_bits;
   Streams s;
@@ -60,7 +51,8 @@ Streams front_half(const Frame& frame, bool sparse, int capacity, const Config& 
     }
     spans.clear();
     for (const Segment& seg : sl.segments) {
-      const auto [xs, xe] = span_range(seg, frame.width, x_frac_bits);
+      // Timing needs only the span's pixels, not setup()'s reciprocal and values.
+      const auto [xs, xe] = SegmentInterpolator::pixels(seg, frame.width, x_frac_bits);
       s.items.push_back(Streams::Item{false, xe - xs});
       if (xe > xs) spans.emplace_back(xs, xe);
     }

@@ -27,12 +27,7 @@ struct EdgeIncrementer {
     --e.remaining;
   }
   // The default configuration (today's ChannelBits words).
-  static void step(ActiveEdge& e) {
-    for (int c = 0; c < fmt::NumChannels; ++c)
-      e.rec.value[c] = wrap_signed(static_cast<i128>(e.rec.value[c]) + e.rec.slope[c],
-                                   fmt::ChannelBits);
-    --e.remaining;
-  }
+  static void step(ActiveEdge& e) { step(e, Config{}.channels(ShadingMode::Gouraud)); }
 };
 
 }  // namespace watkins

@@ -7,11 +7,6 @@
 namespace watkins {
 
 void walk_scan_lines(const std::vector<EdgeRecord>& edges, int height, int capacity,
-                     const std::function<void(const ScanLine&)>& visit) {
-  walk_scan_lines(edges, height, capacity, Config{}.channels(ShadingMode::Gouraud), visit);
-}
-
-void walk_scan_lines(const std::vector<EdgeRecord>& edges, int height, int capacity,
                      const ChannelFormats& formats, const std::function<void(const ScanLine&)>& visit) {
   ActiveEdgeList active(capacity, formats);
   std::vector<Segment> segments;

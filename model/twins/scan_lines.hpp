@@ -23,10 +23,8 @@ struct ScanLine {
 
 // Walks scan lines 0 .. height-1 of the y-sorted `edges` with an active-edge list of `capacity`
 // entries, calling `visit` once per line. Throws CapacityError naming the line on overflow.
-// Channels wrap at the widths of `formats` (the default configuration's when not given).
+// Channels wrap at the widths of `formats`.
 void walk_scan_lines(const std::vector<EdgeRecord>& edges, int height, int capacity,
                      const ChannelFormats& formats, const std::function<void(const ScanLine&)>& visit);
-void walk_scan_lines(const std::vector<EdgeRecord>& edges, int height, int capacity,
-                     const std::function<void(const ScanLine&)>& visit);
 
 }  // namespace watkins

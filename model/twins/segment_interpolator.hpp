@@ -26,6 +26,7 @@
 
 #include <array>
 #include <cstdint>
+#include <utility>
 
 #include "config.hpp"
 #include "segment_former.hpp"
@@ -54,6 +55,9 @@ struct SpanSetup {
 };
 
 struct SegmentInterpolator {
+  // The span's pixels [x_start, x_end), clipped to [0, width), x_end == x_start when empty; X
+  // has x_frac_bits fraction bits. What setup() covers, without its reciprocal and values.
+  static std::pair<int, int> pixels(const Segment& s, int width, int x_frac_bits);
   static SpanSetup setup(const Segment& s, int width, const ChannelFormats& formats);
   static SpanSetup setup(const Segment& s, int width) {  // the default configuration
     return setup(s, width, Config{}.channels(ShadingMode::Gouraud));
