@@ -24,6 +24,14 @@ constexpr i128 round_shift(i128 v, int s) {
   return floor_shift(v + (static_cast<i128>(1) << (s - 1)), s);
 }
 
+// round_shift on 64 bits, for words of at most 62 bits (the per-pixel path, where 128-bit shifts
+// by a run-time amount cost the model a quarter of its speed).
+constexpr i64 round_shift64(i64 v, int s) {
+  if (s == 0) return v;
+  const i64 t = v + (i64{1} << (s - 1));
+  return t < 0 ? ~(~t >> s) : t >> s;
+}
+
 // round(a / b) for b > 0, ties toward +infinity; exact for any a.
 constexpr i128 round_div(i128 a, i128 b) {
   i128 n = 2 * a + b;
@@ -39,6 +47,13 @@ constexpr i64 wrap_signed(i128 v, int bits) {
   i128 u = v & m;
   if (u >> (bits - 1)) u -= static_cast<i128>(1) << bits;
   return static_cast<i64>(u);
+}
+
+// wrap_signed on 64 bits, for words of at most 62 bits.
+constexpr i64 wrap_signed64(i64 v, int bits) {
+  const i64 m = (i64{1} << bits) - 1;
+  const i64 u = v & m;
+  return (u >> (bits - 1)) ? u - (i64{1} << bits) : u;
 }
 
 // Keep the low `bits` bits as an unsigned value.
