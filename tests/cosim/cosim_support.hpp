@@ -2,9 +2,8 @@
 // shipped scene list and the failure report (the random scenes are tests/support/random_scene.hpp).
 #pragma once
 
-#include <algorithm>
 #include <cctype>
-#include <filesystem>
+#include <cstdint>
 #include <string>
 #include <vector>
 
