@@ -1,7 +1,6 @@
-# watkins_rtl_unit(<bench> TOP <module> SOURCES <rtl files...> [PARAMS Name=value ...] [LINK libs...]
-#                  [LABELS l...])
-# Known limit: gtest_discover_tests passes only the first of several LABELS to the discovered
-# tests (CMake 3.25 writes the list unquoted), so the Phong benches carry "rtl" alone.
+# watkins_rtl_unit(<bench> TOP <module> SOURCES <rtl files...> [PARAMS Name=value ...] [LINK libs...])
+# Every discovered test carries the label "rtl" (one label: CMake 3.25's gtest_discover_tests
+# writes a list of labels unquoted, so only the first of several would arrive).
 # One GoogleTest bench around one Verilated RTL unit (--cc, -O3, --assert), linked with the
 # bit-exact model so the bench compares the unit with its twin (tests/rtl); one Verilated model
 # per unit top. Verilator searches rtl/ (-y) for the includes
@@ -16,7 +15,7 @@ find_package(GTest REQUIRED)
 include(GoogleTest)
 
 function(watkins_rtl_unit bench)
-  cmake_parse_arguments(U "" "TOP" "SOURCES;PARAMS;LINK;LABELS" ${ARGN})
+  cmake_parse_arguments(U "" "TOP" "SOURCES;PARAMS;LINK" ${ARGN})
   add_executable(${bench} ${CMAKE_CURRENT_SOURCE_DIR}/${bench}.cpp)
   target_include_directories(${bench} PRIVATE ${CMAKE_CURRENT_SOURCE_DIR} ${CMAKE_SOURCE_DIR}/tests/rtl
                              ${CMAKE_SOURCE_DIR}/testbench)
@@ -42,8 +41,5 @@ function(watkins_rtl_unit bench)
     OPT_FAST -O3
     VERILATOR_ARGS -O3 --x-assign fast --x-initial fast --assert -Wno-fatal -y ${CMAKE_SOURCE_DIR}/rtl
                    ${vparams})
-  if(NOT U_LABELS)
-    set(U_LABELS rtl)
-  endif()
-  gtest_discover_tests(${bench} DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 600 LABELS "${U_LABELS}")
+  gtest_discover_tests(${bench} DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 600 LABELS rtl)
 endfunction()

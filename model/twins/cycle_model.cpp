@@ -111,9 +111,9 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
   bool out_done_q = false, inc_done_q = false, eol_sent_q = false;
   std::size_t next_record = 0;
   bool eof_taken = false;
-  bool inc_valid_q = false, inc_retire_q = false;
+  bool st_valid = false, st_retire = false;  // the edge_incrementer's output (st_valid, st_retire)
   // ---- segment_former
-  bool sf_valid_q = false;
+  bool seg_valid = false;  // seg_valid_o
   // ---- segment_interpolator: s0, span_reciprocal, sa/sb/sc, FIFO, stepper. Items pass every
   // stage in order, so a stage's item is its position in st.items, counted where it leaves.
   bool s0_valid_q = false;
@@ -126,7 +126,7 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
   int fifo_head = 0, fifo_count = 0;
   bool step_active = false;
   int step_left = 0;
-  bool frag_valid_q = false, frag_eol_q = false;
+  bool frag_valid = false, frag_eol = false;  // frag_valid_o, frag_eol_o
   // ---- Phong: normalizer -> phong_shader
   StallPipe norm{0, 0, NormalizerStages}, shade{0, 0, ShaderStages};
   // ---- scanline_buffer reader
@@ -139,10 +139,10 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
   // out behind a stalled pipeline, a long span behind full queues).
   auto key = [&] {
     return std::make_tuple(frame_q, drain_q, line_q, rd_q, cnt_stream, cnt_fill, out_done_q, inc_done_q,
-                           eol_sent_q, next_record, eof_taken, inc_valid_q, inc_retire_q, sf_valid_q,
+                           eol_sent_q, next_record, eof_taken, st_valid, st_retire, seg_valid,
                            s0_valid_q, recip_valid, recip_out, sa_valid, sb_valid, sc_valid, sa_item, sb_item,
                            sc_item, fifo[0], fifo[1], fifo[2], fifo[3], fifo_head, fifo_count, step_active,
-                           frag_valid_q, frag_eol_q, norm.valid, norm.eol, shade.valid, shade.eol, rd_busy_q,
+                           frag_valid, frag_eol, norm.valid, norm.eol, shade.valid, shade.eol, rd_busy_q,
                            rline_q, lines_written);
   };
   static_assert(InterpFifoDepth == 4, "key() lists the FIFO's words");
@@ -153,8 +153,8 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
     // ================= combinational, from the outputs back =================
     const bool rd_last = rd_busy_q && rd_left == 1;
     const bool eol_ok = !rd_busy_q || rd_last;
-    const bool sh_valid = phong ? shade.out_valid() : frag_valid_q;
-    const bool sh_eol = phong ? shade.out_eol() : frag_eol_q;
+    const bool sh_valid = phong ? shade.out_valid() : frag_valid;
+    const bool sh_eol = phong ? shade.out_eol() : frag_eol;
     const bool sh_ready = !sh_eol || eol_ok;
     const bool eol_fire = sh_valid && sh_eol && sh_ready;
     bool fr_ready = sh_ready, en_shade = false, en_norm = false;
@@ -166,7 +166,7 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
     // stepper and FIFO head
     const bool head_valid = fifo_count > 0;
     const Streams::Item& head = st.items[head_valid ? fifo[fifo_head] : 0];
-    const bool out_free = !frag_valid_q || fr_ready;
+    const bool out_free = !frag_valid || fr_ready;
     const bool from_head = !step_active && head_valid && !head.eol;
     const bool emit_frag = out_free && (step_active || from_head);
     const bool emit_eol = out_free && !step_active && head_valid && head.eol;
@@ -181,7 +181,7 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
     const bool rc_valid = (recip_valid >> (RecipStages - 1)) & 1;
     const bool en_recip = tail_en || !rc_valid;
     const bool seg_ready = !s0_valid_q || en_recip;
-    const bool sf_ready = seg_ready || !sf_valid_q;
+    const bool sf_ready = seg_ready || !seg_valid;
     // active-edge list output
     const bool streaming = frame_q && !drain_q && line_q != 0;
     const bool have_edge = streaming && rd_q < cnt_stream;
@@ -194,7 +194,7 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
     const bool edge_valid = !eof_taken;
     const bool head_eof = next_record == records;
     const int y0 = head_eof ? 0 : st.record_y0[next_record];
-    const bool ins_step = inc_valid_q && !inc_retire_q;
+    const bool ins_step = st_valid && !st_retire;
     const bool head_edge = edge_valid && !head_eof;
     const bool live = frame_q && !drain_q;
     const bool take_new = live && head_edge && line_q < height && y0 == line_q && !ins_step;
@@ -202,7 +202,7 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
     const bool edge_ready = take_new || drop_late || (drain_q && edge_valid);
     const bool ins_valid = ins_step || take_new;
     const bool src_done = line_q == height || (edge_valid && (head_eof || y0 > line_q));
-    const bool swap = live && (line_q == 0 || eol_sent_q) && !inc_valid_q && src_done;
+    const bool swap = live && (line_q == 0 || eol_sent_q) && !st_valid && src_done;
 
     // ================= registers =================
     const bool rd_counts = rd_busy_q && !rd_last;
@@ -235,18 +235,18 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
     // Phong pipes (each stage's valid shifts on its own enable)
     if (phong) {
       const bool nv = norm.out_valid(), ne = norm.out_eol();
-      if (en_norm) norm.shift(frag_valid_q, frag_eol_q);
+      if (en_norm) norm.shift(frag_valid, frag_eol);
       if (en_shade) shade.shift(nv, ne);
     }
     // stepper
-    if (out_free) frag_valid_q = emit_frag || emit_eol;
+    if (out_free) frag_valid = emit_frag || emit_eol;
     if (emit_frag) {
-      frag_eol_q = false;
+      frag_eol = false;
       const int left = (from_head ? head.pixels : step_left) - 1;
       step_left = left;
       step_active = left > 0;
     } else if (emit_eol) {
-      frag_eol_q = true;
+      frag_eol = true;
     }
     // FIFO
     if (pop) {
@@ -267,15 +267,15 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
       if (rc_valid) sa_item = recip_out++;
     }
     if (en_recip) recip_valid = ((recip_valid << 1) | std::uint64_t(s0_valid_q)) & recip_mask;
-    if (seg_ready) s0_valid_q = sf_valid_q;
+    if (seg_ready) s0_valid_q = seg_valid;
     // segment former
     if (sf_ready) {
       const bool emits = ae_fire && (!have_edge || st.closes[g]);
-      sf_valid_q = emits;
+      seg_valid = emits;
     }
     // edge incrementer
-    inc_valid_q = inc_fire;
-    if (inc_fire) inc_retire_q = st.retire[g];
+    st_valid = inc_fire;
+    if (inc_fire) st_retire = st.retire[g];
     // active-edge list
     if (advance) {
       ++rd_q;
