@@ -84,33 +84,37 @@ TEST(Config, FileErrorsNameTheField) {
   EXPECT_NE(err("{").find("c.json: malformed JSON"), std::string::npos);
 }
 
-// `watkins_gen_pkg --config F`: the configuration's parameters for the RTL side; the default
-// configuration gives today's widths (and watkins_pkg itself does not change, test_formats.cpp).
-TEST(Config, GeneratorPrintsTheParametersOfAConfiguration) {
+// `watkins_gen_pkg --params F --shading S`: watkins_top's parameters for the configuration, one
+// Verilator -G option per line; the default configuration gives today's widths.
+TEST(Config, GeneratorPrintsTheRtlParametersOfAConfiguration) {
   char tmpl[] = "/tmp/watkins_cfgpkg_XXXXXX";
   const int fd = mkstemp(tmpl);
   ASSERT_GE(fd, 0);
   const std::string path = tmpl;
-  auto generate = [&](const std::string& text) {
+  auto generate = [&](const std::string& text, const char* shading) {
     FILE* f = std::fopen(path.c_str(), "w");
     std::fputs(text.c_str(), f);
     std::fclose(f);
     std::string out;
-    FILE* p = popen((std::string(WATKINS_GEN_PKG) + " --config " + path + " 2>&1").c_str(), "r");
+    FILE* p = popen((std::string(WATKINS_GEN_PKG) + " --params " + path + " --shading " + shading + " 2>&1").c_str(), "r");
     char buf[512];
     while (p && std::fgets(buf, sizeof buf, p)) out += buf;
     if (p) pclose(p);
     return out;
   };
-  const std::string def = generate("{}");
-  EXPECT_NE(def.find("localparam int XChanBits = 42;"), std::string::npos) << def;
-  EXPECT_NE(def.find("localparam int EdgeRecordBitsGouraud = 466;"), std::string::npos) << def;
-  EXPECT_NE(def.find("localparam int PolyIdBits = 16;"), std::string::npos) << def;
-  const std::string narrow = generate(R"({"shade": {"int_bits": 9, "frac_bits": 8}, "max_materials": 4})");
-  EXPECT_NE(narrow.find("localparam int ShadeChanBits = 17;"), std::string::npos) << narrow;
-  EXPECT_NE(narrow.find("localparam int MaterialIdBits = 2;"), std::string::npos) << narrow;
-  EXPECT_NE(narrow.find("localparam int EdgeRecordBitsGouraud = 314;"), std::string::npos) << narrow;
-  EXPECT_NE(generate(R"({"x": {"frac_bits": 1}})").find("x.frac_bits: 1 is below 4"), std::string::npos);
+  EXPECT_EQ(generate("{}", "gouraud"),
+            "-GPhong=0\n-GMaxActiveEdges=64\n-GMaxWidth=1024\n-GXIntBits=26\n-GXFracBits=16\n"
+            "-GDepthIntBits=26\n-GDepthFracBits=16\n-GAttrIntBits=26\n-GAttrFracBits=16\n-GDepthBits=24\n"
+            "-GPolyIdBits=16\n-GMaterialIdBits=4\n");
+  const std::string narrow = R"({"shade": {"int_bits": 9, "frac_bits": 8}, "normal": {"int_bits": 2, "frac_bits": 15},
+                                 "max_materials": 4, "max_polygons": 6})";
+  const std::string g = generate(narrow, "gouraud"), p = generate(narrow, "phong");
+  EXPECT_NE(g.find("-GAttrIntBits=9\n-GAttrFracBits=8\n"), std::string::npos) << g;
+  EXPECT_NE(p.find("-GPhong=1\n"), std::string::npos) << p;
+  EXPECT_NE(p.find("-GAttrIntBits=2\n-GAttrFracBits=15\n"), std::string::npos) << p;
+  EXPECT_NE(p.find("-GPolyIdBits=3\n-GMaterialIdBits=2\n"), std::string::npos) << p;
+  EXPECT_NE(generate(R"({"x": {"frac_bits": 1}})", "gouraud").find("x.frac_bits: 1 is below 4"), std::string::npos);
+  EXPECT_NE(generate("{}", "flat").find("--shading: expected gouraud or phong, got flat"), std::string::npos);
   close(fd);
   std::remove(path.c_str());
 }

@@ -205,6 +205,7 @@ static PreparedScene prepare_unnamed(const BuiltScene& scene, const Config& cfg)
                      " bits (at most " + std::to_string(max_polys) + ")");
 
   PreparedScene out;
+  out.config = cfg;
   out.width = scene.width;
   out.height = scene.height;
   for (int c = 0; c < 3; ++c)

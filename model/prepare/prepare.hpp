@@ -25,10 +25,11 @@ struct PrepareOptions {
 };
 
 // The frame watkins_top renders (its pins and edge stream), with what scene preparation learnt
-// on the way: the polygon count and what the frame needs from the hardware.
+// on the way: the polygon count, what the frame needs from the hardware, and which hardware.
 struct PreparedScene : Frame {
   int polygons = 0;
   SceneNeeds needs;
+  Config config;  // the configuration it was prepared for: WatkinsTop(config) and the RTL built for it
 };
 
 // Channels ChanR.. carry the shade (Gouraud) or the unit normal (Phong, ChanNx..); throws

@@ -1,5 +1,7 @@
 #include "config.hpp"
 
+#include <cstring>
+
 namespace watkins {
 
 const char* channel_name(int c, ShadingMode shading) {
@@ -25,6 +27,27 @@ int Config::edge_record_bits(ShadingMode shading) const {
   int words = 0;
   for (int c = 0; c < fmt::NumChannels; ++c) words += f.bits[c];
   return 2 * fmt::LineBits + id_bits(max_polygons) + id_bits(max_materials) + 2 * words;
+}
+
+bool RtlParameter::operator==(const RtlParameter& o) const {
+  return value == o.value && std::strcmp(name, o.name) == 0;
+}
+
+std::vector<RtlParameter> rtl_parameters(const Config& c, ShadingMode shading) {
+  const bool phong = shading == ShadingMode::Phong;
+  const ChannelFormat& attr = phong ? c.normal : c.shade;
+  return {{"Phong", phong ? 1 : 0},
+          {"MaxActiveEdges", c.max_active_edges},
+          {"MaxWidth", c.max_width},
+          {"XIntBits", c.x.int_bits},
+          {"XFracBits", c.x.frac_bits},
+          {"DepthIntBits", c.depth.int_bits},
+          {"DepthFracBits", c.depth.frac_bits},
+          {"AttrIntBits", attr.int_bits},
+          {"AttrFracBits", attr.frac_bits},
+          {"DepthBits", c.depth_bits},
+          {"PolyIdBits", id_bits(c.max_polygons)},
+          {"MaterialIdBits", id_bits(c.max_materials)}};
 }
 
 std::string Config::check() const {

@@ -9,10 +9,10 @@
 // The edge record's channel slots 2..4 carry the shade (Gouraud) or the normal (Phong), so a
 // configuration resolves to five slot formats per shading mode (ChannelFormats).
 //
-// What the RTL takes from it (the RTL half of issue 9; every width below is a parameter there,
-// named as `watkins_gen_pkg --config F` prints them in watkins_cfg_pkg):
-//   slot widths      ChannelFormats::bits[c]  = XChanBits, DepthChanBits, ShadeChanBits|NormalChanBits
-//   slot fractions   ChannelFormats::frac[c]  = XFracBits, DepthFracBits, ShadeFracBits|NormalFracBits
+// What the RTL takes from it: watkins_top's parameters (rtl_parameters(), printed by
+// `watkins_gen_pkg --params F --shading S` as a Verilator -G file):
+//   slot formats     X: XIntBits, XFracBits; Z: DepthIntBits, DepthFracBits; slots 2..4: AttrIntBits,
+//                    AttrFracBits (the shade group in a Gouraud top, the normal group in a Phong top)
 //   depth_bits       DepthBits (fragment depth, scan-line buffer depth word)
 //   max_active_edges MaxActiveEdges; max_width MaxWidth (line buffer);
 //   max_materials    MaterialIdBits = clog2(max_materials); max_polygons PolyIdBits = clog2(max_polygons)
@@ -21,6 +21,7 @@
 
 #include <array>
 #include <string>
+#include <vector>
 
 #include "formats.hpp"
 #include "shading_mode.hpp"
@@ -54,7 +55,7 @@ struct Config {
   ChannelFormat normal;  // Nx, Ny, Nz, units of 1.0 (Phong)
   int depth_bits = fmt::DepthBits;               // depth resolution: [0, 1) -> [0, 2^depth_bits)
   int max_active_edges = fmt::MaxActiveEdges;    // active-edge list entries
-  int max_width = fmt::MaxScreen;                // scan-line buffer pixels (screen width limit)
+  int max_width = fmt::DefaultMaxWidth;          // scan-line buffer pixels (screen width limit), as the RTL's default
   int max_materials = fmt::MaxMaterials;         // Phong material table entries
   int max_polygons = fmt::MaxPolygons;           // polygons per frame (polygon ids)
 
@@ -93,6 +94,18 @@ struct Config {
   }
   bool operator!=(const Config& o) const { return !(*this == o); }
 };
+
+// One parameter of watkins_top, named as the RTL names it.
+struct RtlParameter {
+  const char* name;
+  long long value;
+  bool operator==(const RtlParameter& o) const;
+};
+// watkins_top's parameters for `config` and `shading`, in a fixed order (Phong first): the RTL
+// built with them is bit-exact with WatkinsTop(config) on frames of that shading. Two
+// configurations with equal lists build the same hardware (a Gouraud top ignores the normal
+// group, a Phong top the shade group).
+std::vector<RtlParameter> rtl_parameters(const Config& config, ShadingMode shading);
 
 // Names of channel slot c for messages: X, Z, R, G, B or X, Z, Nx, Ny, Nz; and of its group
 // (the configuration's field): x, depth, shade or normal.
