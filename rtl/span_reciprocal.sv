@@ -4,7 +4,8 @@
 // Pipelined, one input per clock: 1 stage leading-one detection and normalization, then a
 // restoring divider of R+1 stages (one quotient bit each). Latency R+2 = 26 cycles. Every stage
 // is registered; one global stall (ready_o = ready_i || !valid_o, stall_pipe) holds the whole
-// pipe. payload_i travels alongside, so the caller keeps its span data in step with the quotient.
+// pipe. payload_i travels alongside, so the caller keeps its span data in step with the quotient:
+// kept in a RAM (stall_pipe PayloadRam), only the quotient's own registers are per stage.
 `include "watkins_assert.svh"
 
 module span_reciprocal #(
@@ -34,9 +35,12 @@ module span_reciprocal #(
   logic [ExpBits-1:0]   p_q   [Stages];
 
   // Valid, payload and the stall of every stage; the registers below advance on its en.
+  // The payload (a whole span's setup in segment_interpolator) is written once, not shifted
+  // through 26 stages of registers.
   stall_pipe #(
     .Stages     (Stages),
-    .PayloadBits(PayloadBits)
+    .PayloadBits(PayloadBits),
+    .PayloadRam (1'b1)
   ) u_pipe (
     .clk_i, .rst_ni,
     .payload_i,
