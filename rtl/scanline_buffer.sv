@@ -3,13 +3,21 @@
 // into one (kept when the pixel is empty or strictly nearer; first arrival wins ties) while the
 // other streams line y-1 out, pixel x = 0..width-1, clearing each pixel as it is read. The
 // end-of-line marker swaps the buffers once the reader has taken the previous line's last pixel.
-// Write side: one fragment per clock, read-modify-write with asynchronous reads, so back-to-back
-// fragments to the same x see each other without forwarding; frag_ready_o is combinational
-// (low only for a marker waiting on the reader). Read side: pixel output registered, latency 1.
+// Storage: depth and shade in two RAMs of 2 * MaxWidth words with synchronous reads (block RAM:
+// SB_RAM40_4K / DP16KD), each with one write port (the writer) and one read port (depth: the
+// writer's depth test; shade: the reader), and one written bit per pixel in flops (cleared as the
+// reader takes the pixel; unwritten words are never read as values). Write side: one fragment per
+// clock in two steps -- the clock it is accepted its depth word is read, the next it is tested
+// and written; the depth written the clock before is forwarded, so back-to-back fragments to the
+// same x see each other. frag_ready_o is combinational (low only for a marker waiting on the
+// reader); a marker swaps the buffers while its line's last fragment is still being written,
+// which lands before the reader's first read. Read side: pixel from the shade RAM's output
+// register (and registered coverage and background), latency 1, the same cycles as flops.
 // Sparse mode (sparse_i, stable per frame): the reader emits only the covered pixels of a line,
-// in raster order, one per clock: a find-next-written search (priority encoder over the read
-// bank's written bits at and above the current x) picks the next one, and the line ends with its
-// last covered pixel; a line with no covered pixel costs one cycle and emits nothing. The frame's
+// in raster order, one per clock: a find-next-written search over the read bank's written bits
+// at and above the current x picks the next one, found hierarchically (per 32-pixel word: which
+// words hold a candidate, then the first word's lowest bit), and the line ends with its last
+// covered pixel; a line with no covered pixel costs one cycle and emits nothing. The frame's
 // last beat (pixel_last_o) is the last covered pixel of the last line; when the last line has no
 // covered pixel (in particular when the frame covers none), a terminating beat with
 // pixel_covered_o = 0, background rgb, at (width-1, height-1) carries pixel_last_o instead.
@@ -45,9 +53,10 @@ module scanline_buffer #(
 
   // Bank b holds pixel x at address b * MaxWidth + x. Shades as plain vectors, not rgb_t: yosys
   // 0.23 mishandles arrays of structs.
-  logic [DepthBits-1:0] depth_q [2 * MaxWidth];
-  logic [watkins_pkg::RgbBits-1:0]   rgb_q   [2 * MaxWidth];
-  logic [2 * MaxWidth - 1:0]         written_q;  // flops: cleared by reset and by reading
+  localparam int unsigned RB = watkins_pkg::RgbBits;
+  logic [DepthBits-1:0]      depth_mem [2 * MaxWidth];
+  logic [RB-1:0]             rgb_mem   [2 * MaxWidth];
+  logic [2 * MaxWidth - 1:0] written_q;  // flops: cleared by reset and by reading
 
   logic          wsel_q;           // bank being written; the reader uses the other one
   logic          rd_busy_q;
@@ -62,29 +71,53 @@ module scanline_buffer #(
 
   // ------------------------------------------------------------ read-side search (sparse)
   // The read bank's written bits at or above rx_q; the lowest one is the next covered pixel.
-  logic [MaxWidth-1:0] rbits, cand, rest, lowbit;
-  logic [LB-1:0]       nx;
-  logic                found, more;
+  // Two levels instead of one MaxWidth-bit priority encoder (whose borrow chain was the clock's
+  // limit): per 32-pixel word, does it hold a candidate; the first such word's lowest candidate.
+  localparam int unsigned WordBits = 32;
+  localparam int unsigned WIB      = $clog2(WordBits);
+  localparam int unsigned Words    = (MaxWidth + WordBits - 1) / WordBits;
+  localparam int unsigned WAB      = (Words > 1) ? $clog2(Words) : 1;
+  logic [MaxWidth-1:0]         rbits;
+  logic [Words*WordBits-1:0]   rpad;
+  logic [Words-1:0]            occ;       // word w holds a written x >= rx_q
+  logic [WordBits-1:0]         wcand [Words];
+  logic [WAB-1:0]              fw;        // first such word
+  logic [WordBits-1:0]         fword;     // its candidates
+  logic [WIB-1:0]              lb;        // lowest candidate in it
+  logic [LB-1:0]               nx;
+  logic                        found, more;
+  /* verilator lint_off UNUSEDSIGNAL */
+  logic [LB-1:0]               cw;        // rx_q's word (rx_q <= MaxWidth: its top bits are zero)
+  /* verilator lint_on UNUSEDSIGNAL */
 
-  assign rbits  = wsel_q ? written_q[MaxWidth-1:0] : written_q[2*MaxWidth-1:MaxWidth];
-  assign cand   = rbits & ({MaxWidth{1'b1}} << rx_q);
-  assign rest   = cand & (cand - 1'b1);   // cand without its lowest bit
-  assign lowbit = cand ^ rest;            // one-hot: the next written x
-  assign found  = |cand;
-  assign more   = |rest;
+  assign rbits = wsel_q ? written_q[MaxWidth-1:0] : written_q[2*MaxWidth-1:MaxWidth];
+  assign rpad  = (Words * WordBits)'(rbits);
+  assign cw    = rx_q >> WIB;
 
-  // One-hot to binary: bit b of nx is set when lowbit hits an x whose bit b is set (a constant
-  // mask per bit: LB wide AND-reduce-ORs instead of a MaxWidth-step loop).
-  for (genvar b = 0; b < LB; b++) begin : g_enc
-    logic [MaxWidth-1:0] xmask;
-    for (genvar i = 0; i < MaxWidth; i++) begin : g_bit
-      assign xmask[i] = ((i >> b) & 1) != 0;
-    end
-    assign nx[b] = |(lowbit & xmask);
+  for (genvar w = 0; w < Words; w++) begin : g_word
+    logic [WordBits-1:0] bits;
+    assign bits = rpad[w*WordBits +: WordBits];
+    // Only sparse mode reads the search: full mode keeps it idle.
+    assign wcand[w] = !sparse_i ? '0
+                    : (LB'(w) == cw) ? bits & ({WordBits{1'b1}} << rx_q[WIB-1:0])
+                    : (cw <= LB'(w)) ? bits : '0;
+    assign occ[w] = |wcand[w];
+  end
+
+  always_comb begin
+    fw = '0;
+    for (int w = Words - 1; w >= 0; w--) if (occ[w]) fw = WAB'(w);
+    fword = wcand[fw];
+    lb = '0;
+    for (int i = WordBits - 1; i >= 0; i--) if (fword[i]) lb = WIB'(i);
+    found = |occ;
+    // Another candidate after the found one: in the same word, or in a later word.
+    more  = |(fword & (fword - 1'b1)) || |(occ & (occ - 1'b1));
+    nx    = LB'({fw, lb});
   end
 
   // ------------------------------------------------------------ write side
-  logic          frag_fire, wins, rd_load, rd_step, rd_emit, rd_last, rd_lastline, eol_ok;
+  logic          frag_fire, rd_load, rd_step, rd_emit, rd_last, rd_lastline, eol_ok;
   logic [LB-1:0]       rd_x;
   logic [AddrBits-1:0] wa, ra;
 
@@ -102,17 +135,41 @@ module scanline_buffer #(
   assign eol_ok       = !rd_busy_q || (rd_step && rd_last);
   assign frag_ready_o = !frag_eol_i || eol_ok;
   assign frag_fire    = frag_valid_i && frag_ready_o;
-  assign wins         = !written_q[wa] || (frag_depth_i < depth_q[wa]);
+
+  // Step 1 (the accepting clock): read the depth word. Step 2: test against it -- or against the
+  // depth written the clock before at the same address, which the RAM read did not see yet --
+  // and write. written_q already holds that previous write.
+  logic                 t_valid_q, lw_valid_q;
+  logic [AddrBits-1:0]  t_addr_q, lw_addr_q;
+  logic [DepthBits-1:0] t_depth_q, lw_depth_q, mem_depth_q, old_depth;
+  logic [RB-1:0]        t_rgb_q;
+  logic                 wins;
 
   always_ff @(posedge clk_i) begin
-    if (frag_fire && !frag_eol_i && wins) begin
-      depth_q[wa] <= frag_depth_i;
-      rgb_q[wa]   <= frag_rgb_i;
+    if (frag_fire && !frag_eol_i) mem_depth_q <= depth_mem[wa];
+    if (frag_fire && !frag_eol_i) begin
+      t_addr_q  <= wa;
+      t_depth_q <= frag_depth_i;
+      t_rgb_q   <= frag_rgb_i;
+    end
+    lw_addr_q  <= t_addr_q;
+    lw_depth_q <= t_depth_q;
+  end
+
+  assign old_depth = (lw_valid_q && lw_addr_q == t_addr_q) ? lw_depth_q : mem_depth_q;
+  assign wins      = t_valid_q && (!written_q[t_addr_q] || (t_depth_q < old_depth));
+
+  always_ff @(posedge clk_i) begin
+    if (wins) begin
+      depth_mem[t_addr_q] <= t_depth_q;
+      rgb_mem[t_addr_q]   <= t_rgb_q;
     end
   end
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
+      t_valid_q     <= 1'b0;
+      lw_valid_q    <= 1'b0;
       written_q     <= '0;
       wsel_q        <= 1'b0;
       rd_busy_q     <= 1'b0;
@@ -120,8 +177,11 @@ module scanline_buffer #(
       rline_q       <= '0;
       pixel_valid_o <= 1'b0;
     end else begin
-      // Reader and writer always use different banks, so their updates never collide.
-      if (frag_fire && !frag_eol_i && wins) written_q[wa] <= 1'b1;
+      t_valid_q  <= frag_fire && !frag_eol_i;
+      lw_valid_q <= wins;
+      // Reader and writer always use different banks, so their updates never collide (a
+      // fragment still being tested belongs to the bank the reader starts on only after it).
+      if (wins) written_q[t_addr_q] <= 1'b1;
       if (rd_load) written_q[ra] <= 1'b0;
       if (rd_step) begin
         rx_q <= rd_x + 1'b1;
@@ -139,25 +199,31 @@ module scanline_buffer #(
     end
   end
 
+  // Read side: the shade RAM's output register is the pixel's shade when covered.
+  logic [RB-1:0] rgb_rd_q;
+  watkins_pkg::rgb_t background_q;
   always_ff @(posedge clk_i) begin
     if (rd_load) begin
-      pixel_rgb_o     <= written_q[ra] ? rgb_q[ra] : background_i;
+      rgb_rd_q        <= rgb_mem[ra];
+      background_q    <= background_i;
       pixel_covered_o <= written_q[ra];
       pixel_x_o       <= rd_x;
       pixel_y_o       <= rline_q;
       pixel_last_o    <= rd_last && rd_lastline;
     end
   end
+  assign pixel_rgb_o = pixel_covered_o ? rgb_rd_q : background_q;
 
   `WATKINS_ASSERT_HOLD(a_in_hold, frag_valid_i, frag_ready_o, {frag_x_i, frag_depth_i, frag_rgb_i,
     frag_eol_i})
   `WATKINS_ASSERT_HOLD(a_out_hold, pixel_valid_o, pixel_ready_i, {pixel_rgb_o, pixel_covered_o,
     pixel_last_o, pixel_x_o, pixel_y_o})
   `WATKINS_ASSERT(a_sparse_covered, rd_load && sparse_i && !(rd_last && rd_lastline) |-> found)
-  `WATKINS_ASSERT(a_sparse_one_hot, $onehot0(lowbit))
+  `WATKINS_ASSERT(a_banks_apart, t_valid_q && rd_load |-> t_addr_q != ra)
   `WATKINS_COVER(c_sparse_empty_line, rd_step && !rd_emit)
   `WATKINS_ASSERT(a_x_in_line, frag_valid_i && !frag_eol_i |-> frag_x_i < width_i)
   `WATKINS_COVER(c_same_x_back_to_back,
     frag_fire && !frag_eol_i && $past(frag_fire && !frag_eol_i) && frag_x_i == $past(frag_x_i))
+  `WATKINS_COVER(c_forwarded, t_valid_q && lw_valid_q && lw_addr_q == t_addr_q)
   `WATKINS_COVER(c_eol_waits, frag_valid_i && !frag_ready_o)
 endmodule
