@@ -45,9 +45,12 @@ module phong_shader #(
 
   // Valid, payload and the stall of every stage; the registers below advance on its en.
   logic en;
+  // The payload (the fragment's x, depth, ...) is written once into a RAM, not shifted through
+  // every stage.
   stall_pipe #(
     .Stages     (Stages),
-    .PayloadBits(PayloadBits)
+    .PayloadBits(PayloadBits),
+    .PayloadRam (1'b1)
   ) u_pipe (
     .clk_i, .rst_ni,
     .payload_i,
