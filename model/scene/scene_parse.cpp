@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <initializer_list>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -20,9 +21,43 @@ using nlohmann::json;
 
 constexpr double kCoordLimit = fmt::VertexLimit;  // screen-space vertices: [-8192, 8192) pixels
 
-// A short rendering of an offending value for messages.
+// Deepest nesting of arrays and objects a scene may use (the shipped scenes need 6). Checked on
+// the text before parsing, so nothing downstream (the DOM, its destructor, messages) ever
+// recurses deeper than this on input.
+constexpr int kMaxNesting = 64;
+// Largest magnitude of any number in a scene: products of two stay far from overflow (a
+// direction, eye or normal of 1e200 would give an infinite length and a NaN camera basis).
+constexpr double kMaxMagnitude = 1e9;
+// Smallest positive number a positive field takes (its reciprocal stays bounded as well).
+constexpr double kMinPositive = 1e-9;
+
+// A short rendering of an offending value for messages: at most 40 characters, built without
+// serializing the whole value (an array of 10^6 numbers renders its first few) and with control
+// characters escaped as JSON does.
+void show_into(const json& j, std::string& out, int depth) {
+  if (out.size() > 40) return;
+  if (j.is_array() || j.is_object()) {
+    if (depth >= 3) {
+      out += j.is_array() ? "[...]" : "{...}";
+      return;
+    }
+    out += j.is_array() ? '[' : '{';
+    bool first = true;
+    for (auto it = j.begin(); it != j.end() && out.size() <= 40; ++it) {
+      if (!first) out += ',';
+      first = false;
+      if (j.is_object()) out += json(it.key()).dump(-1, ' ', false, json::error_handler_t::replace) + ':';
+      show_into(it.value(), out, depth + 1);
+    }
+    out += j.is_array() ? ']' : '}';
+    return;
+  }
+  out += j.dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
 std::string show(const json& j) {
-  std::string s = j.dump();
+  std::string s;
+  show_into(j, s, 0);
   if (s.size() > 40) s = s.substr(0, 37) + "...";
   return s;
 }
@@ -45,7 +80,7 @@ class Reader {
     for (auto it = j.begin(); it != j.end(); ++it) {
       bool ok = false;
       for (const char* a : allowed) ok = ok || it.key() == a;
-      if (!ok) fail(field, "unknown key \"" + it.key() + "\"");
+      if (!ok) fail(field, "unknown key " + quote_input(it.key()));
     }
   }
 
@@ -63,6 +98,8 @@ class Reader {
     if (!v.is_number()) fail(field, "expected a number, got " + show(v));
     double x = v.get<double>();
     if (!std::isfinite(x)) fail(field, "expected a finite number, got " + show(v));
+    if (std::fabs(x) > kMaxMagnitude)
+      fail(field, "expected a number of magnitude at most " + number_text(kMaxMagnitude) + ", got " + show(v));
     return x;
   }
 
@@ -78,7 +115,8 @@ class Reader {
 
   double positive(const json& v, const std::string& field) const {
     double x = number(v, field);
-    if (!(x > 0)) fail(field, "expected a positive number, got " + show(v));
+    if (!(x >= kMinPositive))
+      fail(field, "expected a positive number (at least " + number_text(kMinPositive) + "), got " + show(v));
     return x;
   }
 
@@ -230,7 +268,7 @@ std::map<std::string, Material> parse_materials(const Reader& r, const json& j) 
   r.expect_object(j, f);
   std::map<std::string, Material> out;
   for (auto it = j.begin(); it != j.end(); ++it) {
-    const std::string mf = f + "." + it.key();
+    const std::string mf = f + "." + field_key(it.key());
     const json& m = it.value();
     r.expect_object(m, mf);
     r.check_keys(m, mf, {"color", "d", "W", "n"});
@@ -256,7 +294,9 @@ void parse_transform(const Reader& r, const json& j, const std::string& f, Trans
     } else {
       t.scale = r.vec3(v, ff);
       for (int c = 0; c < 3; ++c)
-        if (!(t.scale[c] > 0)) r.fail(ff + "[" + std::to_string(c) + "]", "expected a positive number, got " + number_text(t.scale[c]));
+        if (!(t.scale[c] >= kMinPositive))
+          r.fail(ff + "[" + std::to_string(c) + "]", "expected a positive number (at least " +
+                                                      number_text(kMinPositive) + "), got " + number_text(t.scale[c]));
     }
   });
 }
@@ -299,13 +339,8 @@ ScreenPolygon parse_screen_polygon(const Reader& r, const json& j, const std::st
     if (!v.contains("normal") && o.vertex_without_normal.empty()) o.vertex_without_normal = vf;
     p.v.push_back(sv);
   }
-  double a2 = 0;  // twice the signed area (shoelace)
-  for (size_t k = 0; k < p.v.size(); ++k) {
-    const ScreenVertex& a = p.v[k];
-    const ScreenVertex& b = p.v[(k + 1) % p.v.size()];
-    a2 += a.x * b.y - b.x * a.y;
-  }
-  if (std::fabs(a2) * 0.5 < 1e-9) r.fail(f, "polygon has zero area");
+  // A zero-area polygon is skipped (and counted) by the builder as GL skips it; fatal only with
+  // BuildOptions::strict.
   return p;
 }
 
@@ -313,7 +348,7 @@ const Material& find_material(const Reader& r, const std::map<std::string, Mater
                               const std::string& field) {
   const std::string name = r.string(v, field);
   auto m = mats.find(name);
-  if (m == mats.end()) r.fail(field, "unknown material \"" + name + "\"");
+  if (m == mats.end()) r.fail(field, "unknown material " + quote_input(name));
   return m->second;
 }
 
@@ -330,7 +365,7 @@ SceneObject parse_object(const Reader& r, const json& j, const std::string& f, i
     for (auto it = j.begin(); it != j.end(); ++it) {
       bool ok = false;
       for (const char* a : keys) ok = ok || it.key() == a;
-      if (!ok) r.fail(f, "unknown key \"" + it.key() + "\"");
+      if (!ok) r.fail(f, "unknown key " + quote_input(it.key()));
     }
     opt(j, f, "material", [&](const json& v, const std::string& ff) { o.material = find_material(r, mats, v, ff); });
     parse_transform(r, j, f, o.transform);
@@ -448,13 +483,111 @@ std::string overflow_message(const std::string& name, const std::string& text, c
   return name + ": malformed JSON: " + detail;
 }
 
+// The byte offset where arrays and objects nest deeper than kMaxNesting, or npos. A scan of
+// the text (strings and comments skipped), so a hostile file is refused before any parse.
+size_t too_deep_at(const std::string& t) {
+  int depth = 0;
+  for (size_t i = 0; i < t.size(); ++i) {
+    const char c = t[i];
+    if (c == '"') {
+      for (++i; i < t.size() && t[i] != '"'; ++i)
+        if (t[i] == '\\') ++i;
+    } else if (c == '/' && i + 1 < t.size() && t[i + 1] == '/') {
+      while (i < t.size() && t[i] != '\n') ++i;
+    } else if (c == '/' && i + 1 < t.size() && t[i + 1] == '*') {
+      const size_t end = t.find("*/", i + 2);
+      if (end == std::string::npos) return std::string::npos;  // the parser reports it
+      i = end + 1;
+    } else if (c == '[' || c == '{') {
+      if (++depth > kMaxNesting) return i;
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+  return std::string::npos;
+}
+
+// nlohmann's DOM builder, plus what it lets pass: a key given twice in one object (the last one
+// would silently win) is an error naming the object and the key, and nesting is bounded again
+// (the text scan above is the check that reports a position; this one guards the parser).
+class StrictDomParser : public nlohmann::detail::json_sax_dom_parser<json> {
+  using Base = nlohmann::detail::json_sax_dom_parser<json>;
+
+ public:
+  explicit StrictDomParser(json& root) : Base(root, true) {}
+  std::string duplicate;  // "field: key" of the first duplicate key, if any
+  bool too_deep = false;
+
+  bool null() { return element(), Base::null(); }
+  bool boolean(bool v) { return element(), Base::boolean(v); }
+  bool number_integer(json::number_integer_t v) { return element(), Base::number_integer(v); }
+  bool number_unsigned(json::number_unsigned_t v) { return element(), Base::number_unsigned(v); }
+  bool number_float(json::number_float_t v, const std::string& s) { return element(), Base::number_float(v, s); }
+  bool string(std::string& v) { return element(), Base::string(v); }
+  bool binary(json::binary_t& v) { return element(), Base::binary(v); }
+  bool start_object(std::size_t n) {
+    element();
+    if (frames_.size() >= static_cast<size_t>(kMaxNesting)) return too_deep = true, false;
+    frames_.push_back({true, {}, {}, -1});
+    return Base::start_object(n);
+  }
+  bool key(std::string& k) {
+    Frame& f = frames_.back();
+    if (!f.keys.insert(k).second) {
+      duplicate = path();
+      duplicate += (duplicate.empty() ? "" : ": ") + std::string("duplicate key ") + quote_input(k);
+      return false;
+    }
+    f.key = k;
+    return Base::key(k);
+  }
+  bool end_object() { return frames_.pop_back(), Base::end_object(); }
+  bool start_array(std::size_t n) {
+    element();
+    if (frames_.size() >= static_cast<size_t>(kMaxNesting)) return too_deep = true, false;
+    frames_.push_back({false, {}, {}, -1});
+    return Base::start_array(n);
+  }
+  bool end_array() { return frames_.pop_back(), Base::end_array(); }
+
+ private:
+  struct Frame {
+    bool object;
+    std::set<std::string> keys;
+    std::string key;  // object: the key of the value being read
+    long long index;  // array: the index of the value being read
+  };
+  void element() {
+    if (!frames_.empty() && !frames_.back().object) ++frames_.back().index;
+  }
+  // The field path of the object whose key is being read, as messages spell fields.
+  std::string path() const {
+    std::string p;
+    for (size_t i = 0; i + 1 < frames_.size(); ++i) {
+      const Frame& f = frames_[i];
+      if (f.object) p += (p.empty() ? "" : ".") + field_key(f.key);
+      else p += "[" + std::to_string(f.index) + "]";
+    }
+    return p;
+  }
+  std::vector<Frame> frames_;
+};
+
 }  // namespace
 
 Scene parse_scene(const std::string& text, const std::string& name, const std::string& base_dir) {
+  if (const size_t at = too_deep_at(text); at != std::string::npos)
+    throw SceneError(located(name, text, at, "arrays and objects nested deeper than " +
+                                                 std::to_string(kMaxNesting) + " levels"));
   json root;
   try {
     // Comments are allowed so shipped scenes can explain themselves.
-    root = json::parse(text, nullptr, true, /*ignore_comments=*/true);
+    StrictDomParser sax(root);
+    if (!json::sax_parse(text, &sax, json::input_format_t::json, /*strict=*/true, /*ignore_comments=*/true)) {
+      if (!sax.duplicate.empty()) throw SceneError(name + ": " + sax.duplicate);
+      throw SceneError(name + ": malformed JSON: arrays and objects nested deeper than " +
+                       std::to_string(kMaxNesting) + " levels");
+    }
   } catch (const json::parse_error& e) {
     throw SceneError(parse_error_message(name, text, e));
   } catch (const json::out_of_range& e) {
