@@ -23,6 +23,7 @@ void write_png(const Image& img, const std::string& path);
 class OutputFiles {
  public:
   void add(const std::string& path, std::vector<unsigned char> bytes);
+  void add(const std::string& path, const std::string& text) { add(path, std::vector<unsigned char>(text.begin(), text.end())); }
   void commit();
   ~OutputFiles();
 
