@@ -132,6 +132,14 @@ TEST(HostileJson, SizeIsEstimatedBeforeAllocating) {
   EXPECT_LT(s, 0.5) << "refused before tessellating";
 }
 
+TEST(HostileJson, TooManyPolygonsNameTheObjectThatCrossesTheLimit) {
+  const std::string m = error_of("{" + kScreen + R"(, "camera": {"type": "lookat", "eye": [0, 0, -5], "target": [0, 0, 0]},
+      "objects": [{"type": "sphere", "radius": 1, "u": 16, "v": 8},
+                  {"type": "sphere", "radius": 1, "u": 512, "v": 512}]})");
+  EXPECT_EQ(m, "h.json: objects[1]: the scene has more than 65536 polygons up to this object; the pipeline's polygon "
+               "id is 16 bits (at most 65536)");
+}
+
 // ---- OBJ reader -------------------------------------------------------------------------------
 
 watkins::SceneObject mesh_object(watkins::MeshNormals normals = watkins::MeshNormals::Average) {

@@ -206,6 +206,7 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
   };
 
   size_t next_obj = 0;
+  std::string crossed;  // the object at which the polygon count passed kMaxPolygons
   for (size_t i = 0; i < sc.objects.size(); ++i) {
     const SceneObject& o = sc.objects[i];
     if (o.type == ObjectType::Polygons) {
@@ -228,7 +229,10 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
         p.material = materials.index(o.material);
         out.polygons.push_back(std::move(p));
       }
-      if (out.polygons.size() > kMaxPolygons) break;
+      if (out.polygons.size() > kMaxPolygons) {
+        crossed = o.field;
+        break;
+      }
       continue;
     }
     const CamObject& co = objs[next_obj++];
@@ -299,10 +303,14 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
         if (out.polygons.size() > kMaxPolygons) break;  // refused below, before more is built
       }
     }
-    if (out.polygons.size() > kMaxPolygons) break;
+    if (out.polygons.size() > kMaxPolygons) {
+      crossed = o.field;
+      break;
+    }
   }
   if (out.polygons.size() > kMaxPolygons)
-    throw SceneError(sc.name + ": scene has more than " + std::to_string(kMaxPolygons) + " polygons; the pipeline's polygon id is " + std::to_string(fmt::PolyIdBits) +
+    throw SceneError(sc.name + ": " + crossed + ": the scene has more than " + std::to_string(kMaxPolygons) +
+                     " polygons up to this object; the pipeline's polygon id is " + std::to_string(fmt::PolyIdBits) +
                      " bits (at most " + std::to_string(kMaxPolygons) + ")");
   return out;
 }
