@@ -139,6 +139,17 @@ TEST_F(CliHostile, BadInputFilesGiveOneLineAndExitOne) {
   expect("render n.json --out a.png", 1, "n.json: light.direction[0]: expected a number of magnitude at most");
 }
 
+TEST_F(CliHostile, ConfigurationFilesAreReadAsStrictlyAsScenes) {
+  write("deep.json", std::string(100000, '{') + std::string(100000, '}'));
+  expect("render --config deep.json --out a.png", 1, "deep.json:1:65: malformed JSON: arrays and objects nested deeper than 64");
+  write("dup.json", R"({"shade": {"frac_bits": 8, "frac_bits": 9}})");
+  expect("render --config dup.json --out a.png", 1, "dup.json: shade: duplicate key \"frac_bits\"");
+  write("ctl.json", R"({"shade": {"\u001b[2J": 9}})");
+  const CliRun r = expect("render --config ctl.json --out a.png", 1, R"(ctl.json: shade: unknown key "\u001b[2J")");
+  EXPECT_EQ(r.output.find('\x1b'), std::string::npos) << "no raw escape sequence reaches the terminal";
+  expect("render --config /dev/zero --out a.png", 1, "/dev/zero: configuration file is larger than 1 MiB");
+}
+
 TEST_F(CliHostile, ZeroAreaCommandListPolygonsAreSkippedUnlessStrict) {
   write("z.json", R"({"screen": {"width": 16, "height": 16}, "objects": [{"type": "polygons", "polygons": [
       {"vertices": [{"x": 1, "y": 1, "depth": 0.5, "rgb": [0, 0, 0]}, {"x": 5, "y": 5, "depth": 0.5, "rgb": [0, 0, 0]},
