@@ -75,7 +75,7 @@ struct RtlArgs {
 
 void add_rtl_options(CLI::App* r, RtlArgs& a) {
   r->add_flag("--rtl", a.enabled, "also run the Verilated RTL, compare it with the fixed model and write "
-                                  "the RTL image to --out (exit code 1 on any mismatch)");
+                                  "the RTL image to --out (exit code 3 and no output on any mismatch)");
   r->add_option("--trace", a.trace, "with --rtl: write an FST waveform of the RTL run");
   r->add_option("--seed", a.seed, "with --rtl: random seed of input gaps and output stalls (0 .. 2^64 - 1)")
       ->transform(kSeed)->capture_default_str();
