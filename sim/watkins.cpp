@@ -342,13 +342,13 @@ int render(const RenderArgs& a) {
                                           a.rtl.enabled ? "RTL" : "fixed model");
   // Outputs are kept in memory and written only once everything succeeded (OutputFiles): a run
   // that fails leaves no file behind, not even one it could have written first.
-  if ((!a.truth.empty() || !a.truth_diff.empty()) && !truth.unavailable.empty())
-    throw SceneError(std::string(!a.truth.empty() ? "--truth " + a.truth : "--truth-diff " + a.truth_diff) +
-                     ": no analytic truth for " + scene.name + ": " + truth.unavailable + " (nothing written)");
   if (rtl_status != 0) {
     std::fprintf(stderr, "watkins: nothing written: the RTL run failed\n");
     return rtl_status;
   }
+  if ((!a.truth.empty() || !a.truth_diff.empty()) && !truth.unavailable.empty())
+    throw SceneError(std::string(!a.truth.empty() ? "--truth " + a.truth : "--truth-diff " + a.truth_diff) +
+                     ": no analytic truth for " + scene.name + ": " + truth.unavailable + " (nothing written)");
   OutputFiles files;
   if (!a.diff.empty()) files.add(a.diff, encode_png(diff_image(result, reference)));
   if (!a.truth.empty()) files.add(a.truth, encode_png(truth.image));
