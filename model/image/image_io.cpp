@@ -21,15 +21,17 @@ namespace watkins {
 
 namespace {
 
-// Writes all of `bytes` to `path` (created or truncated); every call checked.
-void write_bytes(const std::string& path, const std::vector<unsigned char>& bytes) {
+// Writes all of `bytes` to `path` (created or truncated); every call checked. Messages name
+// `shown` (the output the user asked for, when `path` is its temporary).
+void write_bytes(const std::string& path, const std::vector<unsigned char>& bytes, const std::string& shown = "") {
+  const std::string name = shown.empty() ? path : shown + " (temporary " + path + ")";
   std::FILE* f = std::fopen(path.c_str(), "wb");
-  if (!f) throw std::runtime_error(path + ": cannot write: " + std::strerror(errno));
+  if (!f) throw std::runtime_error(name + ": cannot write: " + std::strerror(errno));
   const size_t n = std::fwrite(bytes.data(), 1, bytes.size(), f);
   int err = n == bytes.size() ? 0 : errno;
   if (std::fflush(f) != 0 && !err) err = errno;
   if (std::fclose(f) != 0 && !err) err = errno;
-  if (n != bytes.size() || err) throw std::runtime_error(path + ": cannot write: " + std::strerror(err ? err : EIO));
+  if (n != bytes.size() || err) throw std::runtime_error(name + ": cannot write: " + std::strerror(err ? err : EIO));
 }
 
 }  // namespace
@@ -57,7 +59,7 @@ void OutputFiles::commit() {
     const std::string temp = (p.parent_path() / ("." + p.filename().string() + ".tmp" +
                                                   std::to_string(::getpid()))).string();
     f.temp = temp;  // set first: the destructor removes it if the write fails half-way
-    write_bytes(temp, f.bytes);
+    write_bytes(temp, f.bytes, f.path);
   }
   for (File& f : files_)
     if (f.temp.empty()) write_bytes(f.path, f.bytes);
