@@ -1,6 +1,6 @@
 // libFuzzer target over the scene front end and preparation (scripts/fuzz builds and runs it
 // under ASan + UBSan). An input that starts (after white space) with '{' or '/' is a JSON scene:
-// parsed, built and prepared. Anything else is an OBJ file: written to a scratch file, loaded as
+// parsed, built and prepared, and read as a configuration file too. Anything else is an OBJ file: written to a scratch file, loaded as
 // the mesh of a small fixed scene (normals from the file when it has vn lines, else averaged),
 // built and prepared. A clean SceneError (or the prepare's capacity error) is the expected
 // outcome of bad input; any other exception, a crash or a sanitizer report is a finding.
@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <string>
 
+#include "config_file.hpp"
 #include "prepare.hpp"
 #include "scene.hpp"
 
@@ -43,6 +44,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const size_t first = text.find_first_not_of(" \t\r\n");
   if (first != std::string::npos && (text[first] == '{' || text[first] == '/')) {
     run(text, "fuzz.json");
+    try {  // the same text as a configuration file (the same strict JSON reader, other fields)
+      (void)watkins::parse_config(text, "fuzz-config.json");
+    } catch (const watkins::SceneError&) {
+    }
     return 0;
   }
   std::FILE* f = std::fopen(scratch_obj().c_str(), "wb");
