@@ -11,7 +11,8 @@ packages=(
   build-essential cmake pkg-config git python3
   verilator iverilog libsystemc-dev           # simulation: Verilator + SystemC benches, Icarus for comparison
   libglm-dev libgtest-dev googletest          # double reference, unit tests
-  libtinyobjloader-dev nlohmann-json3-dev libcli11-dev libstb-dev zlib1g-dev
+  nlohmann-json3-dev libcli11-dev libstb-dev zlib1g-dev
+  clang-14 libclang-rt-14-dev                 # libFuzzer + ASan + UBSan: scripts/fuzz, the fuzz ctest
   yosys nextpnr-ice40 fpga-icestorm           # synthesis (lint in CI, resources and Fmax)
 )
 missing=()

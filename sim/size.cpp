@@ -353,9 +353,9 @@ int run_size(const SizeArgs& a) {
                 p.refused.empty() ? (error(p) + "\n                       broke " + broke(p, bound)).c_str()
                                   : broke(p, bound).c_str());
   }
-  std::ofstream f(out);
-  if (!f || !(f << config_json(c)) || !(f.flush()))
-    throw std::runtime_error(out + ": cannot write the configuration file");
+  OutputFiles file;  // complete or not at all (image_io.hpp); write errors reported
+  file.add(out, config_json(c));
+  file.commit();
   std::printf("wrote         %s\n", out.c_str());
   return 0;
 }

@@ -301,9 +301,8 @@ std::string fixed(double v, int digits) {
 }
 
 // CSV cells; an error, a missing truth or no cycles leave cells empty.
-void write_csv(const std::string& path, const std::vector<Axis>& axes, const std::vector<Result>& rows) {
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error(path + ": cannot write");
+std::string csv_text(const std::vector<Axis>& axes, const std::vector<Result>& rows) {
+  std::ostringstream out;
   out << "point";
   for (const Axis& ax : axes) out << ',' << ax.name;
   out << ",attr_group,x_int,depth_int,attr_int,u,v,polygons,edge_records,active_edges,fragments"
@@ -349,11 +348,11 @@ void write_csv(const std::string& path, const std::vector<Axis>& axes, const std
     for (char c : r.error) out << (c == '"' ? '\'' : c == '\n' ? ' ' : c);
     out << "\"\n";
   }
+  return out.str();
 }
 
-void write_markdown(const std::string& path, const std::vector<Result>& rows) {
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error(path + ": cannot write");
+std::string markdown_text(const std::vector<Result>& rows) {
+  std::ostringstream out;
   out << "| scene | shading | u×v | polygons | active edges | cycles | vs truth max / mean | RMSE | PSNR dB | "
          "Mach | double vs truth max / mean | vs double max / mean | edge record / line buffer bits | "
          "frac x / depth / attr | int x / depth / attr |\n"
@@ -380,6 +379,7 @@ void write_markdown(const std::string& path, const std::vector<Result>& rows) {
         << r.bits.line_buffer << " | " << r.x_frac << " / " << r.depth_frac << " / " << r.attr_frac << " | "
         << r.x_int << " / " << r.depth_int << " / " << r.attr_int << " |\n";
   }
+  return out.str();
 }
 
 // A progress bar on stderr, only when it is a terminal.
@@ -486,8 +486,10 @@ int run_sweep(const SweepArgs& in) {
   worker();
   for (std::thread& t : threads) t.join();
 
-  write_csv(a.csv, axes, rows);
-  if (!a.md.empty()) write_markdown(a.md, rows);
+  OutputFiles files;  // both or neither, each complete (image_io.hpp)
+  files.add(a.csv, csv_text(axes, rows));
+  if (!a.md.empty()) files.add(a.md, markdown_text(rows));
+  files.commit();
   int failed = 0, rtl_bad = 0;
   for (const Result& r : rows) {
     if (!r.error.empty()) {

@@ -7,8 +7,12 @@
 //   watkins size [SCENE] [--bound L] [--shading S] [--out F]   (sim/size.cpp)
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <charconv>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <optional>
 #include <string>
@@ -20,6 +24,7 @@
 #include "image_io.hpp"
 #include "prepare.hpp"
 #include "scene.hpp"
+#include "scene_types.hpp"
 #include "size.hpp"
 #include "sweep.hpp"
 #include "watkins_top.hpp"
@@ -30,6 +35,34 @@
 #endif
 
 namespace {
+
+// A wrong command line (exit code 2), as against bad input (1) and internal errors (3).
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// CLI::Range lets NaN through (every comparison with it is false).
+const CLI::Validator kFinite(
+    [](std::string& s) {
+      try {
+        size_t used = 0;
+        const double x = std::stod(s, &used);
+        if (used == s.size() && std::isfinite(x)) return std::string();
+      } catch (const std::exception&) {
+      }
+      return "expected a finite number, got \"" + s + "\"";
+    },
+    "FINITE");
+
+// A seed: a decimal integer in [0, 2^64 - 1]; "-1" and 2^64 are refused, not wrapped.
+const CLI::Validator kSeed(
+    [](std::string& s) {
+      unsigned long long v = 0;
+      const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
+      if (!s.empty() && r.ec == std::errc() && r.ptr == s.data() + s.size()) return std::string();
+      return "expected an integer in [0, 18446744073709551615], got \"" + s + "\"";
+    },
+    "SEED");
 
 struct RtlArgs {
   bool enabled = false;
@@ -42,13 +75,14 @@ struct RtlArgs {
 
 void add_rtl_options(CLI::App* r, RtlArgs& a) {
   r->add_flag("--rtl", a.enabled, "also run the Verilated RTL, compare it with the fixed model and write "
-                                  "the RTL image to --out (exit code 1 on any mismatch)");
+                                  "the RTL image to --out (exit code 3 and no output on any mismatch)");
   r->add_option("--trace", a.trace, "with --rtl: write an FST waveform of the RTL run");
-  r->add_option("--seed", a.seed, "with --rtl: random seed of input gaps and output stalls")->capture_default_str();
+  r->add_option("--seed", a.seed, "with --rtl: random seed of input gaps and output stalls (0 .. 2^64 - 1)")
+      ->transform(kSeed)->capture_default_str();
   r->add_option("--gap", a.gap, "with --rtl: probability of an idle cycle before each edge beat")
-      ->check(CLI::Range(0.0, 0.99))->capture_default_str();
+      ->check(kFinite & CLI::Range(0.0, 0.99))->capture_default_str();
   r->add_option("--stall", a.stall, "with --rtl: probability that the pixel sink stalls a cycle")
-      ->check(CLI::Range(0.0, 0.99))->capture_default_str();
+      ->check(kFinite & CLI::Range(0.0, 0.99))->capture_default_str();
   r->add_flag("--sparse", a.sparse, "with --rtl: sparse output mode (sparse_i = 1): the RTL emits only the "
                                     "covered pixels with their coordinates");
 }
@@ -56,19 +90,19 @@ void add_rtl_options(CLI::App* r, RtlArgs& a) {
 // Fails early, before any rendering, when this build cannot simulate the RTL.
 void check_rtl_args(const RtlArgs& a, const std::string& model) {
   if (!a.enabled) {
-    if (!a.trace.empty()) throw std::runtime_error("--trace needs --rtl");
-    if (a.sparse) throw std::runtime_error("--sparse needs --rtl");
+    if (!a.trace.empty()) throw UsageError("--trace needs --rtl");
+    if (a.sparse) throw UsageError("--sparse needs --rtl");
     return;
   }
 #ifndef WATKINS_HAVE_RTL
 #ifndef WATKINS_RTL_UNAVAILABLE_REASON
 #define WATKINS_RTL_UNAVAILABLE_REASON "configured without the RTL: -DWATKINS_RTL=OFF or no testbench/"
 #endif
-  throw std::runtime_error(std::string("--rtl: this build has no RTL simulation (") +
+  throw UsageError(std::string("--rtl: this build has no RTL simulation (") +
                            WATKINS_RTL_UNAVAILABLE_REASON +
                            "); install Verilator and SystemC (libsystemc-dev) and re-run cmake");
 #endif
-  if (model != "fixed") throw std::runtime_error("--rtl compares with the fixed model; drop --model " + model);
+  if (model != "fixed") throw UsageError("--rtl compares with the fixed model; drop --model " + model);
 }
 
 // The Verilated RTL is built for the default formats (rtl/watkins_pkg.sv): refuse another
@@ -79,12 +113,12 @@ void check_rtl_config(const RtlArgs& a, const watkins::Config& cfg) {
   watkins::Config def;
   def.max_active_edges = cfg.max_active_edges;
   if (cfg != def)
-    throw std::runtime_error("--rtl: the RTL is built for the default configuration (rtl/watkins_pkg.sv); "
+    throw UsageError("--rtl: the RTL is built for the default configuration (rtl/watkins_pkg.sv); "
                              "--config differs from it (an RTL build per configuration is the next step of issue 9)");
 }
 
 // Runs the RTL on the prepared scene, compares with the model image, prints the statistics and
-// replaces `image` with the RTL's. Returns the exit code: 1 on mismatch, hang or protocol error.
+// replaces `image` with the RTL's. Returns the exit code: 3 on mismatch, hang, overflow or protocol error.
 int run_rtl_mode(const RtlArgs& a, const watkins::PreparedScene& prepared, watkins::Image& image,
                  long long fragments, long long predicted) {
 #ifdef WATKINS_HAVE_RTL
@@ -120,12 +154,12 @@ int run_rtl_mode(const RtlArgs& a, const watkins::PreparedScene& prepared, watki
     const std::string s = r.summary();
     std::fprintf(stderr, "watkins: RTL run failed:\n%s%s\n", s.c_str(),
                  r.overflow ? (s.empty() ? "overflow_o set" : "\noverflow_o set") : "");
-    return 1;
+    return 3;
   }
   return 0;
 #else
   (void)a, (void)prepared, (void)image, (void)fragments, (void)predicted;
-  return 1;
+  return 3;
 #endif
 }
 
@@ -134,6 +168,16 @@ int run_rtl_mode(const RtlArgs& a, const watkins::PreparedScene& prepared, watki
 
 namespace {
 
+// Whether two paths name one file: the same inode when both exist, else the same normalized path.
+bool same_file(const std::string& a, const std::string& b) {
+  std::error_code ec;
+  if (std::filesystem::exists(a, ec) && std::filesystem::exists(b, ec)) {
+    const bool eq = std::filesystem::equivalent(a, b, ec);
+    if (!ec) return eq;
+  }
+  return std::filesystem::weakly_canonical(a, ec) == std::filesystem::weakly_canonical(b, ec);
+}
+
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
@@ -141,6 +185,8 @@ double seconds_since(Clock::time_point t0) {
 
 struct RenderArgs {
   std::string scene;
+  bool scene_given = false;  // an empty SCENE argument is an error, not the built-in scene
+  bool strict = false;       // --strict: a zero-area polygon is an error, not skipped
   std::string out = "watkins.png";
   std::string model = "fixed";
   std::string shading, rule, depth, diff, truth, truth_diff;
@@ -214,13 +260,34 @@ int render(const RenderArgs& a) {
   }
   if (a.cull) opt.cull_backfaces = true;
   if (a.no_cull) opt.cull_backfaces = false;
+  opt.strict = a.strict;
+  if (a.scene_given && a.scene.empty()) throw UsageError("the scene file name is empty (omit it for the built-in scene)");
   check_rtl_args(a.rtl, a.model);  // --rtl
+  // Every output must be a file of its own, never an input: --out scene.json would replace the scene.
+  std::vector<std::pair<std::string, std::string>> outputs = {{"--out", a.out}, {"--diff", a.diff},
+                                                              {"--truth", a.truth}, {"--truth-diff", a.truth_diff}};
+  outputs.erase(std::remove_if(outputs.begin(), outputs.end(), [](const auto& o) { return o.second.empty(); }),
+                outputs.end());
+  std::vector<std::pair<std::string, std::string>> inputs = {{"the scene", a.scene}, {"--config", a.config}};
+  for (size_t i = 0; i < outputs.size(); ++i) {
+    for (const auto& in : inputs)
+      if (!in.second.empty() && same_file(outputs[i].second, in.second))
+        throw UsageError(outputs[i].first + " " + outputs[i].second + " is " + in.first + " file; refusing to overwrite it");
+    for (size_t j = 0; j < i; ++j)
+      if (same_file(outputs[i].second, outputs[j].second))
+        throw UsageError(outputs[i].first + " and " + outputs[j].first + " name the same file " + outputs[i].second);
+  }
 
   const auto t0 = Clock::now();
   Config cfg = a.config.empty() ? Config{} : load_config(a.config);
   if (a.max_active_edges_given || a.config.empty()) cfg.max_active_edges = a.max_active_edges;
   check_rtl_config(a.rtl, cfg);  // --rtl
   const BuiltScene scene = load_scene_or_default(a.scene, opt);
+  if (scene.source)  // nor an OBJ file the scene reads
+    for (const auto& o : outputs)
+      for (const SceneObject& obj : scene.source->objects)
+        if (obj.type == ObjectType::Mesh && same_file(o.second, obj.file))
+          throw UsageError(o.first + " " + o.second + " is the OBJ file of " + obj.field + "; refusing to overwrite it");
   const PreparedScene prepared = prepare(scene, cfg);
   const double t_prep = seconds_since(t0);
 
@@ -230,7 +297,7 @@ int render(const RenderArgs& a) {
     std::printf("phong         %zu material(s), light (%.4f, %.4f, %.4f), eye (%.4f, %.4f, %.4f); the rule is unused\n",
                 scene.materials.size(), scene.light[0], scene.light[1], scene.light[2], scene.eye[0], scene.eye[1],
                 scene.eye[2]);
-  std::printf("polygons      %zu (culled %d back faces, %d clipped, %d degenerate)\n",
+  std::printf("polygons      %zu (culled %d back faces, %d clipped, %d degenerate: zero area, skipped)\n",
               scene.polygons.size(), scene.culled_backfaces, scene.near_clipped, scene.degenerate);
   std::printf("edge records  %zu (%d bits each)\n", prepared.edges.size(), cfg.edge_record_bits(prepared.shading));
   if (!a.config.empty())
@@ -273,22 +340,23 @@ int render(const RenderArgs& a) {
   }
   const AnalyticTruth truth = print_truth(scene, reference, a.model == "fixed" ? &result : nullptr,
                                           a.rtl.enabled ? "RTL" : "fixed model");
-  if (!a.diff.empty()) write_png(diff_image(result, reference), a.diff);
-  std::string truth_files;
-  if ((!a.truth.empty() || !a.truth_diff.empty()) && truth.unavailable.empty()) {
-    if (!a.truth.empty()) write_png(truth.image, a.truth);
-    if (!a.truth_diff.empty()) write_png(truth_diff_image(scene, result, truth), a.truth_diff);
-    truth_files = (a.truth.empty() ? "" : ", " + a.truth) + (a.truth_diff.empty() ? "" : ", " + a.truth_diff);
+  // Outputs are kept in memory and written only once everything succeeded (OutputFiles): a run
+  // that fails leaves no file behind, not even one it could have written first.
+  if (rtl_status != 0) {
+    std::fprintf(stderr, "watkins: nothing written: the RTL run failed\n");
+    return rtl_status;
   }
-  write_png(result, a.out);
-  std::printf("wrote         %s%s%s%s\n", a.out.c_str(), a.diff.empty() ? "" : ", ", a.diff.c_str(),
-              truth_files.c_str());
-  if ((!a.truth.empty() || !a.truth_diff.empty()) && !truth.unavailable.empty()) {
-    std::fprintf(stderr, "watkins: %s not written: no analytic truth for %s: %s\n",
-                 !a.truth.empty() ? a.truth.c_str() : a.truth_diff.c_str(), scene.name.c_str(),
-                 truth.unavailable.c_str());
-    return 1;
-  }
+  if ((!a.truth.empty() || !a.truth_diff.empty()) && !truth.unavailable.empty())
+    throw SceneError(std::string(!a.truth.empty() ? "--truth " + a.truth : "--truth-diff " + a.truth_diff) +
+                     ": no analytic truth for " + scene.name + ": " + truth.unavailable + " (nothing written)");
+  OutputFiles files;
+  if (!a.diff.empty()) files.add(a.diff, encode_png(diff_image(result, reference)));
+  if (!a.truth.empty()) files.add(a.truth, encode_png(truth.image));
+  if (!a.truth_diff.empty()) files.add(a.truth_diff, encode_png(truth_diff_image(scene, result, truth)));
+  files.add(a.out, encode_png(result));
+  files.commit();
+  std::printf("wrote         %s%s%s%s%s%s%s\n", a.out.c_str(), a.diff.empty() ? "" : ", ", a.diff.c_str(),
+              a.truth.empty() ? "" : ", ", a.truth.c_str(), a.truth_diff.empty() ? "" : ", ", a.truth_diff.c_str());
   return rtl_status;
 }
 
@@ -299,7 +367,9 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   RenderArgs ra;
   auto* r = app.add_subcommand("render", "render a scene (the embedded default scene if none is given)");
-  r->add_option("scene", ra.scene, "scene file (JSON); see docs/scene-format.md");
+  CLI::Option* scene_opt = r->add_option("scene", ra.scene, "scene file (JSON); see docs/scene-format.md");
+  r->add_flag("--strict", ra.strict, "a zero-area polygon of a command list is an error (default: skipped and "
+                                     "counted, as GL does)");
   r->add_option("--out,-o", ra.out, "PNG to write")->capture_default_str();
   r->add_option("--truth", ra.truth, "PNG of the analytic truth (exact surfaces ray-cast, eq. 3 per pixel)");
   r->add_option("--truth-diff", ra.truth_diff, "PNG of |image - analytic truth| x16 (magenta: coverage or object differs)");
@@ -323,12 +393,29 @@ int main(int argc, char** argv) {
   auto* s = watkins::sweep::add_sweep_command(app, sa);
   watkins::size::SizeArgs za;
   auto* z = watkins::size::add_size_command(app, za);
-  CLI11_PARSE(app, argc, argv);
+  // Exit codes (README): 0 ok, 1 bad input (scene, OBJ, configuration, an output that cannot be
+  // written), 2 usage (the command line), 3 internal error or RTL mismatch.
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);  // prints help, or the message
+    return code == 0 ? 0 : 2;
+  }
   ra.max_active_edges_given = mae->count() > 0;
+  ra.scene_given = scene_opt->count() > 0;
   try {
     if (*r) return render(ra);
     if (*s) return watkins::sweep::run_sweep(sa);
     if (*z) return watkins::size::run_size(za);
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "watkins: usage: %s\n", e.what());
+    return 2;
+  } catch (const std::logic_error& e) {  // a broken invariant of the model, not the input
+    std::fprintf(stderr, "watkins: internal error: %s\n", e.what());
+    return 3;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "watkins: internal error: out of memory\n");
+    return 3;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "watkins: error: %s\n", e.what());
     return 1;

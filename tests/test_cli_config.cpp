@@ -56,7 +56,7 @@ TEST_F(CliConfig, TooNarrowForTheSceneIsRefused) {
 TEST_F(CliConfig, RtlRefusesAnotherConfiguration) {
   const std::string cfg = write("narrow.json", R"({"shade": {"frac_bits": 8}})");
   const CliRun r = run("render --rtl --config " + cfg + " --out " + dir_ + "/out.png");
-  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.exit_code, 2) << r.output;  // a usage error (README: exit codes)
   // Either this build has no RTL, or the RTL is built for the default configuration only.
   EXPECT_TRUE(r.output.find("--rtl: the RTL is built for the default configuration") != std::string::npos ||
               r.output.find("--rtl: this build has no RTL simulation") != std::string::npos)

@@ -81,7 +81,7 @@ TEST(Config, FileErrorsNameTheField) {
   EXPECT_EQ(err(R"({"max_materials": 17})"), "c.json: max_materials: 17 is outside [1, 16]");
   EXPECT_EQ(err(R"({"max_width": "wide"})"), "c.json: max_width: expected an integer, got \"wide\"");
   EXPECT_EQ(err("{"), err("{").substr(0, 0) + err("{"));  // malformed JSON: one message
-  EXPECT_NE(err("{").find("c.json: malformed JSON"), std::string::npos);
+  EXPECT_NE(err("{").find("c.json:1:2: malformed JSON"), std::string::npos);
 }
 
 // `watkins_gen_pkg --params F --shading S`: watkins_top's parameters for the configuration, one

@@ -331,7 +331,7 @@ TEST(PhongScene, PrepareRejectsNormalsThatAreNotUnit) {
   EXPECT_EQ(error_of([&] { prepare(s); }),
             "test: polygon 0 vertex 2: vertex normal component 1.5 is outside [-1, 1] (expected a unit vector)");
   s.polygons[0].v[2].normal[0] = NAN;
-  EXPECT_NE(error_of([&] { prepare(s); }).find("vertex normal component nan"), std::string::npos);
+  EXPECT_NE(error_of([&] { prepare(s); }).find("vertex normal component NaN"), std::string::npos);
 }
 
 }  // namespace

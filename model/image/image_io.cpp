@@ -2,15 +2,79 @@
 
 #include <stb_image_write.h>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <filesystem>
 #include <stdexcept>
+
+// In libstb but declared only in stb_image_write.h's implementation part.
+extern "C" unsigned char* stbi_write_png_to_mem(const unsigned char* pixels, int stride_bytes, int x, int y, int n,
+                                                int* out_len);
 
 namespace watkins {
 
-void write_png(const Image& img, const std::string& path) {
-  if (!stbi_write_png(path.c_str(), img.width, img.height, 3, img.rgb.data(), img.width * 3))
-    throw std::runtime_error(path + ": cannot write PNG");
+namespace {
+
+// Writes all of `bytes` to `path` (created or truncated); every call checked. Messages name
+// `shown` (the output the user asked for, when `path` is its temporary).
+void write_bytes(const std::string& path, const std::vector<unsigned char>& bytes, const std::string& shown = "") {
+  const std::string name = shown.empty() ? path : shown + " (temporary " + path + ")";
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  if (!f) throw std::runtime_error(name + ": cannot write: " + std::strerror(errno));
+  const size_t n = std::fwrite(bytes.data(), 1, bytes.size(), f);
+  int err = n == bytes.size() ? 0 : errno;
+  if (std::fflush(f) != 0 && !err) err = errno;
+  if (std::fclose(f) != 0 && !err) err = errno;
+  if (n != bytes.size() || err) throw std::runtime_error(name + ": cannot write: " + std::strerror(err ? err : EIO));
+}
+
+}  // namespace
+
+std::vector<unsigned char> encode_png(const Image& img) {
+  int len = 0;
+  unsigned char* png = stbi_write_png_to_mem(img.rgb.data(), img.width * 3, img.width, img.height, 3, &len);
+  if (!png) throw std::runtime_error("cannot encode PNG");
+  std::vector<unsigned char> out(png, png + len);
+  std::free(png);  // stb allocates with malloc (STBIW_FREE)
+  return out;
+}
+
+void write_png(const Image& img, const std::string& path) { write_bytes(path, encode_png(img)); }
+
+void OutputFiles::add(const std::string& path, std::vector<unsigned char> bytes) {
+  files_.push_back({path, "", std::move(bytes)});
+}
+
+void OutputFiles::commit() {
+  for (File& f : files_) {
+    struct stat st {};
+    if (::stat(f.path.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) continue;  // a device: in place below
+    const std::filesystem::path p(f.path);
+    const std::string temp = (p.parent_path() / ("." + p.filename().string() + ".tmp" +
+                                                  std::to_string(::getpid()))).string();
+    f.temp = temp;  // set first: the destructor removes it if the write fails half-way
+    write_bytes(temp, f.bytes, f.path);
+  }
+  for (File& f : files_)
+    if (f.temp.empty()) write_bytes(f.path, f.bytes);
+  for (File& f : files_) {
+    if (f.temp.empty()) continue;
+    if (std::rename(f.temp.c_str(), f.path.c_str()) != 0)
+      throw std::runtime_error(f.path + ": cannot write (rename from " + f.temp + "): " + std::strerror(errno));
+    f.temp.clear();
+  }
+  files_.clear();
+}
+
+OutputFiles::~OutputFiles() {
+  for (const File& f : files_)
+    if (!f.temp.empty()) std::remove(f.temp.c_str());
 }
 
 ImageError compare_images(const Image& a, const Image& b) {

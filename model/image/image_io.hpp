@@ -4,13 +4,36 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "image.hpp"
 
 namespace watkins {
 
-// Writes a PNG; throws std::runtime_error naming the path when it cannot.
+// The PNG file's bytes.
+std::vector<unsigned char> encode_png(const Image& img);
+// Writes a PNG; throws std::runtime_error naming the path and the reason when it cannot (every
+// write and the close are checked: a full disk is an error, not a truncated file).
 void write_png(const Image& img, const std::string& path);
+
+// Output files written all or nothing: add() keeps each file's bytes; commit() writes each to a
+// temporary name beside it and renames them over their names only once all were written, so a
+// run that fails anywhere leaves no output (and no temporary) behind. A name that exists and is
+// not a regular file (/dev/null, a FIFO) is written in place. Throws std::runtime_error.
+class OutputFiles {
+ public:
+  void add(const std::string& path, std::vector<unsigned char> bytes);
+  void add(const std::string& path, const std::string& text) { add(path, std::vector<unsigned char>(text.begin(), text.end())); }
+  void commit();
+  ~OutputFiles();
+
+ private:
+  struct File {
+    std::string path, temp;
+    std::vector<unsigned char> bytes;
+  };
+  std::vector<File> files_;
+};
 
 // Difference between two renders of the same scene, in 8-bit levels over R, G, B.
 // Shading error is measured where both show the same polygon; pixels where quantization moved a

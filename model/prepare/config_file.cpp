@@ -7,16 +7,14 @@
 #include <nlohmann/json.hpp>
 
 #include "scene_error.hpp"
+#include "strict_json.hpp"
 
 namespace watkins {
 namespace {
 
 using nlohmann::json;
 
-std::string show(const json& j) {
-  std::string s = j.dump();
-  return s.size() > 40 ? s.substr(0, 37) + "..." : s;
-}
+std::string show(const json& j) { return show_json(j); }
 
 class ConfigReader {
  public:
@@ -29,7 +27,7 @@ class ConfigReader {
     for (auto it = j.begin(); it != j.end(); ++it) {
       bool ok = false;
       for (const char* a : allowed) ok = ok || it.key() == a;
-      if (!ok) fail(field, "unknown key \"" + it.key() + "\"");
+      if (!ok) fail(field, "unknown key " + quote_input(it.key()));
     }
   }
   // An integer at j[key] when present (kept otherwise).
@@ -57,12 +55,7 @@ class ConfigReader {
 }  // namespace
 
 Config parse_config(const std::string& text, const std::string& name) {
-  json root;
-  try {
-    root = json::parse(text);
-  } catch (const json::exception& e) {
-    throw SceneError(name + ": malformed JSON: " + e.what());
-  }
+  const json root = parse_strict_json(text, name, /*comments=*/false);
   const ConfigReader r(name);
   r.keys(root, "", {"x", "depth", "shade", "normal", "depth_bits", "max_active_edges", "max_width",
                     "max_materials", "max_polygons", "max_edges"});
@@ -84,9 +77,14 @@ Config parse_config(const std::string& text, const std::string& name) {
 Config load_config(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw SceneError(path + ": cannot open configuration file");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return parse_config(s.str(), path);
+  // At most 1 MiB (a configuration is a few hundred bytes; /dev/zero is refused, not read whole).
+  constexpr std::streamsize kMaxBytes = 1 << 20;
+  std::string text(static_cast<size_t>(kMaxBytes) + 1, '\0');
+  in.read(text.data(), kMaxBytes + 1);
+  text.resize(static_cast<size_t>(in.gcount()));
+  if (in.bad()) throw SceneError(path + ": cannot read configuration file");
+  if (text.size() > static_cast<size_t>(kMaxBytes)) throw SceneError(path + ": configuration file is larger than 1 MiB");
+  return parse_config(text, path);
 }
 
 std::string config_json(const Config& c) {

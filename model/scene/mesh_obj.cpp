@@ -1,17 +1,17 @@
-// OBJ loading. The tinyobjloader implementation is compiled here (header-only use), in double
-// precision so file coordinates are not rounded to float on the way in.
-#define TINYOBJLOADER_IMPLEMENTATION
-#define TINYOBJLOADER_USE_DOUBLE
-#include <tiny_obj_loader.h>
-
+// OBJ loading: a strict reader of the statements a polygon mesh uses (v, vn, f; vt is checked and
+// ignored; every other statement is skipped as OBJ readers do). Written here rather than taken
+// from tinyobjloader, whose 2.0.0rc10 keeps a face's vertex count in a byte (a 256-vertex face
+// became a wrong polygon), reads "nan" and garbage tokens as 0 and wraps indices past 2^63.
 #include "mesh_obj.hpp"
 
+#include <sys/stat.h>
+
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstring>
 #include <fstream>
 #include <map>
-#include <sstream>
 #include <utility>
 
 #include <glm/geometric.hpp>
@@ -19,99 +19,206 @@
 namespace watkins {
 namespace {
 
+constexpr double kMaxMagnitude = 1e9;  // as scene numbers: products stay far from overflow
+
 glm::dvec3 mirror_z(const glm::dvec3& v) { return {v.x, v.y, -v.z}; }
 
-std::string trim(std::string s) {
-  while (!s.empty() && (s.back() == '\n' || s.back() == '\r' || s.back() == ' ')) s.pop_back();
-  return s;
+// The whitespace-separated tokens of one line, comment removed.
+std::vector<std::string_view> tokens(std::string_view line) {
+  if (const size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+  std::vector<std::string_view> out;
+  size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r' || line[i] == '\f' || line[i] == '\v')) ++i;
+    const size_t b = i;
+    while (i < line.size() && !(line[i] == ' ' || line[i] == '\t' || line[i] == '\r' || line[i] == '\f' || line[i] == '\v')) ++i;
+    if (i > b) out.push_back(line.substr(b, i - b));
+  }
+  return out;
 }
+
+class ObjReader {
+ public:
+  ObjReader(const SceneObject& o, std::string where, std::size_t max_faces)
+      : o_(o), where_(std::move(where)), max_faces_(max_faces) {}
+
+  [[noreturn]] void fail(const std::string& what) const {
+    throw SceneError(where_ + ": OBJ file " + quote_input(o_.file) + (line_ ? ": line " + std::to_string(line_) : "") +
+                     ": " + what);
+  }
+
+  double number(std::string_view t, const char* what) const {
+    std::string_view s = t;
+    if (!s.empty() && s[0] == '+') s.remove_prefix(1);
+    double x = 0;
+    const auto r = std::from_chars(s.data(), s.data() + s.size(), x);
+    if (s.empty() || r.ec != std::errc() || r.ptr != s.data() + s.size() || !std::isfinite(x))
+      fail(std::string(what) + ": expected a finite number, got " + quote_input(std::string(t)));
+    if (std::fabs(x) > kMaxMagnitude)
+      fail(std::string(what) + ": expected a number of magnitude at most 1e9, got " + quote_input(std::string(t)));
+    return x;
+  }
+
+  // An OBJ index: 1-based, or negative (relative to the `count` elements read so far). Returns
+  // the 0-based index, which may still be past the end (checked once the file is read).
+  long long index(std::string_view t, long long count, const char* what) const {
+    long long i = 0;
+    const auto r = std::from_chars(t.data(), t.data() + t.size(), i);
+    if (t.empty() || r.ec != std::errc() || r.ptr != t.data() + t.size())
+      fail(std::string("f: ") + what + " index " + quote_input(std::string(t)) +
+           (r.ec == std::errc::result_out_of_range ? " is out of range" : " is not an integer"));
+    if (i == 0) fail(std::string("f: ") + what + " index 0 (OBJ indices start at 1)");
+    const long long k = i > 0 ? i - 1 : count + i;
+    if (k < 0) fail(std::string("f: ") + what + " index " + std::string(t) + " is before the first one");
+    return k;
+  }
+
+  struct Face {
+    std::vector<std::pair<long long, long long>> v;  // (position, normal or -1)
+    long line;
+  };
+
+  void read(const std::string& text) {
+    size_t pos = 0;
+    while (pos < text.size()) {
+      size_t end = text.find('\n', pos);
+      if (end == std::string::npos) end = text.size();
+      ++line_;
+      statement(std::string_view(text).substr(pos, end - pos));
+      pos = end + 1;
+    }
+    line_ = 0;
+  }
+
+  void statement(std::string_view line) {
+    if (line.find('\0') != std::string_view::npos) fail("NUL byte (not a text file)");
+    const auto t = tokens(line);
+    if (t.empty()) return;
+    if (t[0] == "v") {
+      if (t.size() < 4 || t.size() > 8) fail("v: expected 3 coordinates (and optionally w or r g b)");
+      glm::dvec3 p;
+      for (int c = 0; c < 3; ++c) p[c] = number(t[1 + c], "v");
+      for (size_t k = 4; k < t.size(); ++k) number(t[k], "v");
+      position.push_back(p);
+    } else if (t[0] == "vn") {
+      if (t.size() != 4) fail("vn: expected 3 components");
+      glm::dvec3 n;
+      for (int c = 0; c < 3; ++c) n[c] = number(t[1 + c], "vn");
+      normal.push_back(n);
+    } else if (t[0] == "vt") {
+      if (t.size() < 2 || t.size() > 4) fail("vt: expected 1 to 3 coordinates");
+      for (size_t k = 1; k < t.size(); ++k) number(t[k], "vt");
+      ++texcoords_;
+    } else if (t[0] == "f") {
+      if (t.size() < 4) fail("f: a face needs at least 3 vertices, got " + std::to_string(t.size() - 1));
+      const std::size_t n = t.size() - 1;
+      // Faces it becomes: a quad stays one (unless split), any other polygon a fan of n - 2.
+      const std::size_t made = n == 4 ? (o_.triangles ? 2 : 1) : n - 2;
+      faces_made_ += made;
+      if (faces_made_ > max_faces_)
+        fail("f: the file makes more than " + std::to_string(max_faces_) +
+             " faces, the limit left for it (see the pipeline's polygon limit)");
+      Face f{{}, line_};
+      f.v.reserve(n);
+      for (size_t k = 1; k < t.size(); ++k) {
+        const std::string_view tok = t[k];
+        const size_t s1 = tok.find('/');
+        const std::string_view vs = tok.substr(0, s1);
+        long long vi = index(vs, static_cast<long long>(position.size()), "vertex");
+        long long ni = -1;
+        if (s1 != std::string_view::npos) {
+          const std::string_view rest = tok.substr(s1 + 1);
+          const size_t s2 = rest.find('/');
+          const std::string_view ts = rest.substr(0, s2);
+          if (!ts.empty()) index(ts, texcoords_, "texture");
+          if (s2 != std::string_view::npos) {
+            const std::string_view ns = rest.substr(s2 + 1);
+            if (ns.find('/') != std::string_view::npos) fail("f: malformed vertex " + quote_input(std::string(tok)));
+            if (!ns.empty()) ni = index(ns, static_cast<long long>(normal.size()), "normal");
+          }
+        }
+        f.v.push_back({vi, ni});
+      }
+      faces.push_back(std::move(f));
+    }
+    // o, g, s, usemtl, mtllib, l, p and the free-form statements: not a polygon mesh's concern.
+  }
+
+  std::vector<glm::dvec3> position, normal;
+  std::vector<Face> faces;
+
+ private:
+  const SceneObject& o_;
+  std::string where_;
+  std::size_t max_faces_;
+  std::size_t faces_made_ = 0;
+  long line_ = 0;
+  long long texcoords_ = 0;
+
+ public:
+  void at_line(long l) { line_ = l; }
+};
 
 }  // namespace
 
-IndexedMesh load_obj_mesh(const SceneObject& o, const std::string& where) {
-  std::ifstream in(o.file, std::ios::binary);
-  if (!in) throw SceneError(where + ": cannot open OBJ file \"" + o.file + "\": " + std::strerror(errno));
-  tinyobj::attrib_t attrib;
-  std::vector<tinyobj::shape_t> shapes;
-  std::vector<tinyobj::material_t> materials;
-  std::string warn, err;
-  // No material reader: colours come from the scene's material, mtllib lines are ignored.
-  bool ok = tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &in, nullptr,
-                             /*triangulate=*/false, /*default_vcols_fallback=*/false);
-  if (!ok || !err.empty())
-    throw SceneError(where + ": malformed OBJ file \"" + o.file + "\": " + trim(err.empty() ? "parse failed" : err));
-
-  const size_t npos = attrib.vertices.size() / 3, nnorm = attrib.normals.size() / 3;
-  auto pos = [&](int i) {
-    return glm::dvec3(attrib.vertices[3 * i], attrib.vertices[3 * i + 1], attrib.vertices[3 * i + 2]);
-  };
-  auto fail = [&](size_t face, const std::string& what) {
-    throw SceneError(where + ": OBJ file \"" + o.file + "\": face " + std::to_string(face + 1) + ": " + what);
-  };
-  for (double x : attrib.vertices)
-    if (!std::isfinite(x)) throw SceneError(where + ": OBJ file \"" + o.file + "\": non-finite vertex coordinate");
-
-  // Gather faces as (position, normal) index lists, validating indices.
-  struct RawFace { std::vector<std::pair<int, int>> v; };
-  std::vector<RawFace> raw;
-  for (const auto& sh : shapes) {
-    size_t off = 0;
-    for (size_t f = 0; f < sh.mesh.num_face_vertices.size(); ++f) {
-      const size_t n = sh.mesh.num_face_vertices[f];
-      RawFace rf;
-      for (size_t k = 0; k < n; ++k) {
-        const tinyobj::index_t& ix = sh.mesh.indices[off + k];
-        if (ix.vertex_index < 0 || static_cast<size_t>(ix.vertex_index) >= npos)
-          fail(raw.size(), "vertex index out of range");
-        int ni = -1;
-        if (o.normals == MeshNormals::File) {
-          if (ix.normal_index < 0 || static_cast<size_t>(ix.normal_index) >= nnorm)
-            fail(raw.size(), "no vertex normal (use \"normals\": \"average\" for files without vn)");
-          ni = ix.normal_index;
-        }
-        rf.v.push_back({ix.vertex_index, ni});
-      }
-      off += n;
-      if (rf.v.size() < 3) fail(raw.size(), "fewer than 3 vertices");
-      raw.push_back(std::move(rf));
+IndexedMesh obj_mesh_from_text(const std::string& text, const SceneObject& o, const std::string& where,
+                               std::size_t max_faces) {
+  ObjReader r(o, where, max_faces);
+  r.read(text);
+  const std::vector<glm::dvec3>& pos = r.position;
+  const long long npos = static_cast<long long>(pos.size()), nnorm = static_cast<long long>(r.normal.size());
+  if (r.faces.empty()) r.fail("has no faces");
+  for (const auto& f : r.faces) {
+    r.at_line(f.line);
+    for (const auto& pv : f.v) {
+      if (pv.first >= npos)
+        r.fail("f: vertex index " + std::to_string(pv.first + 1) + " is past the last vertex (" +
+               std::to_string(npos) + ")");
+      if (pv.second >= nnorm)
+        r.fail("f: normal index " + std::to_string(pv.second + 1) + " is past the last normal (" +
+               std::to_string(nnorm) + ")");
+      if (o.normals == MeshNormals::File && pv.second < 0)
+        r.fail("f: no vertex normal (use \"normals\": \"average\" for files without vn)");
     }
   }
-  if (raw.empty()) throw SceneError(where + ": OBJ file \"" + o.file + "\" has no faces");
+  r.at_line(0);
 
   // Averaged normals: sum of Newell normals (length = twice the face area), i.e. area-weighted,
   // computed in the file's own right-handed frame where counter-clockwise faces point outward.
   std::vector<glm::dvec3> avg;
   if (o.normals == MeshNormals::Average) {
-    avg.assign(npos, glm::dvec3(0.0));
-    for (const RawFace& rf : raw) {
+    avg.assign(pos.size(), glm::dvec3(0.0));
+    for (const auto& f : r.faces) {
       glm::dvec3 nw(0.0);
-      for (size_t k = 0; k < rf.v.size(); ++k) nw += glm::cross(pos(rf.v[k].first), pos(rf.v[(k + 1) % rf.v.size()].first));
-      for (const auto& pv : rf.v) avg[pv.first] += nw;
+      for (size_t k = 0; k < f.v.size(); ++k) nw += glm::cross(pos[f.v[k].first], pos[f.v[(k + 1) % f.v.size()].first]);
+      for (const auto& pv : f.v) avg[pv.first] += nw;
     }
   }
 
   IndexedMesh m;
-  std::map<std::pair<int, int>, int> index;  // (position, normal) -> vertex: shared vertices stay shared
-  auto vertex = [&](size_t face, const std::pair<int, int>& pv) {
+  std::map<std::pair<long long, long long>, int> index;  // (position, normal) -> vertex: shared vertices stay shared
+  auto vertex = [&](const ObjReader::Face& f, const std::pair<long long, long long>& pv) {
     auto it = index.find(pv);
     if (it != index.end()) return it->second;
-    glm::dvec3 n = o.normals == MeshNormals::File
-                       ? glm::dvec3(attrib.normals[3 * pv.second], attrib.normals[3 * pv.second + 1], attrib.normals[3 * pv.second + 2])
-                       : avg[pv.first];
-    double len = glm::length(n);
-    if (!std::isfinite(len) || len < 1e-300) fail(face, "zero or invalid vertex normal");
-    m.position.push_back(mirror_z(pos(pv.first)));
+    const glm::dvec3 n = o.normals == MeshNormals::File ? r.normal[pv.second] : avg[pv.first];
+    const double len = glm::length(n);
+    if (!std::isfinite(len) || len < 1e-300) {
+      r.at_line(f.line);
+      r.fail("f: zero or invalid vertex normal");
+    }
+    m.position.push_back(mirror_z(pos[pv.first]));
     m.normal.push_back(mirror_z(n / len));
-    int id = static_cast<int>(m.position.size()) - 1;
+    const int id = static_cast<int>(m.position.size()) - 1;
     index.emplace(pv, id);
     return id;
   };
   // Faces keep the file's order: mirroring z both reverses the handedness and the apparent
   // winding, so a face counter-clockwise from outside in the file stays front-facing here.
-  for (size_t f = 0; f < raw.size(); ++f) {
-    const RawFace& rf = raw[f];
+  // Polygons of more than 4 vertices become a fan of triangles (right for convex faces).
+  for (const auto& f : r.faces) {
     std::vector<int> id;
-    for (const auto& pv : rf.v) id.push_back(vertex(f, pv));
+    id.reserve(f.v.size());
+    for (const auto& pv : f.v) id.push_back(vertex(f, pv));
     if (id.size() == 4 && !o.triangles) {
       m.faces.push_back({4, {id[0], id[1], id[2], id[3]}});
     } else {
@@ -119,6 +226,23 @@ IndexedMesh load_obj_mesh(const SceneObject& o, const std::string& where) {
     }
   }
   return m;
+}
+
+IndexedMesh load_obj_mesh(const SceneObject& o, const std::string& where, std::size_t max_faces) {
+  struct stat st {};
+  if (::stat(o.file.c_str(), &st) != 0)
+    throw SceneError(where + ": cannot open OBJ file " + quote_input(o.file) + ": " + std::strerror(errno));
+  if (!S_ISREG(st.st_mode)) throw SceneError(where + ": OBJ file " + quote_input(o.file) + " is not a regular file");
+  if (st.st_size > kMaxObjBytes)
+    throw SceneError(where + ": OBJ file " + quote_input(o.file) + " is " + std::to_string(st.st_size) +
+                     " bytes, over the limit of " + std::to_string(kMaxObjBytes));
+  std::ifstream in(o.file, std::ios::binary);
+  if (!in) throw SceneError(where + ": cannot open OBJ file " + quote_input(o.file) + ": " + std::strerror(errno));
+  std::string text(static_cast<size_t>(st.st_size), '\0');
+  in.read(text.data(), st.st_size);
+  text.resize(static_cast<size_t>(in.gcount()));
+  if (in.bad()) throw SceneError(where + ": cannot read OBJ file " + quote_input(o.file));
+  return obj_mesh_from_text(text, o, where, max_faces);
 }
 
 }  // namespace watkins

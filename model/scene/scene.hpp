@@ -3,6 +3,7 @@
 // Every error names the file, and the line/column or the JSON field, and what is wrong.
 #pragma once
 
+#include <cstddef>
 #include <memory>
 #include <optional>
 #include <string>
@@ -35,6 +36,12 @@ struct BuildOptions {
   std::optional<bool> cull_backfaces;
   std::optional<ShadingMode> shading;
   std::optional<bool> flat;  // flat shading (see BuiltScene::flat)
+  // Zero-area polygons are skipped and counted (BuiltScene::degenerate), as GL skips them; with
+  // strict, a zero-area polygon of a "polygons" command list is an error naming it.
+  bool strict = false;
+  // Faces the scene's objects may tessellate into (and OBJ files hold) before culling, estimated
+  // before anything is allocated: a 1 KB scene asking for 10^9 polygons is refused at once.
+  std::size_t max_faces = std::size_t{1} << 22;
 };
 
 // A material as Phong's eq. (3) uses it: S = Cp [cos(i)(1 - d) + d] + W cos(s)^n.
@@ -64,7 +71,8 @@ struct BuiltScene {
   std::vector<ScreenPolygon> polygons;
   int culled_backfaces = 0;   // dropped by back-face culling
   int near_clipped = 0;       // dropped: a vertex behind the camera's near plane
-  int degenerate = 0;         // dropped: zero projected area (e.g. the pole quads of a sphere)
+  int degenerate = 0;         // dropped: zero projected area (the pole quads of a sphere, zero-area
+                              // polygons of a command list)
   // The parsed scene it was built from (for the analytic truth, which ray-casts the exact
   // surfaces); null for scenes assembled in code.
   std::shared_ptr<const Scene> source;

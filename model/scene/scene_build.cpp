@@ -64,7 +64,7 @@ class MaterialTable {
     auto it = ids_.find(m.name);
     if (it != ids_.end()) return it->second;
     if (phong_ && !(m.n == std::floor(m.n) && m.n >= 0 && m.n <= 255))
-      throw SceneError(scene_ + ": materials." + m.name + ".n: Phong shading needs an integer in [0, 255], got " +
+      throw SceneError(scene_ + ": materials." + field_key(m.name) + ".n: Phong shading needs an integer in [0, 255], got " +
                        number_text(m.n));
     out_.push_back(phong_material(m));
     return ids_[m.name] = static_cast<int>(out_.size() - 1);
@@ -112,6 +112,22 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
   MaterialTable materials(sc.name, out.shading == ShadingMode::Phong || out.rule == ShadingRule::Phong,
                           out.materials);
 
+  // Before anything is tessellated: the faces the surfaces will make, against the budget (OBJ files
+  // are counted as they are read, against what the budget has left).
+  std::size_t faces = 0;
+  for (const SceneObject& o : sc.objects) {
+    std::size_t f = 0;
+    if (o.type == ObjectType::Polygons) f = o.polygons.size();
+    else if (o.type != ObjectType::Mesh)  // a u x v grid, a cone's cap row, quads split into two
+      f = std::size_t(o.u) * std::size_t(o.v + 1) * (o.triangles ? 2 : 1);
+    faces += f;
+    if (faces > opt.max_faces)
+      throw SceneError(sc.name + ": " + o.field + (o.type == ObjectType::Polygons ? ".polygons" : ".u") +
+                       ": the objects up to here make about " + std::to_string(faces) +
+                       " faces before culling, over the limit of " + std::to_string(opt.max_faces) +
+                       " (the pipeline holds " + std::to_string(kMaxPolygons) + " polygons)");
+  }
+
   // Pass 1: geometry into camera space; reject polygons reaching outside [near, far).
   std::vector<CamObject> objs;
   double zmin = INFINITY, rmin = INFINITY;
@@ -121,7 +137,12 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
     CamObject co;
     co.src = &o;
     co.index = static_cast<int>(i);
-    co.mesh = o.type == ObjectType::Mesh ? load_obj_mesh(o, sc.name + ": " + o.field + ".file") : tessellate_surface(o);
+    if (o.type == ObjectType::Mesh) {
+      co.mesh = load_obj_mesh(o, sc.name + ": " + o.field + ".file", opt.max_faces - std::min(faces, opt.max_faces));
+      faces += co.mesh.faces.size();
+    } else {
+      co.mesh = tessellate_surface(o);
+    }
     const glm::dmat3 rot = rotation(o.transform.rotate_deg);
     const glm::dvec3 s = o.transform.scale;
     for (size_t k = 0; k < co.mesh.position.size(); ++k) {
@@ -129,6 +150,11 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
       co.mesh.position[k] = view.point(rot * (s * co.mesh.position[k]) + o.transform.translate);
       // Inverse transpose of rot*diag(s) is rot*diag(1/s).
       co.mesh.normal[k] = glm::normalize(view.dir(rot * (co.mesh.normal[k] / s)));
+      // The parser bounds every number, so this holds; a NaN here would be a silent empty frame.
+      const glm::dvec3 &p = co.mesh.position[k], &n = co.mesh.normal[k];
+      if (!std::isfinite(p.x + p.y + p.z) || !std::isfinite(n.x + n.y + n.z))
+        throw SceneError(sc.name + ": " + o.field + ": a vertex or its normal is not finite in camera space "
+                         "(check the object's transform and the camera)");
     }
     co.kept.assign(co.mesh.faces.size(), 0);
     for (size_t f = 0; f < co.mesh.faces.size(); ++f) {
@@ -180,6 +206,7 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
   };
 
   size_t next_obj = 0;
+  std::string crossed;  // the object at which the polygon count passed kMaxPolygons
   for (size_t i = 0; i < sc.objects.size(); ++i) {
     const SceneObject& o = sc.objects[i];
     if (o.type == ObjectType::Polygons) {
@@ -190,9 +217,21 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
         throw SceneError(sc.name + ": " + missing + ": missing key \"" + (phong ? "normal" : "rgb") + "\" (" +
                          (phong ? "Phong shading interpolates vertex normals" : "Gouraud shading interpolates vertex shades") +
                          ")");
-      for (ScreenPolygon p : o.polygons) {
+      for (size_t k = 0; k < o.polygons.size(); ++k) {
+        ScreenPolygon p = o.polygons[k];
+        if (std::fabs(signed_area(p)) < 1e-9) {  // as GL does: nothing to draw, skipped and counted
+          if (opt.strict)
+            throw SceneError(sc.name + ": " + o.field + ".polygons[" + std::to_string(k) +
+                             "]: polygon has zero area (skipped without --strict)");
+          ++out.degenerate;
+          continue;
+        }
         p.material = materials.index(o.material);
         out.polygons.push_back(std::move(p));
+      }
+      if (out.polygons.size() > kMaxPolygons) {
+        crossed = o.field;
+        break;
       }
       continue;
     }
@@ -261,12 +300,17 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
           for (ScreenVertex& v : poly.v) std::copy(rgb, rgb + 3, v.rgb);
         }
         out.polygons.push_back(std::move(poly));
+        if (out.polygons.size() > kMaxPolygons) break;  // refused below, before more is built
       }
+    }
+    if (out.polygons.size() > kMaxPolygons) {
+      crossed = o.field;
+      break;
     }
   }
   if (out.polygons.size() > kMaxPolygons)
-    throw SceneError(sc.name + ": scene has " + std::to_string(out.polygons.size()) +
-                     " polygons; the pipeline's polygon id is " + std::to_string(fmt::PolyIdBits) +
+    throw SceneError(sc.name + ": " + crossed + ": the scene has more than " + std::to_string(kMaxPolygons) +
+                     " polygons up to this object; the pipeline's polygon id is " + std::to_string(fmt::PolyIdBits) +
                      " bits (at most " + std::to_string(kMaxPolygons) + ")");
   return out;
 }
@@ -279,16 +323,22 @@ BuiltScene load_scene_text(const std::string& text, const std::string& name, con
 }
 
 BuiltScene load_scene(const std::string& path, const BuildOptions& opt) {
+  if (path.empty()) throw SceneError("scene file name is empty");
   std::FILE* f = std::fopen(path.c_str(), "rb");
   if (!f) throw SceneError(path + ": cannot open scene file: " + std::strerror(errno));
+  // Read at most one byte past the limit: /dev/zero or a stray multi-gigabyte file is refused
+  // after 16 MiB, not after the allocator gives up.
+  constexpr size_t kMaxSceneBytes = size_t{16} << 20;
   std::string text;
   char buf[65536];
   size_t n;
-  while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) text.append(buf, n);
+  while (text.size() <= kMaxSceneBytes && (n = std::fread(buf, 1, sizeof buf, f)) > 0) text.append(buf, n);
   const bool bad = std::ferror(f);
   const int err = errno;
   std::fclose(f);
-  if (bad) throw SceneError(path + ": cannot open scene file: " + std::strerror(err));
+  if (bad) throw SceneError(path + ": cannot read scene file: " + std::strerror(err));
+  if (text.size() > kMaxSceneBytes)
+    throw SceneError(path + ": scene file is larger than " + std::to_string(kMaxSceneBytes >> 20) + " MiB (the limit)");
   return load_scene_text(text, path, std::filesystem::path(path).parent_path().string(), opt);
 }
 

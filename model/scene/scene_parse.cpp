@@ -6,11 +6,13 @@
 #include <filesystem>
 #include <initializer_list>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "formats.hpp"
+#include "strict_json.hpp"
 #include "scene_types.hpp"
 
 namespace watkins {
@@ -20,12 +22,13 @@ using nlohmann::json;
 
 constexpr double kCoordLimit = fmt::VertexLimit;  // screen-space vertices: [-8192, 8192) pixels
 
-// A short rendering of an offending value for messages.
-std::string show(const json& j) {
-  std::string s = j.dump();
-  if (s.size() > 40) s = s.substr(0, 37) + "...";
-  return s;
-}
+// Largest magnitude of any number in a scene: products of two stay far from overflow (a
+// direction, eye or normal of 1e200 would give an infinite length and a NaN camera basis).
+constexpr double kMaxMagnitude = 1e9;
+// Smallest positive number a positive field takes (its reciprocal stays bounded as well).
+constexpr double kMinPositive = 1e-9;
+
+std::string show(const json& j) { return show_json(j); }
 
 // Field-path aware accessors. `name` is the scene name used as the message prefix.
 class Reader {
@@ -45,7 +48,7 @@ class Reader {
     for (auto it = j.begin(); it != j.end(); ++it) {
       bool ok = false;
       for (const char* a : allowed) ok = ok || it.key() == a;
-      if (!ok) fail(field, "unknown key \"" + it.key() + "\"");
+      if (!ok) fail(field, "unknown key " + quote_input(it.key()));
     }
   }
 
@@ -63,6 +66,8 @@ class Reader {
     if (!v.is_number()) fail(field, "expected a number, got " + show(v));
     double x = v.get<double>();
     if (!std::isfinite(x)) fail(field, "expected a finite number, got " + show(v));
+    if (std::fabs(x) > kMaxMagnitude)
+      fail(field, "expected a number of magnitude at most " + number_text(kMaxMagnitude) + ", got " + show(v));
     return x;
   }
 
@@ -78,7 +83,8 @@ class Reader {
 
   double positive(const json& v, const std::string& field) const {
     double x = number(v, field);
-    if (!(x > 0)) fail(field, "expected a positive number, got " + show(v));
+    if (!(x >= kMinPositive))
+      fail(field, "expected a positive number (at least " + number_text(kMinPositive) + "), got " + show(v));
     return x;
   }
 
@@ -230,7 +236,7 @@ std::map<std::string, Material> parse_materials(const Reader& r, const json& j) 
   r.expect_object(j, f);
   std::map<std::string, Material> out;
   for (auto it = j.begin(); it != j.end(); ++it) {
-    const std::string mf = f + "." + it.key();
+    const std::string mf = f + "." + field_key(it.key());
     const json& m = it.value();
     r.expect_object(m, mf);
     r.check_keys(m, mf, {"color", "d", "W", "n"});
@@ -256,7 +262,9 @@ void parse_transform(const Reader& r, const json& j, const std::string& f, Trans
     } else {
       t.scale = r.vec3(v, ff);
       for (int c = 0; c < 3; ++c)
-        if (!(t.scale[c] > 0)) r.fail(ff + "[" + std::to_string(c) + "]", "expected a positive number, got " + number_text(t.scale[c]));
+        if (!(t.scale[c] >= kMinPositive))
+          r.fail(ff + "[" + std::to_string(c) + "]", "expected a positive number (at least " +
+                                                      number_text(kMinPositive) + "), got " + number_text(t.scale[c]));
     }
   });
 }
@@ -299,13 +307,8 @@ ScreenPolygon parse_screen_polygon(const Reader& r, const json& j, const std::st
     if (!v.contains("normal") && o.vertex_without_normal.empty()) o.vertex_without_normal = vf;
     p.v.push_back(sv);
   }
-  double a2 = 0;  // twice the signed area (shoelace)
-  for (size_t k = 0; k < p.v.size(); ++k) {
-    const ScreenVertex& a = p.v[k];
-    const ScreenVertex& b = p.v[(k + 1) % p.v.size()];
-    a2 += a.x * b.y - b.x * a.y;
-  }
-  if (std::fabs(a2) * 0.5 < 1e-9) r.fail(f, "polygon has zero area");
+  // A zero-area polygon is skipped (and counted) by the builder as GL skips it; fatal only with
+  // BuildOptions::strict.
   return p;
 }
 
@@ -313,7 +316,7 @@ const Material& find_material(const Reader& r, const std::map<std::string, Mater
                               const std::string& field) {
   const std::string name = r.string(v, field);
   auto m = mats.find(name);
-  if (m == mats.end()) r.fail(field, "unknown material \"" + name + "\"");
+  if (m == mats.end()) r.fail(field, "unknown material " + quote_input(name));
   return m->second;
 }
 
@@ -330,7 +333,7 @@ SceneObject parse_object(const Reader& r, const json& j, const std::string& f, i
     for (auto it = j.begin(); it != j.end(); ++it) {
       bool ok = false;
       for (const char* a : keys) ok = ok || it.key() == a;
-      if (!ok) r.fail(f, "unknown key \"" + it.key() + "\"");
+      if (!ok) r.fail(f, "unknown key " + quote_input(it.key()));
     }
     opt(j, f, "material", [&](const json& v, const std::string& ff) { o.material = find_material(r, mats, v, ff); });
     parse_transform(r, j, f, o.transform);
@@ -412,56 +415,11 @@ SceneObject parse_object(const Reader& r, const json& j, const std::string& f, i
   return o;
 }
 
-// nlohmann reports a byte offset; turn it into the line:column editors show.
-std::string located(const std::string& name, const std::string& text, size_t idx, const std::string& detail) {
-  idx = std::min(idx, text.size());
-  int line = 1, col = 1;
-  for (size_t i = 0; i < idx; ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      col = 1;
-    } else {
-      ++col;
-    }
-  }
-  return name + ":" + std::to_string(line) + ":" + std::to_string(col) + ": malformed JSON: " + detail;
-}
-
-std::string parse_error_message(const std::string& name, const std::string& text, const json::parse_error& e) {
-  std::string detail = e.what();
-  auto pos = detail.find(": ");  // drop "[json.exception.parse_error.101] parse error at line 1, column 2"
-  if (pos != std::string::npos) detail = detail.substr(pos + 2);
-  // e.byte is 1-based: the offending character is text[e.byte - 1].
-  return located(name, text, e.byte > 0 ? e.byte - 1 : 0, detail);
-}
-
-// Number overflow (e.g. 1e999) carries no position; find the quoted token in the text.
-std::string overflow_message(const std::string& name, const std::string& text, const json::out_of_range& e) {
-  std::string detail = e.what();
-  auto pos = detail.find("] ");
-  if (pos != std::string::npos) detail = detail.substr(pos + 2);
-  auto q0 = detail.find('\''), q1 = detail.rfind('\'');
-  if (q0 != std::string::npos && q1 > q0) {
-    auto at = text.find(detail.substr(q0 + 1, q1 - q0 - 1));
-    if (at != std::string::npos) return located(name, text, at, detail);
-  }
-  return name + ": malformed JSON: " + detail;
-}
-
 }  // namespace
 
 Scene parse_scene(const std::string& text, const std::string& name, const std::string& base_dir) {
-  json root;
-  try {
-    // Comments are allowed so shipped scenes can explain themselves.
-    root = json::parse(text, nullptr, true, /*ignore_comments=*/true);
-  } catch (const json::parse_error& e) {
-    throw SceneError(parse_error_message(name, text, e));
-  } catch (const json::out_of_range& e) {
-    throw SceneError(overflow_message(name, text, e));
-  } catch (const json::exception& e) {
-    throw SceneError(name + ": malformed JSON: " + e.what());
-  }
+  // Comments are allowed so shipped scenes can explain themselves.
+  const json root = parse_strict_json(text, name, /*comments=*/true);
   Reader r(name);
   Scene s;
   s.name = name;
