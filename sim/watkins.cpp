@@ -98,7 +98,7 @@ int run_rtl_mode(const RtlArgs& a, const watkins::PreparedScene& prepared, watki
   opt.trace_path = a.trace;
   opt.sparse = a.sparse;
   const tb::RtlResult r = tb::run_rtl(prepared, opt, &image);
-  std::printf("rtl           %s\n", tb::rtl_description().c_str());
+  std::printf("rtl           %s\n", r.top.c_str());
   std::printf("rtl cycles    %lld (first edge beat offered to last pixel; %s output; gap %.2f, stall %.2f, seed %llu)\n",
               r.cycles, a.sparse ? "sparse" : "full-frame", a.gap, a.stall, a.seed);
   std::printf("rtl predicted %lld cycles (cycle model, no gaps or stalls)%s\n", predicted,

@@ -276,10 +276,13 @@ RtlResult run_rtl_frames(const std::vector<const PreparedScene*>& scenes, const 
     if (!opt.trace_path.empty())
       throw std::invalid_argument("RTL: --trace: the top built for " + m->built_for +
                                   " is Verilated without FST tracing (only the default configuration's traces)");
+    r.top = "Verilated --cc watkins_top built for " + m->built_for + " (" + parameter_text(params) + ")";
     const detail::Expectations want = detail::expect(scenes, opt, expected, r, rtl_max_width(config, shading));
     cc_side(*m).driver->run(scenes, want.images, want.stages, opt, r);
     return r;
   }
+  r.top = std::string("SystemC bench, Verilated --sc watkins_top at the default configuration (Phong = ") +
+          (phong ? "1)" : "0)");
   const detail::Expectations want = detail::expect(scenes, opt, expected, r, MaxWidth);
   Bench& b = bench();
   if (b.dead) throw std::runtime_error("RTL bench: the SystemC kernel stopped in an earlier run");

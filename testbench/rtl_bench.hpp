@@ -96,6 +96,7 @@ struct RtlFrame {
 
 struct RtlResult {
   std::vector<RtlFrame> frames;
+  std::string top;              // the Verilated top that ran the frames (which build, which configuration)
   long long cycles = 0;         // first beat offered of the first frame to last pixel of the last frame
   long long sim_cycles = 0;     // every clock of the run, including reset and drain
   long long pixels = 0;

@@ -64,6 +64,7 @@ RtlResult run_rtl_frames(const std::vector<const PreparedScene*>& scenes, const 
   RtlResult r;
   r.unavailable = rtl_unavailable(detail::frames_config(scenes), ShadingMode::Gouraud);
   if (!r.unavailable.empty()) return r;
+  r.top = rtl_description();
   const detail::Expectations want = detail::expect(scenes, opt, expected, r, MaxWidth);
   harness().driver->run(scenes, want.images, want.stages, opt, r);
   return r;
