@@ -1,14 +1,20 @@
 // stall_pipe: the valid and payload shift of a Stages-deep pipeline with one global stall, the
 // idiom of span_reciprocal, normalizer and phong_shader: every stage advances together on en_o,
 // which the parent also uses to enable its own datapath registers, so they stay in step.
-// Latency Stages; valid (reset) and payload (not reset) registered in every stage;
-// ready_o = en_o = ready_i || !valid_o, combinational from ready_i and the last valid flop only
-// (a bubble anywhere in the pipe is not squeezed out while the output waits).
+// Latency Stages; valid (reset) registered in every stage; ready_o = en_o = ready_i || !valid_o,
+// combinational from ready_i and the last valid flop only (a bubble anywhere in the pipe is not
+// squeezed out while the output waits).
+// PayloadRam = 0: the payload (not reset) shifts through a register per stage. PayloadRam = 1
+// (Stages >= 2): the payload is written once into a small RAM as it enters and read out in
+// order (the pipe never reorders), synchronous read one clock ahead into payload_o's register:
+// a wide payload costs one RAM word per beat in flight instead of Stages registers, and maps to
+// block RAM (SB_RAM40_4K, DP16KD). Same latency and values either way.
 `include "watkins_assert.svh"
 
 module stall_pipe #(
   parameter int unsigned Stages      = 2,  // pipeline depth, >= 1
-  parameter int unsigned PayloadBits = 1   // carried alongside, unchanged
+  parameter int unsigned PayloadBits = 1,  // carried alongside, unchanged
+  parameter bit          PayloadRam  = 1'b0 // 1: keep the payload in a RAM, not in every stage
 ) (
   input  logic                   clk_i,
   input  logic                   rst_ni,       // active-low synchronous reset (valid only)
@@ -21,7 +27,6 @@ module stall_pipe #(
   output logic                   en_o          // every stage advances this clock (the parent's too)
 );
   logic [Stages-1:0]      valid_q;
-  logic [PayloadBits-1:0] payload_q [Stages];
 
   assign en_o    = ready_i || !valid_q[Stages-1];
   assign ready_o = en_o;
@@ -32,16 +37,45 @@ module stall_pipe #(
     else if (en_o) valid_q <= (valid_q << 1) | Stages'(valid_i);
   end
 
-  always_ff @(posedge clk_i) begin
-    if (en_o) begin
-      payload_q[0] <= payload_i;
-      for (int s = 1; s < Stages; s++) payload_q[s] <= payload_q[s-1];
-    end
-  end
+  assign valid_o = valid_q[Stages-1];
 
-  assign valid_o   = valid_q[Stages-1];
-  assign payload_o = payload_q[Stages-1];
+  if (PayloadRam) begin : g_ram
+    // At most Stages beats are in flight, so Depth > Stages entries never overwrite one that is
+    // still to be read. A beat is written when it enters and its entry read from the clock it
+    // reaches the last stage on; it entered at least Stages - 1 >= 1 clocks before (write first).
+    localparam int unsigned PtrBits = $clog2(Stages + 1);
+    localparam int unsigned Depth   = 2 ** PtrBits;
+    logic [PayloadBits-1:0] mem [Depth];
+    logic [PtrBits-1:0]     wr_q, rd_q, rd_next;
+    logic [PayloadBits-1:0] out_q;
+
+    assign rd_next = rd_q + PtrBits'(valid_o && ready_i);
+    always_ff @(posedge clk_i) begin
+      if (!rst_ni) begin
+        wr_q <= '0;
+        rd_q <= '0;
+      end else begin
+        if (en_o && valid_i) wr_q <= wr_q + 1'b1;
+        rd_q <= rd_next;
+      end
+    end
+    always_ff @(posedge clk_i) begin
+      if (en_o && valid_i) mem[wr_q] <= payload_i;
+      out_q <= mem[rd_next];  // the oldest beat in flight (the one leaving next)
+    end
+    assign payload_o = out_q;
+  end else begin : g_shift
+    logic [PayloadBits-1:0] payload_q [Stages];
+    always_ff @(posedge clk_i) begin
+      if (en_o) begin
+        payload_q[0] <= payload_i;
+        for (int s = 1; s < Stages; s++) payload_q[s] <= payload_q[s-1];
+      end
+    end
+    assign payload_o = payload_q[Stages-1];
+  end
 
   `WATKINS_ASSERT_HOLD(a_in_hold, valid_i, ready_o, payload_i)
   `WATKINS_ASSERT_HOLD(a_out_hold, valid_o, ready_i, payload_o)
+  `WATKINS_ASSERT(a_ram_depth, !PayloadRam || Stages >= 2)
 endmodule
