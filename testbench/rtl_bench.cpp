@@ -248,8 +248,10 @@ struct CcSide {
 };
 
 CcSide& cc_side(const detail::CcModelEntry& m) {
-  static std::map<const detail::CcModelEntry*, CcSide> sides;
-  CcSide& side = sides[&m];
+  // Never destroyed, like the SystemC bench: a Verilated model destroyed by a static destructor
+  // after Verilator's own statics deadlocks at exit.
+  static auto* sides = new std::map<const detail::CcModelEntry*, CcSide>;
+  CcSide& side = (*sides)[&m];
   if (!side.model) {
     side.model = m.make();
     side.driver = std::make_unique<detail::FrameDriver>(side.model->pins());
