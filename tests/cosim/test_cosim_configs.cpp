@@ -137,6 +137,9 @@ struct TestConfig {
   bool phong;
 };
 
+// How ctest names the parameter: "narrow.json phong".
+void PrintTo(const TestConfig& c, std::ostream* os) { *os << c.file << (c.phong ? " phong" : " gouraud"); }
+
 class RandomAtConfig : public ::testing::TestWithParam<TestConfig> {};
 
 TEST_P(RandomAtConfig, RandomScenesUnderStalls) {
