@@ -2,8 +2,10 @@
 # Installs every Debian package Watkins needs (skipping what is present) and builds it.
 #   scripts/setup.sh [--no-build]           packages only
 #   scripts/setup.sh --main                 the main job only: `watkins` and its Verilated tops
-#                                           (no tests, no speed harnesses)
-#   scripts/setup.sh                        everything: tests, benches, speed harnesses
+#                                           (no tests, no speed harnesses, no per-configuration tops)
+#   scripts/setup.sh                        everything: tests, benches, speed harnesses, and a
+#                                           Verilated top per docs/size/*.json and tests/configs/*.json
+#                                           (WATKINS_RTL_CONFIGS at its default)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 
@@ -31,7 +33,8 @@ fi
 
 [ "${1:-}" = "--no-build" ] && exit 0
 build="${WATKINS_BUILD:-$root/build}"
-all=ON target=()
-[ "${1:-}" = "--main" ] && all=OFF target=(--target watkins)
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DWATKINS_TESTS=$all -DWATKINS_RTL_CC_HARNESS=$all >/dev/null
+all=ON target=() configs=(-UWATKINS_RTL_CONFIGS)  # unset: CMake's default list for the test build
+[ "${1:-}" = "--main" ] && all=OFF target=(--target watkins) configs=(-DWATKINS_RTL_CONFIGS=)
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DWATKINS_TESTS=$all -DWATKINS_RTL_CC_HARNESS=$all \
+  "${configs[@]}" >/dev/null
 cmake --build "$build" -j"${WATKINS_JOBS:-2}" "${target[@]}"

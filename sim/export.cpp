@@ -15,12 +15,13 @@
 
 namespace {
 
+// The default configuration's edge_t (the Icarus bench elaborates the top at its defaults).
 void write_edge(std::ofstream& out, const watkins::tb::EdgeWords& w) {
-  using namespace watkins::tb::edge_layout;
-  // Hex digits from the top: the top word holds Bits % 32 bits.
+  const watkins::tb::EdgeLayout& l = watkins::tb::default_edge_layout();
+  // Hex digits from the top: the top word holds bits % 32 bits.
   char buf[16];
-  for (int i = Words - 1; i >= 0; --i) {
-    const int bits = i == Words - 1 ? Bits - 32 * (Words - 1) : 32;
+  for (int i = l.words - 1; i >= 0; --i) {
+    const int bits = i == l.words - 1 ? l.bits - 32 * (l.words - 1) : 32;
     std::snprintf(buf, sizeof buf, "%0*x", (bits + 3) / 4, w[i]);
     out << buf;
   }
@@ -43,7 +44,7 @@ int main(int argc, char** argv) {
     std::ofstream edges(dir + "/edges.hex"), pixels(dir + "/pixels.hex"), frame(dir + "/frame.hex");
     if (!edges || !pixels || !frame) throw std::runtime_error(dir + ": cannot write the hex files");
     for (const auto& e : p.edges) {
-      write_edge(edges, tb::pack_edge(e));
+      write_edge(edges, tb::pack_edge(tb::default_edge_layout(), e));
     }
     char buf[16];
     for (int y = 0; y < img.height; ++y)

@@ -105,16 +105,18 @@ void check_rtl_args(const RtlArgs& a, const std::string& model) {
   if (model != "fixed") throw UsageError("--rtl compares with the fixed model; drop --model " + model);
 }
 
-// The Verilated RTL is built for the default formats (rtl/watkins_pkg.sv): refuse another
-// configuration rather than compare two different pipelines. The active-edge list capacity is
-// a run-time input of the bench as before.
-void check_rtl_config(const RtlArgs& a, const watkins::Config& cfg) {
+// A Verilated top exists for the default configuration and for each one the build was asked for
+// (CMake option WATKINS_RTL_CONFIGS): refuse, in one line, a configuration without one rather
+// than compare two different pipelines.
+void check_rtl_config(const RtlArgs& a, const watkins::PreparedScene& prepared, const std::string& config_file) {
   if (!a.enabled) return;
-  watkins::Config def;
-  def.max_active_edges = cfg.max_active_edges;
-  if (cfg != def)
-    throw UsageError("--rtl: the RTL is built for the default configuration (rtl/watkins_pkg.sv); "
-                             "--config differs from it (an RTL build per configuration is the next step of issue 9)");
+#ifdef WATKINS_HAVE_RTL
+  const std::string why = watkins::tb::rtl_unavailable(prepared.config, prepared.shading,
+                                                       config_file.empty() ? "F" : config_file);
+  if (!why.empty()) throw UsageError("--rtl" + (config_file.empty() ? "" : " --config " + config_file) + ": " + why);
+#else
+  (void)prepared, (void)config_file;
+#endif
 }
 
 // Runs the RTL on the prepared scene, compares with the model image, prints the statistics and
@@ -130,7 +132,7 @@ int run_rtl_mode(const RtlArgs& a, const watkins::PreparedScene& prepared, watki
   opt.trace_path = a.trace;
   opt.sparse = a.sparse;
   const tb::RtlResult r = tb::run_rtl(prepared, opt, &image);
-  std::printf("rtl           %s\n", tb::rtl_description().c_str());
+  std::printf("rtl           %s\n", r.top.c_str());
   std::printf("rtl cycles    %lld (first edge beat offered to last pixel; %s output; gap %.2f, stall %.2f, seed %llu)\n",
               r.cycles, a.sparse ? "sparse" : "full-frame", a.gap, a.stall, a.seed);
   std::printf("rtl predicted %lld cycles (cycle model, no gaps or stalls)%s\n", predicted,
@@ -281,7 +283,6 @@ int render(const RenderArgs& a) {
   const auto t0 = Clock::now();
   Config cfg = a.config.empty() ? Config{} : load_config(a.config);
   if (a.max_active_edges_given || a.config.empty()) cfg.max_active_edges = a.max_active_edges;
-  check_rtl_config(a.rtl, cfg);  // --rtl
   const BuiltScene scene = load_scene_or_default(a.scene, opt);
   if (scene.source)  // nor an OBJ file the scene reads
     for (const auto& o : outputs)
@@ -289,6 +290,7 @@ int render(const RenderArgs& a) {
         if (obj.type == ObjectType::Mesh && same_file(o.second, obj.file))
           throw UsageError(o.first + " " + o.second + " is the OBJ file of " + obj.field + "; refusing to overwrite it");
   const PreparedScene prepared = prepare(scene, cfg);
+  check_rtl_config(a.rtl, prepared, a.config);  // --rtl
   const double t_prep = seconds_since(t0);
 
   std::printf("scene         %s  %dx%d  shading %s  rule %s  depth %s\n", scene.name.c_str(), scene.width,

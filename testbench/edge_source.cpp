@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "expectations.hpp"
 #include "fixed_point.hpp"
 #include "formats.hpp"
 
@@ -43,14 +44,14 @@ bool FrameConfig::operator==(const FrameConfig& o) const {
 }
 
 EdgeSource::EdgeSource(TopPins& pins, const std::vector<const PreparedScene*>& scenes, const RtlOptions& opt)
-    : pins_(pins), scenes_(scenes), opt_(opt), beats_(scenes.size()), gap_rng_(opt.seed * 2 + 1),
+    : pins_(pins), scenes_(scenes), opt_(opt),
+      layout_(EdgeLayout::of(frames_config(scenes), phong_frames(scenes) ? ShadingMode::Phong : ShadingMode::Gouraud)),
+      beats_(scenes.size()), poison_(poison_edge(layout_)), gap_rng_(opt.seed * 2 + 1),
       gap_threshold_(Rng::threshold(opt.gap)) {
   for (std::size_t f = 0; f < scenes.size(); ++f) {
     beats_[f].reserve(scenes[f]->edges.size());
-    for (const EdgeRecord& e : scenes[f]->edges) beats_[f].push_back(pack_edge(e));
+    for (const EdgeRecord& e : scenes[f]->edges) beats_[f].push_back(pack_edge(layout_, e));
   }
-  poison_.fill(0xDEADBEEFu);
-  poison_[edge_layout::Words - 1] &= (1u << (edge_layout::Bits % 32)) - 1;
 }
 
 FrameConfig EdgeSource::needs(int f) const {

@@ -33,9 +33,11 @@ struct FrameConfig {
 
 class EdgeSource {
  public:
-  // Packs every record first, so that a bad one throws before the simulation starts.
+  // Packs every record first, so that a bad one throws before the simulation starts. The records
+  // take the layout of the configuration and shading the frames were prepared for (one for all).
   EdgeSource(TopPins& pins, const std::vector<const PreparedScene*>& scenes, const RtlOptions& opt);
 
+  const EdgeLayout& layout() const { return layout_; }
   const EdgeWords& poison() const { return poison_; }
   void idle() { pins_.edge_pins(false, false, poison_); }  // edge_valid_i low
   // Sets the source's pins for the next cycle (`cycle` counted from the run's start): a frame's
@@ -58,6 +60,7 @@ class EdgeSource {
   TopPins& pins_;
   const std::vector<const PreparedScene*>& scenes_;
   const RtlOptions& opt_;
+  EdgeLayout layout_;
   std::vector<std::vector<EdgeWords>> beats_;  // per frame, the packed records
   EdgeWords poison_{};
   Rng gap_rng_;

@@ -40,7 +40,7 @@ StageStreams model_stage_streams(const PreparedScene& scene, Image* image) {
     s.shaded.push_back(s.fragments.back());
     kf = 0;
   };
-  WatkinsTop pipe(fmt::MaxActiveEdges);
+  WatkinsTop pipe(scene.config);
   Image img = pipe.render(scene, o);
   if (image) *image = std::move(img);
   return s;
@@ -54,8 +54,19 @@ bool phong_frames(const std::vector<const PreparedScene*>& scenes) {
   return phong != 0;
 }
 
+const Config& frames_config(const std::vector<const PreparedScene*>& scenes) {
+  static const Config def;
+  if (scenes.empty()) return def;
+  for (const PreparedScene* s : scenes)
+    if (s->config != scenes.front()->config)
+      throw std::invalid_argument("RTL: one run_rtl_frames call renders frames prepared for one configuration, "
+                                  "not several (the RTL is built for one)");
+  return scenes.front()->config;
+}
+
 Expectations expect(const std::vector<const PreparedScene*>& scenes, const RtlOptions& opt,
                     const std::vector<const Image*>& given, RtlResult& r, int max_width) {
+  (void)frames_config(scenes);
   Expectations x;
   x.rendered.assign(scenes.size(), Image{});  // never resized again: `images` points into it
   x.images.assign(scenes.size(), nullptr);
@@ -76,7 +87,7 @@ Expectations expect(const std::vector<const PreparedScene*>& scenes, const RtlOp
         x.stages[f] = model_stage_streams(s, have ? nullptr : &x.rendered[f]);
         if (opt.edit_stage_streams) opt.edit_stage_streams(static_cast<int>(f), x.stages[f]);
       } else {
-        x.rendered[f] = WatkinsTop(fmt::MaxActiveEdges).render(s);
+        x.rendered[f] = WatkinsTop(s.config).render(s);
       }
       if (!have) x.images[f] = &x.rendered[f];
     } catch (const CapacityError& e) {  // the twin's active-edge list overflowed

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "edge_source.hpp"
+#include "expectations.hpp"
 #include "pixel_sink.hpp"
 #include "stage_checker.hpp"
 
@@ -67,7 +68,8 @@ void FrameDriver::run(const std::vector<const PreparedScene*>& scenes, const std
   need_reset_ = true;  // until this run ends cleanly
 
   StageChecker stage_check;
-  stage_check.begin(pins_.stage_taps(), &stages, &r, start);
+  stage_check.begin(pins_.stage_taps(), &stages, &r, start, frames_config(scenes),
+                    phong_frames(scenes) ? ShadingMode::Phong : ShadingMode::Gouraud);
   Watchdog watchdog(cycle_, opt.watchdog);
 
   source.idle();

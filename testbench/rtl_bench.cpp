@@ -13,6 +13,7 @@
 
 #include <cstdlib>
 #include <functional>
+#include <map>
 #include <memory>
 #include <stdexcept>
 
@@ -24,6 +25,7 @@
 #include "Vwatkins_top___024root.h"  // the public internal stage signals
 #include "Vwatkins_top_phong.h"
 #include "Vwatkins_top_phong___024root.h"
+#include "cc_models.hpp"
 #include "expectations.hpp"
 #include "formats.hpp"
 #include "fst_trace.hpp"
@@ -39,7 +41,8 @@ int sc_main(int, char**) { return 0; }
 namespace watkins::tb {
 namespace {
 
-// The top at its default MaxWidth (not overridden in testbench/CMakeLists.txt).
+// The SystemC tops at their default parameters (not overridden in testbench/CMakeLists.txt but
+// for Phong): the default configuration's.
 constexpr int MaxWidth = fmt::DefaultMaxWidth;
 
 template <class Dut>
@@ -91,7 +94,7 @@ struct TopBench : sc_module, detail::TopPins {
     io.edge_eof.write(eof);
     if (data != last_edge_) {  // a 466-bit sc_bv write is the costly one; skip it when unchanged
       last_edge_ = data;
-      for (int i = 0; i < edge_layout::Words; ++i) edge_bv_.set_word(i, data[i]);
+      for (int i = 0; i < default_edge_layout().words; ++i) edge_bv_.set_word(i, data[i]);
       io.edge.write(edge_bv_);
     }
   }
@@ -129,7 +132,7 @@ struct TopBench : sc_module, detail::TopPins {
  private:
   const sc_time half_{5, SC_NS};
   EdgeWords last_edge_{};
-  sc_bv<edge_layout::Bits> edge_bv_;
+  sc_bv<fmt::EdgeRecordBits> edge_bv_;
   FstTrace trace_;
   detail::StageTaps taps_;
 };
@@ -167,10 +170,48 @@ Bench& bench() {
 
 std::string rtl_description() {
   return "SystemC bench (Verilated --sc watkins_top, Phong = 0 and 1, one SC_THREAD each, SystemC " +
-         std::string(sc_release()) + ")";
+         std::string(sc_release()) + ") and " + std::to_string(detail::cc_models().size()) +
+         " per-configuration --cc top(s)";
 }
 
-int rtl_max_width() { return MaxWidth; }
+namespace {
+
+bool is_default_top(const std::vector<RtlParameter>& params, ShadingMode shading) {
+  return params == rtl_parameters(Config{}, shading);
+}
+
+// The per-configuration model built with `params`, or null.
+const detail::CcModelEntry* find_cc_model(const std::vector<RtlParameter>& params) {
+  for (const detail::CcModelEntry& m : detail::cc_models())
+    if (m.params == params) return &m;
+  return nullptr;
+}
+
+std::string parameter_text(const std::vector<RtlParameter>& params) {
+  std::string s;
+  for (const RtlParameter& p : params) s += (s.empty() ? "" : " ") + std::string(p.name) + "=" + std::to_string(p.value);
+  return s;
+}
+
+}  // namespace
+
+std::string rtl_unavailable(const Config& config, ShadingMode shading, const std::string& file) {
+  const std::vector<RtlParameter> params = rtl_parameters(config, shading);
+  if (is_default_top(params, shading) || find_cc_model(params)) return "";
+  const char* s = shading == ShadingMode::Phong ? "phong" : "gouraud";
+  return std::string("no Verilated watkins_top for this configuration (") + parameter_text(params) +
+         "): this build has the default configuration's and " + std::to_string(detail::cc_models().size()) +
+         " other(s); build one with cmake -DWATKINS_RTL_CONFIGS=" + file + "@" + s + " (or add it to the list)";
+}
+
+int rtl_max_width(const Config& config, ShadingMode shading) {
+  const std::vector<RtlParameter> params = rtl_parameters(config, shading);
+  if (is_default_top(params, shading)) return MaxWidth;
+  if (const detail::CcModelEntry* m = find_cc_model(params))
+    for (const RtlParameter& p : m->params)
+      if (std::string(p.name) == "MaxWidth") return static_cast<int>(p.value);
+  return 0;
+}
 
 namespace {
 
@@ -197,10 +238,53 @@ void run_on(Bench& b, Side<Dut>& side, const Work& work) {
 
 }  // namespace
 
+namespace {
+
+// A per-configuration top and its driver, made on first use and kept (the driver resets it
+// before its first run and after a failed one).
+struct CcSide {
+  std::unique_ptr<detail::CcModel> model;
+  std::unique_ptr<detail::FrameDriver> driver;
+};
+
+CcSide& cc_side(const detail::CcModelEntry& m) {
+  // Never destroyed, like the SystemC bench: a Verilated model destroyed by a static destructor
+  // after Verilator's own statics deadlocks at exit.
+  static auto* sides = new std::map<const detail::CcModelEntry*, CcSide>;
+  CcSide& side = (*sides)[&m];
+  if (!side.model) {
+    side.model = m.make();
+    side.driver = std::make_unique<detail::FrameDriver>(side.model->pins());
+  }
+  return side;
+}
+
+}  // namespace
+
 RtlResult run_rtl_frames(const std::vector<const PreparedScene*>& scenes, const RtlOptions& opt,
                          const std::vector<const Image*>& expected) {
   const bool phong = detail::phong_frames(scenes);
+  const ShadingMode shading = phong ? ShadingMode::Phong : ShadingMode::Gouraud;
+  const Config& config = detail::frames_config(scenes);
+  const std::vector<RtlParameter> params = rtl_parameters(config, shading);
   RtlResult r;
+  if (!is_default_top(params, shading)) {
+    // Another configuration: its own --cc top through the same drive loop.
+    const detail::CcModelEntry* m = find_cc_model(params);
+    if (!m) {
+      r.unavailable = rtl_unavailable(config, shading, "F");
+      return r;
+    }
+    if (!opt.trace_path.empty())
+      throw std::invalid_argument("RTL: --trace: the top built for " + m->built_for +
+                                  " is Verilated without FST tracing (only the default configuration's traces)");
+    r.top = "Verilated --cc watkins_top built for " + m->built_for + " (" + parameter_text(params) + ")";
+    const detail::Expectations want = detail::expect(scenes, opt, expected, r, rtl_max_width(config, shading));
+    cc_side(*m).driver->run(scenes, want.images, want.stages, opt, r);
+    return r;
+  }
+  r.top = std::string("SystemC bench, Verilated --sc watkins_top at the default configuration (Phong = ") +
+          (phong ? "1)" : "0)");
   const detail::Expectations want = detail::expect(scenes, opt, expected, r, MaxWidth);
   Bench& b = bench();
   if (b.dead) throw std::runtime_error("RTL bench: the SystemC kernel stopped in an earlier run");

@@ -96,6 +96,7 @@ struct RtlFrame {
 
 struct RtlResult {
   std::vector<RtlFrame> frames;
+  std::string top;              // the Verilated top that ran the frames (which build, which configuration)
   long long cycles = 0;         // first beat offered of the first frame to last pixel of the last frame
   long long sim_cycles = 0;     // every clock of the run, including reset and drain
   long long pixels = 0;
@@ -119,6 +120,9 @@ struct RtlResult {
   std::string protocol_error;   // first valid/ready or pixel_last_o violation, or empty
   std::string assertion;        // an RTL assertion (or $stop/$finish) ended the run, or empty
   std::string model_error;      // the model could not render the scene (so nothing was compared)
+  // This build has no Verilated top for the frames' configuration (nothing ran): one line naming
+  // its parameters and the CMake option that builds it (rtl_unavailable()).
+  std::string unavailable;
   double wall_seconds = 0;      // simulation wall time of the run
   double cycles_per_second() const { return wall_seconds > 0 ? sim_cycles / wall_seconds : 0; }
   bool ok() const {  // every frame complete, no pixel or stage mismatch, hang, protocol error, assertion
@@ -130,6 +134,7 @@ struct RtlResult {
   std::string summary() const {  // one line per problem (empty when ok())
     std::string s;
     auto line = [&](const std::string& t) { s += (s.empty() ? "" : "\n") + t; };
+    if (!unavailable.empty()) line(unavailable);
     for (std::size_t f = 0; f < frames.size(); ++f)
       if (!frames[f].complete)
         line("frame " + std::to_string(f) + " incomplete: " + std::to_string(frames[f].pixels) + " of " +
@@ -151,10 +156,21 @@ struct RtlResult {
 
 // Which harness this library drives ("SystemC bench (...)" or "plain C++ harness (...)").
 std::string rtl_description();
-// Width of the RTL's line buffer (the top's MaxWidth): wider scenes are refused.
-int rtl_max_width();
+// The Verilated tops: the SystemC bench's two at the default configuration (Phong = 0 and 1), and
+// one plain --cc top per other configuration the build was asked for (CMake option
+// WATKINS_RTL_CONFIGS, testbench/CMakeLists.txt). run_rtl_frames runs frames on the top whose
+// parameters equal rtl_parameters(frames' PreparedScene::config, shading).
+//
+// "" when this build has a top for frames prepared for `config` with `shading`; else one line
+// naming the configuration's parameters and how to build its top (`file`: the configuration's
+// file for the hint, e.g. the CLI's --config).
+std::string rtl_unavailable(const Config& config, ShadingMode shading, const std::string& file = "F");
+// Width of the line buffer (MaxWidth) of the top that runs frames prepared for `config` with
+// `shading` (0 when there is none): wider scenes are refused.
+int rtl_max_width(const Config& config = Config{}, ShadingMode shading = ShadingMode::Gouraud);
 
-// Runs frames back to back in one simulation: the next frame's edges follow the previous frame's
+// Runs frames back to back in one simulation, all prepared for one configuration and one shading
+// (else std::invalid_argument); with no top for them, the result's `unavailable` says so: the next frame's edges follow the previous frame's
 // end-of-frame beat at once when screen size and background are the same; otherwise the source
 // waits for the previous frame's last pixel before changing width_i/height_i/background_i.
 RtlResult run_rtl_frames(const std::vector<const PreparedScene*>& scenes, const RtlOptions& opt = {},

@@ -46,13 +46,25 @@ Harness& harness() {
 
 std::string rtl_description() { return "plain C++ harness (Verilated --cc watkins_top, eval loop)"; }
 
-int rtl_max_width() { return MaxWidth; }
+// Only the default configuration's Gouraud top is built here.
+std::string rtl_unavailable(const Config& config, ShadingMode shading, const std::string&) {
+  if (shading == ShadingMode::Gouraud && rtl_parameters(config, shading) == rtl_parameters(Config{}, shading))
+    return "";
+  return "plain C++ harness: only the default configuration's Gouraud top is built here";
+}
+
+int rtl_max_width(const Config& config, ShadingMode shading) {
+  return rtl_unavailable(config, shading).empty() ? MaxWidth : 0;
+}
 
 RtlResult run_rtl_frames(const std::vector<const PreparedScene*>& scenes, const RtlOptions& opt,
                          const std::vector<const Image*>& expected) {
   if (detail::phong_frames(scenes))
     throw std::invalid_argument("plain C++ harness: only the Gouraud top (Phong = 0) is built here");
   RtlResult r;
+  r.unavailable = rtl_unavailable(detail::frames_config(scenes), ShadingMode::Gouraud);
+  if (!r.unavailable.empty()) return r;
+  r.top = rtl_description();
   const detail::Expectations want = detail::expect(scenes, opt, expected, r, MaxWidth);
   harness().driver->run(scenes, want.images, want.stages, opt, r);
   return r;

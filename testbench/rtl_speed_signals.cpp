@@ -27,7 +27,7 @@ SC_MODULE(SignalBench) {
   tb::TopSignals io;  // every other port
   Vwatkins_top dut{"dut"};
 
-  std::vector<sc_bv<tb::edge_layout::Bits>> beats;  // the frame's edges, then the end-of-frame beat
+  std::vector<sc_bv<fmt::EdgeRecordBits>> beats;  // the frame's edges, then the end-of-frame beat
   int frames = 1;
   long long pixels_per_frame = 0;
   // Source / sink state.
@@ -111,9 +111,9 @@ int main(int argc, char** argv) {
     const PreparedScene prepared = prepare(scene);
     auto* b = new SignalBench("signal_bench");  // never destroyed (SystemC teardown order)
     for (const EdgeRecord& e : prepared.edges) {
-      const tb::EdgeWords w = tb::pack_edge(e);
-      sc_bv<tb::edge_layout::Bits> bv;
-      for (int i = 0; i < tb::edge_layout::Words; ++i) bv.set_word(i, w[i]);
+      const tb::EdgeWords w = tb::pack_edge(tb::default_edge_layout(), e);
+      sc_bv<fmt::EdgeRecordBits> bv;
+      for (int i = 0; i < tb::default_edge_layout().words; ++i) bv.set_word(i, w[i]);
       b->beats.push_back(bv);
     }
     b->beats.emplace_back();  // end-of-frame beat

@@ -14,7 +14,7 @@ namespace watkins::tb {
 struct TopSignals {
   sc_signal<bool> rst_n{"rst_n"}, sparse{"sparse"};
   sc_signal<uint32_t> width{"width"}, height{"height"}, background{"background"};
-  sc_signal<sc_bv<edge_layout::Bits>> edge{"edge"};  // edge_layout::Bits == fmt::EdgeRecordBits
+  sc_signal<sc_bv<fmt::EdgeRecordBits>> edge{"edge"};  // the default configuration's edge_t
   sc_signal<bool> edge_eof{"edge_eof"}, edge_valid{"edge_valid"}, edge_ready{"edge_ready"};
   sc_signal<uint32_t> pixel_rgb{"pixel_rgb"}, pixel_x{"pixel_x"}, pixel_y{"pixel_y"};
   sc_signal<bool> pixel_covered{"pixel_covered"}, pixel_last{"pixel_last"}, pixel_valid{"pixel_valid"};

@@ -13,17 +13,6 @@
 namespace watkins::tb::detail {
 namespace {
 
-// Channel c of a packed NumChannels x ChannelBits vector, sign-extended.
-i64 unpack_channel(const std::uint32_t* w, int c) {
-  return get_signed(w, c * fmt::ChannelBits, fmt::ChannelBits);
-}
-
-ChannelVector unpack_channels(const std::uint32_t* w) {
-  ChannelVector v{};
-  for (int c = 0; c < fmt::NumChannels; ++c) v[c] = unpack_channel(w, c);
-  return v;
-}
-
 // The three NormalInBits components of a packed {Nz, Ny, Nx}, sign-extended.
 std::array<i64, 3> unpack_normal(std::uint64_t w) {
   std::array<i64, 3> n{};
@@ -56,8 +45,10 @@ void add(std::string& d, bool differs, const char* name) {
 }  // namespace
 
 void StageChecker::begin(const StageTaps* taps, const std::vector<StageStreams>* streams, RtlResult* r,
-                         long long start_cycle) {
+                         long long start_cycle, const Config& config, ShadingMode shading) {
   taps_ = taps;
+  channels_ = EdgeLayout::of(config, shading).channels;
+  formats_ = config.channels(shading);
   streams_ = streams;
   r_ = r;
   start_ = start_cycle;
@@ -107,17 +98,17 @@ void StageChecker::edge(long long c) {
   const StageEdge* m = next(ae_, &StageStreams::edges);
   const bool eol = *t.ae_eol;
   if (m && m->eol == eol) {
-    if (eol || (m->poly == *t.ae_poly && m->material == *t.ae_material &&
-                m->value == unpack_channels(t.ae_value))) {
+    if (eol || (m->poly == t.ae_poly.as_int() && m->material == t.ae_material.as_int() &&
+                m->value == channels(t.ae_value))) {
       ++ae_.i;
       return;
     }
   }
-  const ChannelVector v = eol ? ChannelVector{} : unpack_channels(t.ae_value);
+  const ChannelVector v = eol ? ChannelVector{} : channels(t.ae_value);
   auto text = [](int poly, int material, const ChannelVector& value) {
     return "poly " + std::to_string(poly) + " material " + std::to_string(material) + " " + channels_text(value);
   };
-  const std::string rtl = eol ? "end of line" : text(*t.ae_poly, *t.ae_material, v);
+  const std::string rtl = eol ? "end of line" : text(t.ae_poly.as_int(), t.ae_material.as_int(), v);
   std::string what;
   if (!m) {
     what = "active_edge_list output: after the last frame at cycle " + std::to_string(c - start_) + ": RTL " +
@@ -127,13 +118,13 @@ void StageChecker::edge(long long c) {
            (m->eol ? std::string("end of line") : text(m->poly, m->material, m->value));
     std::string d;
     if (!eol && !m->eol) {
-      if (m->poly != *t.ae_poly) d = "poly";
-      if (m->material != *t.ae_material) d += d.empty() ? "material" : ", material";
+      if (m->poly != t.ae_poly.as_int()) d = "poly";
+      if (m->material != t.ae_material.as_int()) d += d.empty() ? "material" : ", material";
       channel_diffs("", v, m->value, d);
       what += " (differs in " + d + ")";
     }
     const i64 x = m->eol ? v[fmt::ChanX] : m->value[fmt::ChanX];
-    const int px = std::clamp(static_cast<int>(x >> fmt::FracBits), 0, std::max(0, width_of(ae_) - 1));
+    const int px = std::clamp(static_cast<int>(x >> formats_.x_frac()), 0, std::max(0, width_of(ae_) - 1));
     what += (eol && m->eol) ? "" : "; affects line " + std::to_string(m->line) + " near pixel (" +
                                        std::to_string(px) + ", " + std::to_string(m->line) + ")";
   }
@@ -146,14 +137,14 @@ void StageChecker::segment(long long c) {
   const StageSegment* m = next(sg_, &StageStreams::segments);
   const bool eol = *t.sg_eol;
   if (m && m->eol == eol) {
-    if (eol || (m->poly == *t.sg_poly && m->material == *t.sg_material && m->e == unpack_channels(t.sg_e) &&
-                m->f == unpack_channels(t.sg_f))) {
+    if (eol || (m->poly == t.sg_poly.as_int() && m->material == t.sg_material.as_int() && m->e == channels(t.sg_e) &&
+                m->f == channels(t.sg_f))) {
       ++sg_.i;
       return;
     }
   }
   Segment rs;
-  if (!eol) rs = Segment{*t.sg_poly, *t.sg_material, unpack_channels(t.sg_e), unpack_channels(t.sg_f)};
+  if (!eol) rs = Segment{t.sg_poly.as_int(), t.sg_material.as_int(), channels(t.sg_e), channels(t.sg_f)};
   auto text = [](const Segment& s) {
     return "poly " + std::to_string(s.poly) + " material " + std::to_string(s.material) + " E" +
            channels_text(s.e) + " F" + channels_text(s.f);
@@ -176,7 +167,7 @@ void StageChecker::segment(long long c) {
       what += " (differs in " + d + ")";
     }
     if (!(eol && m->eol)) {
-      const SpanSetup span = SegmentInterpolator::setup(m->eol ? rs : ms, std::max(1, width_of(sg_)));
+      const SpanSetup span = SegmentInterpolator::setup(m->eol ? rs : ms, std::max(1, width_of(sg_)), formats_);
       what += span.x_end > span.x_start
                   ? "; affects pixels (" + std::to_string(span.x_start) + ".." + std::to_string(span.x_end - 1) +
                         ", " + std::to_string(m->line) + ")"
@@ -220,18 +211,18 @@ void StageChecker::fragment(long long c) {
     const std::array<i64, 3>& v = m ? m->normal : n;
     char b[160];
     std::snprintf(b, sizeof b, "x %d depth %u material %d normal (%lld, %lld, %lld)", m ? m->x : int(*t.fr_x),
-                  m ? m->depth : *t.fr_depth, m ? m->material : int(*t.fr_material), static_cast<long long>(v[0]),
+                  m ? m->depth : static_cast<std::uint32_t>(*t.fr_depth), m ? m->material : t.fr_material.as_int(), static_cast<long long>(v[0]),
                   static_cast<long long>(v[1]), static_cast<long long>(v[2]));
     return std::string(b);
   };
   auto same = [&](const StageFragment& m) {
-    return m.x == *t.fr_x && m.depth == *t.fr_depth && m.material == *t.fr_material && m.normal == n;
+    return m.x == *t.fr_x && m.depth == *t.fr_depth && m.material == t.fr_material.as_int() && m.normal == n;
   };
   auto diff = [&](const StageFragment& m) {
     std::string d;
     add(d, m.x != *t.fr_x, "x");
     add(d, m.depth != *t.fr_depth, "depth");
-    add(d, m.material != *t.fr_material, "material");
+    add(d, m.material != t.fr_material.as_int(), "material");
     add(d, m.normal != n, "normal");
     return d;
   };
@@ -244,7 +235,7 @@ void StageChecker::shaded(long long c) {
   auto text = [&](const StageFragment* m) {
     const std::uint32_t rgb = m ? m->rgb : *t.sh_rgb;
     char b[96];
-    std::snprintf(b, sizeof b, "x %d depth %u rgb (%u, %u, %u)", m ? m->x : int(*t.sh_x), m ? m->depth : *t.sh_depth,
+    std::snprintf(b, sizeof b, "x %d depth %u rgb (%u, %u, %u)", m ? m->x : int(*t.sh_x), m ? m->depth : static_cast<std::uint32_t>(*t.sh_depth),
                   (rgb >> 16) & 255u, (rgb >> 8) & 255u, rgb & 255u);
     return std::string(b);
   };

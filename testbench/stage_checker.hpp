@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "config.hpp"
+#include "edge_packing.hpp"
 #include "rtl_bench.hpp"
 #include "stage_taps.hpp"
 
@@ -20,8 +22,10 @@ class StageChecker {
  public:
   // Starts a run: `streams` holds the expected streams of every frame of the run in order (the
   // checker is off when it is empty or `taps` is null). Items are counted into r.stage_items,
-  // mismatches reported into r.stage_mismatches / r.first_mismatch / r.first_stage.
-  void begin(const StageTaps* taps, const std::vector<StageStreams>* streams, RtlResult* r, long long start_cycle);
+  // mismatches reported into r.stage_mismatches / r.first_mismatch / r.first_stage. `config` and
+  // `shading` are the top's: its channel vectors are cut per slot with their layout.
+  void begin(const StageTaps* taps, const std::vector<StageStreams>* streams, RtlResult* r, long long start_cycle,
+             const Config& config, ShadingMode shading);
   void end() { on_ = false; }
 
   // Called once per clock after the inputs settled, before the rising edge: checks every stage
@@ -58,7 +62,11 @@ class StageChecker {
   void fragment(long long c);
   void shaded(long long c);
 
+  ChannelVector channels(const std::uint32_t* words) const { return channels_.read(words); }
+
   const StageTaps* taps_ = nullptr;
+  ChannelLayout channels_;   // slots of ae_value, sg_e, sg_f
+  ChannelFormats formats_;   // the top's slot formats (spans of a mismatching segment, X's pixel)
   const std::vector<StageStreams>* streams_ = nullptr;
   RtlResult* r_ = nullptr;
   long long start_ = 0;

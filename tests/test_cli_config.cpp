@@ -53,12 +53,14 @@ TEST_F(CliConfig, TooNarrowForTheSceneIsRefused) {
   EXPECT_FALSE(exists(png));
 }
 
-TEST_F(CliConfig, RtlRefusesAnotherConfiguration) {
+// A configuration no Verilated top was built for (WATKINS_RTL_CONFIGS) is refused in one line.
+TEST_F(CliConfig, RtlRefusesAConfigurationWithoutATop) {
   const std::string cfg = write("narrow.json", R"({"shade": {"frac_bits": 8}})");
   const CliRun r = run("render --rtl --config " + cfg + " --out " + dir_ + "/out.png");
   EXPECT_EQ(r.exit_code, 2) << r.output;  // a usage error (README: exit codes)
-  // Either this build has no RTL, or the RTL is built for the default configuration only.
-  EXPECT_TRUE(r.output.find("--rtl: the RTL is built for the default configuration") != std::string::npos ||
+  // Either this build has no RTL, or none built for this configuration.
+  EXPECT_TRUE(r.output.find("--rtl --config " + cfg + ": no Verilated watkins_top for this configuration") !=
+                  std::string::npos ||
               r.output.find("--rtl: this build has no RTL simulation") != std::string::npos)
       << r.output;
 }

@@ -1,4 +1,5 @@
-// The edge packer (testbench/edge_packing.hpp) against the edge_t declaration in rtl/watkins_pkg.sv.
+// The edge packer (testbench/edge_packing.hpp): the default layout against the edge_t declaration
+// in rtl/watkins_pkg.sv, and a narrow configuration's layout (per-slot widths) round trip.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -6,6 +7,7 @@
 #include <regex>
 #include <sstream>
 
+#include "config_file.hpp"
 #include "edge_packing.hpp"
 
 using namespace watkins;
@@ -28,9 +30,11 @@ EdgeRecord sample_record() {
 
 }  // namespace
 
+const EdgeLayout& def = default_edge_layout();
+
 TEST(EdgePacking, FieldsSitWhereThePackedStructPutsThem) {
   const EdgeRecord e = sample_record();
-  const EdgeWords w = pack_edge(e);
+  const EdgeWords w = pack_edge(def, e);
   // y0 is the top field: bits 465..453.
   EXPECT_EQ(get_bits(w, 453, 13), 0x1ABCu);
   EXPECT_EQ(w[14] >> 5, 0x1ABCu) << "y0 occupies bits [465:453] = word 14 bits [17:5]";
@@ -47,6 +51,7 @@ TEST(EdgePacking, FieldsSitWhereThePackedStructPutsThem) {
   EXPECT_EQ(w[0], static_cast<std::uint32_t>(-(0x5A5A5A * 3)));
   // Nothing above bit 465.
   EXPECT_EQ(w[14] >> 18, 0u);
+  for (int i = 15; i < MaxEdgeWords; ++i) EXPECT_EQ(w[i], 0u) << "word " << i;
 }
 
 TEST(EdgePacking, RoundTripsRandomRecords) {
@@ -63,7 +68,7 @@ TEST(EdgePacking, RoundTripsRandomRecords) {
       e.value[c] = k < 8 ? (k % 2 ? -lim : lim - 1) : ch(rng);  // extremes first
       e.slope[c] = k < 8 ? (k % 4 < 2 ? -1 : 0) : ch(rng);
     }
-    const EdgeRecord d = unpack_edge(pack_edge(e));
+    const EdgeRecord d = unpack_edge(def, pack_edge(def, e));
     ASSERT_EQ(d.y0, e.y0);
     ASSERT_EQ(d.n, e.n);
     ASSERT_EQ(d.poly, e.poly);
@@ -77,16 +82,16 @@ TEST(EdgePacking, RejectsFieldsThatDoNotFit) {
   EdgeRecord e;
   e.n = 1;
   e.y0 = 1 << fmt::LineBits;
-  EXPECT_THROW(pack_edge(e), std::invalid_argument);
+  EXPECT_THROW(pack_edge(def, e), std::invalid_argument);
   e.y0 = 0;
   e.poly = -1;
-  EXPECT_THROW(pack_edge(e), std::invalid_argument);
+  EXPECT_THROW(pack_edge(def, e), std::invalid_argument);
   e.poly = 0;
   e.material = 1 << fmt::MaterialIdBits;
-  EXPECT_THROW(pack_edge(e), std::invalid_argument);
+  EXPECT_THROW(pack_edge(def, e), std::invalid_argument);
   e.material = 0;
   e.value[2] = i64{1} << (fmt::ChannelBits - 1);
-  EXPECT_THROW(pack_edge(e), std::invalid_argument);
+  EXPECT_THROW(pack_edge(def, e), std::invalid_argument);
 }
 
 // The layout above is what the RTL declares: the active-edge list's record_t (the one place the
@@ -118,6 +123,75 @@ TEST(EdgePacking, MatchesTheRecordInTheRtl) {
                                             "[VB-1:0]", "[VB-1:0]"}));
   EXPECT_NE(pkg.find("edge_bits = 2 * LineBits + pb + mb + 2 * vector_bits(xb, zb, ab);"), std::string::npos);
   EXPECT_NE(pkg.find("slot_lo = (c == 0) ? 0 : (c == 1) ? xb : xb + zb + (c - 2) * ab;"), std::string::npos);
-  EXPECT_EQ(edge_layout::Bits, 2 * fmt::LineBits + fmt::PolyIdBits + fmt::MaterialIdBits +
-                                   2 * fmt::NumChannels * fmt::ChannelBits);
+  EXPECT_EQ(def.bits, fmt::EdgeRecordBits);
+  EXPECT_EQ(def.bits, 2 * fmt::LineBits + fmt::PolyIdBits + fmt::MaterialIdBits + 2 * fmt::NumChannels * fmt::ChannelBits);
+  EXPECT_EQ(EdgeLayout::of(Config{}, ShadingMode::Phong).bits, def.bits) << "shade and normal share the default";
+}
+
+// A narrow configuration (tests/configs/narrow.json): every slot its own width, the ids narrower.
+// Fields sit where the RTL's layout puts them (slot 0 at bit 0, slot 1 at XB, slot c at
+// XB + ZB + (c-2)*AB; slope, value, material, poly, n, y0 from bit 0), and records round-trip.
+TEST(EdgePacking, NarrowConfigurationLayoutRoundTrips) {
+  const Config cfg = load_config(WATKINS_SOURCE_DIR "/tests/configs/narrow.json");
+  for (const ShadingMode shading : {ShadingMode::Gouraud, ShadingMode::Phong}) {
+    const EdgeLayout l = EdgeLayout::of(cfg, shading);
+    const ChannelFormats f = cfg.channels(shading);
+    const int xb = cfg.x.bits(), zb = cfg.depth.bits(), ab = f.bits[fmt::ChanR];
+    const int vb = xb + zb + 3 * ab;
+    ASSERT_EQ(l.bits, cfg.edge_record_bits(shading));
+    ASSERT_LT(l.bits, fmt::EdgeRecordBits) << "the test configuration is meant to be narrow";
+    EXPECT_EQ(l.channels.vector_bits, vb);
+    EXPECT_EQ(l.channels.lsb, (std::array<int, 5>{0, xb, xb + zb, xb + zb + ab, xb + zb + 2 * ab}));
+    EXPECT_EQ(l.value_lsb, vb);
+    EXPECT_EQ(l.material_lsb, 2 * vb);
+    EXPECT_EQ(l.poly_lsb, 2 * vb + id_bits(cfg.max_materials));
+    EXPECT_EQ(l.y0_lsb, l.bits - fmt::LineBits);
+
+    std::mt19937_64 rng(11);
+    for (int k = 0; k < 2000; ++k) {
+      EdgeRecord e;
+      e.y0 = static_cast<int>(rng() % (1u << fmt::LineBits));
+      e.n = static_cast<int>(rng() % (1u << fmt::LineBits));
+      e.poly = static_cast<int>(rng() % (1u << l.poly_bits));
+      e.material = static_cast<int>(rng() % (1u << l.material_bits));
+      for (int c = 0; c < fmt::NumChannels; ++c) {
+        const i64 lim = i64{1} << (l.channels.bits[c] - 1);
+        std::uniform_int_distribution<i64> ch(-lim, lim - 1);
+        e.value[c] = k < 2 ? (k ? -lim : lim - 1) : ch(rng);
+        e.slope[c] = k < 2 ? (k ? lim - 1 : -lim) : ch(rng);
+      }
+      const EdgeWords w = pack_edge(l, e);
+      ASSERT_EQ(get_bits(w, l.y0_lsb, fmt::LineBits), static_cast<std::uint64_t>(e.y0));
+      ASSERT_EQ(get_signed(w, l.value_lsb + l.channels.lsb[fmt::ChanZ], zb), e.value[fmt::ChanZ]);
+      ASSERT_EQ(get_signed(w, l.slope_lsb + l.channels.lsb[fmt::ChanB], ab), e.slope[fmt::ChanB]);
+      for (int i = l.words; i < MaxEdgeWords; ++i) ASSERT_EQ(w[i], 0u) << "above the record, word " << i;
+      const EdgeRecord d = unpack_edge(l, w);
+      ASSERT_EQ(d.y0, e.y0);
+      ASSERT_EQ(d.n, e.n);
+      ASSERT_EQ(d.poly, e.poly);
+      ASSERT_EQ(d.material, e.material);
+      ASSERT_EQ(d.value, e.value) << "record " << k;
+      ASSERT_EQ(d.slope, e.slope) << "record " << k;
+    }
+    // A value one past its slot, or an id past its width, is refused.
+    EdgeRecord e;
+    e.value[fmt::ChanX] = i64{1} << (xb - 1);
+    EXPECT_THROW(pack_edge(l, e), std::invalid_argument);
+    e.value[fmt::ChanX] = 0;
+    e.poly = 1 << l.poly_bits;
+    EXPECT_THROW(pack_edge(l, e), std::invalid_argument);
+  }
+}
+
+// The widest valid configuration fits EdgeWords.
+TEST(EdgePacking, EdgeWordsHoldTheWidestConfiguration) {
+  Config c;
+  c.x = {Config::MaxWordBits - Config::MaxXFrac, Config::MaxXFrac};
+  c.depth = c.shade = c.normal = {Config::MaxWordBits - 30, 30};
+  c.depth_bits = 24;
+  ASSERT_EQ(c.check(), "");
+  for (const ShadingMode s : {ShadingMode::Gouraud, ShadingMode::Phong}) {
+    EXPECT_EQ(EdgeLayout::of(c, s).bits, MaxEdgeRecordBits);
+    EXPECT_EQ(EdgeLayout::of(c, s).words, MaxEdgeWords);
+  }
 }

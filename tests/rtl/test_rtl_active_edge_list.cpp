@@ -252,7 +252,7 @@ struct Ael {
       else if (started && poke && d.busy_o && rng() % 8 == 0) d.start_i = 1;  // ignored while busy
       if (!d.edge_valid_i && !eof_done && !gaps.stall()) {
         d.edge_eof_i = next == f.edges.size();
-        if (!d.edge_eof_i) tb::write_edge(d.edge_i, tb::pack_edge(f.edges[next]));
+        if (!d.edge_eof_i) tb::write_edge(d.edge_i, tb::pack_edge(tb::default_edge_layout(), f.edges[next]));
         d.edge_valid_i = 1;
       }
       d.out_ready_i = !bp.stall();

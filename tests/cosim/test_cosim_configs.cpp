@@ -1,0 +1,212 @@
+// The RTL built for other configurations (CMake option WATKINS_RTL_CONFIGS; issue 9) against the
+// model built for the same configuration: every shipped scene at its sized configuration
+// (docs/size/<scene>.<shading>.json) on the top built for it, and random scenes at the narrow and
+// wide test configurations (tests/configs/), both shadings. Every pixel and every stage stream bit
+// for bit, under input gaps and output stalls, full-frame and sparse; and the cycle model's
+// prediction equal to the RTL's cycles with no gaps or stalls.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "build_options.hpp"
+#include "cli_run.hpp"
+#include "config_file.hpp"
+#include "cosim_support.hpp"
+#include "cycle_model.hpp"
+#include "prepare.hpp"
+#include "random_scene.hpp"
+#include "rtl_bench.hpp"
+#include "scene.hpp"
+
+using namespace watkins;
+using namespace watkins::tb;
+using namespace watkins::tb::test;
+using namespace watkins::test;
+
+namespace {
+
+// With the default WATKINS_RTL_CONFIGS (what CI builds) a configuration without its top is a
+// failure; with another list its tests are skipped, saying why.
+#ifdef WATKINS_RTL_CONFIGS_DEFAULT
+constexpr bool RequireEveryTop = true;
+#else
+constexpr bool RequireEveryTop = false;
+#endif
+
+#define REQUIRE_TOP(cfg, shading, file)                             \
+  do {                                                              \
+    const std::string why = rtl_unavailable(cfg, shading, file);    \
+    if (!why.empty()) {                                             \
+      ASSERT_FALSE(RequireEveryTop) << why;                         \
+      GTEST_SKIP() << why;                                          \
+    }                                                               \
+  } while (0)
+
+// The frames at full speed (full-frame and sparse): the prediction must equal the RTL's cycles.
+void expect_predicted(const std::string& what, const std::vector<const PreparedScene*>& frames) {
+  for (const bool sparse : {false, true}) {
+    RtlOptions o;
+    o.sparse = sparse;
+    o.compare = false;
+    for (const PreparedScene* p : frames) {
+      const RtlResult r = run_rtl(*p, o);
+      ASSERT_TRUE(r.ok()) << what << ": " << r.summary();
+      const CyclePrediction c = predict_cycles(*p, sparse ? PixelOutput::Sparse : PixelOutput::FullFrame,
+                                               p->config.max_active_edges, p->config);
+      EXPECT_EQ(c.cycles, r.cycles) << what << (sparse ? " sparse" : " full-frame");
+      EXPECT_EQ(c.pixels, r.pixels) << what << (sparse ? " sparse" : " full-frame");
+    }
+  }
+}
+
+// The frames back to back at full speed, under gaps and stalls, under all-stall bursts, and in
+// sparse mode under gaps and stalls: every frame the model's, every stage stream checked.
+void expect_clean_frames(const std::string& what, const std::vector<const PreparedScene*>& frames) {
+  std::vector<Image> model;
+  for (const PreparedScene* p : frames) model.push_back(WatkinsTop(p->config).render(*p));
+  std::vector<const Image*> want;
+  for (const Image& m : model) want.push_back(&m);
+  RtlOptions patterns[] = {{1, 0.0, 0.0}, {2, 0.2, 0.3}, {3, 0.1, 0.02, 300}, {4, 0.2, 0.3}};
+  patterns[3].sparse = true;
+  for (const RtlOptions& o : patterns) {
+    const RtlResult r = run_rtl_frames(frames, o, want);
+    const std::string w = what + (o.sparse ? " sparse" : "");
+    expect_clean(w, o, r);
+    if (!r.ok()) return;
+    EXPECT_GT(r.stage_items, 0) << w << ": the stage streams were not checked";
+    ASSERT_EQ(r.frames.size(), frames.size());
+    for (std::size_t f = 0; f < frames.size(); ++f) {
+      EXPECT_EQ(r.frames[f].image.rgb, model[f].rgb) << w << " frame " << f;
+      EXPECT_EQ(r.frames[f].image.covered, model[f].covered) << w << " frame " << f;
+    }
+  }
+}
+
+// docs/size/*.json file names, sorted.
+std::vector<std::string> sized_configs() {
+  std::vector<std::string> v;
+  for (const auto& e : std::filesystem::directory_iterator(WATKINS_SOURCE_DIR "/docs/size"))
+    if (e.path().extension() == ".json") v.push_back(e.path().filename().string());
+  std::sort(v.begin(), v.end());
+  if (v.empty()) v.push_back("<none>");
+  return v;
+}
+
+class SizedConfig : public ::testing::TestWithParam<std::string> {};
+
+// <scene>.<gouraud|phong>.json: scenes/<scene>.json in that shading at that configuration.
+TEST_P(SizedConfig, ShippedSceneOnItsOwnRtl) {
+  const std::string name = GetParam();
+  if (name == "<none>") GTEST_SKIP() << "no docs/size/*.json";
+  const auto dot = name.find('.');
+  const std::string scene_name = name.substr(0, dot);
+  const std::string shading_name = name.substr(dot + 1, name.rfind('.') - dot - 1);
+  ASSERT_TRUE(shading_name == "gouraud" || shading_name == "phong") << name;
+  const ShadingMode shading = shading_name == "phong" ? ShadingMode::Phong : ShadingMode::Gouraud;
+  const std::string file = "docs/size/" + name;
+  const Config cfg = load_config(WATKINS_SOURCE_DIR "/" + file);
+  const BuiltScene scene = load_scene(WATKINS_SOURCE_DIR "/scenes/" + scene_name + ".json", shading_options(shading));
+  const PreparedScene p = prepare(scene, cfg);
+  ASSERT_EQ(p.config, cfg);
+  ASSERT_NE(rtl_parameters(cfg, shading), rtl_parameters(Config{}, shading)) << "a sized configuration is not the default";
+  REQUIRE_TOP(cfg, shading, file);
+  EXPECT_EQ(rtl_max_width(cfg, shading), cfg.max_width);
+  expect_clean_frames(name, {&p});
+  expect_predicted(name, {&p});
+}
+
+INSTANTIATE_TEST_SUITE_P(Sized, SizedConfig, ::testing::ValuesIn(sized_configs()), scene_test_name);
+
+// Random scenes (tests/support/random_scene) that fit `cfg`, `count` of them from `seed` on.
+std::vector<PreparedScene> random_frames(const Config& cfg, bool phong, std::uint64_t seed, int count) {
+  std::vector<PreparedScene> v;
+  for (std::uint64_t s = seed; static_cast<int>(v.size()) < count && s < seed + 20 * count; ++s) {
+    try {
+      v.push_back(prepare(phong ? random_phong_scene(s) : random_scene(s), cfg));
+    } catch (const SceneError&) {  // over a capacity or a word of this configuration
+    }
+  }
+  return v;
+}
+
+struct TestConfig {
+  const char* file;
+  bool phong;
+};
+
+// How ctest names the parameter: "narrow.json phong".
+void PrintTo(const TestConfig& c, std::ostream* os) { *os << c.file << (c.phong ? " phong" : " gouraud"); }
+
+class RandomAtConfig : public ::testing::TestWithParam<TestConfig> {};
+
+TEST_P(RandomAtConfig, RandomScenesUnderStalls) {
+  const std::string file = std::string("tests/configs/") + GetParam().file;
+  const bool phong = GetParam().phong;
+  const ShadingMode shading = phong ? ShadingMode::Phong : ShadingMode::Gouraud;
+  const Config cfg = load_config(WATKINS_SOURCE_DIR "/" + file);
+  constexpr int Frames = 8;
+  const std::vector<PreparedScene> frames = random_frames(cfg, phong, phong ? 7100 : 7000, Frames);
+  ASSERT_EQ(static_cast<int>(frames.size()), Frames) << "too few random scenes fit " << file;
+  REQUIRE_TOP(cfg, shading, file);
+  std::vector<const PreparedScene*> ptrs;
+  for (const PreparedScene& p : frames) ptrs.push_back(&p);
+  const std::string what = file + (phong ? " phong" : " gouraud") + " random scenes";
+  expect_clean_frames(what, ptrs);
+  expect_predicted(what, ptrs);
+}
+
+INSTANTIATE_TEST_SUITE_P(Configs, RandomAtConfig,
+                         ::testing::Values(TestConfig{"narrow.json", false}, TestConfig{"narrow.json", true},
+                                           TestConfig{"wide.json", false}, TestConfig{"wide.json", true}),
+                         [](const ::testing::TestParamInfo<TestConfig>& i) {
+                           return std::string(i.param.file).substr(0, std::string(i.param.file).find('.')) +
+                                  (i.param.phong ? "_phong" : "_gouraud");
+                         });
+
+// Frames prepared for two configurations cannot share a run (the RTL is built for one).
+TEST(CosimConfigs, MixedConfigurationsAreRefused) {
+  const BuiltScene s = random_scene(std::uint64_t{7000});
+  const PreparedScene a = prepare(s);
+  const PreparedScene b = prepare(s, load_config(WATKINS_SOURCE_DIR "/tests/configs/wide.json"));
+  EXPECT_THROW(run_rtl_frames({&a, &b}), std::invalid_argument);
+}
+
+// A configuration no top was built for: nothing runs, and the result says how to build one.
+TEST(CosimConfigs, MissingTopIsNamed) {
+  Config cfg;
+  cfg.max_width = 200;  // MaxWidth = 200: no build of ours has it
+  const PreparedScene p = prepare(random_scene(std::uint64_t{7000}), cfg);
+  const RtlResult r = run_rtl(p);
+  EXPECT_FALSE(r.ok());
+  EXPECT_TRUE(r.frames.empty());
+  EXPECT_NE(r.unavailable.find("MaxWidth=200"), std::string::npos) << r.unavailable;
+  EXPECT_NE(r.unavailable.find("-DWATKINS_RTL_CONFIGS="), std::string::npos) << r.unavailable;
+  EXPECT_NE(r.summary().find(r.unavailable), std::string::npos);
+  EXPECT_EQ(rtl_max_width(cfg, ShadingMode::Gouraud), 0);
+  EXPECT_EQ(rtl_unavailable(Config{}, ShadingMode::Phong), "");
+}
+
+}  // namespace
+
+namespace {
+
+// `watkins render --rtl --config F` with no top built for F: one line naming the configuration
+// and the CMake option, exit code 2 (usage), no image.
+TEST(CosimConfigs, CliRefusesAConfigurationWithoutATop) {
+  const ScratchDir dir;
+  const std::string cfg = dir.write("unbuilt.json", "{\"max_width\": 333}\n");
+  const std::string png = dir.write("out.png", "");
+  std::filesystem::remove(png);
+  const CliRun r = run_cli("render --rtl --config " + cfg + " --out " + png);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  const auto line = r.output.find("watkins: usage: --rtl --config " + cfg + ": no Verilated watkins_top");
+  ASSERT_NE(line, std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find('\n', line), r.output.size() - 1) << "one line, the last:\n" << r.output;
+  EXPECT_NE(r.output.find("-DWATKINS_RTL_CONFIGS=" + cfg + "@gouraud"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(png));
+}
+
+}  // namespace
