@@ -339,6 +339,7 @@ struct Row {
   std::string config, design, target;
   std::string result;  // routed | does not fit | yosys timeout | ... | failed: <line>
   bool ok = false;     // a result (routed or does not fit), not a tool failure
+  bool finished = false;
   std::string logic;   // nextpnr: logic cells used / available (percent)
   long lut4 = -1, ff = -1, carry = -1, dsp = -1, bram = -1, ram_other = -1;
   int wrapper_ff = 0;
@@ -715,6 +716,53 @@ int run_synth(const SynthArgs& a) {
       }
 
   std::vector<Row> rows(jobs.size());
+  // The tables: every finished run, in run order (blocks, then tops). Rewritten after each run, so
+  // an interrupted run of the tops keeps the rows it finished.
+  auto write_tables = [&](bool print_it) {
+    std::ostringstream md;
+    md << "Measured by `watkins synth` (sim/synth.cpp) on a " << machine() << ".\n"
+       << "Tools: " << versions["yosys"];
+    for (const auto& [bin, v] : versions)
+      if (bin != "yosys") md << "; " << bin << ": " << v;
+    md << ".\nEach design inside a generated wrapper that registers every input (a shift register) and output (a "
+          "registered serial signature), so the Fmax is register to register; LUT4, FF, carry, DSP, BRAM and "
+          "SPRAM / DPR16 (ECP5 distributed RAM) are yosys's cells after synthesis, the wrapper's flip-flops "
+          "included (column \"wrapper FF\"); logic cells and Fmax are nextpnr's after placement and routing, the "
+          "clock constrained to the column's MHz. ECP5 carry cells (CCU2C) hold two bits each.\n\n"
+       << "| config | design | target | result | logic cells (nextpnr) | LUT4 | FF | wrapper FF | carry | DSP | BRAM "
+          "| SPRAM / DPR16 | Fmax MHz (constraint) | critical path (start → end) | yosys s | nextpnr s |\n"
+       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const Row& r : rows) {
+      if (!r.finished) continue;
+      md << "| " << r.config << " | " << r.design << " | " << r.target << " | " << r.result << " | " << r.logic << " | "
+         << count(r.lut4) << " | " << count(r.ff) << " | " << r.wrapper_ff << " | " << count(r.carry) << " | "
+         << count(r.dsp) << " | " << count(r.bram) << " | " << count(r.ram_other) << " | " << mhz(r.fmax)
+         << (r.constraint > 0 ? " (" + mhz(r.constraint) + ")" : "") << " | " << path_text(r) << " | "
+         << secs(r.yosys_s) << " | " << secs(r.nextpnr_s) << " |\n";
+    }
+    md << "\nParameters (from `watkins_gen_pkg --params CONFIG --shading S`; blocks get the ones they declare):\n\n";
+    for (const auto& [key, note] : notes) md << "- " << key << ": " << note << "\n";
+    if (!a.md.empty()) write_text(a.md, md.str());
+    if (print_it) std::printf("%s", md.str().c_str());
+    if (!a.csv.empty()) {
+      std::ostringstream c;
+      c << "config,design,target,result,logic_cells,lut4,ff,wrapper_ff,carry,dsp,bram,ram_other,fmax_mhz,"
+           "constraint_mhz,path_start,path_end,path_ns,yosys_s,nextpnr_s,yosys_version,nextpnr_version,dir\n";
+      for (const Row& r : rows) {
+        if (!r.finished) continue;
+        const Target& t = **std::find_if(targets.begin(), targets.end(), [&](const Target* x) { return r.target == x->name; });
+        char nums[160];
+        std::snprintf(nums, sizeof nums, "%.2f,%.1f,", r.fmax, r.constraint);
+        c << r.config << "," << r.design << "," << r.target << "," << csv_quote(r.result) << "," << csv_quote(r.logic)
+          << "," << count(r.lut4) << "," << count(r.ff) << "," << r.wrapper_ff << "," << count(r.carry) << ","
+          << count(r.dsp) << "," << count(r.bram) << "," << count(r.ram_other) << "," << nums
+          << csv_quote(r.path_start) << "," << csv_quote(r.path_end) << "," << r.path_ns << "," << r.yosys_s << ","
+          << r.nextpnr_s << "," << csv_quote(versions["yosys"]) << "," << csv_quote(versions[nextpnr_binary(t)]) << ","
+          << csv_quote(r.dir) << "\n";
+      }
+      write_text(a.csv, c.str());
+    }
+  };
   std::atomic<size_t> next{0};
   std::atomic<size_t> done{0};
   std::mutex print;
@@ -732,6 +780,8 @@ int run_synth(const SynthArgs& a) {
         r.result = std::string("failed: ") + e.what();
       }
       std::lock_guard<std::mutex> lock(print);
+      r.finished = true;
+      write_tables(false);
       std::fprintf(stderr, "[%zu/%zu] %s %s %s: %s%s%s (yosys %.0f s, nextpnr %.0f s)\n", ++done, jobs.size(),
                    r.config.c_str(), r.design.c_str(), r.target.c_str(), r.result.c_str(), r.fmax > 0 ? ", " : "",
                    r.fmax > 0 ? (mhz(r.fmax) + " MHz").c_str() : "", r.yosys_s, r.nextpnr_s);
@@ -741,48 +791,7 @@ int run_synth(const SynthArgs& a) {
   for (int k = 0; k < std::min<int>(a.jobs, static_cast<int>(jobs.size())); ++k) pool.emplace_back(worker);
   for (std::thread& t : pool) t.join();
 
-  // Printed and markdown table: one row per run, in run order (blocks, then tops).
-  std::ostringstream md;
-  md << "Measured by `watkins synth` (sim/synth.cpp) on a " << machine() << ".\n"
-     << "Tools: " << versions["yosys"];
-  for (const auto& [bin, v] : versions)
-    if (bin != "yosys") md << "; " << bin << ": " << v;
-  md << ".\nEach design inside a generated wrapper that registers every input (a shift register) and output (a "
-        "registered serial signature), so the Fmax is register to register; LUT4, FF, carry, DSP, BRAM and "
-        "SPRAM / DPR16 (ECP5 distributed RAM) are yosys's cells after synthesis, the wrapper's flip-flops "
-        "included (column \"wrapper FF\"); logic cells and Fmax are nextpnr's after placement and routing, the "
-        "clock constrained to the column's MHz. ECP5 carry cells (CCU2C) hold two bits each.\n\n"
-     << "| config | design | target | result | logic cells (nextpnr) | LUT4 | FF | wrapper FF | carry | DSP | BRAM "
-        "| SPRAM / DPR16 | Fmax MHz (constraint) | critical path (start → end) | yosys s | nextpnr s |\n"
-     << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  for (const Row& r : rows) {
-    md << "| " << r.config << " | " << r.design << " | " << r.target << " | " << r.result << " | " << r.logic << " | "
-       << count(r.lut4) << " | " << count(r.ff) << " | " << r.wrapper_ff << " | " << count(r.carry) << " | "
-       << count(r.dsp) << " | " << count(r.bram) << " | " << count(r.ram_other) << " | " << mhz(r.fmax)
-       << (r.constraint > 0 ? " (" + mhz(r.constraint) + ")" : "") << " | " << path_text(r) << " | "
-       << secs(r.yosys_s) << " | " << secs(r.nextpnr_s) << " |\n";
-  }
-  md << "\nParameters (from `watkins_gen_pkg --params CONFIG --shading S`; blocks get the ones they declare):\n\n";
-  for (const auto& [key, note] : notes) md << "- " << key << ": " << note << "\n";
-  std::printf("%s", md.str().c_str());
-  if (!a.md.empty()) write_text(a.md, md.str());
-  if (!a.csv.empty()) {
-    std::ostringstream c;
-    c << "config,design,target,result,logic_cells,lut4,ff,wrapper_ff,carry,dsp,bram,ram_other,fmax_mhz,"
-         "constraint_mhz,path_start,path_end,path_ns,yosys_s,nextpnr_s,yosys_version,nextpnr_version,dir\n";
-    for (const Row& r : rows) {
-      const Target& t = **std::find_if(targets.begin(), targets.end(), [&](const Target* x) { return r.target == x->name; });
-      char nums[160];
-      std::snprintf(nums, sizeof nums, "%.2f,%.1f,", r.fmax, r.constraint);
-      c << r.config << "," << r.design << "," << r.target << "," << csv_quote(r.result) << "," << csv_quote(r.logic)
-        << "," << count(r.lut4) << "," << count(r.ff) << "," << r.wrapper_ff << "," << count(r.carry) << ","
-        << count(r.dsp) << "," << count(r.bram) << "," << count(r.ram_other) << "," << nums
-        << csv_quote(r.path_start) << "," << csv_quote(r.path_end) << "," << r.path_ns << "," << r.yosys_s << ","
-        << r.nextpnr_s << "," << csv_quote(versions["yosys"]) << "," << csv_quote(versions[nextpnr_binary(t)]) << ","
-        << csv_quote(r.dir) << "\n";
-    }
-    write_text(a.csv, c.str());
-  }
+  write_tables(true);
   return std::all_of(rows.begin(), rows.end(), [](const Row& r) { return r.ok; }) ? 0 : 1;
 }
 
