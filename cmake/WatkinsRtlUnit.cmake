@@ -1,4 +1,5 @@
-# watkins_rtl_unit(<bench> TOP <module> SOURCES <rtl files...> [PARAMS Name=value ...] [LINK libs...])
+# watkins_rtl_unit(<bench> TOP <module> SOURCES <rtl files...> [PARAMS Name=value ...] [LINK libs...]
+#                  [BENCH <source.cpp>])
 # Every discovered test carries the label "rtl" (one label: CMake 3.25's gtest_discover_tests
 # writes a list of labels unquoted, so only the first of several would arrive).
 # One GoogleTest bench around one Verilated RTL unit (--cc, -O3, --assert), linked with the
@@ -10,13 +11,21 @@
 # as -GName=value and to the bench's C++ as the definition WATKINS_RTL_PARAM_Name=value, so a
 # bench sizes itself from what the model was built with (e.g.
 # `constexpr int MaxWidth = WATKINS_RTL_PARAM_MaxWidth;`). A leading -G is accepted and dropped.
+# BENCH: the bench's source when it is not <bench>.cpp -- one bench built again for another
+# configuration of its unit (its tests are then named <bench>.<Suite>.<Test>, so the two do not clash).
 find_package(verilator HINTS $ENV{VERILATOR_ROOT} /usr/share/verilator)
 find_package(GTest REQUIRED)
 include(GoogleTest)
 
 function(watkins_rtl_unit bench)
-  cmake_parse_arguments(U "" "TOP" "SOURCES;PARAMS;LINK" ${ARGN})
-  add_executable(${bench} ${CMAKE_CURRENT_SOURCE_DIR}/${bench}.cpp)
+  cmake_parse_arguments(U "" "TOP;BENCH" "SOURCES;PARAMS;LINK" ${ARGN})
+  set(prefix "")
+  if(U_BENCH)
+    set(prefix "${bench}.")
+  else()
+    set(U_BENCH ${bench}.cpp)
+  endif()
+  add_executable(${bench} ${CMAKE_CURRENT_SOURCE_DIR}/${U_BENCH})
   target_include_directories(${bench} PRIVATE ${CMAKE_CURRENT_SOURCE_DIR} ${CMAKE_SOURCE_DIR}/tests/rtl
                              ${CMAKE_SOURCE_DIR}/testbench)
   target_link_libraries(${bench} PRIVATE ${U_LINK} watkins_prepare GTest::gtest_main)
@@ -41,5 +50,5 @@ function(watkins_rtl_unit bench)
     OPT_FAST -O3
     VERILATOR_ARGS -O3 --x-assign fast --x-initial fast --assert -Wno-fatal -y ${CMAKE_SOURCE_DIR}/rtl
                    ${vparams})
-  gtest_discover_tests(${bench} DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 600 LABELS rtl)
+  gtest_discover_tests(${bench} TEST_PREFIX "${prefix}" DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 600 LABELS rtl)
 endfunction()

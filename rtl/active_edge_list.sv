@@ -9,23 +9,34 @@
 // Per line: about (active + new edges + 3) cycles when nothing stalls. The output data is read
 // from the bank registers (valid/data from registers through a read mux); ready is
 // combinational. An insertion into a full bank drops the edge and sets the sticky overflow_o.
+// Widths from the configuration (model/twins/config.hpp): channel vectors of slot words XBits,
+// ZBits, AttrBits (watkins_pkg::slot_lo); polygon, material and edge ids of PolyIdBits,
+// MaterialIdBits and EdgeIdBits; the edge record laid out as watkins_pkg::edge_bits says.
 `include "watkins_assert.svh"
 
 module active_edge_list #(
-  parameter int unsigned MaxActiveEdges = watkins_pkg::MaxActiveEdges
+  parameter int unsigned MaxActiveEdges = watkins_pkg::MaxActiveEdges,
+  parameter int unsigned XBits          = watkins_pkg::ChannelBits,
+  parameter int unsigned ZBits          = watkins_pkg::ChannelBits,
+  parameter int unsigned AttrBits       = watkins_pkg::ChannelBits,
+  parameter int unsigned PolyIdBits     = watkins_pkg::PolyIdBits,
+  parameter int unsigned MaterialIdBits = watkins_pkg::MaterialIdBits,
+  parameter int unsigned EdgeIdBits     = watkins_pkg::EdgeIdBits,
+  localparam int unsigned VB = watkins_pkg::vector_bits(XBits, ZBits, AttrBits),
+  localparam int unsigned EdgeBits = watkins_pkg::edge_bits(XBits, ZBits, AttrBits, PolyIdBits, MaterialIdBits)
 ) (
   input  logic                                                              clk_i,
   input  logic                                                              rst_ni,
   input  logic                                                              start_i,      // begin a frame (when !busy_o)
   input  logic [watkins_pkg::LineBits-1:0]                                  height_i,     // lines of the frame, stable while busy_o
   output logic                                                              busy_o,       // a frame is in progress (until its EOF beat is read)
-  input  watkins_pkg::edge_t                                                edge_i,       // y-sorted edge records
+  input  logic [EdgeBits-1:0]                                               edge_i,       // y-sorted edge records
   input  logic                                                              edge_eof_i,   // this beat ends the frame's stream
   input  logic                                                              edge_valid_i,
   output logic                                                              edge_ready_o,
-  output logic [watkins_pkg::PolyIdBits-1:0]                                out_poly_o,   // polygon of the edge
-  output logic [watkins_pkg::MaterialIdBits-1:0]                            out_material_o, // its material
-  output logic [watkins_pkg::NumChannels*watkins_pkg::ChannelBits-1:0]   out_value_o,  // channels on this line
+  output logic [PolyIdBits-1:0]                                             out_poly_o,   // polygon of the edge
+  output logic [MaterialIdBits-1:0]                                         out_material_o, // its material
+  output logic [VB-1:0]                                                     out_value_o,  // channels on this line
   output logic                                                              out_eol_o,    // end-of-line marker, no edge
   output logic                                                              out_valid_o,
   input  logic                                                              out_ready_i,
@@ -35,29 +46,38 @@ module active_edge_list #(
   localparam int unsigned IB = (N > 1) ? $clog2(N) : 1;
   localparam int unsigned CntB = $clog2(N + 1);
   localparam int unsigned LB = watkins_pkg::LineBits;
-  localparam int unsigned NC = watkins_pkg::NumChannels;
-  localparam int unsigned CB = watkins_pkg::ChannelBits;
-  localparam int unsigned XLo = watkins_pkg::ChanX * CB;
+  localparam int unsigned XLo = watkins_pkg::slot_lo(watkins_pkg::ChanX, XBits, ZBits, AttrBits);
+
+  // The record's fields (watkins_pkg::edge_bits): {y0, n, poly, material, value, slope}.
+  typedef struct packed {
+    logic [LB-1:0]             y0;
+    logic [LB-1:0]             n;
+    logic [PolyIdBits-1:0]     poly;
+    logic [MaterialIdBits-1:0] material;
+    logic [VB-1:0]             value;
+    logic [VB-1:0]             slope;
+  } record_t;
+  record_t rec;
+  assign rec = edge_i;
 
   typedef struct packed {
-    logic [LB-1:0]                      remaining;  // lines left including the current one
-    logic [watkins_pkg::EdgeIdBits-1:0] id;
-    logic [watkins_pkg::PolyIdBits-1:0] poly;
-    logic [watkins_pkg::MaterialIdBits-1:0] material;
-    logic [NC*CB-1:0]                   value;
-    logic [NC*CB-1:0]                   slope;
+    logic [LB-1:0]             remaining;  // lines left including the current one
+    logic [EdgeIdBits-1:0]     id;
+    logic [PolyIdBits-1:0]     poly;
+    logic [MaterialIdBits-1:0] material;
+    logic [VB-1:0]             value;
+    logic [VB-1:0]             slope;
   } entry_t;
 
   // (X, id) order; ids are unique, so the order is total.
-  function automatic logic xid_less(logic signed [CB-1:0] xa, logic [watkins_pkg::EdgeIdBits-1:0] ida,
-                                    logic signed [CB-1:0] xb, logic [watkins_pkg::EdgeIdBits-1:0] idb);
+  function automatic logic xid_less(logic signed [XBits-1:0] xa, logic [EdgeIdBits-1:0] ida,
+                                    logic signed [XBits-1:0] xb, logic [EdgeIdBits-1:0] idb);
     xid_less = (xa < xb) || (xa == xb && ida < idb);
   endfunction
 
   // Bank b, entry i at b * N + i (plain vectors: yosys 0.23 mishandles arrays of structs).
-  localparam int unsigned TB = watkins_pkg::EdgeIdBits + watkins_pkg::PolyIdBits
-                             + watkins_pkg::MaterialIdBits;  // id, polygon, material
-  localparam int unsigned EB = LB + TB + 2 * NC * CB;
+  localparam int unsigned TB = EdgeIdBits + PolyIdBits + MaterialIdBits;  // id, polygon, material
+  localparam int unsigned EB = LB + TB + 2 * VB;
   logic [EB-1:0]   bank_q [2 * N];
   localparam int unsigned SlotBits = $clog2(2 * N);  // address of an entry in either bank
   function automatic logic [SlotBits-1:0] slot(logic b, logic [IB-1:0] i);
@@ -69,7 +89,7 @@ module active_edge_list #(
   logic [LB-1:0]   line_q;       // line being filled, 0..height
   logic [CntB-1:0] rd_q;
   logic            out_done_q, inc_done_q, eol_sent_q;
-  logic [watkins_pkg::EdgeIdBits-1:0] id_q;
+  logic [EdgeIdBits-1:0] id_q;
 
   // ------------------------------------------------------------ stream out line line_q - 1
   logic   streaming, have_edge, out_fire, inc_valid, inc_ready, inc_fire, advance;
@@ -93,12 +113,14 @@ module active_edge_list #(
 
   // ------------------------------------------------------------ step to the next line
   logic                  st_valid, st_retire;
-  logic [NC*CB-1:0]      st_value, st_slope;
+  logic [VB-1:0]         st_value, st_slope;
   logic [LB-1:0]         st_remaining;
   logic [TB-1:0]         st_payload;
 
   edge_incrementer #(
-    .NumChannels(NC),
+    .XBits      (XBits),
+    .ZBits      (ZBits),
+    .AttrBits   (AttrBits),
     .PayloadBits(TB)
   ) u_inc (
     .clk_i, .rst_ni,
@@ -130,19 +152,19 @@ module active_edge_list #(
   assign head_edge = edge_valid_i && !edge_eof_i;
   assign ins_step  = st_valid && !st_retire;
   assign take_new  = frame_q && !drain_q && head_edge && (line_q < height_i)
-                     && (edge_i.y0 == line_q) && !ins_step;
+                     && (rec.y0 == line_q) && !ins_step;
   // A record behind the line being filled (unsorted stream) cannot be placed: skip it.
-  assign drop_late = frame_q && !drain_q && head_edge && (edge_i.y0 < line_q);
+  assign drop_late = frame_q && !drain_q && head_edge && (rec.y0 < line_q);
   assign edge_ready_o = take_new || drop_late || (drain_q && edge_valid_i);
   assign ins_valid = ins_step || take_new;
 
   always_comb begin
-    fresh.remaining = edge_i.n;
+    fresh.remaining = rec.n;
     fresh.id        = id_q;
-    fresh.poly      = edge_i.poly;
-    fresh.material  = edge_i.material;
-    fresh.value     = edge_i.value;
-    fresh.slope     = edge_i.slope;
+    fresh.poly      = rec.poly;
+    fresh.material  = rec.material;
+    fresh.value     = rec.value;
+    fresh.slope     = rec.slope;
     if (ins_step) begin
       ins.remaining = st_remaining;
       {ins.id, ins.poly, ins.material} = st_payload;
@@ -153,14 +175,14 @@ module active_edge_list #(
     end
     for (int i = 0; i < N; i++) begin
       nb    = nsel ? bank_q[N + i] : bank_q[i];
-      lt[i] = (CntB'(i) < cnt_q[nsel]) && xid_less(nb.value[XLo +: CB], nb.id, ins.value[XLo +: CB], ins.id);
+      lt[i] = (CntB'(i) < cnt_q[nsel]) && xid_less(nb.value[XLo +: XBits], nb.id, ins.value[XLo +: XBits], ins.id);
     end
   end
 
   // Line line_q is complete when line_q - 1 has streamed out (marker sent), its stepped edges
   // are in, and the input holds no more records for line_q.
   assign src_done = (line_q == height_i)
-                 || (edge_valid_i && (edge_eof_i || edge_i.y0 > line_q));
+                 || (edge_valid_i && (edge_eof_i || rec.y0 > line_q));
   assign swap = frame_q && !drain_q && ((line_q == '0) || eol_sent_q) && !st_valid && src_done;
 
   always_ff @(posedge clk_i) begin
@@ -234,5 +256,5 @@ module active_edge_list #(
     out_value_o, out_eol_o})
   `WATKINS_ASSERT(a_no_insert_on_swap, swap |-> !ins_valid)
   `WATKINS_COVER(c_overflow, $rose(overflow_o))
-  `WATKINS_COVER(c_new_and_stepped, ins_step && frame_q && head_edge && edge_i.y0 == line_q)
+  `WATKINS_COVER(c_new_and_stepped, ins_step && frame_q && head_edge && rec.y0 == line_q)
 endmodule

@@ -1,30 +1,32 @@
 // edge_incrementer: steps one active edge to the next scan line, value += slope in every
-// channel (wrapping at ChannelBits, as model/twins/edge_incrementer.hpp) and remaining -= 1.
+// channel slot (each wrapping at its own word, as model/twins/edge_incrementer.hpp) and
+// remaining -= 1. Channel vectors as watkins_pkg::slot_lo/slot_bits lay them out.
 // Latency 1: valid and data registered; ready_o = ready_i || !valid_o (combinational).
 `include "watkins_assert.svh"
 
 module edge_incrementer #(
-  parameter int unsigned NumChannels = watkins_pkg::NumChannels,
-  parameter int unsigned PayloadBits = 1  // carried unchanged (polygon id, edge id, ...)
+  parameter int unsigned XBits       = watkins_pkg::ChannelBits,  // slot word widths: X,
+  parameter int unsigned ZBits       = watkins_pkg::ChannelBits,  // depth,
+  parameter int unsigned AttrBits    = watkins_pkg::ChannelBits,  // R G B or Nx Ny Nz
+  parameter int unsigned PayloadBits = 1,  // carried unchanged (polygon id, edge id, ...)
+  localparam int unsigned VB = watkins_pkg::vector_bits(XBits, ZBits, AttrBits)
 ) (
-  input  logic                                                    clk_i,
-  input  logic                                                    rst_ni,
-  input  logic [NumChannels*watkins_pkg::ChannelBits-1:0] value_i,      // on this line
-  input  logic [NumChannels*watkins_pkg::ChannelBits-1:0] slope_i,      // per line
-  input  logic [watkins_pkg::LineBits-1:0]                        remaining_i,  // lines left incl. this
-  input  logic [PayloadBits-1:0]                                  payload_i,
-  input  logic                                                    valid_i,
-  output logic                                                    ready_o,
-  output logic [NumChannels*watkins_pkg::ChannelBits-1:0] value_o,      // on the next line
-  output logic [NumChannels*watkins_pkg::ChannelBits-1:0] slope_o,
-  output logic [watkins_pkg::LineBits-1:0]                        remaining_o,  // remaining_i - 1
-  output logic                                                    retire_o,     // remaining_i <= 1: edge ends
-  output logic [PayloadBits-1:0]                                  payload_o,
-  output logic                                                    valid_o,
-  input  logic                                                    ready_i
+  input  logic                              clk_i,
+  input  logic                              rst_ni,
+  input  logic [VB-1:0]                     value_i,      // on this line
+  input  logic [VB-1:0]                     slope_i,      // per line
+  input  logic [watkins_pkg::LineBits-1:0]  remaining_i,  // lines left incl. this
+  input  logic [PayloadBits-1:0]            payload_i,
+  input  logic                              valid_i,
+  output logic                              ready_o,
+  output logic [VB-1:0]                     value_o,      // on the next line
+  output logic [VB-1:0]                     slope_o,
+  output logic [watkins_pkg::LineBits-1:0]  remaining_o,  // remaining_i - 1
+  output logic                              retire_o,     // remaining_i <= 1: edge ends
+  output logic [PayloadBits-1:0]            payload_o,
+  output logic                              valid_o,
+  input  logic                              ready_i
 );
-  localparam int unsigned CB = watkins_pkg::ChannelBits;
-
   logic load;
   assign ready_o = ready_i || !valid_o;
   assign load    = valid_i && ready_o;
@@ -34,11 +36,18 @@ module edge_incrementer #(
     else if (ready_o) valid_o <= valid_i;
   end
 
+  // One adder per slot, as wide as its word: a W-bit sum keeps the low W bits, the model's
+  // wrap_signed(value + slope, bits[c]); no carry crosses into the next slot.
+  for (genvar c = 0; c < watkins_pkg::NumChannels; c++) begin : g_slot
+    localparam int unsigned Lo = watkins_pkg::slot_lo(c, XBits, ZBits, AttrBits);
+    localparam int unsigned W  = watkins_pkg::slot_bits(c, XBits, ZBits, AttrBits);
+    always_ff @(posedge clk_i) begin
+      if (load) value_o[Lo +: W] <= value_i[Lo +: W] + slope_i[Lo +: W];
+    end
+  end
+
   always_ff @(posedge clk_i) begin
     if (load) begin
-      // A CB-bit sum keeps the low CB bits: the model's wrap_signed(value + slope, ChannelBits).
-      for (int c = 0; c < NumChannels; c++)
-        value_o[c*CB +: CB] <= value_i[c*CB +: CB] + slope_i[c*CB +: CB];
       slope_o     <= slope_i;
       remaining_o <= remaining_i - 1'b1;
       // The model retires when the decremented count is <= 0; n = 0 (malformed) retires too.

@@ -17,7 +17,8 @@
 `include "watkins_assert.svh"
 
 module scanline_buffer #(
-  parameter int unsigned MaxWidth = watkins_pkg::DefaultMaxWidth  // line-buffer depth in pixels
+  parameter int unsigned MaxWidth  = watkins_pkg::DefaultMaxWidth,  // line-buffer depth in pixels
+  parameter int unsigned DepthBits = watkins_pkg::DepthBits         // depth word (the configuration's)
 ) (
   input  logic                              clk_i,
   input  logic                              rst_ni,
@@ -26,7 +27,7 @@ module scanline_buffer #(
   input  watkins_pkg::rgb_t                 background_i,   // shade of uncovered pixels
   input  logic                              sparse_i,       // covered pixels only, stable per frame
   input  logic [watkins_pkg::LineBits-1:0]  frag_x_i,       // < width_i
-  input  logic [watkins_pkg::DepthBits-1:0] frag_depth_i,   // smaller is nearer
+  input  logic [DepthBits-1:0] frag_depth_i,   // smaller is nearer
   input  watkins_pkg::rgb_t                 frag_rgb_i,
   input  logic                              frag_eol_i,     // end-of-line marker: the line is complete
   input  logic                              frag_valid_i,
@@ -44,7 +45,7 @@ module scanline_buffer #(
 
   // Bank b holds pixel x at address b * MaxWidth + x. Shades as plain vectors, not rgb_t: yosys
   // 0.23 mishandles arrays of structs.
-  logic [watkins_pkg::DepthBits-1:0] depth_q [2 * MaxWidth];
+  logic [DepthBits-1:0] depth_q [2 * MaxWidth];
   logic [watkins_pkg::RgbBits-1:0]   rgb_q   [2 * MaxWidth];
   logic [2 * MaxWidth - 1:0]         written_q;  // flops: cleared by reset and by reading
 

@@ -5,34 +5,37 @@
 // edge's (both edges belong to one polygon, so one material).
 // Latency 1: output registered; ready_o = ready_i || !valid_o (combinational).
 // The open table has MaxActiveEdges entries, so it cannot fill: a line carries at most that
-// many edges.
+// many edges. The channel vector passes through untouched, so only its width matters here.
 `include "watkins_assert.svh"
 
 module segment_former #(
-  parameter int unsigned MaxActiveEdges = watkins_pkg::MaxActiveEdges
+  parameter int unsigned MaxActiveEdges = watkins_pkg::MaxActiveEdges,
+  parameter int unsigned VectorBits     = watkins_pkg::NumChannels * watkins_pkg::ChannelBits,  // channel vector
+  parameter int unsigned PolyIdBits     = watkins_pkg::PolyIdBits,
+  parameter int unsigned MaterialIdBits = watkins_pkg::MaterialIdBits
 ) (
-  input  logic                                                              clk_i,
-  input  logic                                                              rst_ni,
-  input  logic [watkins_pkg::PolyIdBits-1:0]                                edge_poly_i,  // polygon of the edge
-  input  logic [watkins_pkg::MaterialIdBits-1:0]                            edge_material_i, // its material
-  input  logic [watkins_pkg::NumChannels*watkins_pkg::ChannelBits-1:0]   edge_value_i, // channels on this line
-  input  logic                                                              edge_eol_i,   // end-of-line marker
-  input  logic                                                              edge_valid_i,
-  output logic                                                              edge_ready_o,
-  output logic [watkins_pkg::NumChannels*watkins_pkg::ChannelBits-1:0]   seg_e_o,      // opening edge
-  output logic [watkins_pkg::NumChannels*watkins_pkg::ChannelBits-1:0]   seg_f_o,      // closing edge
-  output logic [watkins_pkg::PolyIdBits-1:0]                                seg_poly_o,
-  output logic [watkins_pkg::MaterialIdBits-1:0]                            seg_material_o, // the closing edge's
-  output logic                                                              seg_eol_o,
-  output logic                                                              seg_valid_o,
-  input  logic                                                              seg_ready_i
+  input  logic                      clk_i,
+  input  logic                      rst_ni,
+  input  logic [PolyIdBits-1:0]     edge_poly_i,     // polygon of the edge
+  input  logic [MaterialIdBits-1:0] edge_material_i, // its material
+  input  logic [VectorBits-1:0]     edge_value_i,    // channels on this line
+  input  logic                      edge_eol_i,      // end-of-line marker
+  input  logic                      edge_valid_i,
+  output logic                      edge_ready_o,
+  output logic [VectorBits-1:0]     seg_e_o,         // opening edge
+  output logic [VectorBits-1:0]     seg_f_o,         // closing edge
+  output logic [PolyIdBits-1:0]     seg_poly_o,
+  output logic [MaterialIdBits-1:0] seg_material_o,  // the closing edge's
+  output logic                      seg_eol_o,
+  output logic                      seg_valid_o,
+  input  logic                      seg_ready_i
 );
   localparam int unsigned N  = MaxActiveEdges;
   localparam int unsigned IB = (N > 1) ? $clog2(N) : 1;
-  typedef logic [watkins_pkg::NumChannels*watkins_pkg::ChannelBits-1:0]   chans_t;
+  typedef logic [VectorBits-1:0] chans_t;
 
-  logic [N-1:0]                      open_q;       // entry holds an unpaired edge
-  logic [watkins_pkg::PolyIdBits-1:0] open_poly_q [N];
+  logic [N-1:0]          open_q;       // entry holds an unpaired edge
+  logic [PolyIdBits-1:0] open_poly_q [N];
   chans_t                            open_value_q [N];
 
   logic          fire, hit, has_free;

@@ -10,50 +10,75 @@
 // combinational through the setup stages (one stall signal), registered at the FIFO.
 // End-of-line markers pass through in order. Each fragment carries both readings of the three
 // attribute channels: frag_rgb_o (Gouraud shade levels) and frag_normal_o (Phong normal, the
-// channel saturated to NormalInBits); a top uses one and synthesis drops the other.
+// channel rescaled to FracBits fraction bits and saturated to NormalInBits); a top uses one
+// and synthesis drops the other.
+// Widths from the configuration (model/twins/segment_interpolator.hpp lists them): slot words
+// XBits (X, XFracBits fraction bits), ZBits (depth), AttrBits (slots 2..4); every delta, product,
+// FIFO word and stepper register is sized per slot from its own word. "Interpolated vectors" hold
+// slots 1..4 (Z, then the three attributes) without X: slot c at ilo(c, width of Z, width of one
+// attribute), each of its own width.
 `include "watkins_assert.svh"
 
 module segment_interpolator #(
-  parameter int unsigned FifoDepth = 4
+  parameter int unsigned FifoDepth      = 4,
+  parameter int unsigned XBits          = watkins_pkg::ChannelBits,  // slot words and fractions
+  parameter int unsigned XFracBits      = watkins_pkg::FracBits,
+  parameter int unsigned ZBits          = watkins_pkg::ChannelBits,
+  parameter int unsigned ZFracBits      = watkins_pkg::FracBits,
+  parameter int unsigned AttrBits       = watkins_pkg::ChannelBits,
+  parameter int unsigned AttrFracBits   = watkins_pkg::FracBits,
+  parameter int unsigned DepthBits      = watkins_pkg::DepthBits,     // fragment depth
+  parameter int unsigned MaterialIdBits = watkins_pkg::MaterialIdBits,
+  localparam int unsigned VB = watkins_pkg::vector_bits(XBits, ZBits, AttrBits)
 ) (
   input  logic                                                             clk_i,
   input  logic                                                             rst_ni,
   input  logic [watkins_pkg::LineBits-1:0]                                 width_i,  // screen width, stable per frame
-  input  logic [watkins_pkg::NumChannels*watkins_pkg::ChannelBits-1:0]   seg_e_i, // left end E
-  input  logic [watkins_pkg::NumChannels*watkins_pkg::ChannelBits-1:0]   seg_f_i, // right end F
-  input  logic [watkins_pkg::MaterialIdBits-1:0]                          seg_material_i,
+  input  logic [VB-1:0]                                                    seg_e_i, // left end E
+  input  logic [VB-1:0]                                                    seg_f_i, // right end F
+  input  logic [MaterialIdBits-1:0]                                        seg_material_i,
   input  logic                                                             seg_eol_i, // end-of-line marker, no segment
   input  logic                                                             seg_valid_i,
   output logic                                                             seg_ready_o,
   output logic [watkins_pkg::LineBits-1:0]                                 frag_x_o,
-  output logic [watkins_pkg::DepthBits-1:0]                                frag_depth_o,
+  output logic [DepthBits-1:0]                                             frag_depth_o,
   output watkins_pkg::rgb_t                                                frag_rgb_o,  // Gouraud shade
   output logic [3*watkins_pkg::NormalInBits-1:0]                           frag_normal_o, // {Nz,Ny,Nx}
-  output logic [watkins_pkg::MaterialIdBits-1:0]                          frag_material_o,
+  output logic [MaterialIdBits-1:0]                                        frag_material_o,
   output logic                                                             frag_eol_o,  // end-of-line marker, no fragment
   output logic                                                             frag_valid_o,
   input  logic                                                             frag_ready_i
 );
-  localparam int unsigned CB        = watkins_pkg::ChannelBits;
-  localparam int unsigned FB        = watkins_pkg::FracBits;
   localparam int unsigned LB        = watkins_pkg::LineBits;
   localparam int unsigned RecipBits = watkins_pkg::RecipBits;
   localparam int unsigned AlphaBits = watkins_pkg::AlphaBits;
-  localparam int unsigned NI        = watkins_pkg::NumChannels - 1;  // interpolated channels Z.. (not X)
-  localparam int unsigned DeltaBits = CB + 1;                        // dx, offset, delta widths
-  localparam int unsigned ExpBits   = $clog2(DeltaBits);             // p = floor(log2 dx)
-  localparam int unsigned ProdBits  = DeltaBits + RecipBits + 2;     // products with recip, with guard
-  localparam int unsigned XCB       = CB + 1 - FB;                   // signed width of a pixel index
-  localparam int unsigned DepB      = watkins_pkg::DepthBits;
-  localparam int unsigned XLo       = watkins_pkg::ChanX * CB;
+  localparam int unsigned NI        = watkins_pkg::NumChannels - 1;  // interpolated slots Z.. (not X)
+  localparam int unsigned FX        = XFracBits;
+  localparam int unsigned DxBits    = XBits + 1;                     // dx, offset (unsigned)
+  localparam int unsigned ExpBits   = $clog2(DxBits);                // p = floor(log2 dx) < XBits
+  localparam int unsigned APBits    = DxBits + RecipBits + 2;        // offset * recip, with rounding room
+  localparam int unsigned XCB       = XBits + 1 - FX;                // signed pixel index of an X value
+  // Pixel indices are compared with the screen width in a width holding both.
+  localparam int unsigned PCB       = (XCB > LB + 1) ? XCB : LB + 1;
   localparam int unsigned NB        = watkins_pkg::NormalInBits;
-  localparam int unsigned MIB       = watkins_pkg::MaterialIdBits;
+  localparam int unsigned MIB       = MaterialIdBits;
+  localparam int unsigned DepB      = DepthBits;
 
-  typedef logic signed [CB-1:0] chan_t;
-  typedef logic signed [ProdBits-1:0] prod_t;
-  // saturate_signed(., CB)
-  localparam logic signed [ProdBits-1:0] StepMax = $signed((ProdBits'(1) << (CB - 1)) - ProdBits'(1));
-  localparam logic signed [ProdBits-1:0] StepMin = -$signed(ProdBits'(1) << (CB - 1));
+  // Interpolated vectors: slot c (1..4) at ilo(c, zw, aw), Z zw bits wide, each attribute aw.
+  function automatic int unsigned ilo(int unsigned c, int unsigned zw, int unsigned aw);
+    ilo = (c == 1) ? 0 : zw + (c - 2) * aw;
+  endfunction
+  // A slot's word and fraction bits, and the widths of its delta (word + 1), of delta * recip
+  // and of delta * alpha0 (with room for the rounding constant: the step's shift p + R - FX
+  // reaches XBits - 1 + R - FX, so a narrow slot's product still needs X's headroom).
+  localparam int unsigned ZD  = ZBits + 1,    AD  = AttrBits + 1;
+  localparam int unsigned ZPS = ((ZBits > XBits - FX) ? ZBits : XBits - FX) + RecipBits + 3;
+  localparam int unsigned APS = ((AttrBits > XBits - FX) ? AttrBits : XBits - FX) + RecipBits + 3;
+  localparam int unsigned ZPV = ZBits + AlphaBits + 3, APV = AttrBits + AlphaBits + 3;
+  localparam int unsigned IVB = ZBits + 3 * AttrBits;  // value, step, E
+  localparam int unsigned IDB = ZD + 3 * AD;           // delta
+  localparam int unsigned IPS = ZPS + 3 * APS;         // delta * recip
+  localparam int unsigned IPV = ZPV + 3 * APV;         // delta * alpha0
 
   // ---------------------------------------------------------------- s0: range and clipping
   typedef struct packed {
@@ -62,53 +87,69 @@ module segment_interpolator #(
     logic [MIB-1:0]          material;
     logic [LB-1:0]           xs;      // first pixel
     logic [LB-1:0]           xe;      // one past the last pixel
-    logic [DeltaBits-1:0]    offset;  // x_start + 1/2 - X_E >= 0, X units
-    logic [NI*CB-1:0]        e;       // E's channels Z..
-    logic [NI*DeltaBits-1:0] delta;   // F - E per channel
+    logic [DxBits-1:0]       offset;  // x_start + 1/2 - X_E >= 0, X units
+    logic [IVB-1:0]          e;       // E's slots Z..
+    logic [IDB-1:0]          delta;   // F - E per slot
   } span_pre_t;
 
-  // First pixel whose centre is at or right of X: ceil(X - 1/2) = (X + 1/2 - 2^-FB) >> FB.
-  function automatic logic signed [XCB-1:0] first_centre(chan_t x);
+  // First pixel whose centre is at or right of X: ceil(X - 1/2) = (X + 1/2 - 2^-FX) >> FX,
+  // sign-extended to PCB bits.
+  function automatic logic signed [PCB-1:0] first_centre(logic signed [XBits-1:0] x);
     // The fraction bits of the sum are what floor() discards.
     /* verilator lint_off UNUSEDSIGNAL */
-    logic signed [CB:0] t;
+    logic signed [XBits:0] t;
     /* verilator lint_on UNUSEDSIGNAL */
-    t = $signed({x[CB-1], x}) + $signed((CB + 1)'((1 << (FB - 1)) - 1));
-    first_centre = t[CB:FB];
+    t = $signed({x[XBits-1], x}) + $signed((XBits + 1)'((1 << (FX - 1)) - 1));
+    first_centre = PCB'($signed(t[XBits:FX]));
   endfunction
 
   logic                 s0_valid_q, s0_ready;
   span_pre_t            s0_q;
-  logic [DeltaBits-1:0] s0_dx_q;
+  logic [DxBits-1:0]    s0_dx_q;
   span_pre_t            s0_d;
-  logic [DeltaBits-1:0] s0_dx_d;
+  logic [DxBits-1:0]    s0_dx_d;
+  logic signed [XBits-1:0] xe_e, xe_f;  // X of E and F
+  logic [IVB-1:0]       s0_e_d;
+  logic [IDB-1:0]       s0_delta_d;
+
+  assign xe_e = seg_e_i[0 +: XBits];
+  assign xe_f = seg_f_i[0 +: XBits];
 
   always_comb begin
-    logic signed [XCB-1:0] fce, fcf, xs_full, xe_full;
-    // offset < dx when the span is not empty, so its top bits are dropped.
+    logic signed [PCB-1:0] fce, fcf, xs_full, xe_full;
+    // offset < dx when the span is not empty, so its top bits (and those of x_start beyond them:
+    // the sum is exact modulo 2^(DxBits+2)) are dropped.
     /* verilator lint_off UNUSEDSIGNAL */
-    logic signed [DeltaBits+1:0]  off;
+    logic signed [DxBits+1:0]  off;
     /* verilator lint_on UNUSEDSIGNAL */
-    fce     = first_centre(seg_e_i[XLo +: CB]);
-    fcf     = first_centre(seg_f_i[XLo +: CB]);
+    fce     = first_centre(xe_e);
+    fcf     = first_centre(xe_f);
     xs_full = (fce < 0) ? '0 : fce;
-    xe_full = (fcf > $signed(XCB'(width_i))) ? $signed(XCB'(width_i)) : fcf;
+    xe_full = (fcf > $signed(PCB'(width_i))) ? $signed(PCB'(width_i)) : fcf;
     s0_d.eol   = seg_eol_i;
     s0_d.empty = (xe_full <= xs_full);
     s0_d.material = seg_material_i;
     s0_d.xs    = LB'(xs_full);
     s0_d.xe    = LB'(xe_full);
-    off        = $signed((DeltaBits + 2)'({s0_d.xs, 1'b1, (FB - 1)'(0)}))
-               - $signed({{3{seg_e_i[XLo+CB-1]}}, seg_e_i[XLo +: CB]});
-    s0_d.offset = DeltaBits'(off);
-    s0_dx_d     = DeltaBits'($signed({seg_f_i[XLo+CB-1], seg_f_i[XLo +: CB]})
-                    - $signed({seg_e_i[XLo+CB-1], seg_e_i[XLo +: CB]}));
-    for (int c = 0; c < NI; c++) begin
-      s0_d.e[c*CB +: CB]     = seg_e_i[(c+1)*CB +: CB];
-      s0_d.delta[c*DeltaBits +: DeltaBits] =
-          DeltaBits'($signed({seg_f_i[(c+2)*CB-1], seg_f_i[(c+1)*CB +: CB]})
-                     - $signed({seg_e_i[(c+2)*CB-1], seg_e_i[(c+1)*CB +: CB]}));
-    end
+    off        = $signed((DxBits + 2)'({s0_d.xs, 1'b1, (FX - 1)'(0)}))
+               - $signed({{3{xe_e[XBits-1]}}, xe_e});
+    s0_d.offset = DxBits'(off);
+    s0_dx_d     = DxBits'($signed({xe_f[XBits-1], xe_f}) - $signed({xe_e[XBits-1], xe_e}));
+    s0_d.e      = s0_e_d;
+    s0_d.delta  = s0_delta_d;
+  end
+
+  // Per slot: E's value and the delta F - E, one bit wider than the slot's word.
+  for (genvar c = 1; c <= NI; c++) begin : g_s0
+    localparam int unsigned W  = watkins_pkg::slot_bits(c, XBits, ZBits, AttrBits);
+    localparam int unsigned In = watkins_pkg::slot_lo(c, XBits, ZBits, AttrBits);
+    localparam int unsigned Lo = ilo(c, ZBits, AttrBits);
+    localparam int unsigned Dl = ilo(c, ZD, AD);
+    logic signed [W-1:0] ev, fv;
+    assign ev = seg_e_i[In +: W];
+    assign fv = seg_f_i[In +: W];
+    assign s0_e_d[Lo +: W]         = ev;
+    assign s0_delta_d[Dl +: W + 1] = $signed({fv[W-1], fv}) - $signed({ev[W-1], ev});
   end
 
   assign seg_ready_o = !s0_valid_q || s0_ready;
@@ -131,7 +172,7 @@ module segment_interpolator #(
   span_pre_t          rc_span;
 
   span_reciprocal #(
-    .DxBits     (DeltaBits),
+    .DxBits     (DxBits),
     .PayloadBits($bits(s0_q))
   ) u_recip (
     .clk_i, .rst_ni,
@@ -146,65 +187,62 @@ module segment_interpolator #(
     .ready_i  (tail_en)
   );
 
-  // ---------------------------------------------------------------- sa: products with recip
-  logic                sa_valid_q;
-  span_pre_t           sa_span_q;
+  // ---------------------------------------------------------------- sa, sb, sc: alpha0
+  // sa: offset * recip. sb: alpha0 = min(round_shift(offset*recip, p + RecipBits - AlphaBits),
+  // 2^AlphaBits); round_shift by 0 is exact.
+  logic                sa_valid_q, sb_valid_q, sc_valid_q;
+  span_pre_t           sa_span_q, sb_span_q;
   logic [ExpBits-1:0]  sa_p_q;
-  logic [ProdBits-1:0] sa_pa_q;       // offset * recip, unsigned
-  prod_t               sa_ps_q [NI];  // delta * recip
+  logic [APBits-1:0]   sa_pa_q;      // offset * recip, unsigned
+  logic [AlphaBits:0]  sb_alpha_q;   // alpha0 in [0, 2^AlphaBits]
+  // offset and delta are spent by the FIFO; keeping one span type is simpler than a third struct.
+  /* verilator lint_off UNUSEDSIGNAL */
+  span_pre_t           sc_span_q;
+  /* verilator lint_on UNUSEDSIGNAL */
+  logic [IPS-1:0]      sa_ps_q;      // delta * recip per slot
+  logic [IVB-1:0]      sb_step_q, sc_step_q;
+  logic [IPV-1:0]      sc_pv_q;      // delta * alpha0 per slot
+
   always_ff @(posedge clk_i) begin
     if (tail_en) begin
+      logic [APBits-1:0] ra;
+      logic [APBits-1:0] sh;
       sa_span_q <= rc_span;
       sa_p_q    <= rc_p;
-      sa_pa_q   <= ProdBits'(rc_span.offset) * ProdBits'(rc_recip);
-      for (int c = 0; c < NI; c++)
-        sa_ps_q[c] <= $signed(rc_span.delta[c*DeltaBits +: DeltaBits]) * $signed({1'b0, rc_recip});
-    end
-  end
-
-  // ---------------------------------------------------------------- sb: alpha0 and steps
-  logic               sb_valid_q;
-  span_pre_t          sb_span_q;
-  logic [AlphaBits:0] sb_alpha_q;  // alpha0 in [0, 2^AlphaBits]
-  chan_t              sb_step_q [NI];
-  always_ff @(posedge clk_i) begin
-    if (tail_en) begin
-      logic [ProdBits-1:0] ra;
-      logic [ProdBits-1:0] sh;
-      prod_t         rs;
+      sa_pa_q   <= APBits'(rc_span.offset) * APBits'(rc_recip);
       sb_span_q <= sa_span_q;
-      // alpha0 = min(round_shift(offset*recip, p + RecipBits - AlphaBits), 2^AlphaBits); round_shift
-      // by 0 is exact.
-      sh = ProdBits'(sa_p_q) + ProdBits'(RecipBits) - ProdBits'(AlphaBits);
-      ra = (sh == '0) ? sa_pa_q : ((sa_pa_q + (ProdBits'(1) << (sh - 1))) >> sh);
-      sb_alpha_q <= (ra > ProdBits'(1 << AlphaBits)) ? (AlphaBits + 1)'(1 << AlphaBits)
-                                                     : (AlphaBits + 1)'(ra);
-      // step = saturate(round_shift(delta*recip, p + RecipBits - FB)), shift always > 0.
-      for (int c = 0; c < NI; c++) begin
-        logic [ProdBits-1:0] s2;
-        s2 = ProdBits'(sa_p_q) + ProdBits'(RecipBits) - ProdBits'(FB);
-        rs = (sa_ps_q[c] + $signed(ProdBits'(1) << (s2 - 1))) >>> s2;
-        if (rs > StepMax) sb_step_q[c] <= CB'(StepMax);
-        else if (rs < StepMin) sb_step_q[c] <= CB'(StepMin);
-        else sb_step_q[c] <= CB'(rs);
-      end
+      sh = APBits'(sa_p_q) + APBits'(RecipBits) - APBits'(AlphaBits);
+      ra = (sh == '0) ? sa_pa_q : ((sa_pa_q + (APBits'(1) << (sh - 1))) >> sh);
+      sb_alpha_q <= (ra > APBits'(1 << AlphaBits)) ? (AlphaBits + 1)'(1 << AlphaBits)
+                                                   : (AlphaBits + 1)'(ra);
+      sc_span_q <= sb_span_q;
+      sc_step_q <= sb_step_q;
     end
   end
 
-  // ---------------------------------------------------------------- sc: value products
-  logic                  sc_valid_q;
-  // offset and delta are spent by now; keeping one span type is simpler than a third struct.
-  /* verilator lint_off UNUSEDSIGNAL */
-  span_pre_t             sc_span_q;
-  /* verilator lint_on UNUSEDSIGNAL */
-  chan_t                 sc_step_q [NI];
-  prod_t                 sc_pv_q   [NI];   // delta * alpha0
-  always_ff @(posedge clk_i) begin
-    if (tail_en) begin
-      sc_span_q <= sb_span_q;
-      for (int c = 0; c < NI; c++) begin
-        sc_step_q[c] <= sb_step_q[c];
-        sc_pv_q[c]   <= $signed(sb_span_q.delta[c*DeltaBits +: DeltaBits]) * $signed({1'b0, sb_alpha_q});
+  // Per slot: step = saturate(round_shift(delta*recip, p + RecipBits - FX), W) -- the shift uses
+  // X's fraction bits (the step per pixel is delta * 2^FX / dx), always > 0; delta * alpha0.
+  for (genvar c = 1; c <= NI; c++) begin : g_setup
+    localparam int unsigned W  = watkins_pkg::slot_bits(c, XBits, ZBits, AttrBits);
+    localparam int unsigned Lo = ilo(c, ZBits, AttrBits);
+    localparam int unsigned Dl = ilo(c, ZD, AD);
+    localparam int unsigned PS = (c == 1) ? ZPS : APS;
+    localparam int unsigned Pl = ilo(c, ZPS, APS);
+    localparam int unsigned PV = (c == 1) ? ZPV : APV;
+    localparam int unsigned Vl = ilo(c, ZPV, APV);
+    localparam logic signed [PS-1:0] StepMax = $signed((PS'(1) << (W - 1)) - PS'(1));
+    localparam logic signed [PS-1:0] StepMin = -$signed(PS'(1) << (W - 1));
+    always_ff @(posedge clk_i) begin
+      if (tail_en) begin
+        logic [PS-1:0]        s2;
+        logic signed [PS-1:0] rs;
+        sa_ps_q[Pl +: PS] <= PS'($signed(rc_span.delta[Dl +: W + 1]) * $signed({1'b0, rc_recip}));
+        s2 = PS'(sa_p_q) + PS'(RecipBits) - PS'(FX);
+        rs = ($signed(sa_ps_q[Pl +: PS]) + $signed(PS'(1) << (s2 - 1))) >>> s2;
+        if (rs > StepMax) sb_step_q[Lo +: W] <= W'(StepMax);
+        else if (rs < StepMin) sb_step_q[Lo +: W] <= W'(StepMin);
+        else sb_step_q[Lo +: W] <= W'(rs);
+        sc_pv_q[Vl +: PV] <= PV'($signed(sb_span_q.delta[Dl +: W + 1]) * $signed({1'b0, sb_alpha_q}));
       end
     end
   end
@@ -227,29 +265,36 @@ module segment_interpolator #(
     logic [MIB-1:0]        material;
     logic [LB-1:0]         xs;
     logic [LB-1:0]         xe;
-    logic [NI*CB-1:0]      value;  // channels at pixel xs
-    logic [NI*CB-1:0]      step;   // per-pixel increments
+    logic [IVB-1:0]        value;  // slots Z.. at pixel xs
+    logic [IVB-1:0]        step;   // per-pixel increments
   } span_t;
 
-  span_t f_in, f_out;
-  logic  f_in_valid, f_in_ready, f_out_valid, f_out_ready;
-  logic  sc_keep;
+  span_t          f_in, f_out;
+  logic           f_in_valid, f_in_ready, f_out_valid, f_out_ready;
+  logic           sc_keep;
+  logic [IVB-1:0] f_in_value;
+
+  // value = wrap(E + round_shift(delta*alpha0, AlphaBits), W): only the low W bits survive.
+  for (genvar c = 1; c <= NI; c++) begin : g_value
+    localparam int unsigned W  = watkins_pkg::slot_bits(c, XBits, ZBits, AttrBits);
+    localparam int unsigned Lo = ilo(c, ZBits, AttrBits);
+    localparam int unsigned PV = (c == 1) ? ZPV : APV;
+    localparam int unsigned Vl = ilo(c, ZPV, APV);
+    // The wrap to W bits drops the quotient's top bits.
+    /* verilator lint_off UNUSEDSIGNAL */
+    logic signed [PV-1:0] r;
+    /* verilator lint_on UNUSEDSIGNAL */
+    assign r = ($signed(sc_pv_q[Vl +: PV]) + $signed(PV'(1) << (AlphaBits - 1))) >>> AlphaBits;
+    assign f_in_value[Lo +: W] = sc_span_q.e[Lo +: W] + W'(r);
+  end
 
   always_comb begin
-    f_in.eol = sc_span_q.eol;
+    f_in.eol      = sc_span_q.eol;
     f_in.material = sc_span_q.material;
-    f_in.xs  = sc_span_q.xs;
-    f_in.xe  = sc_span_q.xe;
-    for (int c = 0; c < NI; c++) begin
-      // The wrap to CB bits drops the quotient's top bits.
-      /* verilator lint_off UNUSEDSIGNAL */
-      prod_t r;
-      /* verilator lint_on UNUSEDSIGNAL */
-      // value = wrap(E + round_shift(delta*alpha0, AlphaBits)): only the low CB bits survive.
-      r = (sc_pv_q[c] + $signed(ProdBits'(1) << (AlphaBits - 1))) >>> AlphaBits;
-      f_in.value[c*CB +: CB] = sc_span_q.e[c*CB +: CB] + CB'(r);
-      f_in.step[c*CB +: CB]  = sc_step_q[c];
-    end
+    f_in.xs       = sc_span_q.xs;
+    f_in.xe       = sc_span_q.xe;
+    f_in.value    = f_in_value;
+    f_in.step     = sc_step_q;
   end
 
   // Empty spans produce nothing and are dropped here; markers always go through.
@@ -274,12 +319,12 @@ module segment_interpolator #(
   logic                  st_active_q;  // a span is being stepped from the registers below
   logic [LB-1:0]         st_x_q, st_xe_q;
   logic [MIB-1:0]        st_material_q;
-  logic [NI*CB-1:0]      st_value_q, st_step_q;
+  logic [IVB-1:0]        st_value_q, st_step_q;
 
   logic                  out_free, from_head, emit_frag, emit_eol;
   logic [LB-1:0]         cur_x, cur_xe;
   logic [MIB-1:0]        cur_material;
-  logic [NI*CB-1:0]      cur_value, cur_step;
+  logic [IVB-1:0]        cur_value, cur_step, next_value;
 
   assign out_free  = !frag_valid_o || frag_ready_i;
   assign from_head = !st_active_q && f_out_valid && !f_out.eol;
@@ -293,25 +338,65 @@ module segment_interpolator #(
   assign cur_value = st_active_q ? st_value_q : f_out.value;
   assign cur_step  = st_active_q ? st_step_q  : f_out.step;
 
-  // clamp(round_shift(v, FB), 0, hi) of a channel value.
-  function automatic logic [DepB-1:0] level(logic [CB-1:0] v, logic [DepB-1:0] hi);
+  // Per slot: the next pixel's value (wrapping at the slot's word) and the fragment's readings:
+  // depth = clamp(round_shift(Z, ZFracBits), 0, 2^DepthBits - 1); shade = clamp(round_shift(v,
+  // AttrFracBits), 0, 255); normal = v rescaled to FracBits fraction bits (round_shift when
+  // AttrFracBits is larger, a left shift when smaller), saturated to NormalInBits.
+  logic [DepB-1:0]   depth_d;
+  logic [3*8-1:0]    rgb_d;      // {B, G, R} by slot
+  logic [3*NB-1:0]   normal_d;   // {Nz, Ny, Nx}
+  for (genvar c = 1; c <= NI; c++) begin : g_frag
+    localparam int unsigned W  = watkins_pkg::slot_bits(c, XBits, ZBits, AttrBits);
+    localparam int unsigned F  = (c == 1) ? ZFracBits : AttrFracBits;
+    localparam int unsigned Lo = ilo(c, ZBits, AttrBits);
+    localparam int unsigned HiBits = (c == 1) ? DepB : 8;   // output level width
+    // The rounded integer part, and a width that holds it and the level's maximum.
+    localparam int unsigned RB = W + 1 - F;
+    localparam int unsigned CW = (RB > HiBits + 1) ? RB : HiBits + 1;
+    logic signed [W-1:0] v;
     /* verilator lint_off UNUSEDSIGNAL */
-    logic signed [CB:0] t;  // fraction bits are rounded away
+    logic signed [W:0]   t;  // fraction bits are rounded away
     /* verilator lint_on UNUSEDSIGNAL */
-    logic signed [CB-FB:0] r;
-    t = $signed({v[CB-1], v}) + $signed((CB + 1)'(1 << (FB - 1)));
-    r = t[CB:FB];
-    if (r < 0) level = '0;
-    else if (r > $signed((CB - FB + 1)'(hi))) level = hi;
-    else level = DepB'(r);
-  endfunction
-
-  // saturate_signed(v, NormalInBits) of a channel value: the normal keeps its FracBits fraction.
-  function automatic logic [NB-1:0] normal_word(logic signed [CB-1:0] v);
-    if (v > $signed(CB'((64'd1 << (NB - 1)) - 1))) normal_word = NB'((64'd1 << (NB - 1)) - 1);
-    else if (v < -$signed(CB'(64'd1 << (NB - 1)))) normal_word = NB'(64'd1 << (NB - 1));
-    else normal_word = NB'(v);
-  endfunction
+    logic signed [CW-1:0] r;
+    logic [HiBits-1:0]   level;
+    assign v = cur_value[Lo +: W];
+    assign next_value[Lo +: W] = cur_value[Lo +: W] + cur_step[Lo +: W];
+    if (F > 0) begin : g_round
+      assign t = $signed({v[W-1], v}) + $signed((W + 1)'(1) << (F - 1));
+    end else begin : g_exact
+      assign t = $signed({v[W-1], v});
+    end
+    assign r = CW'($signed(t[W:F]));
+    assign level = (r < 0) ? '0
+                 : (r > $signed(CW'({HiBits{1'b1}}))) ? {HiBits{1'b1}} : HiBits'(r);
+    if (c == 1) begin : g_depth
+      assign depth_d = level;
+    end else begin : g_attr
+      assign rgb_d[(c - 2)*8 +: 8] = level;
+      // Normal: FracBits fraction bits out of F.
+      localparam int unsigned FB = watkins_pkg::FracBits;
+      localparam int unsigned NW = (F >= FB) ? W + 1 - (F - FB) : W + (FB - F);  // rescaled width
+      localparam int unsigned SW = (NW > NB) ? NW : NB;                           // compare width
+      logic signed [NW-1:0] n;
+      logic signed [SW-1:0] ns;
+      if (F > FB) begin : g_down
+        /* verilator lint_off UNUSEDSIGNAL */
+        logic signed [W:0] tn;
+        /* verilator lint_on UNUSEDSIGNAL */
+        assign tn = $signed({v[W-1], v}) + $signed((W + 1)'(1) << (F - FB - 1));
+        assign n  = tn[W:F-FB];
+      end else if (F == FB) begin : g_same
+        assign n = $signed({v[W-1], v});
+      end else begin : g_up
+        assign n = $signed({v, (FB - F)'(0)});
+      end
+      assign ns = SW'(n);
+      assign normal_d[(c - 2)*NB +: NB] =
+          (ns > $signed(SW'((64'd1 << (NB - 1)) - 1))) ? NB'((64'd1 << (NB - 1)) - 1)
+        : (ns < -$signed(SW'(64'd1 << (NB - 1))))      ? NB'(64'd1 << (NB - 1))
+        : NB'(ns);
+    end
+  end
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
@@ -325,23 +410,21 @@ module segment_interpolator #(
 
   always_ff @(posedge clk_i) begin
     if (emit_frag) begin
-      frag_x_o     <= cur_x;
-      frag_depth_o <= level(cur_value[(watkins_pkg::ChanZ - 1)*CB +: CB], DepB'((64'd1 << DepB) - 1));
-      frag_rgb_o.r <= 8'(level(cur_value[(watkins_pkg::ChanR - 1)*CB +: CB], DepB'(255)));
-      frag_rgb_o.g <= 8'(level(cur_value[(watkins_pkg::ChanG - 1)*CB +: CB], DepB'(255)));
-      frag_rgb_o.b <= 8'(level(cur_value[(watkins_pkg::ChanB - 1)*CB +: CB], DepB'(255)));
-      for (int c = 0; c < 3; c++)
-        frag_normal_o[c*NB +: NB] <= normal_word(cur_value[(watkins_pkg::ChanNx - 1 + c)*CB +: CB]);
+      frag_x_o      <= cur_x;
+      frag_depth_o  <= depth_d;
+      frag_rgb_o.r  <= rgb_d[0 +: 8];
+      frag_rgb_o.g  <= rgb_d[8 +: 8];
+      frag_rgb_o.b  <= rgb_d[16 +: 8];
+      frag_normal_o <= normal_d;
       frag_material_o <= cur_material;
-      frag_eol_o   <= 1'b0;
-      st_x_q       <= cur_x + 1'b1;
+      frag_eol_o    <= 1'b0;
+      st_x_q        <= cur_x + 1'b1;
       st_material_q <= cur_material;
-      st_xe_q      <= cur_xe;
-      st_step_q    <= cur_step;
-      for (int c = 0; c < NI; c++)
-        st_value_q[c*CB +: CB] <= cur_value[c*CB +: CB] + cur_step[c*CB +: CB];
+      st_xe_q       <= cur_xe;
+      st_step_q     <= cur_step;
+      st_value_q    <= next_value;
     end else if (emit_eol) begin
-      frag_eol_o   <= 1'b1;
+      frag_eol_o    <= 1'b1;
     end
   end
 

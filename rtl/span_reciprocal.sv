@@ -48,24 +48,26 @@ module span_reciprocal #(
     .en_o     (en)
   );
 
-  // Leading-one detection and normalization (dx << (DxBits-1-p) puts the leading one on top;
-  // its top R bits are the model's m whether dx is shifted left or right).
+  // Leading-one detection and normalization (dx << (NormBits-1-p) puts the leading one on top;
+  // its top R bits are the model's m whether dx is shifted left or right). A narrow dx (a
+  // configuration with few X bits) is widened to R bits first.
+  localparam int unsigned NormBits = (DxBits > RecipBits) ? DxBits : RecipBits;
   logic [ExpBits-1:0] lead;
   // Only the top R bits of the normalized width matter (the model truncates the rest).
   /* verilator lint_off UNUSEDSIGNAL */
-  logic [DxBits-1:0] norm;
+  logic [NormBits-1:0] norm;
   /* verilator lint_on UNUSEDSIGNAL */
   always_comb begin
     lead = '0;
     for (int i = 0; i < DxBits; i++) if (dx_i[i]) lead = ExpBits'(i);
-    norm = dx_i << (ExpBits'(DxBits - 1) - lead);
+    norm = NormBits'(dx_i) << (NormBits - 1 - 32'(lead));
   end
 
   // Quotient bit R-k in stage k: the numerator 2^(2R-1) has contributed 2^(R-2) to the partial
   // remainder before bit R (smaller than m, so every higher quotient bit is zero).
   always_ff @(posedge clk_i) begin
     if (en) begin
-      m_q[0]   <= norm[DxBits-1 -: RecipBits];
+      m_q[0]   <= norm[NormBits-1 -: RecipBits];
       rem_q[0] <= RecipBits'(1) << (RecipBits - 2);
       quo_q[0] <= '0;
       p_q[0]   <= lead;

@@ -23,7 +23,7 @@ package watkins_pkg;
   localparam int RecipBits = 24;  // span reciprocal: mantissa bits of 1/(X_F - X_E), relative error < 2^-23
   localparam int AlphaBits = 24;  // fraction bits of the prestep coefficient alpha0 = (x_c - X_E)/(X_F - X_E)
   localparam int PolyIdBits = 16;  // polygon id bits: at most 65536 polygons per frame
-  localparam int EdgeIdBits = 18;  // edge id bits: position in the edge stream (4 edges per polygon at most)
+  localparam int EdgeIdBits = 18;  // edge id bits: position of a record in the frame's edge stream (262144 records)
   localparam int MaxActiveEdges = 64;  // default capacity of the active-edge list
   localparam int DefaultMaxWidth = 1024;  // default line-buffer width of watkins_top in pixels (MaxWidth)
   localparam int NormalInBits = 18;  // normalizer input: interpolated Nx, Ny, Nz, signed, FracBits fraction bits
@@ -44,11 +44,8 @@ package watkins_pkg;
   localparam int ShadeMax = 255;  // largest 8-bit level
   localparam int SubPixelToFrac = 12;  // FracBits - SubPixelBits
   localparam int ShadeChannels = 3;  // R, G, B
-  localparam int EdgeRecordBits = 466;  // $bits(edge_t)
+  localparam int EdgeRecordBits = 466;  // edge_bits() of the default configuration
   localparam int RgbBits = 24;  // $bits(rgb_t)
-
-  // One channel value or slope: signed, FracBits fraction bits.
-  typedef logic signed [ChannelBits-1:0] channel_t;
 
   // One shade: an 8-bit level per channel, red in the top byte ({R, G, B}). Every RGB port
   // and signal of rtl/ (frame background, material Cp, fragment and pixel shades) has it.
@@ -58,15 +55,27 @@ package watkins_pkg;
     logic [ShadeBits-1:0] b;
   } rgb_t;
 
-  // Edge record as scene preparation writes it (model/twins/edge_record.hpp); the edge id
-  // is not carried: the active-edge list numbers records in arrival order.
-  typedef struct packed {
-    logic [LineBits-1:0] y0;                            // first scan line
-    logic [LineBits-1:0] n;                             // scan lines crossed
-    logic [PolyIdBits-1:0] poly;                        // polygon id
-    logic [MaterialIdBits-1:0] material;                // material of the polygon (Phong)
-    logic [NumChannels-1:0][ChannelBits-1:0] value;     // channels at scan line y0
-    logic [NumChannels-1:0][ChannelBits-1:0] slope;     // per-scan-line increments
-  } edge_t;
+  // A channel vector (the value or the slope of every channel of an edge or a span) for slot
+  // words of xb (X), zb (Z) and ab bits (slots 2..4: R, G, B or Nx, Ny, Nz), each signed:
+  // slot 0 at bit 0, slot 1 at xb, slot c >= 2 at xb + zb + (c - 2) * ab
+  // (model/twins/config.hpp ChannelFormats; watkins_top's XIntBits + XFracBits, ...).
+  function automatic int unsigned slot_lo(int unsigned c, int unsigned xb, int unsigned zb, int unsigned ab);
+    slot_lo = (c == 0) ? 0 : (c == 1) ? xb : xb + zb + (c - 2) * ab;
+  endfunction
+  function automatic int unsigned slot_bits(int unsigned c, int unsigned xb, int unsigned zb, int unsigned ab);
+    slot_bits = (c == 0) ? xb : (c == 1) ? zb : ab;
+  endfunction
+  function automatic int unsigned vector_bits(int unsigned xb, int unsigned zb, int unsigned ab);
+    vector_bits = xb + zb + 3 * ab;
+  endfunction
+  // The edge record as scene preparation writes it (model/twins/edge_record.hpp), from the top:
+  // {y0, n, poly, material, value, slope}: first scan line, scan lines crossed (LineBits each),
+  // polygon id (pb bits), material id (mb bits), the channel vectors at y0 and per line.
+  // The edge id is not carried: the active-edge list numbers records in arrival order.
+  // Default configuration: EdgeRecordBits.
+  function automatic int unsigned edge_bits(int unsigned xb, int unsigned zb, int unsigned ab,
+                                           int unsigned pb, int unsigned mb);
+    edge_bits = 2 * LineBits + pb + mb + 2 * vector_bits(xb, zb, ab);
+  endfunction
 endpackage
 /* verilator lint_on UNUSEDPARAM */

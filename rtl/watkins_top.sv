@@ -18,12 +18,31 @@
 // the last line has one, otherwise a terminating beat with pixel_covered_o = 0 (background rgb)
 // at (width-1, height-1) -- so a frame covering no pixel is exactly that one beat. The consumer
 // keeps the background elsewhere (e.g. a framebuffer cleared once). sparse_i = 0: every pixel.
+// Built for a configuration (model/twins/config.hpp; `watkins_gen_pkg --params F --shading S`
+// prints these parameters): each channel group's word (IntBits, sign included, + FracBits) --
+// X, depth, and the attribute slots 2..4 (the shade in a Gouraud top, the normal in a Phong
+// top) -- the fragment depth, the id widths and the capacities. The defaults are the default
+// configuration (rtl/watkins_pkg.sv); edge_i is laid out as watkins_pkg::edge_bits says.
 `include "watkins_assert.svh"
 
 module watkins_top #(
   parameter int unsigned MaxActiveEdges = watkins_pkg::MaxActiveEdges,
-  parameter int unsigned MaxWidth = watkins_pkg::DefaultMaxWidth,  // line-buffer depth in pixels
-  parameter int          Phong = 0                  // 1: per-pixel Phong shading of normals
+  parameter int unsigned MaxWidth       = watkins_pkg::DefaultMaxWidth,  // line-buffer depth in pixels
+  parameter int          Phong          = 0,  // 1: per-pixel Phong shading of normals
+  parameter int unsigned XIntBits       = watkins_pkg::ChannelBits - watkins_pkg::FracBits,
+  parameter int unsigned XFracBits      = watkins_pkg::FracBits,
+  parameter int unsigned DepthIntBits   = watkins_pkg::ChannelBits - watkins_pkg::FracBits,
+  parameter int unsigned DepthFracBits  = watkins_pkg::FracBits,
+  parameter int unsigned AttrIntBits    = watkins_pkg::ChannelBits - watkins_pkg::FracBits,
+  parameter int unsigned AttrFracBits   = watkins_pkg::FracBits,
+  parameter int unsigned DepthBits      = watkins_pkg::DepthBits,       // fragment depth word
+  parameter int unsigned PolyIdBits     = watkins_pkg::PolyIdBits,
+  parameter int unsigned MaterialIdBits = watkins_pkg::MaterialIdBits,
+  parameter int unsigned EdgeIdBits     = watkins_pkg::EdgeIdBits,      // records per frame
+  localparam int unsigned XBits    = XIntBits + XFracBits,
+  localparam int unsigned ZBits    = DepthIntBits + DepthFracBits,
+  localparam int unsigned AttrBits = AttrIntBits + AttrFracBits,
+  localparam int unsigned EdgeBits = watkins_pkg::edge_bits(XBits, ZBits, AttrBits, PolyIdBits, MaterialIdBits)
 ) (
   input  logic                               clk_i,
   input  logic                               rst_ni,          // active-low synchronous reset
@@ -31,7 +50,7 @@ module watkins_top #(
   input  logic [watkins_pkg::LineBits-1:0]   height_i,        // 1..4096
   input  watkins_pkg::rgb_t                  background_i,    // shade of pixels no polygon covers
   input  logic                               sparse_i,        // frame configuration: covered pixels only
-  input  watkins_pkg::edge_t                 edge_i,          // edge records, sorted by y0 (ties in stream order)
+  input  logic [EdgeBits-1:0]                edge_i,          // edge records, sorted by y0 (ties in stream order)
   input  logic                               edge_eof_i,      // with valid: this beat ends the frame's stream, carries no edge
   input  logic                               edge_valid_i,
   output logic                               edge_ready_o,
@@ -49,17 +68,16 @@ module watkins_top #(
   input  logic [3*watkins_pkg::UnitBits-1:0]       light_i,
   input  logic [3*watkins_pkg::UnitBits-1:0]       eye_i,
   input  logic                                     material_we_i,
-  input  logic [watkins_pkg::MaterialIdBits-1:0]   material_addr_i,
+  input  logic [MaterialIdBits-1:0]               material_addr_i,
   input  watkins_pkg::rgb_t                        material_cp_i,   // reflectance Cp (255 = 1.0)
   input  logic [watkins_pkg::MaterialBits-1:0]     material_d_i,
   input  logic [watkins_pkg::MaterialBits-1:0]     material_w_i,
   input  logic [watkins_pkg::ShininessBits-1:0]    material_n_i
 );
-  localparam int unsigned LB = watkins_pkg::LineBits;
-  localparam int unsigned NC = watkins_pkg::NumChannels;
-  localparam int unsigned CB = watkins_pkg::ChannelBits;
-  localparam int unsigned DepB = watkins_pkg::DepthBits;
-  localparam int unsigned MIB  = watkins_pkg::MaterialIdBits;
+  localparam int unsigned LB   = watkins_pkg::LineBits;
+  localparam int unsigned VB   = watkins_pkg::vector_bits(XBits, ZBits, AttrBits);  // channel vector
+  localparam int unsigned DepB = DepthBits;
+  localparam int unsigned MIB  = MaterialIdBits;
 
   // ------------------------------------------------------------ frame control
   logic          frame_busy_q, ael_busy, start;
@@ -91,15 +109,21 @@ module watkins_top #(
   // ------------------------------------------------------------ active edges
   // The three internal stage streams are readable from the Verilated model (the co-simulation
   // bench compares them item by item with the model's, testbench/stage_checker.hpp).
-  logic [watkins_pkg::PolyIdBits-1:0] ae_poly  /*verilator public_flat_rd*/;
+  logic [PolyIdBits-1:0]              ae_poly  /*verilator public_flat_rd*/;
   logic [MIB-1:0]                     ae_material /*verilator public_flat_rd*/;
-  logic [NC*CB-1:0]                    ae_value /*verilator public_flat_rd*/;
+  logic [VB-1:0]                      ae_value /*verilator public_flat_rd*/;
   logic                               ae_eol   /*verilator public_flat_rd*/;
   logic                               ae_valid /*verilator public_flat_rd*/;
   logic                               ae_ready /*verilator public_flat_rd*/;
 
   active_edge_list #(
-    .MaxActiveEdges(MaxActiveEdges)
+    .MaxActiveEdges(MaxActiveEdges),
+    .XBits         (XBits),
+    .ZBits         (ZBits),
+    .AttrBits      (AttrBits),
+    .PolyIdBits    (PolyIdBits),
+    .MaterialIdBits(MaterialIdBits),
+    .EdgeIdBits    (EdgeIdBits)
   ) u_active_edge_list (
     .clk_i, .rst_ni,
     .start_i     (start),
@@ -119,19 +143,22 @@ module watkins_top #(
   );
 
   // ------------------------------------------------------------ segments
-  logic [NC*CB-1:0]       sg_e     /*verilator public_flat_rd*/;
-  logic [NC*CB-1:0]       sg_f     /*verilator public_flat_rd*/;
+  logic [VB-1:0]          sg_e     /*verilator public_flat_rd*/;
+  logic [VB-1:0]          sg_f     /*verilator public_flat_rd*/;
   logic                  sg_eol   /*verilator public_flat_rd*/;
   logic                  sg_valid /*verilator public_flat_rd*/;
   logic                  sg_ready /*verilator public_flat_rd*/;
   // The polygon id only pairs edges; nothing downstream needs it (the bench reads it).
   /* verilator lint_off UNUSEDSIGNAL */
-  logic [watkins_pkg::PolyIdBits-1:0] sg_poly /*verilator public_flat_rd*/;
+  logic [PolyIdBits-1:0] sg_poly /*verilator public_flat_rd*/;
   /* verilator lint_on UNUSEDSIGNAL */
   logic [MIB-1:0]        sg_material /*verilator public_flat_rd*/;
 
   segment_former #(
-    .MaxActiveEdges(MaxActiveEdges)
+    .MaxActiveEdges(MaxActiveEdges),
+    .VectorBits    (VB),
+    .PolyIdBits    (PolyIdBits),
+    .MaterialIdBits(MaterialIdBits)
   ) u_segment_former (
     .clk_i, .rst_ni,
     .edge_poly_i (ae_poly),
@@ -151,7 +178,7 @@ module watkins_top #(
 
   // ------------------------------------------------------------ fragments
   logic [LB-1:0]                     fr_x     /*verilator public_flat_rd*/;
-  logic [watkins_pkg::DepthBits-1:0] fr_depth /*verilator public_flat_rd*/;
+  logic [DepB-1:0]                   fr_depth /*verilator public_flat_rd*/;
   watkins_pkg::rgb_t                 fr_rgb   /*verilator public_flat_rd*/;
   logic [3*watkins_pkg::NormalInBits-1:0] fr_normal /*verilator public_flat_rd*/;
   logic [MIB-1:0]                    fr_material /*verilator public_flat_rd*/;
@@ -159,7 +186,16 @@ module watkins_top #(
   logic                              fr_valid /*verilator public_flat_rd*/;
   logic                              fr_ready /*verilator public_flat_rd*/;
 
-  segment_interpolator u_segment_interpolator (
+  segment_interpolator #(
+    .XBits         (XBits),
+    .XFracBits     (XFracBits),
+    .ZBits         (ZBits),
+    .ZFracBits     (DepthFracBits),
+    .AttrBits      (AttrBits),
+    .AttrFracBits  (AttrFracBits),
+    .DepthBits     (DepthBits),
+    .MaterialIdBits(MaterialIdBits)
+  ) u_segment_interpolator (
     .clk_i, .rst_ni,
     .width_i     (width_q),
     .seg_e_i     (sg_e),
@@ -268,7 +304,8 @@ module watkins_top #(
 
   // ------------------------------------------------------------ visibility and pixels
   scanline_buffer #(
-    .MaxWidth(MaxWidth)
+    .MaxWidth (MaxWidth),
+    .DepthBits(DepthBits)
   ) u_scanline_buffer (
     .clk_i, .rst_ni,
     .width_i        (width_q),

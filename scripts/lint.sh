@@ -25,6 +25,18 @@ trap 'rm -rf "$LOG"' EXIT
 echo "== verilator --lint-only -Wall"
 verilator --lint-only -Wall "${INC[@]}" --top-module watkins_top "${VLT[@]}" "$PKG" "${SRCS[@]}"
 verilator --lint-only -Wall "${INC[@]}" --top-module watkins_top -GPhong=1 "${VLT[@]}" "$PKG" "${SRCS[@]}"
+# The top built for other configurations (as `watkins_gen_pkg --params` prints them): a sized
+# one (docs/size/default.*.json: depth without fraction bits, X narrower than the screen index)
+# and an odd one (X at the 1/16-pixel minimum, 3-bit depth word, normals finer than the
+# normalizer reads), each in both shading modes.
+CONFIGS=("-GMaxActiveEdges=36 -GMaxWidth=320 -GXIntBits=9 -GXFracBits=15 -GDepthIntBits=6 -GDepthFracBits=0 -GAttrIntBits=9 -GAttrFracBits=6 -GDepthBits=5 -GPolyIdBits=7 -GMaterialIdBits=1 -GEdgeIdBits=9"
+         "-GMaxActiveEdges=5 -GMaxWidth=100 -GXIntBits=8 -GXFracBits=4 -GDepthIntBits=2 -GDepthFracBits=1 -GAttrIntBits=1 -GAttrFracBits=18 -GDepthBits=16 -GPolyIdBits=1 -GMaterialIdBits=3 -GEdgeIdBits=3")
+for cfg in "${CONFIGS[@]}"; do
+  for phong in 0 1; do
+    # shellcheck disable=SC2086
+    verilator --lint-only -Wall "${INC[@]}" --top-module watkins_top -GPhong=$phong $cfg "${VLT[@]}" "$PKG" "${SRCS[@]}"
+  done
+done
 # Every module on its own as well, so parameters the top does not use are checked too.
 for f in "${SRCS[@]}"; do
   m=$(basename "$f" .sv)
@@ -47,6 +59,9 @@ SMALL="-chparam MaxWidth $SYNTH_WIDTH -chparam MaxActiveEdges $SYNTH_EDGES"
 echo "== yosys read + hierarchy/proc/check (Phong top: every module; MaxWidth=$SYNTH_WIDTH, MaxActiveEdges=$SYNTH_EDGES)"
 # The buffers as synthesis sizes them (Verilator above lints the defaults): a quick check.
 yosys_check elab "$READ; hierarchy -check -top watkins_top $SMALL -chparam Phong 1; proc; check -assert"
+# The sized configuration above (yosys takes the same parameters through chparam).
+SIZED=$(echo "${CONFIGS[0]}" | sed -E 's/-G([A-Za-z]+)=([0-9]+)/-chparam \1 \2/g')
+yosys_check elab_sized "$READ; hierarchy -check -top watkins_top $SIZED -chparam Phong 1; proc; check -assert"
 echo "   clean"
 
 synth() {  # $1: label, $2: top, $3: hierarchy -chparam options

@@ -153,18 +153,9 @@ class Judge {
     attr(c).frac_bits = w[DimAttr];
     c.depth_bits = w[DimDepthBits];
     c.depth.frac_bits = w[DimDepth];
-    // Probe with the widest words the model holds, then cut each group to what the scene needs.
-    for (ChannelFormat* f : {&c.x, &c.depth, &attr(c)}) f->int_bits = Config::MaxWordBits - f->frac_bits;
-    c.max_active_edges = 1 << 30;
-    if (const std::string e = c.check(); !e.empty()) throw SceneError(e);
-    const PreparedScene probe = prepare(scene_, c);
+    PreparedScene probe;
+    c = fit_int_bits(scene_, c, &probe);  // the integer bits, as the sweep derives them
     const SceneNeeds& needs = probe.needs;
-    const ChannelFormats f = c.channels(scene_.shading);
-    std::array<int, fmt::NumChannels> int_bits{};
-    for (int ch = 0; ch < fmt::NumChannels; ++ch) int_bits[ch] = std::max(1, needs.int_bits_needed(ch, f.frac[ch]));
-    c.x.int_bits = int_bits[fmt::ChanX];
-    c.depth.int_bits = int_bits[fmt::ChanZ];
-    attr(c).int_bits = *std::max_element(int_bits.begin() + fmt::ChanR, int_bits.end());
     c.max_active_edges = std::max(1, needs.max_active_edges);
     // The scanline_buffer addresses bank * MaxWidth + x (no power-of-two concatenation), so any
     // MaxWidth >= the screen width serves: the screen width itself, not rounded.
@@ -172,6 +163,7 @@ class Judge {
     // Gouraud frames carry material id 0 on every edge: one table entry (the id's 1-bit minimum).
     c.max_materials = scene_.shading == ShadingMode::Phong ? std::max<int>(1, scene_.materials.size()) : 1;
     c.max_polygons = std::max<int>(1, scene_.polygons.size());
+    c.max_edges = std::max<int>(1, probe.edges.size());
     if (const std::string e = c.check(); !e.empty()) throw SceneError(e);
     return c;
   }
@@ -335,9 +327,10 @@ int run_size(const SizeArgs& a) {
   group("normal", c.normal, def.normal, phong ? "" : "  unused by a Gouraud frame: default kept");
   std::printf("              depth_bits %d (default %d)\n", c.depth_bits, def.depth_bits);
   std::printf("capacities    max_active_edges %d, max_width %d (the screen width; the line buffer takes any width), "
-              "max_materials %d (%d-bit id%s), max_polygons %d (%d-bit id)\n",
+              "max_materials %d (%d-bit id%s), max_polygons %d (%d-bit id), max_edges %d (%d-bit id)\n",
               c.max_active_edges, c.max_width, c.max_materials, id_bits(c.max_materials),
-              phong ? "" : ": Gouraud edges carry material 0", c.max_polygons, id_bits(c.max_polygons));
+              phong ? "" : ": Gouraud edges carry material 0", c.max_polygons, id_bits(c.max_polygons),
+              c.max_edges, id_bits(c.max_edges));
   std::printf("edge record   %d bits (default %d)\n", c.edge_record_bits(shading), def.edge_record_bits(shading));
   Config def_rtl = def;
   def_rtl.max_width = fmt::DefaultMaxWidth;

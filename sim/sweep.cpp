@@ -117,19 +117,12 @@ HardwareBits hardware_bits(const Config& cfg, ShadingMode shading) {
   return b;
 }
 
-// The channel group a slot belongs to in `cfg` (shade or normal for slots R..B).
-ChannelFormat& group_of(Config& cfg, int c, ShadingMode shading) {
-  if (c == fmt::ChanX) return cfg.x;
-  if (c == fmt::ChanZ) return cfg.depth;
-  return shading == ShadingMode::Phong ? cfg.normal : cfg.shade;
-}
-
 // The point's configuration: the given fractions, capacities as the default's except the
 // active-edge list and the line width (the scene's screen width), and in every group the integer
 // bits the scene needs at those fractions, exactly (measured on a prepare() with the widest words
-// the fractions allow; test_config's NarrowConfig tests hold one bit fewer refused). Throws
-// std::runtime_error ("configuration: ...") when Config::check() refuses the fractions and
-// SceneError when the scene cannot be prepared at them.
+// the fractions allow: fit_int_bits(), as `watkins size` sizes; test_config's NarrowConfig tests
+// hold one bit fewer refused). Throws SceneError ("configuration: ...") when the fractions are no
+// valid configuration or the scene cannot be prepared at them.
 Config point_config(const BuiltScene& scene, int attr_frac, int x_frac, int depth_frac, int max_active_edges,
                     PreparedScene* prepared) {
   Config cfg;
@@ -138,15 +131,7 @@ Config point_config(const BuiltScene& scene, int attr_frac, int x_frac, int dept
   cfg.x.frac_bits = x_frac;
   cfg.depth.frac_bits = depth_frac;
   (scene.shading == ShadingMode::Phong ? cfg.normal : cfg.shade).frac_bits = attr_frac;
-  for (ChannelFormat* g : {&cfg.x, &cfg.depth, &cfg.shade, &cfg.normal})
-    g->int_bits = std::max(Config::MinIntBits, Config::MaxWordBits - g->frac_bits);
-  if (std::string e = cfg.check(); !e.empty()) throw std::runtime_error("configuration: " + e);
-  const SceneNeeds needs = prepare(scene, cfg).needs;
-  for (int c = 0; c < fmt::NumChannels; ++c) group_of(cfg, c, scene.shading).int_bits = Config::MinIntBits;
-  for (int c = 0; c < fmt::NumChannels; ++c) {
-    ChannelFormat& g = group_of(cfg, c, scene.shading);
-    g.int_bits = std::max(g.int_bits, needs.int_bits_needed(c, g.frac_bits));
-  }
+  cfg = fit_int_bits(scene, cfg);  // refuses fractions no configuration can hold
   if (std::string e = cfg.check(); !e.empty()) throw std::runtime_error("configuration: " + e);
   *prepared = prepare(scene, cfg);  // the configuration's own preparation (it refuses a wrap)
   return cfg;

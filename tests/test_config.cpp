@@ -105,7 +105,7 @@ TEST(Config, GeneratorPrintsTheRtlParametersOfAConfiguration) {
   EXPECT_EQ(generate("{}", "gouraud"),
             "-GPhong=0\n-GMaxActiveEdges=64\n-GMaxWidth=1024\n-GXIntBits=26\n-GXFracBits=16\n"
             "-GDepthIntBits=26\n-GDepthFracBits=16\n-GAttrIntBits=26\n-GAttrFracBits=16\n-GDepthBits=24\n"
-            "-GPolyIdBits=16\n-GMaterialIdBits=4\n");
+            "-GPolyIdBits=16\n-GMaterialIdBits=4\n-GEdgeIdBits=18\n");
   const std::string narrow = R"({"shade": {"int_bits": 9, "frac_bits": 8}, "normal": {"int_bits": 2, "frac_bits": 15},
                                  "max_materials": 4, "max_polygons": 6})";
   const std::string g = generate(narrow, "gouraud"), p = generate(narrow, "phong");

@@ -65,7 +65,7 @@ Config parse_config(const std::string& text, const std::string& name) {
   }
   const ConfigReader r(name);
   r.keys(root, "", {"x", "depth", "shade", "normal", "depth_bits", "max_active_edges", "max_width",
-                    "max_materials", "max_polygons"});
+                    "max_materials", "max_polygons", "max_edges"});
   Config c;
   r.group(root, "x", c.x);
   r.group(root, "depth", c.depth);
@@ -76,6 +76,7 @@ Config parse_config(const std::string& text, const std::string& name) {
   r.integer(root, "", "max_width", c.max_width);
   r.integer(root, "", "max_materials", c.max_materials);
   r.integer(root, "", "max_polygons", c.max_polygons);
+  r.integer(root, "", "max_edges", c.max_edges);
   if (const std::string e = c.check(); !e.empty()) throw SceneError(name + ": " + e);
   return c;
 }
@@ -102,7 +103,8 @@ std::string config_json(const Config& c) {
     << "  \"max_active_edges\": " << c.max_active_edges << ",\n"
     << "  \"max_width\": " << c.max_width << ",\n"
     << "  \"max_materials\": " << c.max_materials << ",\n"
-    << "  \"max_polygons\": " << c.max_polygons << "\n"
+    << "  \"max_polygons\": " << c.max_polygons << ",\n"
+    << "  \"max_edges\": " << c.max_edges << "\n"
     << "}\n";
   return o.str();
 }

@@ -168,6 +168,26 @@ PreparedScene prepare(const BuiltScene& scene, const PrepareOptions& opt) {
   return prepare(scene, cfg);
 }
 
+Config fit_int_bits(const BuiltScene& scene, const Config& base, PreparedScene* probe) {
+  Config wide = base;
+  ChannelFormat& attr = scene.shading == ShadingMode::Phong ? wide.normal : wide.shade;
+  for (ChannelFormat* f : {&wide.x, &wide.depth, &attr})
+    f->int_bits = std::max(Config::MinIntBits, Config::MaxWordBits - f->frac_bits);
+  wide.max_active_edges = 1 << 30;
+  if (const std::string e = wide.check(); !e.empty()) throw SceneError("configuration: " + e);
+  PreparedScene p = prepare(scene, wide);
+  const ChannelFormats f = wide.channels(scene.shading);
+  Config c = base;
+  ChannelFormat* group[fmt::NumChannels] = {&c.x, &c.depth, nullptr, nullptr, nullptr};
+  for (int ch = fmt::ChanR; ch < fmt::NumChannels; ++ch)
+    group[ch] = scene.shading == ShadingMode::Phong ? &c.normal : &c.shade;
+  for (ChannelFormat* g : {&c.x, &c.depth, group[fmt::ChanR]}) g->int_bits = Config::MinIntBits;
+  for (int ch = 0; ch < fmt::NumChannels; ++ch)
+    group[ch]->int_bits = std::max(group[ch]->int_bits, p.needs.int_bits_needed(ch, f.frac[ch]));
+  if (probe) *probe = std::move(p);
+  return c;
+}
+
 PreparedScene prepare(const BuiltScene& scene, const Config& cfg) {
   if (const std::string e = cfg.check(); !e.empty()) throw SceneError("configuration: " + e);
   try {
@@ -245,6 +265,11 @@ static PreparedScene prepare_unnamed(const BuiltScene& scene, const Config& cfg)
   std::stable_sort(out.edges.begin(), out.edges.end(),
                    [](const EdgeRecord& a, const EdgeRecord& b) { return a.y0 < b.y0; });
   for (std::size_t i = 0; i < out.edges.size(); ++i) out.edges[i].id = static_cast<int>(i);
+  // The RTL numbers records with id_bits(max_edges) bits; a wrapped id would break X ties wrong.
+  if (out.edges.size() > static_cast<std::size_t>(cfg.max_edges))
+    throw SceneError("scene has " + std::to_string(out.edges.size()) + " edge records; the edge id is " +
+                     std::to_string(id_bits(cfg.max_edges)) + " bits (at most " + std::to_string(cfg.max_edges) +
+                     (cfg.max_edges == fmt::MaxEdges ? ")" : ", max_edges of the configuration)"));
 
   // Edge values wrapped on some scan line would step (and sort) wrong: refuse before the walk.
   check_channel_bits(edge_bits, formats, scene.shading, "edge");

@@ -59,4 +59,13 @@ bool make_edge_record(const QuantizedVertex& a, const QuantizedVertex& b, int po
 PreparedScene prepare(const BuiltScene& scene, const Config& config);
 PreparedScene prepare(const BuiltScene& scene, const PrepareOptions& opt = {});
 
+// `base` with the integer bits of every channel group the frame uses (X, depth, and the shade or
+// the normal) cut to exactly what the scene's values need at base's fraction bits (SceneNeeds,
+// measured on a prepare() with the widest words those fractions allow and an unbounded
+// active-edge list); the unused group and every capacity stay base's. The one derivation of
+// integer bits: `watkins size` and `watkins sweep` both size their configurations with it.
+// Throws SceneError when base's fractions are no valid configuration or the scene cannot be
+// prepared at them; `probe` (optional) receives that widest preparation.
+Config fit_int_bits(const BuiltScene& scene, const Config& base, PreparedScene* probe = nullptr);
+
 }  // namespace watkins

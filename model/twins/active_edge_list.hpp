@@ -3,9 +3,10 @@
 // retire after n lines. Order is (X, edge id): ids are unique, so the order is total and the
 // RTL's insertion sort reproduces it exactly.
 //
-// Widths from the configuration (config.hpp), for the RTL half: MaxActiveEdges = max_active_edges;
+// Widths from the configuration (config.hpp), as the RTL takes them: MaxActiveEdges = max_active_edges;
 // each entry's value and slope words per slot at ChannelFormats::bits[c]; the X comparison of the
-// insertion sort is bits[ChanX] wide; poly clog2(max_polygons), material clog2(max_materials).
+// insertion sort is bits[ChanX] wide; poly clog2(max_polygons), material clog2(max_materials),
+// the record number (edge id) clog2(max_edges).
 #pragma once
 
 #include <vector>
@@ -16,7 +17,7 @@ namespace watkins {
 
 class ActiveEdgeList {
  public:
-  // Widths from the configuration, for the RTL half: entries MaxActiveEdges = capacity
+  // Widths from the configuration, as the RTL takes them: entries MaxActiveEdges = capacity
   // (Config::max_active_edges); each entry's channel words ChannelFormats::bits[c].
   explicit ActiveEdgeList(int capacity, const ChannelFormats& formats = Config{}.channels(ShadingMode::Gouraud))
       : capacity_(capacity), formats_(formats) {}

@@ -47,7 +47,8 @@ std::vector<RtlParameter> rtl_parameters(const Config& c, ShadingMode shading) {
           {"AttrFracBits", attr.frac_bits},
           {"DepthBits", c.depth_bits},
           {"PolyIdBits", id_bits(c.max_polygons)},
-          {"MaterialIdBits", id_bits(c.max_materials)}};
+          {"MaterialIdBits", id_bits(c.max_materials)},
+          {"EdgeIdBits", id_bits(c.max_edges)}};
 }
 
 std::string Config::check() const {
@@ -89,6 +90,7 @@ std::string Config::check() const {
   if (std::string e = range("max_width", max_width, 1, fmt::MaxScreen); !e.empty()) return e;
   if (std::string e = range("max_materials", max_materials, 1, fmt::MaxMaterials); !e.empty()) return e;
   if (std::string e = range("max_polygons", max_polygons, 1, fmt::MaxPolygons); !e.empty()) return e;
+  if (std::string e = range("max_edges", max_edges, 1, fmt::MaxEdges); !e.empty()) return e;
   return "";
 }
 

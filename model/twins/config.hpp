@@ -16,6 +16,7 @@
 //   depth_bits       DepthBits (fragment depth, scan-line buffer depth word)
 //   max_active_edges MaxActiveEdges; max_width MaxWidth (line buffer);
 //   max_materials    MaterialIdBits = clog2(max_materials); max_polygons PolyIdBits = clog2(max_polygons)
+//   max_edges        EdgeIdBits = clog2(max_edges) (the active-edge list's record numbers)
 // Each twin's header lists which of its registers takes which of these.
 #pragma once
 
@@ -58,6 +59,7 @@ struct Config {
   int max_width = fmt::DefaultMaxWidth;          // scan-line buffer pixels (screen width limit), as the RTL's default
   int max_materials = fmt::MaxMaterials;         // Phong material table entries
   int max_polygons = fmt::MaxPolygons;           // polygons per frame (polygon ids)
+  int max_edges = fmt::MaxEdges;                 // edge records per frame (edge ids: the X tie order)
 
   // Limits a configuration must respect (validate() checks them).
   static constexpr int MaxWordBits = 62;      // the model keeps every word in 64 bits, products in 128
@@ -90,7 +92,8 @@ struct Config {
   bool operator==(const Config& o) const {
     return x == o.x && depth == o.depth && shade == o.shade && normal == o.normal &&
            depth_bits == o.depth_bits && max_active_edges == o.max_active_edges &&
-           max_width == o.max_width && max_materials == o.max_materials && max_polygons == o.max_polygons;
+           max_width == o.max_width && max_materials == o.max_materials && max_polygons == o.max_polygons &&
+           max_edges == o.max_edges;
   }
   bool operator!=(const Config& o) const { return !(*this == o); }
 };

@@ -1,7 +1,7 @@
 // Twin of rtl/edge_incrementer.sv: steps one active edge to the next scan line by adding each
 // channel's slope (Watkins: "for the next scan line it is sufficient to add the slope").
 //
-// Widths from the configuration (config.hpp), for the RTL half:
+// Widths from the configuration (config.hpp), as the RTL takes them (XBits, ZBits, AttrBits):
 //   value_o[c], slope_i[c]   ChannelFormats::bits[c] (slot c's word: X, Z, R|Nx, G|Ny, B|Nz);
 //                            the sum keeps the low bits[c] bits (wrap_signed below)
 //   remaining                LineBits (not configurable)

@@ -32,7 +32,7 @@
   X(RecipBits, 24, "span reciprocal: mantissa bits of 1/(X_F - X_E), relative error < 2^-23")    \
   X(AlphaBits, 24, "fraction bits of the prestep coefficient alpha0 = (x_c - X_E)/(X_F - X_E)")  \
   X(PolyIdBits, 16, "polygon id bits: at most 65536 polygons per frame")                         \
-  X(EdgeIdBits, 18, "edge id bits: position in the edge stream (4 edges per polygon at most)")   \
+  X(EdgeIdBits, 18, "edge id bits: position of a record in the frame's edge stream (262144 records)")   \
   X(MaxActiveEdges, 64, "default capacity of the active-edge list")                              \
   X(DefaultMaxWidth, 1024, "default line-buffer width of watkins_top in pixels (MaxWidth)")      \
   X(NormalInBits, 18, "normalizer input: interpolated Nx, Ny, Nz, signed, FracBits fraction bits")  \
@@ -64,6 +64,7 @@ constexpr int ShadeChannels = 3;                         // R, G, B after X and 
 constexpr int VertexLimit = 1 << (VertexIntBits - 1);    // vertex X, Y in [-VertexLimit, VertexLimit) pixels
 constexpr int MaxPolygons = 1 << PolyIdBits;             // polygons per frame
 constexpr int MaxMaterials = 1 << MaterialIdBits;        // Phong materials per frame
+constexpr int MaxEdges = 1 << EdgeIdBits;                // edge records per frame (edge ids)
 // $bits(watkins_pkg::edge_t): y0, n, poly, material, then value and slope of every channel.
 constexpr int EdgeRecordBits = 2 * LineBits + PolyIdBits + MaterialIdBits + 2 * NumChannels * ChannelBits;
 

@@ -3,8 +3,8 @@
 // pixel). A fragment is kept when the pixel is empty or its depth is strictly smaller: on a tie
 // the fragment that arrived first stays (segments arrive in the segment former's order).
 //
-// Widths from the configuration (config.hpp), for the RTL half: MaxWidth = max_width entries;
-// the depth word is depth_bits (ChannelFormats::depth_bits, was DepthBits); rgb stays rgb_t.
+// Widths from the configuration (config.hpp), as the RTL takes them: MaxWidth = max_width entries;
+// the depth word DepthBits = depth_bits (ChannelFormats::depth_bits); rgb stays rgb_t.
 #pragma once
 
 #include <array>

@@ -4,8 +4,8 @@
 // next edge of the same polygon closes it (even-odd pairing, so concave and bow-tie quads with
 // four edges on a line give two segments). Segments leave in the order they close.
 //
-// Widths from the configuration (config.hpp), for the RTL half: seg_e_o/seg_f_o carry the five
-// channel slots at their own widths, sum of ChannelFormats::bits[c] (was NumChannels·ChannelBits);
+// Widths from the configuration (config.hpp), as the RTL takes them: seg_e_o/seg_f_o carry the
+// five channel slots at their own widths, VectorBits = sum of ChannelFormats::bits[c];
 // the polygon id register is clog2(max_polygons) bits, the material id clog2(max_materials).
 #pragma once
 

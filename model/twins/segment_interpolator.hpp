@@ -5,17 +5,19 @@
 // Pixels covered: centres x + 1/2 in [X_E, X_F), clipped to [0, width).
 //
 // Widths and shifts from the configuration (config.hpp, ChannelFormats f; slot c = X, Z, R|Nx,
-// G|Ny, B|Nz; Fx = f.frac[ChanX]), for the RTL half:
+// G|Ny, B|Nz; Fx = f.frac[ChanX]), as rtl/segment_interpolator.sv sizes them:
 //   s0  first_centre(X): half = 2^(Fx-1), floor by >> Fx; pixel index X >> Fx
 //       offset = (x_start << Fx) + 2^(Fx-1) - X_E: width bits[ChanX] + 1
 //       dx = X_F - X_E: DxBits = bits[ChanX] + 1 (span_reciprocal's DxBits)
-//       delta[c] = F[c] - E[c]: bits[c] + 1 per channel (no longer one DeltaBits for all)
-//   sa  offset * recip: (bits[ChanX] + 1) + (RecipBits + 1); delta[c] * recip: bits[c] + RecipBits + 3
-//   sb  alpha0 shift p + RecipBits - AlphaBits (as today);
+//       delta[c] = F[c] - E[c]: bits[c] + 1 per channel
+//   sa  offset * recip: (bits[ChanX] + 1) + (RecipBits + 1) + 2 rounding guard;
+//       delta[c] * recip: max(bits[c], bits[ChanX] - Fx) + RecipBits + 3 (the rounding constant
+//       2^(p+R-Fx-1) of a narrow slot needs X's headroom)
+//   sb  alpha0 shift p + RecipBits - AlphaBits;
 //       step[c] = saturate(round_shift(delta[c]*recip, p + RecipBits - Fx), bits[c]) -- the shift
 //       uses X's fraction bits (ΔS per pixel = Δ·2^Fx/dx), the saturation the channel's word
-//   sc  delta[c] * alpha0: bits[c] + AlphaBits + 2
-//   FIFO and stepper value[c], step[c]: bits[c] each (span_t grows from the sum, not 4·CB)
+//   sc  delta[c] * alpha0: bits[c] + AlphaBits + 3
+//   FIFO and stepper value[c], step[c]: bits[c] each (span_t from their sum)
 //   value[c] = wrap(E[c] + round_shift(delta[c]*alpha0, AlphaBits), bits[c]); step adds wrap at bits[c]
 //   fragment depth  clamp(round_shift(Z, f.frac[ChanZ]), 0, 2^f.depth_bits - 1): DepthBits output
 //   fragment rgb    clamp(round_shift(v, f.frac[ChanR+c]), 0, 255)

@@ -4,9 +4,9 @@
 // (m in [2^(R-1), 2^R), low bits truncated when dx is wider), recip = floor(2^(2R-1) / m), so
 // 1/dx ~= recip * 2^-(p + R) with relative error below 2^-(R-1).
 //
-// Widths from the configuration (config.hpp), for the RTL half: DxBits = bits[ChanX] + 1 (the
-// X slot's word plus one; today ChannelBits + 1), so ExpBits = clog2(DxBits) and the leading-one
-// search shrink with X. RecipBits (R) stays a package constant: the reciprocal's error is in
+// Widths from the configuration (config.hpp), as the RTL takes them: DxBits = bits[ChanX] + 1
+// (the X slot's word plus one), so ExpBits = clog2(DxBits) and the leading-one search shrink
+// with X (a dx narrower than R bits is widened before normalization). RecipBits (R) stays a package constant: the reciprocal's error is in
 // units of the span, not of any channel.
 #pragma once
 

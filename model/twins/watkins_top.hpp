@@ -5,10 +5,10 @@
 // interpolated shade; Phong shading normalizes the interpolated normal and shades it with the
 // fragment's material, per pixel, before the depth test.
 //
-// From the configuration (config.hpp), for the RTL half: the top's parameters become one per
-// group -- XChanBits/XFracBits, DepthChanBits/DepthFracBits, and the attribute slots' width and
-// fraction (ShadeChanBits/ShadeFracBits when Phong = 0, NormalChanBits/NormalFracBits when 1), DepthBits = depth_bits,
-// MaxActiveEdges, MaxWidth, and the id widths clog2(max_polygons), clog2(max_materials); the
+// From the configuration (config.hpp), as rtl/watkins_top.sv takes it (rtl_parameters()): one
+// format per group -- XIntBits/XFracBits, DepthIntBits/DepthFracBits, and the attribute slots'
+// AttrIntBits/AttrFracBits (the shade group when Phong = 0, the normal group when 1), DepthBits =
+// depth_bits, MaxActiveEdges, MaxWidth, and the id widths PolyIdBits, MaterialIdBits, EdgeIdBits; the
 // normalizer and phong_shader keep their package formats (the interpolator converts the normal
 // to FracBits fraction bits, NormalInBits wide, at its fragment output).
 #pragma once

@@ -89,18 +89,24 @@ TEST(EdgePacking, RejectsFieldsThatDoNotFit) {
   EXPECT_THROW(pack_edge(e), std::invalid_argument);
 }
 
-// The layout above is what the package declares: same fields, same order, same widths.
-TEST(EdgePacking, MatchesTheStructInWatkinsPkg) {
-  std::ifstream in(WATKINS_SOURCE_DIR "/rtl/watkins_pkg.sv");
-  ASSERT_TRUE(in) << "cannot read rtl/watkins_pkg.sv";
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const std::string pkg = ss.str();
-  const auto e = pkg.find("} edge_t;");
+// The layout above is what the RTL declares: the active-edge list's record_t (the one place the
+// record's fields are named) has the same fields in the same order, the channel vectors
+// watkins_pkg::vector_bits wide with X at the bottom, and watkins_pkg::edge_bits adds them up.
+TEST(EdgePacking, MatchesTheRecordInTheRtl) {
+  auto read = [](const char* path) {
+    std::ifstream in(path);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+  };
+  const std::string ael = read(WATKINS_SOURCE_DIR "/rtl/active_edge_list.sv");
+  const std::string pkg = read(WATKINS_SOURCE_DIR "/rtl/watkins_pkg.sv");
+  ASSERT_FALSE(ael.empty() || pkg.empty()) << "cannot read rtl/active_edge_list.sv or rtl/watkins_pkg.sv";
+  const auto e = ael.find("} record_t;");
   ASSERT_NE(e, std::string::npos);
-  const auto b = pkg.rfind("typedef struct packed", e);  // edge_t's own, not an earlier struct
+  const auto b = ael.rfind("typedef struct packed", e);
   ASSERT_NE(b, std::string::npos);
-  const std::string body = pkg.substr(b, e - b);
+  const std::string body = ael.substr(b, e - b);
   const std::regex field(R"(logic\s+((?:\[[^\]]+\])+)\s*(\w+)\s*;)");
   std::vector<std::string> names, dims;
   for (std::sregex_iterator it(body.begin(), body.end(), field), end; it != end; ++it) {
@@ -108,10 +114,10 @@ TEST(EdgePacking, MatchesTheStructInWatkinsPkg) {
     names.push_back((*it)[2].str());
   }
   EXPECT_EQ(names, (std::vector<std::string>{"y0", "n", "poly", "material", "value", "slope"}));
-  EXPECT_EQ(dims, (std::vector<std::string>{"[LineBits-1:0]", "[LineBits-1:0]", "[PolyIdBits-1:0]",
-                                            "[MaterialIdBits-1:0]",
-                                            "[NumChannels-1:0][ChannelBits-1:0]",
-                                            "[NumChannels-1:0][ChannelBits-1:0]"}));
+  EXPECT_EQ(dims, (std::vector<std::string>{"[LB-1:0]", "[LB-1:0]", "[PolyIdBits-1:0]", "[MaterialIdBits-1:0]",
+                                            "[VB-1:0]", "[VB-1:0]"}));
+  EXPECT_NE(pkg.find("edge_bits = 2 * LineBits + pb + mb + 2 * vector_bits(xb, zb, ab);"), std::string::npos);
+  EXPECT_NE(pkg.find("slot_lo = (c == 0) ? 0 : (c == 1) ? xb : xb + zb + (c - 2) * ab;"), std::string::npos);
   EXPECT_EQ(edge_layout::Bits, 2 * fmt::LineBits + fmt::PolyIdBits + fmt::MaterialIdBits +
                                    2 * fmt::NumChannels * fmt::ChannelBits);
 }

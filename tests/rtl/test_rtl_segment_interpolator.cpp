@@ -2,6 +2,10 @@
 // (realistic and full-range channel words, spans narrower than a pixel, spans clipped at 0 and
 // at the width, empty and reversed spans, negative slopes) with end-of-line markers between
 // them, under random valid gaps and back-pressure. Also measures the fragment rate.
+// Built once per configuration (tests/rtl/CMakeLists.txt): the default formats, and narrow and
+// odd ones (a depth word without fraction bits, shades with none, normals with more fraction
+// bits than the normalizer reads, fewer than X's headroom), each compared with the twin set up
+// for the same ChannelFormats.
 #include <gtest/gtest.h>
 
 #include <deque>
@@ -18,9 +22,42 @@ using namespace watkins::rtl;
 
 namespace {
 
-constexpr int CB = fmt::ChannelBits;
 constexpr int NC = fmt::NumChannels;
-constexpr i64 One = i64{1} << fmt::FracBits;
+
+// The unit's configuration, from the parameters it was Verilated with (defaults: Config{}).
+#ifdef WATKINS_RTL_PARAM_XBits
+constexpr int SlotBits[NC] = {WATKINS_RTL_PARAM_XBits, WATKINS_RTL_PARAM_ZBits, WATKINS_RTL_PARAM_AttrBits,
+                              WATKINS_RTL_PARAM_AttrBits, WATKINS_RTL_PARAM_AttrBits};
+constexpr int SlotFrac[NC] = {WATKINS_RTL_PARAM_XFracBits, WATKINS_RTL_PARAM_ZFracBits,
+                              WATKINS_RTL_PARAM_AttrFracBits, WATKINS_RTL_PARAM_AttrFracBits,
+                              WATKINS_RTL_PARAM_AttrFracBits};
+constexpr int DepthBits = WATKINS_RTL_PARAM_DepthBits;
+#else
+constexpr int SlotBits[NC] = {fmt::ChannelBits, fmt::ChannelBits, fmt::ChannelBits, fmt::ChannelBits, fmt::ChannelBits};
+constexpr int SlotFrac[NC] = {fmt::FracBits, fmt::FracBits, fmt::FracBits, fmt::FracBits, fmt::FracBits};
+constexpr int DepthBits = fmt::DepthBits;
+#endif
+
+ChannelFormats formats() {
+  ChannelFormats f;
+  for (int c = 0; c < NC; ++c) {
+    f.bits[c] = SlotBits[c];
+    f.frac[c] = SlotFrac[c];
+  }
+  f.depth_bits = DepthBits;
+  return f;
+}
+
+// Slot c's place in a channel vector (watkins_pkg::slot_lo).
+int slot_lo(int c) {
+  int lo = 0;
+  for (int k = 0; k < c; ++k) lo += SlotBits[k];
+  return lo;
+}
+
+// 1.0 in slot c's unit; a value scaled by it, wrapped to the slot's word (every word is legal).
+i64 one(int c) { return i64{1} << SlotFrac[c]; }
+i64 word(int c, i128 v) { return wrap_signed(v, SlotBits[c]); }
 
 struct Item {
   bool eol = false;
@@ -38,6 +75,7 @@ struct Frag {
 Segment random_segment(std::mt19937_64& rng, int width) {
   Segment s;
   auto rnd = [&](i64 lo, i64 hi) { return lo + static_cast<i64>(rng() % static_cast<std::uint64_t>(hi - lo + 1)); };
+  const i64 One = one(fmt::ChanX);
   const int kind = static_cast<int>(rng() % 10);
   i64 xe, xf;
   switch (kind) {
@@ -54,8 +92,8 @@ Segment random_segment(std::mt19937_64& rng, int width) {
       xf = xe - rnd(0, 4 * One);
       break;
     case 3:  // full-range words (wrapped accumulations)
-      xe = wrap_signed(static_cast<i128>(rng()), CB);
-      xf = wrap_signed(static_cast<i128>(rng()), CB);
+      xe = word(fmt::ChanX, static_cast<i128>(rng()));
+      xf = word(fmt::ChanX, static_cast<i128>(rng()));
       break;
     case 4:  // tiny widths in X units
       xe = rnd(-One, width * One);
@@ -66,22 +104,24 @@ Segment random_segment(std::mt19937_64& rng, int width) {
       xf = xe + rnd(1, (width / 2 + 2) * One);
       break;
   }
-  s.e[fmt::ChanX] = xe;
-  s.f[fmt::ChanX] = xf;
+  s.e[fmt::ChanX] = word(fmt::ChanX, xe);
+  s.f[fmt::ChanX] = word(fmt::ChanX, xf);
   const bool normals = rng() % 3 == 0;  // attribute channels in the range of unit normals
   for (int c = fmt::ChanZ; c < NC; ++c) {
+    const i64 u = one(c);
     if (normals && c != fmt::ChanZ) {
-      s.e[c] = rnd(-5 * One / 4, 5 * One / 4);
-      s.f[c] = rnd(-5 * One / 4, 5 * One / 4);
+      s.e[c] = word(c, rnd(-5 * u / 4 - 1, 5 * u / 4 + 1));
+      s.f[c] = word(c, rnd(-5 * u / 4 - 1, 5 * u / 4 + 1));
     } else if (rng() % 8 == 0) {
-      s.e[c] = wrap_signed(static_cast<i128>(rng()), CB);
-      s.f[c] = wrap_signed(static_cast<i128>(rng()), CB);
-    } else if (c == fmt::ChanZ) {
-      s.e[c] = rnd(-(i64{1} << 36), i64{1} << 40);
-      s.f[c] = rnd(-(i64{1} << 36), i64{1} << 40);
+      s.e[c] = word(c, static_cast<i128>(rng()));
+      s.f[c] = word(c, static_cast<i128>(rng()));
+    } else if (c == fmt::ChanZ) {  // depth in [0, 2^DepthBits) units, a little beyond both ends
+      const i64 range = (i64{1} << DepthBits) * u;
+      s.e[c] = word(c, rnd(-range / 16, range + range / 16));
+      s.f[c] = word(c, rnd(-range / 16, range + range / 16));
     } else {
-      s.e[c] = rnd(-40 * One, 300 * One);
-      s.f[c] = rnd(-40 * One, 300 * One);
+      s.e[c] = word(c, rnd(-40 * u, 300 * u));
+      s.f[c] = word(c, rnd(-40 * u, 300 * u));
     }
   }
   s.poly = static_cast<int>(rng() % 65536);
@@ -94,7 +134,7 @@ void expected(const Item& it, int width, std::deque<Frag>& out) {
     out.push_back({true, 0, 0, 0, 0, 0});
     return;
   }
-  const SpanSetup span = SegmentInterpolator::setup(it.seg, width);
+  const SpanSetup span = SegmentInterpolator::setup(it.seg, width, formats());
   ChannelVector v = span.value;
   for (int x = span.x_start; x < span.x_end; ++x) {
     const Fragment f = SegmentInterpolator::fragment(span, x, v);
@@ -128,8 +168,8 @@ Result run(int items, int width, int gap_pct, int bp_pct, std::uint64_t seed, in
         cur.eol = rng() % eol_every == 0;
         cur.seg = random_segment(rng, width);
         for (int c = 0; c < NC; ++c) {
-          set_bits(h.dut.seg_e_i, c * CB, CB, to_bits(cur.seg.e[c], CB));
-          set_bits(h.dut.seg_f_i, c * CB, CB, to_bits(cur.seg.f[c], CB));
+          set_bits(h.dut.seg_e_i, slot_lo(c), SlotBits[c], to_bits(cur.seg.e[c], SlotBits[c]));
+          set_bits(h.dut.seg_f_i, slot_lo(c), SlotBits[c], to_bits(cur.seg.f[c], SlotBits[c]));
         }
         h.dut.seg_material_i = static_cast<std::uint8_t>(cur.seg.material);
         h.dut.seg_eol_i = cur.eol;
