@@ -15,10 +15,10 @@
 // LUT per output bit.
 //
 // Parameters: a top gets exactly rtl_parameters(config, shading) (what `watkins_gen_pkg --params`
-// prints); a block gets those of them it declares (asked of yosys), from the Gouraud set except
-// normalizer and phong_shader, which get the Phong set (the normal group as the attribute). A
-// parameter the configuration gives but the module does not declare is listed in the table's
-// notes: that design was synthesized at its default for it.
+// prints); a block gets what that top gives it (read from the elaborated top, so the widths are
+// derived in one place, rtl/watkins_top.sv): the Gouraud top's instance, except normalizer and
+// phong_shader, which exist in the Phong top only. A parameter the top does not declare is listed
+// in the table's notes: that design was synthesized at its default for it.
 #include "synth.hpp"
 
 #include <CLI/CLI.hpp>
@@ -251,14 +251,15 @@ json module_json(const Rtl& rtl, const std::string& module, const std::vector<st
   return j["modules"][key];
 }
 
-Elaborated elaborate(const Rtl& rtl, const Design& d, const std::vector<RtlParameter>& config_params,
-                     const fs::path& dir, int timeout_s) {
+using Parameters = std::vector<std::pair<std::string, int>>;
+
+Elaborated elaborate(const Rtl& rtl, const Design& d, const Parameters& wanted, const fs::path& dir, int timeout_s) {
   Elaborated e;
   const json defaults = module_json(rtl, d.module, {}, dir, "params", timeout_s);
   const json declared = defaults.value("parameter_default_values", json::object());
-  for (const RtlParameter& p : config_params) {
-    if (declared.contains(p.name)) e.params.emplace_back(p.name, p.value);
-    else e.ignored.push_back(p.name);
+  for (const auto& [name, value] : wanted) {
+    if (declared.contains(name)) e.params.emplace_back(name, value);
+    else e.ignored.push_back(name);
   }
   const json m = e.params.empty() ? defaults : module_json(rtl, d.module, e.params, dir, "ports", timeout_s);
   for (const auto& [name, port] : m["ports"].items()) {
@@ -270,6 +271,36 @@ Elaborated elaborate(const Rtl& rtl, const Design& d, const std::vector<RtlParam
     e.ports.push_back(p);
   }
   return e;
+}
+
+// What watkins_top at `top` gives each block it instantiates: after `hierarchy` every derived
+// module carries its parameter values, so a block is measured as it sits in that top (its
+// payload widths included) and this file repeats none of the top's width arithmetic. One
+// elaboration of the whole top: about 20 s. Module name -> parameters (the first instance's
+// when a module is instantiated with several sets).
+std::map<std::string, Parameters> block_parameters(const Rtl& rtl, const Parameters& top, const fs::path& dir,
+                                                   int timeout_s) {
+  std::string script = read_rtl_command(rtl) + "; hierarchy -top watkins_top";
+  for (const auto& [n, v] : top) script += " -chparam " + n + " " + std::to_string(v);
+  // JSON refuses processes and memories; only the modules' names and parameters are wanted.
+  script += "; delete p:* m:*; write_json top.json";
+  const fs::path log = dir / "top.log";
+  const ProcessResult r = run_process({"yosys", "-q", "-p", script}, dir, log, timeout_s);
+  if (r.status != 0) throw std::runtime_error("yosys could not elaborate watkins_top: " + log.string());
+  const json j = json::parse(read_text(dir / "top.json"));
+  std::map<std::string, Parameters> blocks;
+  for (const auto& [name, m] : j["modules"].items()) {
+    const std::string module = name.substr(name.rfind('\\') == std::string::npos ? 0 : name.rfind('\\') + 1);
+    if (module == "watkins_top" || blocks.count(module)) continue;
+    Parameters& ps = blocks[module];
+    const json values = m.value("parameter_default_values", json::object());
+    for (const auto& [pn, pv] : values.items()) {
+      // yosys writes a parameter as its bits, MSB first.
+      const long long v = pv.is_string() ? std::stoll(pv.get<std::string>(), nullptr, 2) : pv.get<long long>();
+      ps.emplace_back(pn, static_cast<int>(v));
+    }
+  }
+  return blocks;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -692,13 +723,28 @@ int run_synth(const SynthArgs& a) {
   };
   std::vector<Job> jobs;
   std::map<std::string, std::string> notes;  // per config and design: parameters set / ignored
+  std::map<std::string, std::map<std::string, Parameters>> in_top;  // config + shading -> block parameters
   for (bool tops : {false, true})
     for (size_t ci = 0; ci < configs.size(); ++ci)
       for (const Design* d : designs) {
         if (d->top != tops) continue;
         const fs::path ddir = work / configs[ci].label / d->name;
         fs::create_directories(ddir);
-        const Elaborated e = elaborate(rtl, *d, rtl_parameters(configs[ci].config, d->shading), ddir, a.timeout);
+        Parameters top;
+        for (const RtlParameter& p : rtl_parameters(configs[ci].config, d->shading)) top.emplace_back(p.name, p.value);
+        Parameters wanted = top;
+        if (!d->top) {
+          const std::string key = configs[ci].label + (d->shading == ShadingMode::Phong ? " phong" : " gouraud");
+          if (!in_top.count(key)) {
+            const fs::path tdir = work / configs[ci].label / (d->shading == ShadingMode::Phong ? "top-phong" : "top-gouraud");
+            fs::create_directories(tdir);
+            in_top[key] = block_parameters(rtl, top, tdir, a.timeout);
+          }
+          if (!in_top[key].count(d->module))
+            throw std::runtime_error(std::string("watkins_top does not instantiate ") + d->module);
+          wanted = in_top[key][d->module];
+        }
+        const Elaborated e = elaborate(rtl, *d, wanted, ddir, a.timeout);
         std::string note;
         for (const auto& [n, v] : e.params) note += (note.empty() ? "" : " ") + n + "=" + std::to_string(v);
         if (note.empty()) note = "(module defaults)";
@@ -740,7 +786,8 @@ int run_synth(const SynthArgs& a) {
          << (r.constraint > 0 ? " (" + mhz(r.constraint) + ")" : "") << " | " << path_text(r) << " | "
          << secs(r.yosys_s) << " | " << secs(r.nextpnr_s) << " |\n";
     }
-    md << "\nParameters (from `watkins_gen_pkg --params CONFIG --shading S`; blocks get the ones they declare):\n\n";
+    md << "\nParameters: a top's are what `watkins_gen_pkg --params CONFIG --shading S` prints; a block's are what "
+          "that top gives it (the Gouraud top's instance; the normalizer's and the shader's from the Phong top):\n\n";
     for (const auto& [key, note] : notes) md << "- " << key << ": " << note << "\n";
     if (!a.md.empty()) write_text(a.md, md.str());
     if (print_it) std::printf("%s", md.str().c_str());
