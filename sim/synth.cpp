@@ -441,8 +441,7 @@ class RegisterNames {
  public:
   explicit RegisterNames(const fs::path& netlist) {
     try {
-      const json j = json::parse(read_text(netlist));
-      top_ = j["modules"][kWrapper];
+      top_ = json::parse(read_text(netlist)).at("modules").at(kWrapper);
     } catch (const std::exception&) {
       top_ = json();
     }
