@@ -290,7 +290,12 @@ std::map<std::string, Parameters> block_parameters(const Rtl& rtl, const Paramet
   const json j = json::parse(read_text(dir / "top.json"));
   std::map<std::string, Parameters> blocks;
   for (const auto& [name, m] : j["modules"].items()) {
-    const std::string module = name.substr(name.rfind('\\') == std::string::npos ? 0 : name.rfind('\\') + 1);
+    // Derived names: "$paramod$<hash>\\<module>", or "$paramod\\<module>\\<Param>=<value>..." when short.
+    std::string module = name;
+    if (module.rfind("$paramod", 0) == 0) {
+      module = module.substr(module.find('\\') + 1);
+      module = module.substr(0, module.find('\\'));
+    }
     if (module == "watkins_top" || blocks.count(module)) continue;
     Parameters& ps = blocks[module];
     const json values = m.value("parameter_default_values", json::object());
