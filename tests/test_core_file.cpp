@@ -7,6 +7,8 @@
 #include <sstream>
 #include <string>
 
+#include "config.hpp"
+
 TEST(CoreFile, ListsEveryRtlSource) {
   std::ifstream f(WATKINS_SOURCE_DIR "/watkins.core");
   ASSERT_TRUE(f) << "watkins.core missing";
@@ -23,4 +25,23 @@ TEST(CoreFile, ListsEveryRtlSource) {
   }
   closedir(d);
   EXPECT_GE(n, 8);
+}
+
+// Users set the top's parameters through the core (`--XFracBits=15`): it must declare every one
+// `watkins_gen_pkg --params` prints, and pass them to the toplevel.
+
+TEST(CoreFile, DeclaresEveryTopParameter) {
+  std::ifstream f(WATKINS_SOURCE_DIR "/watkins.core");
+  std::stringstream core;
+  core << f.rdbuf();
+  const std::string text = core.str();
+  const size_t targets = text.find("\ntargets:");
+  ASSERT_NE(targets, std::string::npos);
+  const size_t toplevel_params = text.find("parameters: [", targets);
+  ASSERT_NE(toplevel_params, std::string::npos);
+  const std::string passed = text.substr(toplevel_params, text.find(']', toplevel_params) - toplevel_params);
+  for (const watkins::RtlParameter& p : watkins::rtl_parameters(watkins::Config{}, watkins::ShadingMode::Phong)) {
+    EXPECT_NE(text.find(std::string("\n  ") + p.name + ":\n"), std::string::npos) << p.name << " not declared";
+    EXPECT_NE(passed.find(p.name), std::string::npos) << p.name << " not passed to watkins_top";
+  }
 }

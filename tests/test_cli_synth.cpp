@@ -1,0 +1,46 @@
+// `watkins synth` refuses bad input before it runs any tool: one line naming the option and the
+// value (and the names it accepts), exit code 1, no work folder. (The place-and-route itself is
+// the ctest synth_smoke, label synth: tests/synth/smoke.py.)
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "cli_run.hpp"
+
+namespace {
+
+class CliSynth : public ::testing::Test, protected watkins::test::ScratchDir {
+ protected:
+  void expect_refused(const std::string& args, const std::string& message) {
+    const std::string work = dir_ + "/work";
+    const watkins::test::CliRun r = watkins::test::run_cli("synth " + args + " --work " + work);
+    EXPECT_EQ(r.exit_code, 1) << r.output;
+    EXPECT_NE(r.output.find("watkins: error: " + message), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find('\n'), r.output.size() - 1) << "expected one line:\n" << r.output;
+    EXPECT_FALSE(std::filesystem::exists(work)) << "nothing may run for bad input";
+  }
+};
+
+TEST_F(CliSynth, UnknownDesignListsTheDesigns) {
+  expect_refused("--designs edge_incrementer,nope", "--designs: unknown design \"nope\" (edge_incrementer, ");
+}
+
+TEST_F(CliSynth, UnknownTargetListsTheTargets) {
+  expect_refused("--targets ice40-lp1k", "--targets: unknown target \"ice40-lp1k\" (ice40-up5k, ice40-hx8k, ecp5-85)");
+}
+
+TEST_F(CliSynth, MissingConfigurationFile) {
+  expect_refused("--config " + dir_ + "/nope.json", dir_ + "/nope.json: cannot open configuration file");
+}
+
+TEST_F(CliSynth, InvalidConfigurationNamesTheField) {
+  const std::string cfg = write("narrow.json", R"({"max_width": 0})");
+  expect_refused("--config " + cfg, "");
+  const watkins::test::CliRun r = watkins::test::run_cli("synth --config " + cfg + " --work " + dir_ + "/w");
+  EXPECT_NE(r.output.find("max_width"), std::string::npos) << r.output;
+}
+
+TEST_F(CliSynth, JobsMustBePositive) { expect_refused("--jobs 0", "--jobs: must be at least 1"); }
+
+}  // namespace
