@@ -32,6 +32,16 @@ namespace watkins::tb {
 struct ChannelLayout {
   std::array<int, fmt::NumChannels> lsb{}, bits{};
   int vector_bits = 0;
+  // Slot c at the sum of the slots below it (watkins_pkg::slot_lo), each bits[c] wide.
+  static ChannelLayout of(const ChannelFormats& f) {
+    ChannelLayout l;
+    for (int c = 0; c < fmt::NumChannels; ++c) {
+      l.lsb[c] = l.vector_bits;
+      l.bits[c] = f.bits[c];
+      l.vector_bits += f.bits[c];
+    }
+    return l;
+  }
   ChannelVector read(const std::uint32_t* words, int base = 0) const {
     ChannelVector v{};
     for (int c = 0; c < fmt::NumChannels; ++c) v[c] = get_signed(words, base + lsb[c], bits[c]);
@@ -49,12 +59,7 @@ struct EdgeLayout {
 
   static EdgeLayout of(const Config& config, ShadingMode shading) {
     EdgeLayout l;
-    const ChannelFormats f = config.channels(shading);
-    for (int c = 0; c < fmt::NumChannels; ++c) {
-      l.channels.lsb[c] = l.channels.vector_bits;
-      l.channels.bits[c] = f.bits[c];
-      l.channels.vector_bits += f.bits[c];
-    }
+    l.channels = ChannelLayout::of(config.channels(shading));
     l.material_bits = id_bits(config.max_materials);
     l.poly_bits = id_bits(config.max_polygons);
     l.value_lsb = l.slope_lsb + l.channels.vector_bits;

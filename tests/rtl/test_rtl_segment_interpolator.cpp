@@ -13,6 +13,7 @@
 #include <string>
 
 #include "Vsegment_interpolator.h"
+#include "edge_packing.hpp"
 #include "rtl_harness.hpp"
 #include "segment_interpolator.hpp"
 #include "stream_bench.hpp"
@@ -48,12 +49,6 @@ ChannelFormats formats() {
   return f;
 }
 
-// Slot c's place in a channel vector (watkins_pkg::slot_lo).
-int slot_lo(int c) {
-  int lo = 0;
-  for (int k = 0; k < c; ++k) lo += SlotBits[k];
-  return lo;
-}
 
 // 1.0 in slot c's unit; a value scaled by it, wrapped to the slot's word (every word is legal).
 i64 one(int c) { return i64{1} << SlotFrac[c]; }
@@ -152,6 +147,7 @@ struct Result {
 
 Result run(int items, int width, int gap_pct, int bp_pct, std::uint64_t seed, int eol_every = 6) {
   Harness<Vsegment_interpolator> h;
+  const tb::ChannelLayout slots = tb::ChannelLayout::of(formats());
   std::mt19937_64 rng(seed);
   StreamBench<Frag> b(rng, gap_pct, bp_pct);
   b.max_cycles = 50000000ull;
@@ -167,9 +163,9 @@ Result run(int items, int width, int gap_pct, int bp_pct, std::uint64_t seed, in
       [&] {
         cur.eol = rng() % eol_every == 0;
         cur.seg = random_segment(rng, width);
-        for (int c = 0; c < NC; ++c) {
-          set_bits(h.dut.seg_e_i, slot_lo(c), SlotBits[c], to_bits(cur.seg.e[c], SlotBits[c]));
-          set_bits(h.dut.seg_f_i, slot_lo(c), SlotBits[c], to_bits(cur.seg.f[c], SlotBits[c]));
+        for (int c = 0; c < NC; ++c) {  // the channel vectors as the benches lay them out
+          set_bits(h.dut.seg_e_i, slots.lsb[c], slots.bits[c], to_bits(cur.seg.e[c], slots.bits[c]));
+          set_bits(h.dut.seg_f_i, slots.lsb[c], slots.bits[c], to_bits(cur.seg.f[c], slots.bits[c]));
         }
         h.dut.seg_material_i = static_cast<std::uint8_t>(cur.seg.material);
         h.dut.seg_eol_i = cur.eol;
