@@ -1,5 +1,5 @@
 // stall_pipe_formal: proves rtl/stall_pipe.sv (Stages <= 4 with the payload in flops, <= 3 with
-// PayloadRam) holds valid and payload until ready, passes every beat once, in order, unchanged,
+// PayloadRam: the words probed below) holds valid and payload until ready, passes every beat once, in order, unchanged,
 // keeps ready_o = en_o = ready_i || !valid_o, and holds at most Stages beats. Each input beat
 // carries its sequence number as payload; stall_pipe_checker ties the stages to it.
 `include "formal_stream.svh"
@@ -46,7 +46,9 @@ module stall_pipe_formal #(
   (* hierconn *) logic [PtrBits-1:0] \u_dut.g_ram.wr_q ;
   (* hierconn *) logic [PtrBits-1:0] \u_dut.g_ram.rd_q ;
   (* hierconn *) logic [PayloadBits-1:0] \u_dut.g_ram.out_q ;
-  logic [4*PayloadBits-1:0] shift_q, mem;
+  logic [4*PayloadBits-1:0] shift_q;
+  logic [8*PayloadBits-1:0] mem;  // Depth <= 8 (Stages = 4 with flops); words 4..7 unused
+  assign mem[8*PayloadBits-1:4*PayloadBits] = '0;
   `FORMAL_WORD(shift_q, 0, \u_dut.g_shift.payload_q[0] )
   `FORMAL_WORD(shift_q, 1, \u_dut.g_shift.payload_q[1] )
   `FORMAL_WORD(shift_q, 2, \u_dut.g_shift.payload_q[2] )
@@ -57,8 +59,10 @@ module stall_pipe_formal #(
   `FORMAL_WORD(mem, 3, \u_dut.g_ram.mem[3] )
 
   stall_pipe_checker #(.Stages(Stages), .PayloadBits(PayloadBits), .PayloadRam(PayloadRam)) u_check (
+    .clk_i,
     .rst_ni,
-    .occupancy_i (n_in_q - n_out_q),
+    .en_i        (en_o),
+    .n_in_i      (n_in_q),
     .n_out_i     (n_out_q),
     .valid_q_i   (\u_dut.valid_q ),
     .shift_q_i   (shift_q[Stages*PayloadBits-1:0]),
