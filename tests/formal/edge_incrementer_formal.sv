@@ -34,8 +34,8 @@ module edge_incrementer_formal #(
   `FORMAL_PAST
   `FORMAL_COUNT(n_in_q, PayloadBits, valid_i, ready_o)
   `FORMAL_COUNT(n_out_q, PayloadBits, valid_o, ready_i)
-  `FORMAL_ASSUME_HOLD(valid_i, ready_o, {value_i, slope_i, remaining_i, payload_i})
-  `FORMAL_ASSERT_HOLD(valid_o, ready_i, {value_o, slope_o, remaining_o, retire_o, payload_o})
+  `FORMAL_ASSUME_HOLD(in, valid_i, ready_o, {value_i, slope_i, remaining_i, payload_i})
+  `FORMAL_ASSERT_HOLD(out, valid_o, ready_i, {value_o, slope_o, remaining_o, retire_o, payload_o})
 
   // The input beat tagged t and the output beat it must become.
   logic [VB-1:0] value_in, slope_in, value_out;

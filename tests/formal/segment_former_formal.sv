@@ -37,9 +37,9 @@ module segment_former_formal #(
   ) u_dut (.*);
 
   `FORMAL_PAST
-  `FORMAL_ASSUME_HOLD(edge_valid_i, edge_ready_o, {edge_poly_i, edge_material_i, edge_value_i,
+  `FORMAL_ASSUME_HOLD(in, edge_valid_i, edge_ready_o, {edge_poly_i, edge_material_i, edge_value_i,
     edge_eol_i})
-  `FORMAL_ASSERT_HOLD(seg_valid_o, seg_ready_i, {seg_e_o, seg_f_o, seg_poly_o, seg_material_o,
+  `FORMAL_ASSERT_HOLD(out, seg_valid_o, seg_ready_i, {seg_e_o, seg_f_o, seg_poly_o, seg_material_o,
     seg_eol_o})
 
   // The reference: open polygons and their opening vectors; the segment due next.

@@ -34,8 +34,8 @@ module span_reciprocal_formal #(
   `FORMAL_PAST
   `FORMAL_COUNT(n_in_q, PayloadBits, valid_i, ready_o)
   `FORMAL_COUNT(n_out_q, PayloadBits, valid_o, ready_i)
-  `FORMAL_ASSUME_HOLD(valid_i, ready_o, {dx_i, payload_i})
-  `FORMAL_ASSERT_HOLD(valid_o, ready_i, {recip_o, p_o, payload_o})
+  `FORMAL_ASSUME_HOLD(in, valid_i, ready_o, {dx_i, payload_i})
+  `FORMAL_ASSERT_HOLD(out, valid_o, ready_i, {recip_o, p_o, payload_o})
 
   always_comb begin
     if (valid_i) assume (payload_i == n_in_q);

@@ -26,8 +26,8 @@ module stream_fifo_formal #(
   `FORMAL_PAST
   `FORMAL_COUNT(n_in_q, DataBits, valid_i, ready_o)
   `FORMAL_COUNT(n_out_q, DataBits, valid_o, ready_i)
-  `FORMAL_ASSUME_HOLD(valid_i, ready_o, data_i)
-  `FORMAL_ASSERT_HOLD(valid_o, ready_i, data_o)
+  `FORMAL_ASSUME_HOLD(in, valid_i, ready_o, data_i)
+  `FORMAL_ASSERT_HOLD(out, valid_o, ready_i, data_o)
 
   (* hierconn *) logic [CntBits-1:0]  \u_dut.cnt_q ;
   (* hierconn *) logic [PtrBits-1:0]  \u_dut.rd_q ;
