@@ -1,7 +1,8 @@
 // stall_pipe_formal: proves rtl/stall_pipe.sv (Stages <= 4 with the payload in flops, <= 3 with
-// PayloadRam: the words probed below) holds valid and payload until ready, passes every beat once, in order, unchanged,
-// keeps ready_o = en_o = ready_i || !valid_o, and holds at most Stages beats. Each input beat
-// carries its sequence number as payload; stall_pipe_checker ties the stages to it.
+// PayloadRam: the words probed below) holds valid and payload until ready, passes every beat
+// once, in order, unchanged, keeps ready_o = en_o = ready_i || !valid_o, and holds at most Stages
+// beats. Each input beat carries its sequence number as payload; stall_pipe_checker ties the
+// stages to it.
 `include "formal_stream.svh"
 
 `define FORMAL_WORD(vec, k, name) \
