@@ -61,7 +61,7 @@ module edge_incrementer_formal #(
         assert (remaining_o == LB'(n_out_q) - 1'b1);
         assert (retire_o == (n_out_q <= PayloadBits'(1)));
         assert (value_o == value_out);
-        // slope_in of any tag (it does not depend on it)
+        // The slope passes unchanged (slope_in is the same for every tag).
         assert (slope_o == slope_in);
       end
     end
