@@ -46,4 +46,10 @@
     if (!rst_ni) name <= '0; \
     else if ((valid) && (ready)) name <= name + 1'b1;
 
+// A probe of word k of a register array or RAM inside the harness's DUT: a hierconn wire (flatten
+// connects it to the register of that name, e.g. \u_dut.g_ram.mem[3] ), packed into vec.
+`define FORMAL_WORD(vec, bits, k, name) \
+  (* hierconn *) logic [(bits)-1:0] name ; \
+  assign vec[(k)*(bits) +: (bits)] = name ;
+
 `endif

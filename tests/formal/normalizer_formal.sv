@@ -5,10 +5,6 @@
 // normal's datapath is free (its values are the unit benches' business).
 `include "formal_stream.svh"
 
-`define FORMAL_WORD(vec, k, name) \
-  (* hierconn *) logic [PayloadBits-1:0] name ; \
-  assign vec[(k)*PayloadBits +: PayloadBits] = name ;
-
 module normalizer_formal #(
   parameter int unsigned PayloadBits = 4,  // the tag: >= log2 of the RAM depth
   localparam int unsigned NB      = watkins_pkg::NormalInBits,
@@ -52,22 +48,22 @@ module normalizer_formal #(
   (* hierconn *) logic [PtrBits-1:0]     \u_dut.u_pipe.g_ram.rd_q ;
   (* hierconn *) logic [PayloadBits-1:0] \u_dut.u_pipe.g_ram.out_q ;
   logic [Depth*PayloadBits-1:0] mem;
-  `FORMAL_WORD(mem, 0, \u_dut.u_pipe.g_ram.mem[0] )
-  `FORMAL_WORD(mem, 1, \u_dut.u_pipe.g_ram.mem[1] )
-  `FORMAL_WORD(mem, 2, \u_dut.u_pipe.g_ram.mem[2] )
-  `FORMAL_WORD(mem, 3, \u_dut.u_pipe.g_ram.mem[3] )
-  `FORMAL_WORD(mem, 4, \u_dut.u_pipe.g_ram.mem[4] )
-  `FORMAL_WORD(mem, 5, \u_dut.u_pipe.g_ram.mem[5] )
-  `FORMAL_WORD(mem, 6, \u_dut.u_pipe.g_ram.mem[6] )
-  `FORMAL_WORD(mem, 7, \u_dut.u_pipe.g_ram.mem[7] )
-  `FORMAL_WORD(mem, 8, \u_dut.u_pipe.g_ram.mem[8] )
-  `FORMAL_WORD(mem, 9, \u_dut.u_pipe.g_ram.mem[9] )
-  `FORMAL_WORD(mem, 10, \u_dut.u_pipe.g_ram.mem[10] )
-  `FORMAL_WORD(mem, 11, \u_dut.u_pipe.g_ram.mem[11] )
-  `FORMAL_WORD(mem, 12, \u_dut.u_pipe.g_ram.mem[12] )
-  `FORMAL_WORD(mem, 13, \u_dut.u_pipe.g_ram.mem[13] )
-  `FORMAL_WORD(mem, 14, \u_dut.u_pipe.g_ram.mem[14] )
-  `FORMAL_WORD(mem, 15, \u_dut.u_pipe.g_ram.mem[15] )
+  `FORMAL_WORD(mem, PayloadBits, 0, \u_dut.u_pipe.g_ram.mem[0] )
+  `FORMAL_WORD(mem, PayloadBits, 1, \u_dut.u_pipe.g_ram.mem[1] )
+  `FORMAL_WORD(mem, PayloadBits, 2, \u_dut.u_pipe.g_ram.mem[2] )
+  `FORMAL_WORD(mem, PayloadBits, 3, \u_dut.u_pipe.g_ram.mem[3] )
+  `FORMAL_WORD(mem, PayloadBits, 4, \u_dut.u_pipe.g_ram.mem[4] )
+  `FORMAL_WORD(mem, PayloadBits, 5, \u_dut.u_pipe.g_ram.mem[5] )
+  `FORMAL_WORD(mem, PayloadBits, 6, \u_dut.u_pipe.g_ram.mem[6] )
+  `FORMAL_WORD(mem, PayloadBits, 7, \u_dut.u_pipe.g_ram.mem[7] )
+  `FORMAL_WORD(mem, PayloadBits, 8, \u_dut.u_pipe.g_ram.mem[8] )
+  `FORMAL_WORD(mem, PayloadBits, 9, \u_dut.u_pipe.g_ram.mem[9] )
+  `FORMAL_WORD(mem, PayloadBits, 10, \u_dut.u_pipe.g_ram.mem[10] )
+  `FORMAL_WORD(mem, PayloadBits, 11, \u_dut.u_pipe.g_ram.mem[11] )
+  `FORMAL_WORD(mem, PayloadBits, 12, \u_dut.u_pipe.g_ram.mem[12] )
+  `FORMAL_WORD(mem, PayloadBits, 13, \u_dut.u_pipe.g_ram.mem[13] )
+  `FORMAL_WORD(mem, PayloadBits, 14, \u_dut.u_pipe.g_ram.mem[14] )
+  `FORMAL_WORD(mem, PayloadBits, 15, \u_dut.u_pipe.g_ram.mem[15] )
 
   stall_pipe_checker #(.Stages(Stages), .PayloadBits(PayloadBits), .PayloadRam(1'b1)) u_check (
     .clk_i,

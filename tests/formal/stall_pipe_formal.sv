@@ -5,10 +5,6 @@
 // stages to it.
 `include "formal_stream.svh"
 
-`define FORMAL_WORD(vec, k, name) \
-  (* hierconn *) logic [PayloadBits-1:0] name ; \
-  assign vec[(k)*PayloadBits +: PayloadBits] = name ;
-
 module stall_pipe_formal #(
   parameter int unsigned Stages      = 3,
   parameter int unsigned PayloadBits = 3,     // > log2(Stages + 1)
@@ -50,14 +46,14 @@ module stall_pipe_formal #(
   logic [4*PayloadBits-1:0] shift_q;
   logic [8*PayloadBits-1:0] mem;  // Depth <= 8 (Stages = 4 with flops); words 4..7 unused
   assign mem[8*PayloadBits-1:4*PayloadBits] = '0;
-  `FORMAL_WORD(shift_q, 0, \u_dut.g_shift.payload_q[0] )
-  `FORMAL_WORD(shift_q, 1, \u_dut.g_shift.payload_q[1] )
-  `FORMAL_WORD(shift_q, 2, \u_dut.g_shift.payload_q[2] )
-  `FORMAL_WORD(shift_q, 3, \u_dut.g_shift.payload_q[3] )
-  `FORMAL_WORD(mem, 0, \u_dut.g_ram.mem[0] )
-  `FORMAL_WORD(mem, 1, \u_dut.g_ram.mem[1] )
-  `FORMAL_WORD(mem, 2, \u_dut.g_ram.mem[2] )
-  `FORMAL_WORD(mem, 3, \u_dut.g_ram.mem[3] )
+  `FORMAL_WORD(shift_q, PayloadBits, 0, \u_dut.g_shift.payload_q[0] )
+  `FORMAL_WORD(shift_q, PayloadBits, 1, \u_dut.g_shift.payload_q[1] )
+  `FORMAL_WORD(shift_q, PayloadBits, 2, \u_dut.g_shift.payload_q[2] )
+  `FORMAL_WORD(shift_q, PayloadBits, 3, \u_dut.g_shift.payload_q[3] )
+  `FORMAL_WORD(mem, PayloadBits, 0, \u_dut.g_ram.mem[0] )
+  `FORMAL_WORD(mem, PayloadBits, 1, \u_dut.g_ram.mem[1] )
+  `FORMAL_WORD(mem, PayloadBits, 2, \u_dut.g_ram.mem[2] )
+  `FORMAL_WORD(mem, PayloadBits, 3, \u_dut.g_ram.mem[3] )
 
   stall_pipe_checker #(.Stages(Stages), .PayloadBits(PayloadBits), .PayloadRam(PayloadRam)) u_check (
     .clk_i,
