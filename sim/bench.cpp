@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <string>
 
 #include "config_file.hpp"
 #include "cycle_model.hpp"
@@ -30,20 +31,51 @@ double best_seconds(F&& body, double budget) {
   return best;
 }
 
+// A size x size screen tiled by cells x cells squares, each split into two triangles: every
+// pixel covered exactly once (size^2 fragments, 2 cells^2 triangles), shades and depths varying
+// smoothly across the screen. The throughput scene of issue 11 (512, 32: 2,048 triangles).
+watkins::BuiltScene grid_scene(int size, int cells) {
+  watkins::BuiltScene s;
+  s.name = "grid " + std::to_string(size) + "x" + std::to_string(size) + ", " + std::to_string(2 * cells * cells) +
+           " triangles";
+  s.width = s.height = size;
+  const double step = double(size) / cells;
+  auto vertex = [&](int i, int j) {
+    watkins::ScreenVertex v;
+    v.x = i * step, v.y = j * step;
+    v.depth = 0.25 + 0.5 * (i + j) / (2.0 * cells);
+    v.rgb[0] = 255.0 * i / cells, v.rgb[1] = 255.0 * j / cells, v.rgb[2] = 255.0 * ((i + j) % 2);
+    return v;
+  };
+  for (int j = 0; j < cells; ++j)
+    for (int i = 0; i < cells; ++i) {
+      watkins::ScreenPolygon a, b;
+      a.v = {vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1)};
+      b.v = {vertex(i, j), vertex(i + 1, j + 1), vertex(i, j + 1)};
+      s.polygons.push_back(a);
+      s.polygons.push_back(b);
+    }
+  return s;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"watkins_bench: fragments per second of the model and the double reference"};
   std::string scene_path;
   double budget = 1.0;
-  app.add_option("scene", scene_path, "scene file (default: the embedded default scene)");
+  CLI::Option* scene_opt = app.add_option("scene", scene_path, "scene file (default: the embedded default scene)");
   std::string config_path;
+  int grid = 0;
+  app.add_option("--grid", grid, "instead of a scene: a 512x512 screen of 2*N*N triangles covering each pixel once")
+      ->check(CLI::Range(1, 256))
+      ->excludes(scene_opt);
   app.add_option("--seconds", budget, "time budget per measurement")->capture_default_str();
   app.add_option("--config", config_path, "hardware configuration (docs/config-format.md); default: formats.hpp");
   CLI11_PARSE(app, argc, argv);
   try {
     using namespace watkins;
-    const BuiltScene scene = load_scene_or_default(scene_path);
+    const BuiltScene scene = grid > 0 ? grid_scene(512, grid) : load_scene_or_default(scene_path);
     Config cfg = config_path.empty() ? Config{} : load_config(config_path);
     cfg.max_active_edges = 1 << 20;  // measure speed, not capacity
     const PreparedScene prepared = prepare(scene, cfg);

@@ -20,9 +20,31 @@ class ScanlineBuffer {
   ScanlineBuffer(int width, std::array<std::uint8_t, 3> background)
       : background_(background), depth_(width), rgb_(width), poly_(width), written_(width, 0) {}
 
-  void clear() { std::fill(written_.begin(), written_.end(), 0); }
-  // Depth test and write. Returns true when the fragment won the pixel.
-  bool write(const Fragment& f);
+  // Empties the line: only the pixels written since the last clear are touched, so a line costs
+  // its fragments, not its width.
+  void clear() {
+    for (const int x : written_x_) written_[static_cast<std::size_t>(x)] = 0;
+    written_x_.clear();
+  }
+  // Depth test and write. Returns true when the fragment won the pixel. Inline: once per
+  // fragment.
+  bool write(const Fragment& f) {
+    const auto x = static_cast<std::size_t>(f.x);
+    if (written_[x]) {
+      if (!(f.depth < depth_[x])) return false;
+    } else {
+      written_[x] = 1;
+      written_x_.push_back(f.x);
+    }
+    depth_[x] = f.depth;
+    // Byte by byte: the fragment's bytes were just stored one by one, and a wider load of them
+    // would wait for the stores to retire (no store forwarding across sizes).
+    rgb_[x][0] = f.rgb[0];
+    rgb_[x][1] = f.rgb[1];
+    rgb_[x][2] = f.rgb[2];
+    poly_[x] = f.poly;
+    return true;
+  }
   // The finished line's pixel at x (background where nothing was written).
   std::array<std::uint8_t, 3> pixel(int x) const { return written_[x] ? rgb_[x] : background_; }
   bool covered(int x) const { return written_[x] != 0; }
@@ -33,6 +55,8 @@ class ScanlineBuffer {
     return x;
   }
   int owner(int x) const { return written_[x] ? poly_[x] : -1; }
+  // The covered pixels since the last clear, in the order they were first written.
+  const std::vector<int>& written() const { return written_x_; }
   int width() const { return static_cast<int>(depth_.size()); }
 
  private:
@@ -41,6 +65,7 @@ class ScanlineBuffer {
   std::vector<std::array<std::uint8_t, 3>> rgb_;
   std::vector<int> poly_;  // visible polygon per pixel, for reports (the RTL does not carry it out)
   std::vector<std::uint8_t> written_;
+  std::vector<int> written_x_;
 };
 
 }  // namespace watkins

@@ -45,33 +45,4 @@ SpanSetup SegmentInterpolator::setup(const Segment& s, int width, const ChannelF
   return span;
 }
 
-// The per-pixel path works in 64 bits (round_shift64, wrap_signed64): a channel word is at most
-// Config::MaxWordBits (62) bits, so a value plus a step, or plus half an ulp, cannot overflow.
-Fragment SegmentInterpolator::fragment(const SpanSetup& span, int x, const ChannelVector& value) {
-  const ChannelFormats& fm = span.formats;
-  Fragment f;
-  f.x = x;
-  f.poly = span.poly;
-  f.material = span.material;
-  f.depth = static_cast<std::uint32_t>(
-      std::clamp<i64>(round_shift64(value[fmt::ChanZ], fm.frac[fmt::ChanZ]), 0, (i64{1} << fm.depth_bits) - 1));
-  for (int c = 0; c < fmt::ShadeChannels; ++c)
-    f.rgb[c] = static_cast<std::uint8_t>(
-        std::clamp<i64>(round_shift64(value[fmt::ChanR + c], fm.frac[fmt::ChanR + c]), 0, fmt::ShadeMax));
-  constexpr i64 normal_hi = (i64{1} << (fmt::NormalInBits - 1)) - 1;
-  for (int c = 0; c < 3; ++c) {
-    // The normalizer reads FracBits fraction bits whatever the normal's channel format.
-    const int shift = fm.frac[fmt::ChanNx + c] - fmt::FracBits;
-    const i64 v = value[fmt::ChanNx + c];
-    f.normal[c] = shift >= 0 ? std::clamp<i64>(round_shift64(v, shift), -normal_hi - 1, normal_hi)
-                             : saturate_signed(static_cast<i128>(v) * (i128{1} << -shift), fmt::NormalInBits);
-  }
-  return f;
-}
-
-void SegmentInterpolator::step(const SpanSetup& span, ChannelVector& value) {
-  for (int c = fmt::ChanZ; c < fmt::NumChannels; ++c)
-    value[c] = wrap_signed64(value[c] + span.step[c], span.formats.bits[c]);
-}
-
 }  // namespace watkins

@@ -47,8 +47,16 @@ Image WatkinsTop::render(const Frame& frame, const FragmentObserver& observe) {
 Image WatkinsTop::render(const Frame& frame, const PipelineObserver& observe) {
   stats_ = PipelineStats{};
   Image img(frame.width, frame.height);
+  for (std::size_t i = 0; i < img.rgb.size(); i += 3)
+    std::copy(frame.background.begin(), frame.background.end(), img.rgb.begin() + static_cast<std::ptrdiff_t>(i));
   ScanlineBuffer line(frame.width, frame.background);
   const ChannelFormats formats = config_.channels(frame.shading);
+  // The shade or the normal reading, as the frame's pipeline uses; both for an observer (the
+  // benches compare the interpolator's ports, which carry both).
+  using Readings = SegmentInterpolator::Readings;
+  const PixelPath path(formats, observe.fragment                      ? Readings::Both
+                                : frame.shading == ShadingMode::Phong ? Readings::Normal
+                                                                      : Readings::Shade);
   walk_scan_lines(frame.edges, frame.height, max_active_edges_, formats, [&](const ScanLine& sl) {
     const int y = sl.y;
     stats_.edges += sl.entered;
@@ -65,20 +73,21 @@ Image WatkinsTop::render(const Frame& frame, const PipelineObserver& observe) {
       const SpanSetup span = SegmentInterpolator::setup(s, frame.width, formats);
       ChannelVector v = span.value;
       for (int x = span.x_start; x < span.x_end; ++x) {
-        Fragment f = SegmentInterpolator::fragment(span, x, v);
+        Fragment f = path.fragment(span, x, v);
         if (frame.shading == ShadingMode::Phong) phong_shade(frame, f);
         const bool won = line.write(f);
         ++stats_.fragments;
         stats_.visible += won;
         if (observe.fragment) observe.fragment(y, f, won);
-        SegmentInterpolator::step(span, v);
+        path.step(span, v);
       }
     }
     if (observe.fragments_end) observe.fragments_end(y);
-    for (int x = 0; x < frame.width; ++x) {
+    // The image starts as background, uncovered: only the line's covered pixels are copied.
+    for (const int x : line.written()) {
       const auto p = line.pixel(x);
       std::copy(p.begin(), p.end(), img.at(x, y));
-      img.covered[std::size_t(y) * frame.width + x] = line.covered(x);
+      img.covered[std::size_t(y) * frame.width + x] = 1;
       img.owner[std::size_t(y) * frame.width + x] = line.owner(x);
     }
   });
