@@ -46,9 +46,7 @@ Image WatkinsTop::render(const Frame& frame, const FragmentObserver& observe) {
 
 Image WatkinsTop::render(const Frame& frame, const PipelineObserver& observe) {
   stats_ = PipelineStats{};
-  Image img(frame.width, frame.height);
-  for (std::size_t i = 0; i < img.rgb.size(); i += 3)
-    std::copy(frame.background.begin(), frame.background.end(), img.rgb.begin() + static_cast<std::ptrdiff_t>(i));
+  Image img(frame.width, frame.height, frame.background);
   ScanlineBuffer line(frame.width, frame.background);
   const ChannelFormats formats = config_.channels(frame.shading);
   // The shade or the normal reading, as the frame's pipeline uses; both for an observer (the
@@ -86,7 +84,8 @@ Image WatkinsTop::render(const Frame& frame, const PipelineObserver& observe) {
     // The image starts as background, uncovered: only the line's covered pixels are copied.
     for (const int x : line.written()) {
       const auto p = line.pixel(x);
-      std::copy(p.begin(), p.end(), img.at(x, y));
+      std::uint8_t* out = img.at(x, y);
+      out[0] = p[0], out[1] = p[1], out[2] = p[2];  // byte stores: no library call per pixel
       img.covered[std::size_t(y) * frame.width + x] = 1;
       img.owner[std::size_t(y) * frame.width + x] = line.owner(x);
     }
