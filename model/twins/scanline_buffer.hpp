@@ -55,8 +55,11 @@ class ScanlineBuffer {
     return x;
   }
   int owner(int x) const { return written_[x] ? poly_[x] : -1; }
-  // The covered pixels since the last clear, in the order they were first written.
+  // The covered pixels since the last clear, in the order they were first written, and the
+  // shade and polygon of one of them (no background test: the read-out of a covered pixel).
   const std::vector<int>& written() const { return written_x_; }
+  const std::array<std::uint8_t, 3>& written_rgb(int x) const { return rgb_[static_cast<std::size_t>(x)]; }
+  int written_poly(int x) const { return poly_[static_cast<std::size_t>(x)]; }
   int width() const { return static_cast<int>(depth_.size()); }
 
  private:

@@ -28,21 +28,24 @@ i128 round_in(i128 v, int s) { return round_shift(v, s); }
 i64 wrap_in(i64 v, int bits) { return wrap_signed64(v, bits); }
 i64 wrap_in(i128 v, int bits) { return wrap_signed(v, bits); }
 
+// α0 in 2^-AlphaBits units; α0 <= 1 up to the reciprocal's error, so clamp at one.
 template <class W>
-void setup_values(const Segment& s, const ChannelFormats& formats, const SpanReciprocal& r, i64 offset,
-                  SpanSetup& span) {
-  const int fx = formats.x_frac();
-  // α0 in 2^-AlphaBits units; α0 <= 1 up to the reciprocal's error, so clamp at one.
-  const i64 alpha0 = static_cast<i64>(std::min<W>(
-      round_in(static_cast<W>(offset) * r.recip, r.p + fmt::RecipBits - fmt::AlphaBits), W{1} << fmt::AlphaBits));
-  for (int c = fmt::ChanZ; c < fmt::NumChannels; ++c) {
-    const W delta = static_cast<W>(s.f[c]) - s.e[c];
-    // ΔS per pixel = Δ·2^Fx/dx = Δ·recip·2^-(p+R-Fx). Saturation only matters when dx < 1 pixel,
-    // where the span holds at most one pixel and the step is never used.
-    const W hi = (W{1} << (formats.bits[c] - 1)) - 1;
-    span.step[c] = static_cast<i64>(std::clamp<W>(round_in(delta * r.recip, r.p + fmt::RecipBits - fx), -hi - 1, hi));
-    span.value[c] = wrap_in(s.e[c] + round_in(delta * alpha0, fmt::AlphaBits), formats.bits[c]);
-  }
+i64 alpha0_in(const SpanReciprocal& r, i64 offset) {
+  return static_cast<i64>(std::min<W>(round_in(static_cast<W>(offset) * r.recip, r.p + fmt::RecipBits - fmt::AlphaBits),
+                                      W{1} << fmt::AlphaBits));
+}
+
+// Slot c's per-pixel step and its value at the first pixel.
+template <class W>
+void setup_slot(const Segment& s, int c, const ChannelFormats& formats, const SpanReciprocal& r, i64 alpha0,
+                SpanSetup& span) {
+  const W delta = static_cast<W>(s.f[c]) - s.e[c];
+  // ΔS per pixel = Δ·2^Fx/dx = Δ·recip·2^-(p+R-Fx). Saturation only matters when dx < 1 pixel,
+  // where the span holds at most one pixel and the step is never used.
+  const W hi = (W{1} << (formats.bits[c] - 1)) - 1;
+  span.step[c] = static_cast<i64>(
+      std::clamp<W>(round_in(delta * r.recip, r.p + fmt::RecipBits - formats.x_frac()), -hi - 1, hi));
+  span.value[c] = wrap_in(s.e[c] + round_in(delta * alpha0, fmt::AlphaBits), formats.bits[c]);
 }
 
 }  // namespace
@@ -59,17 +62,19 @@ SpanSetup SegmentInterpolator::setup(const Segment& s, int width, const ChannelF
   const i64 dx = xf - xe;  // > 0: a pixel centre lies in [X_E, X_F)
   const SpanReciprocal r = SpanReciprocal::of(dx);
   const i64 offset = static_cast<i64>(span.x_start) * (i64{1} << fx) + (i64{1} << (fx - 1)) - xe;  // >= 0
-  // 64 bits hold every product and rounding constant when each slot's word (and X's integer
-  // part, which bounds the step's shift) leaves RecipBits + 3 bits of headroom, and the offset
-  // (X's word + 1) times the reciprocal (RecipBits + 1) plus its rounding fits too.
-  int widest = formats.bits[fmt::ChanX] - fx;
-  for (int c = fmt::ChanZ; c < fmt::NumChannels; ++c) widest = std::max(widest, formats.bits[c]);
-  const bool narrow = widest + std::max(fmt::RecipBits, fmt::AlphaBits) + 3 <= 63 &&
-                      formats.bits[fmt::ChanX] + 1 + fmt::RecipBits + 2 <= 63;
-  if (narrow)
-    setup_values<i64>(s, formats, r, offset, span);
-  else
-    setup_values<i128>(s, formats, r, offset, span);
+  // 64 bits hold a product and its rounding constant when its operands leave the headroom: the
+  // offset (X's word + 1) times the reciprocal (RecipBits + 1), plus half; a slot's delta (its word
+  // + 1, or X's integer part, which bounds the step's shift) times the reciprocal or α0, plus half.
+  // Otherwise 128 (the widest words). Each slot decides for itself.
+  constexpr int Headroom = std::max(fmt::RecipBits, fmt::AlphaBits) + 3;
+  const i64 alpha0 = formats.bits[fmt::ChanX] + 1 + fmt::RecipBits + 2 <= 63 ? alpha0_in<i64>(r, offset)
+                                                                            : alpha0_in<i128>(r, offset);
+  for (int c = fmt::ChanZ; c < fmt::NumChannels; ++c) {
+    if (std::max(formats.bits[c], formats.bits[fmt::ChanX] - fx) + Headroom <= 63)
+      setup_slot<i64>(s, c, formats, r, alpha0, span);
+    else
+      setup_slot<i128>(s, c, formats, r, alpha0, span);
+  }
   return span;
 }
 

@@ -88,9 +88,11 @@ class PixelPath {
       sign_[c] = i64{1} << (f.bits[c] - 1);
     }
     z_shift_ = f.frac[fmt::ChanZ];
+    z_half_ = half(z_shift_);
     depth_max_ = (i64{1} << f.depth_bits) - 1;
     for (int c = 0; c < 3; ++c) {
       shade_shift_[c] = f.frac[fmt::ChanR + c];
+      shade_half_[c] = half(shade_shift_[c]);
       normal_shift_[c] = f.frac[fmt::ChanNx + c] - fmt::FracBits;
     }
   }
@@ -100,10 +102,11 @@ class PixelPath {
     f.x = x;
     f.poly = span.poly;
     f.material = span.material;
-    f.depth = static_cast<std::uint32_t>(round_clamp(value[fmt::ChanZ], z_shift_, depth_max_));
+    f.depth = static_cast<std::uint32_t>(round_clamp(value[fmt::ChanZ], z_shift_, z_half_, depth_max_));
     if (readings_ != Readings::Normal)
       for (int c = 0; c < fmt::ShadeChannels; ++c)
-        f.rgb[c] = static_cast<std::uint8_t>(round_clamp(value[fmt::ChanR + c], shade_shift_[c], fmt::ShadeMax));
+        f.rgb[c] = static_cast<std::uint8_t>(
+            round_clamp(value[fmt::ChanR + c], shade_shift_[c], shade_half_[c], fmt::ShadeMax));
     if (readings_ != Readings::Shade)
       for (int c = 0; c < 3; ++c) f.normal[c] = normal(value[fmt::ChanNx + c], normal_shift_[c]);
     return f;
@@ -117,10 +120,12 @@ class PixelPath {
   }
 
  private:
-  // clamp(round_shift64(v, s), 0, hi): a negative sum rounds to a negative value, which clamps
-  // to 0, so only a non-negative sum is shifted.
-  static i64 round_clamp(i64 v, int s, i64 hi) {
-    const i64 t = s == 0 ? v : v + (i64{1} << (s - 1));
+  // Half an ulp of a value with s fraction bits (none for s = 0): round_shift64's constant.
+  static i64 half(int s) { return s == 0 ? 0 : i64{1} << (s - 1); }
+  // clamp(round_shift64(v, s), 0, hi), with h = half(s): a negative sum rounds to a negative
+  // value, which clamps to 0, so only a non-negative sum is shifted.
+  static i64 round_clamp(i64 v, int s, i64 h, i64 hi) {
+    const i64 t = v + h;
     if (t < 0) return 0;
     const i64 r = t >> s;
     return r > hi ? hi : r;
@@ -139,8 +144,9 @@ class PixelPath {
   Readings readings_;
   std::array<i64, fmt::NumChannels> mask_{}, sign_{};
   int z_shift_ = 0;
-  i64 depth_max_ = 0;
+  i64 z_half_ = 0, depth_max_ = 0;
   int shade_shift_[3] = {0, 0, 0}, normal_shift_[3] = {0, 0, 0};
+  i64 shade_half_[3] = {0, 0, 0};
 };
 
 inline Fragment SegmentInterpolator::fragment(const SpanSetup& span, int x, const ChannelVector& value) {

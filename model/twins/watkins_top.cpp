@@ -82,12 +82,13 @@ Image WatkinsTop::render(const Frame& frame, const PipelineObserver& observe) {
     }
     if (observe.fragments_end) observe.fragments_end(y);
     // The image starts as background, uncovered: only the line's covered pixels are copied.
+    const std::size_t row = std::size_t(y) * frame.width;
     for (const int x : line.written()) {
-      const auto p = line.pixel(x);
-      std::uint8_t* out = img.at(x, y);
+      const auto& p = line.written_rgb(x);
+      std::uint8_t* out = &img.rgb[(row + x) * 3];
       out[0] = p[0], out[1] = p[1], out[2] = p[2];  // byte stores: no library call per pixel
-      img.covered[std::size_t(y) * frame.width + x] = 1;
-      img.owner[std::size_t(y) * frame.width + x] = line.owner(x);
+      img.covered[row + x] = 1;
+      img.owner[row + x] = line.written_poly(x);
     }
   });
   return img;
