@@ -26,13 +26,15 @@ class ScanlineBuffer {
     for (const int x : written_x_) written_[static_cast<std::size_t>(x)] = 0;
     written_x_.clear();
   }
-  // Depth test and write. Returns true when the fragment won the pixel. Inline: once per
-  // fragment.
-  bool write(const Fragment& f) {
+  // The depth test alone: whether the fragment (its x and depth) would win its pixel.
+  bool wins(const Fragment& f) const {
     const auto x = static_cast<std::size_t>(f.x);
-    if (written_[x]) {
-      if (!(f.depth < depth_[x])) return false;
-    } else {
+    return !written_[x] || f.depth < depth_[x];
+  }
+  // Writes a fragment that wins its pixel (wins(f) is true).
+  void store(const Fragment& f) {
+    const auto x = static_cast<std::size_t>(f.x);
+    if (!written_[x]) {
       written_[x] = 1;
       written_x_.push_back(f.x);
     }
@@ -43,6 +45,11 @@ class ScanlineBuffer {
     rgb_[x][1] = f.rgb[1];
     rgb_[x][2] = f.rgb[2];
     poly_[x] = f.poly;
+  }
+  // Depth test and write. Returns true when the fragment won the pixel.
+  bool write(const Fragment& f) {
+    if (!wins(f)) return false;
+    store(f);
     return true;
   }
   // The finished line's pixel at x (background where nothing was written).

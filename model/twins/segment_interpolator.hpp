@@ -97,18 +97,28 @@ class PixelPath {
     }
   }
 
-  Fragment fragment(const SpanSetup& span, int x, const ChannelVector& value) const {
+  // The fragment's position, ids and depth: what the depth test needs.
+  Fragment head(const SpanSetup& span, int x, const ChannelVector& value) const {
     Fragment f;
     f.x = x;
     f.poly = span.poly;
     f.material = span.material;
     f.depth = static_cast<std::uint32_t>(round_clamp(value[fmt::ChanZ], z_shift_, z_half_, depth_max_));
+    return f;
+  }
+  // The attribute readings, for a fragment that needs them (one that won its pixel, or one a
+  // bench observes).
+  void fill(Fragment& f, const ChannelVector& value) const {
     if (readings_ != Readings::Normal)
       for (int c = 0; c < fmt::ShadeChannels; ++c)
         f.rgb[c] = static_cast<std::uint8_t>(
             round_clamp(value[fmt::ChanR + c], shade_shift_[c], shade_half_[c], fmt::ShadeMax));
     if (readings_ != Readings::Shade)
       for (int c = 0; c < 3; ++c) f.normal[c] = normal(value[fmt::ChanNx + c], normal_shift_[c]);
+  }
+  Fragment fragment(const SpanSetup& span, int x, const ChannelVector& value) const {
+    Fragment f = head(span, x, value);
+    fill(f, value);
     return f;
   }
 

@@ -52,7 +52,8 @@ Image WatkinsTop::render(const Frame& frame, const PipelineObserver& observe) {
   // The shade or the normal reading, as the frame's pipeline uses; both for an observer (the
   // benches compare the interpolator's ports, which carry both).
   using Readings = SegmentInterpolator::Readings;
-  const PixelPath path(formats, observe.fragment                      ? Readings::Both
+  const bool observing = static_cast<bool>(observe.fragment);
+  const PixelPath path(formats, observing                             ? Readings::Both
                                 : frame.shading == ShadingMode::Phong ? Readings::Normal
                                                                       : Readings::Shade);
   walk_scan_lines(frame.edges, frame.height, max_active_edges_, formats, [&](const ScanLine& sl) {
@@ -71,12 +72,18 @@ Image WatkinsTop::render(const Frame& frame, const PipelineObserver& observe) {
       const SpanSetup span = SegmentInterpolator::setup(s, frame.width, formats);
       ChannelVector v = span.value;
       for (int x = span.x_start; x < span.x_end; ++x) {
-        Fragment f = path.fragment(span, x, v);
-        if (frame.shading == ShadingMode::Phong) phong_shade(frame, f);
-        const bool won = line.write(f);
+        // The depth test first: a hidden fragment's readings (and Phong shade) are computed only
+        // when a bench observes it. The RTL computes them all; the values kept are the same.
+        Fragment f = path.head(span, x, v);
+        const bool won = line.wins(f);
+        if (won || observing) {
+          path.fill(f, v);
+          if (frame.shading == ShadingMode::Phong) phong_shade(frame, f);
+          if (won) line.store(f);
+          if (observing) observe.fragment(y, f, won);
+        }
         ++stats_.fragments;
         stats_.visible += won;
-        if (observe.fragment) observe.fragment(y, f, won);
         path.step(span, v);
       }
     }
