@@ -62,15 +62,18 @@ SpanSetup SegmentInterpolator::setup(const Segment& s, int width, const ChannelF
   const i64 dx = xf - xe;  // > 0: a pixel centre lies in [X_E, X_F)
   const SpanReciprocal r = SpanReciprocal::of(dx);
   const i64 offset = static_cast<i64>(span.x_start) * (i64{1} << fx) + (i64{1} << (fx - 1)) - xe;  // >= 0
-  // 64 bits hold a product and its rounding constant when its operands leave the headroom: the
-  // offset (X's word + 1) times the reciprocal (RecipBits + 1), plus half; a slot's delta (its word
-  // + 1, or X's integer part, which bounds the step's shift) times the reciprocal or α0, plus half.
-  // Otherwise 128 (the widest words). Each slot decides for itself.
-  constexpr int Headroom = std::max(fmt::RecipBits, fmt::AlphaBits) + 3;
-  const i64 alpha0 = formats.bits[fmt::ChanX] + 1 + fmt::RecipBits + 2 <= 63 ? alpha0_in<i64>(r, offset)
-                                                                            : alpha0_in<i128>(r, offset);
+  // 64 bits hold a product and its rounding constant when the operands are small enough, which
+  // they usually are whatever the words: the offset is under a pixel except where the span is
+  // clipped, a delta is what the slot changes across the span. Checked on the values, per product;
+  // otherwise 128 bits. Same formulas and rounding either way, so the same values.
+  constexpr int Small = 62 - std::max(fmt::RecipBits, fmt::AlphaBits) - 1;  // operand bits
+  const i64 alpha0 = offset < (i64{1} << Small) ? alpha0_in<i64>(r, offset) : alpha0_in<i128>(r, offset);
+  const bool small_shift = r.p + fmt::RecipBits - fx <= 61;  // the step's rounding constant
   for (int c = fmt::ChanZ; c < fmt::NumChannels; ++c) {
-    if (std::max(formats.bits[c], formats.bits[fmt::ChanX] - fx) + Headroom <= 63)
+    const i64 e = s.e[c], f = s.f[c];
+    const bool small = small_shift && e > -(i64{1} << Small) && e < (i64{1} << Small) &&
+                       f > -(i64{1} << Small) && f < (i64{1} << Small);  // |F - E| < 2^(Small+1)
+    if (small)
       setup_slot<i64>(s, c, formats, r, alpha0, span);
     else
       setup_slot<i128>(s, c, formats, r, alpha0, span);
