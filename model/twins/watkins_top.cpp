@@ -47,7 +47,7 @@ Image WatkinsTop::render(const Frame& frame, const FragmentObserver& observe) {
 Image WatkinsTop::render(const Frame& frame, const PipelineObserver& observe) {
   stats_ = PipelineStats{};
   Image img(frame.width, frame.height);
-  ScanlineBuffer line(frame.width, frame.background);
+  ScanlineBuffer line(frame.width, frame.background, frame.depth_tie);
   const ChannelFormats formats = config_.channels(frame.shading);
   walk_scan_lines(frame.edges, frame.height, max_active_edges_, formats, [&](const ScanLine& sl) {
     const int y = sl.y;
