@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_run.hpp"
 #include "prepare.hpp"
 #include "scene_builder.hpp"
 #include "watkins_top.hpp"
@@ -156,6 +157,50 @@ TEST(DepthTie, NearerStillWins) {
     const Image img = WatkinsTop().render(prepare(s));
     EXPECT_EQ(pixel(img, 20, 12), near_second.rgb);
     EXPECT_EQ(pixel(img, 20, 20), far_first.rgb);
+  }
+}
+
+// Submission order from a scene file: an OBJ file's faces in file order, a zero-area face skipped
+// without disturbing the order of the others. A small square on a big one, both in the plane
+// Z = 4 (equal depth everywhere); the faces share one material and normal, so the visible polygon
+// (Image::owner, the id in submission order) tells them apart.
+class ObjSubmissionOrder : public ::testing::Test, protected test::ScratchDir {
+ protected:
+  Image render(bool big_first, DepthTie tie, BuiltScene* built = nullptr) {
+    // `flat`: a triangle in the plane X = 0, through the eye: seen edge-on, zero area on screen.
+    const std::string big = "f 1 2 3 4\n", small = "f 5 6 7 8\n", flat = "f 9 10 11\n";
+    write("planes.obj", "v -1 -1 -4\nv 1 -1 -4\nv 1 1 -4\nv -1 1 -4\n"
+                        "v -0.4 -0.3 -4\nv 0.2 -0.3 -4\nv 0.2 0.3 -4\nv -0.4 0.3 -4\n"
+                        "v 0 -1 -4\nv 0 1 -4\nv 0 0 -6\n" +
+                        (big_first ? big + flat + small : small + flat + big));
+    const std::string scene = write("planes.json", std::string(R"({"screen": {"width": 64, "height": 64},
+      "camera": {"type": "gouraud", "focal": 3}, "light": {"type": "eye"},
+      "shading": {"cull_backfaces": false, "depth_tie": ")") + (tie == DepthTie::Submission ? "submission" : "arrival") +
+      R"("}, "objects": [{"type": "mesh", "file": "planes.obj", "normals": "average"}]})");
+    const BuiltScene s = load_scene(scene);
+    if (built) *built = s;
+    return WatkinsTop().render(prepare(s));
+  }
+};
+
+TEST_F(ObjSubmissionOrder, FileOrderWithAZeroAreaFaceBetween) {
+  BuiltScene s;
+  const Image sub = render(true, DepthTie::Submission, &s);
+  ASSERT_EQ(s.polygons.size(), 2u);  // the zero-area face is skipped and counted
+  EXPECT_EQ(s.degenerate, 1);
+  EXPECT_EQ(s.depth_tie, DepthTie::Submission);
+  const auto owner = [](const Image& img, int x, int y) { return img.owner[std::size_t(y) * img.width + x]; };
+  // Inside the small square (screen x 22.4..36.8, y 24.8..39.2) and on the big one only.
+  EXPECT_EQ(owner(sub, 30, 32), 0);  // the big square, submitted first, keeps the tie
+  EXPECT_EQ(owner(sub, 50, 32), 0);
+  const Image arr = render(true, DepthTie::Arrival);
+  EXPECT_EQ(owner(arr, 30, 32), 1);  // the small square closes first on its lines
+  EXPECT_EQ(owner(arr, 50, 32), 0);
+  // Small square first in the file: id 0, and it wins under both rules.
+  for (DepthTie tie : {DepthTie::Submission, DepthTie::Arrival}) {
+    const Image img = render(false, tie);
+    EXPECT_EQ(owner(img, 30, 32), 0);
+    EXPECT_EQ(owner(img, 50, 32), 1);
   }
 }
 
