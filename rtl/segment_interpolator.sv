@@ -38,7 +38,7 @@ module segment_interpolator #(
   input  logic [watkins_pkg::LineBits-1:0]                                 width_i,  // screen width, stable per frame
   input  logic [VB-1:0]                                                    seg_e_i, // left end E
   input  logic [VB-1:0]                                                    seg_f_i, // right end F
-  input  logic [PolyIdBits-1:0]                                            seg_poly_i,
+  input  logic [PolyIdBits-1:0]                                            seg_poly_i, // polygon id
   input  logic [MaterialIdBits-1:0]                                        seg_material_i,
   input  logic                                                             seg_eol_i, // end-of-line marker, no segment
   input  logic                                                             seg_valid_i,
@@ -47,7 +47,7 @@ module segment_interpolator #(
   output logic [DepthBits-1:0]                                             frag_depth_o,
   output watkins_pkg::rgb_t                                                frag_rgb_o,  // Gouraud shade
   output logic [3*watkins_pkg::NormalInBits-1:0]                           frag_normal_o, // {Nz,Ny,Nx}
-  output logic [PolyIdBits-1:0]                                            frag_poly_o,
+  output logic [PolyIdBits-1:0]                                            frag_poly_o, // its segment's
   output logic [MaterialIdBits-1:0]                                        frag_material_o,
   output logic                                                             frag_eol_o,  // end-of-line marker, no fragment
   output logic                                                             frag_valid_o,

@@ -10,8 +10,9 @@
 // latency, not throughput: still one fragment per clock, shaded before the depth test.
 // A frame starts with the first beat of its edge stream once the previous frame's last pixel
 // has left and its stream has been read up to its EOF beat; width, height and background are
-// sampled then (and sparse_i, tie_submission_i). Steady state: one fragment per clock; a line costs max(width, fragments +
-// setup) cycles, the active-edge list working on line y+1 while line y is drawn.
+// sampled then (and sparse_i, tie_submission_i). Steady state: one fragment per clock; a line
+// costs max(width, fragments + setup) cycles, the active-edge list working on line y+1 while
+// line y is drawn.
 // Sparse mode (sparse_i = 1 for the frame): the pixel stream carries only the covered pixels, in
 // raster order, each with pixel_x_o/pixel_y_o; a line then costs max(1, covered pixels,
 // fragments + setup) cycles. pixel_last_o marks the frame's last beat: its last covered pixel when
@@ -54,7 +55,7 @@ module watkins_top #(
   input  logic [watkins_pkg::LineBits-1:0]   height_i,        // 1..4096
   input  watkins_pkg::rgb_t                  background_i,    // shade of pixels no polygon covers
   input  logic                               sparse_i,        // frame configuration: covered pixels only
-  input  logic                               tie_submission_i, // frame configuration: equal depth keeps the smaller polygon id
+  input  logic                               tie_submission_i, // frame configuration: a depth tie goes to the smaller polygon id
   input  logic [EdgeBits-1:0]                edge_i,          // edge records, sorted by y0 (ties in stream order)
   input  logic                               edge_eof_i,      // with valid: this beat ends the frame's stream, carries no edge
   input  logic                               edge_valid_i,
