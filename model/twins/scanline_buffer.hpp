@@ -1,7 +1,8 @@
 // Twin of rtl/scanline_buffer.sv: the scan-line depth buffer that resolves visibility per pixel
 // (Watkins' "hidden-parts computation" done per pixel, so intersecting polygons are exact to the
-// pixel). A fragment is kept when the pixel is empty or its depth is strictly smaller: on a tie
-// the fragment that arrived first stays (segments arrive in the segment former's order).
+// pixel). A fragment is kept when the pixel is empty or its depth is strictly smaller; at equal
+// depth the rule of the frame decides (depth_tie.hpp): Arrival keeps the fragment that arrived
+// first (segments arrive in the segment former's order), Submission the smaller polygon id.
 //
 // Widths from the configuration (config.hpp), as the RTL takes them: MaxWidth = max_width entries;
 // the depth word DepthBits = depth_bits (ChannelFormats::depth_bits); rgb stays rgb_t.
@@ -11,14 +12,15 @@
 #include <cstdint>
 #include <vector>
 
+#include "depth_tie.hpp"
 #include "segment_interpolator.hpp"
 
 namespace watkins {
 
 class ScanlineBuffer {
  public:
-  ScanlineBuffer(int width, std::array<std::uint8_t, 3> background)
-      : background_(background), depth_(width), rgb_(width), poly_(width), written_(width, 0) {}
+  ScanlineBuffer(int width, std::array<std::uint8_t, 3> background, DepthTie tie = DepthTie::Arrival)
+      : background_(background), tie_(tie), depth_(width), rgb_(width), poly_(width), written_(width, 0) {}
 
   // Empties the line: only the pixels written since the last clear are touched, so a line costs
   // its fragments, not its width.
@@ -26,10 +28,14 @@ class ScanlineBuffer {
     for (const int x : written_x_) written_[static_cast<std::size_t>(x)] = 0;
     written_x_.clear();
   }
-  // The depth test alone: whether the fragment (its x and depth) would win its pixel.
+  // The depth test alone: whether the fragment (its x, depth and, for the Submission rule, its
+  // polygon) would win its pixel.
   bool wins(const Fragment& f) const {
     const auto x = static_cast<std::size_t>(f.x);
-    return !written_[x] || f.depth < depth_[x];
+    if (!written_[x]) return true;
+    const bool nearer = f.depth < depth_[x];
+    const bool tie_won = tie_ == DepthTie::Submission && f.depth == depth_[x] && f.poly < poly_[x];
+    return nearer || tie_won;
   }
   // Writes a fragment that wins its pixel (wins(f) is true).
   void store(const Fragment& f) {
@@ -71,9 +77,10 @@ class ScanlineBuffer {
 
  private:
   std::array<std::uint8_t, 3> background_;
+  DepthTie tie_;
   std::vector<std::uint32_t> depth_;
   std::vector<std::array<std::uint8_t, 3>> rgb_;
-  std::vector<int> poly_;  // visible polygon per pixel, for reports (the RTL does not carry it out)
+  std::vector<int> poly_;  // visible polygon per pixel (the RTL keeps it beside the depth for the tie rule)
   std::vector<std::uint8_t> written_;
   std::vector<int> written_x_;
 };

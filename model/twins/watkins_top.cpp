@@ -47,7 +47,7 @@ Image WatkinsTop::render(const Frame& frame, const FragmentObserver& observe) {
 Image WatkinsTop::render(const Frame& frame, const PipelineObserver& observe) {
   stats_ = PipelineStats{};
   Image img(frame.width, frame.height, frame.background);
-  ScanlineBuffer line(frame.width, frame.background);
+  ScanlineBuffer line(frame.width, frame.background, frame.depth_tie);
   const ChannelFormats formats = config_.channels(frame.shading);
   // The shade or the normal reading, as the frame's pipeline uses; both for an observer (the
   // benches compare the interpolator's ports, which carry both).
