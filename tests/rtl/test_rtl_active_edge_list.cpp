@@ -3,7 +3,8 @@
 // active edges in (X, edge id) order (polygon id and every channel word) and the end-of-line
 // marker. Synthesized y-sorted edge streams (many edges starting on one line, equal X broken by
 // arrival index, edges crossing in X between lines, n = 1, edges on line 0 and on the last line,
-// empty lines, full-range wrapping channel words, records past the last line), streams of
+// empty lines, full-range wrapping channel words, records past the last line, late records behind
+// the line being filled, which are read and skipped), streams of
 // prepare()d random scenes and meshes, frames with no edges, frames back to back, exactly
 // MaxActiveEdges active and one more (sticky overflow_o), under random valid gaps, random output
 // back-pressure and start_i pulses while busy.
