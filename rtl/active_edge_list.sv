@@ -4,11 +4,20 @@
 // Two banks (ping-pong): while line y's sorted list streams out of one bank, every streamed edge
 // is also stepped by the edge_incrementer and, unless it retires, inserted into the other bank
 // for line y+1, as are the new edge records with y0 == y+1 from the y-sorted input stream. One
-// sorted insertion per clock (stepped edges first): compare (X, id) against every entry in
-// parallel and shift the tail. Edge ids count the records of the frame's stream from 0.
-// Per line: about (active + new edges + 3) cycles when nothing stalls. The output data is read
-// from the bank registers (valid/data from registers through a read mux); ready is
-// combinational. An insertion into a full bank drops the edge and sets the sticky overflow_o.
+// sorted insertion per clock (stepped edges first). Edge ids count the records of the frame's
+// stream from 0.
+// Storage: each entry's body (remaining, id, polygon, material, value, slope) is written once,
+// into a RAM of two halves (one per bank, 2^(log2 N + 1) words; one write port, one synchronous
+// read port: block RAM), at the filling bank's append address, and never moved. The order is a
+// list of N small keys (X, id) with each entry's RAM index, for the filling bank only: the
+// insertion compares the key against every entry in parallel and shifts keys and indices. At
+// the swap the indices are copied to the streaming bank's index list (the keys of a streaming
+// bank are never compared again), which shifts down by one as each edge leaves.
+// Per line: about (active + new edges + 3) cycles when nothing stalls. out_poly_o,
+// out_material_o, out_value_o (and the incrementer's inputs) are the RAM's read register, read
+// with the address of the next clock's entry; out_valid_o and out_eol_o come from registers
+// through a little logic; ready is combinational. An insertion into a full bank drops the edge
+// and sets the sticky overflow_o.
 // Widths from the configuration (model/twins/config.hpp): channel vectors of slot words XBits,
 // ZBits, AttrBits (watkins_pkg::slot_lo); polygon, material and edge ids of PolyIdBits,
 // MaterialIdBits and EdgeIdBits; the edge record laid out as watkins_pkg::edge_bits says.
@@ -43,7 +52,7 @@ module active_edge_list #(
   output logic                                                              overflow_o    // sticky: an edge was dropped
 );
   localparam int unsigned N  = MaxActiveEdges;
-  localparam int unsigned IB = (N > 1) ? $clog2(N) : 1;
+  localparam int unsigned IB = (N > 1) ? $clog2(N) : 1;  // an entry's index in its bank's RAM half
   localparam int unsigned CntB = $clog2(N + 1);
   localparam int unsigned LB = watkins_pkg::LineBits;
   localparam int unsigned XLo = watkins_pkg::slot_lo(watkins_pkg::ChanX, XBits, ZBits, AttrBits);
@@ -69,41 +78,42 @@ module active_edge_list #(
     logic [VB-1:0]             slope;
   } entry_t;
 
-  // (X, id) order; ids are unique, so the order is total.
-  function automatic logic xid_less(logic signed [XBits-1:0] xa, logic [EdgeIdBits-1:0] ida,
-                                    logic signed [XBits-1:0] xb, logic [EdgeIdBits-1:0] idb);
-    xid_less = (xa < xb) || (xa == xb && ida < idb);
-  endfunction
+  // The sort key: (X, id) order is the unsigned order of {X with its sign bit inverted, id}
+  // (ids are unique, so the order is total), one comparator per entry.
+  localparam int unsigned KB = XBits + EdgeIdBits;
+  localparam logic [XBits-1:0] XSign = XBits'(1) << (XBits - 1);
 
-  // Bank b, entry i at b * N + i (plain vectors: yosys 0.23 mishandles arrays of structs).
+  // Entry bodies: bank b's entry with index i at {b, i} (plain vectors: yosys 0.23 mishandles
+  // arrays of structs).
   localparam int unsigned TB = EdgeIdBits + PolyIdBits + MaterialIdBits;  // id, polygon, material
   localparam int unsigned EB = LB + TB + 2 * VB;
-  logic [EB-1:0]   bank_q [2 * N];
-  localparam int unsigned SlotBits = $clog2(2 * N);  // address of an entry in either bank
-  function automatic logic [SlotBits-1:0] slot(logic b, logic [IB-1:0] i);
-    slot = b ? SlotBits'(N) + SlotBits'(i) : SlotBits'(i);
-  endfunction
-  logic [CntB-1:0] cnt_q  [2];
-  logic            sel_q;        // bank streamed for line line_q - 1; the other fills for line_q
+  localparam int unsigned AB = IB + 1;
+  logic [EB-1:0]   body_mem [2 ** AB];
+  // The filling bank's order: entry i's key and its body's index (past the count: don't care).
+  logic [KB-1:0]   key_q [N];
+  logic [IB-1:0]   idx_q [N];
+  // The streaming bank's order from the entry at rd_q on: its body indices, IB bits each.
+  logic [N*IB-1:0] sidx_q, sidx_d;
+  logic [CntB-1:0] cnt_stream_q, cnt_fill_q;
+  logic            sel_q, sel_d; // bank (RAM half) streamed for line line_q - 1; the other fills
   logic            frame_q, drain_q;
   logic [LB-1:0]   line_q;       // line being filled, 0..height
-  logic [CntB-1:0] rd_q;
+  logic [CntB-1:0] rd_q, rd_d;
   logic            out_done_q, inc_done_q, eol_sent_q;
   logic [EdgeIdBits-1:0] id_q;
 
   // ------------------------------------------------------------ stream out line line_q - 1
   logic   streaming, have_edge, out_fire, inc_valid, inc_ready, inc_fire, advance;
-  entry_t cur;
+  entry_t cur_q;  // the RAM's read register: the entry at rd_q of the streaming bank
 
   assign streaming = frame_q && !drain_q && (line_q != '0);
-  assign have_edge = streaming && (rd_q < cnt_q[sel_q]);
-  assign cur       = bank_q[slot(sel_q, IB'(rd_q))];
+  assign have_edge = streaming && (rd_q < cnt_stream_q);
 
   assign out_valid_o = (have_edge && !out_done_q) || (streaming && !have_edge && !eol_sent_q);
   assign out_eol_o   = !have_edge;
-  assign out_poly_o  = cur.poly;
-  assign out_material_o = cur.material;
-  assign out_value_o = cur.value;
+  assign out_poly_o  = cur_q.poly;
+  assign out_material_o = cur_q.material;
+  assign out_value_o = cur_q.value;
   assign out_fire    = out_valid_o && out_ready_i;
 
   // Fork to the segment former and the incrementer: each side takes the edge once.
@@ -124,10 +134,10 @@ module active_edge_list #(
     .PayloadBits(TB)
   ) u_inc (
     .clk_i, .rst_ni,
-    .value_i    (cur.value),
-    .slope_i    (cur.slope),
-    .remaining_i(cur.remaining),
-    .payload_i  ({cur.id, cur.poly, cur.material}),
+    .value_i    (cur_q.value),
+    .slope_i    (cur_q.slope),
+    .remaining_i(cur_q.remaining),
+    .payload_i  ({cur_q.id, cur_q.poly, cur_q.material}),
     .valid_i    (inc_valid),
     .ready_o    (inc_ready),
     .value_o    (st_value),
@@ -140,12 +150,10 @@ module active_edge_list #(
   );
 
   // ------------------------------------------------------------ insertion into the other bank
-  logic   nsel, ins_step, take_new, drop_late, ins_valid, src_done, swap;
-  entry_t ins, fresh;
-  /* verilator lint_off UNUSEDSIGNAL */
-  entry_t nb;  // bank entry under comparison: only its X and id matter
-  /* verilator lint_on UNUSEDSIGNAL */
-  logic [N-1:0] lt;
+  logic   nsel, ins_step, take_new, drop_late, ins_valid, ins_write, src_done, swap, next_line;
+  entry_t ins;
+  logic [KB-1:0] ins_key;
+  logic [N-1:0]  lt;
   logic   head_edge;
 
   assign nsel      = !sel_q;
@@ -157,26 +165,24 @@ module active_edge_list #(
   assign drop_late = frame_q && !drain_q && head_edge && (rec.y0 < line_q);
   assign edge_ready_o = take_new || drop_late || (drain_q && edge_valid_i);
   assign ins_valid = ins_step || take_new;
+  assign ins_write = ins_valid && (cnt_fill_q != CntB'(N));
 
   always_comb begin
-    fresh.remaining = rec.n;
-    fresh.id        = id_q;
-    fresh.poly      = rec.poly;
-    fresh.material  = rec.material;
-    fresh.value     = rec.value;
-    fresh.slope     = rec.slope;
     if (ins_step) begin
       ins.remaining = st_remaining;
       {ins.id, ins.poly, ins.material} = st_payload;
       ins.value = st_value;
       ins.slope = st_slope;
     end else begin
-      ins = fresh;
+      ins.remaining = rec.n;
+      ins.id        = id_q;
+      ins.poly      = rec.poly;
+      ins.material  = rec.material;
+      ins.value     = rec.value;
+      ins.slope     = rec.slope;
     end
-    for (int i = 0; i < N; i++) begin
-      nb    = nsel ? bank_q[N + i] : bank_q[i];
-      lt[i] = (CntB'(i) < cnt_q[nsel]) && xid_less(nb.value[XLo +: XBits], nb.id, ins.value[XLo +: XBits], ins.id);
-    end
+    ins_key = {ins.value[XLo +: XBits] ^ XSign, ins.id};
+    for (int i = 0; i < N; i++) lt[i] = (CntB'(i) < cnt_fill_q) && (key_q[i] < ins_key);
   end
 
   // Line line_q is complete when line_q - 1 has streamed out (marker sent), its stepped edges
@@ -184,28 +190,64 @@ module active_edge_list #(
   assign src_done = (line_q == height_i)
                  || (edge_valid_i && (edge_eof_i || rec.y0 > line_q));
   assign swap = frame_q && !drain_q && ((line_q == '0) || eol_sent_q) && !st_valid && src_done;
+  assign next_line = swap && (line_q != height_i);  // the filling bank starts to stream
+
+  // The stream's next position and bank: the RAM is read with them, so the entry the stream
+  // presents next clock is in the read register then. (Reset and frame start need no case:
+  // nothing streams before the frame's first swap, which reads afresh.)
+  always_comb begin
+    sel_d  = sel_q;
+    rd_d   = rd_q;
+    sidx_d = sidx_q;
+    if (next_line) begin
+      sel_d = nsel;
+      rd_d  = '0;
+      for (int i = 0; i < N; i++) sidx_d[i * IB +: IB] = idx_q[i];
+    end else if (advance) begin
+      rd_d   = rd_q + 1'b1;
+      sidx_d = sidx_q >> IB;
+    end
+  end
+
+  // Read and write never meet at one word: a write goes to the filling half (!sel_q); a read
+  // goes to the streaming half sel_d, which is the filling half only on a swap, and a swap
+  // inserts nothing (a_no_insert_on_swap: it waits for the incrementer to be empty, !st_valid,
+  // and for the input to hold no record of line_q, which take_new needs). An entry written on
+  // the clock before the swap is in the RAM when the swap's read happens. So the read port needs
+  // neither read-first nor write-first behaviour, and no forwarding.
+  logic [AB-1:0] rd_addr, wr_addr;
+  assign rd_addr = {sel_d, sidx_d[IB-1:0]};
+  assign wr_addr = {nsel, IB'(cnt_fill_q)};
+
+  always_ff @(posedge clk_i) begin
+    if (ins_write) body_mem[wr_addr] <= ins;
+  end
+  always_ff @(posedge clk_i) begin
+    cur_q <= body_mem[rd_addr];
+  end
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni || (start_i && !frame_q)) begin
       // Reset and frame start clear the same per-frame state; only reset also clears the bank
       // select and the sticky overflow flag, and a frame start leaves frame_q set.
-      frame_q    <= rst_ni;
-      drain_q    <= 1'b0;
-      line_q     <= '0;
-      rd_q       <= '0;
-      cnt_q[0]   <= '0;
-      cnt_q[1]   <= '0;
-      out_done_q <= 1'b0;
-      inc_done_q <= 1'b0;
-      eol_sent_q <= 1'b0;
-      id_q       <= '0;
+      frame_q      <= rst_ni;
+      drain_q      <= 1'b0;
+      line_q       <= '0;
+      rd_q         <= '0;
+      cnt_stream_q <= '0;
+      cnt_fill_q   <= '0;
+      out_done_q   <= 1'b0;
+      inc_done_q   <= 1'b0;
+      eol_sent_q   <= 1'b0;
+      id_q         <= '0;
       if (!rst_ni) begin
         sel_q      <= 1'b0;
         overflow_o <= 1'b0;
       end
     end else begin
+      sel_q  <= sel_d;
+      rd_q   <= rd_d;
       if (advance) begin
-        rd_q       <= rd_q + 1'b1;
         out_done_q <= 1'b0;
         inc_done_q <= 1'b0;
       end else begin
@@ -215,18 +257,17 @@ module active_edge_list #(
       if (out_fire && !have_edge) eol_sent_q <= 1'b1;
       if (edge_valid_i && edge_ready_o && !edge_eof_i) id_q <= id_q + 1'b1;
       if (ins_valid) begin
-        if (cnt_q[nsel] == CntB'(N)) overflow_o <= 1'b1;
-        else cnt_q[nsel] <= cnt_q[nsel] + 1'b1;
+        if (!ins_write) overflow_o <= 1'b1;
+        else cnt_fill_q <= cnt_fill_q + 1'b1;
       end
       if (swap) begin
-        if (line_q == height_i) begin
+        if (!next_line) begin
           drain_q <= 1'b1;  // read the rest of the stream up to its EOF beat
         end else begin
-          sel_q      <= nsel;
-          cnt_q[sel_q] <= '0;
-          line_q     <= line_q + 1'b1;
-          rd_q       <= '0;
-          eol_sent_q <= 1'b0;
+          cnt_stream_q <= cnt_fill_q;
+          cnt_fill_q   <= '0;
+          line_q       <= line_q + 1'b1;
+          eol_sent_q   <= 1'b0;
         end
       end
       if (drain_q && edge_valid_i && edge_eof_i) begin
@@ -236,14 +277,23 @@ module active_edge_list #(
     end
   end
 
-  // Sorted insertion: entries before the new one stay, the one at its place takes it, the
-  // tail moves up by one (entries past the count hold don't-care values).
   always_ff @(posedge clk_i) begin
-    if (ins_valid && cnt_q[nsel] != CntB'(N)) begin
+    sidx_q <= sidx_d;
+  end
+
+  // Sorted insertion of the key and the body's index: entries before the new one stay, the one
+  // at its place takes it, the tail moves up by one.
+  always_ff @(posedge clk_i) begin
+    if (ins_write) begin
       for (int i = 0; i < N; i++) begin
         if (!lt[i]) begin
-          if (nsel) bank_q[N + i] <= (i == 0 || lt[(i + N - 1) % N]) ? ins : bank_q[N + (i + N - 1) % N];
-          else bank_q[i] <= (i == 0 || lt[(i + N - 1) % N]) ? ins : bank_q[(i + N - 1) % N];
+          if (i == 0 || lt[(i + N - 1) % N]) begin
+            key_q[i] <= ins_key;
+            idx_q[i] <= IB'(cnt_fill_q);
+          end else begin
+            key_q[i] <= key_q[(i + N - 1) % N];
+            idx_q[i] <= idx_q[(i + N - 1) % N];
+          end
         end
       end
     end
@@ -255,6 +305,7 @@ module active_edge_list #(
   `WATKINS_ASSERT_HOLD(a_out_hold, out_valid_o, out_ready_i, {out_poly_o, out_material_o,
     out_value_o, out_eol_o})
   `WATKINS_ASSERT(a_no_insert_on_swap, swap |-> !ins_valid)
+  `WATKINS_ASSERT(a_no_ram_collision, !(ins_write && rd_addr == wr_addr))
   `WATKINS_COVER(c_overflow, $rose(overflow_o))
   `WATKINS_COVER(c_new_and_stepped, ins_step && frame_q && head_edge && rec.y0 == line_q)
 endmodule

@@ -1,18 +1,21 @@
 // scanline_buffer: per-pixel visibility of one scan line (model/twins/scanline_buffer.cpp) and the
 // raster-order pixel stream. Two line buffers (ping-pong): fragments of line y are depth-tested
-// into one (kept when the pixel is empty or strictly nearer; first arrival wins ties) while the
+// into one (kept when the pixel is empty or strictly nearer; at equal depth tie_submission_i
+// decides: 0 keeps the first arrival, 1 the smaller polygon id -- GL's submission order) while the
 // other streams line y-1 out, pixel x = 0..width-1, clearing each pixel as it is read. The
 // end-of-line marker swaps the buffers once the reader has taken the previous line's last pixel.
-// Storage: depth and shade in two RAMs of 2 * MaxWidth words with synchronous reads (block RAM:
+// Storage: depth (with the winner's polygon id beside it, PolyIdBits + DepthBits per word) and
+// shade in two RAMs of 2 * MaxWidth words with synchronous reads (block RAM:
 // SB_RAM40_4K / DP16KD), each with one write port (the writer) and one read port (depth: the
 // writer's depth test; shade: the reader), and one written bit per pixel in flops (cleared as the
 // reader takes the pixel; unwritten words are never read as values). Write side: one fragment per
 // clock in two steps -- the clock it is accepted its depth word is read, the next it is tested
-// and written; the depth written the clock before is forwarded, so back-to-back fragments to the
-// same x see each other. frag_ready_o is combinational (low only for a marker waiting on the
-// reader); a marker swaps the buffers while its line's last fragment is still being written,
-// which lands before the reader's first read. Read side: pixel from the shade RAM's output
-// register (and registered coverage and background), latency 1, the same cycles as flops.
+// and written; the depth word (id included) written the clock before is forwarded, so
+// back-to-back fragments to the same x see each other. frag_ready_o is combinational (low only
+// for a marker waiting on the reader); a marker swaps the buffers while its line's last
+// fragment is still being written, which lands before the reader's first read. Read side: pixel
+// from the shade RAM's output register (and registered coverage and background), latency 1,
+// the same cycles as flops.
 // Sparse mode (sparse_i, stable per frame): the reader emits only the covered pixels of a line,
 // in raster order, one per clock: a find-next-written search over the read bank's written bits
 // at and above the current x picks the next one, found hierarchically (per 32-pixel word: which
@@ -26,7 +29,8 @@
 
 module scanline_buffer #(
   parameter int unsigned MaxWidth  = watkins_pkg::DefaultMaxWidth,  // line-buffer depth in pixels
-  parameter int unsigned DepthBits = watkins_pkg::DepthBits         // depth word (the configuration's)
+  parameter int unsigned DepthBits = watkins_pkg::DepthBits,        // depth word (the configuration's)
+  parameter int unsigned PolyIdBits = watkins_pkg::PolyIdBits       // polygon id (the configuration's)
 ) (
   input  logic                              clk_i,
   input  logic                              rst_ni,
@@ -34,8 +38,10 @@ module scanline_buffer #(
   input  logic [watkins_pkg::LineBits-1:0]  height_i,       // lines per frame, for pixel_last_o
   input  watkins_pkg::rgb_t                 background_i,   // shade of uncovered pixels
   input  logic                              sparse_i,       // covered pixels only, stable per frame
+  input  logic                              tie_submission_i, // equal depth: smaller id wins; stable per frame
   input  logic [watkins_pkg::LineBits-1:0]  frag_x_i,       // < width_i
   input  logic [DepthBits-1:0] frag_depth_i,   // smaller is nearer
+  input  logic [PolyIdBits-1:0]             frag_poly_i,    // polygon id: submission order
   input  watkins_pkg::rgb_t                 frag_rgb_i,
   input  logic                              frag_eol_i,     // end-of-line marker: the line is complete
   input  logic                              frag_valid_i,
@@ -54,7 +60,9 @@ module scanline_buffer #(
   // Bank b holds pixel x at address b * MaxWidth + x. Shades as plain vectors, not rgb_t: yosys
   // 0.23 mishandles arrays of structs.
   localparam int unsigned RB = watkins_pkg::RgbBits;
-  logic [DepthBits-1:0]      depth_mem [2 * MaxWidth];
+  // Depth word: {polygon id, depth} of the pixel's current winner.
+  localparam int unsigned DWB = PolyIdBits + DepthBits;
+  logic [DWB-1:0]            depth_mem [2 * MaxWidth];
   logic [RB-1:0]             rgb_mem   [2 * MaxWidth];
   logic [2 * MaxWidth - 1:0] written_q;  // flops: cleared by reset and by reading
 
@@ -137,31 +145,38 @@ module scanline_buffer #(
   assign frag_fire    = frag_valid_i && frag_ready_o;
 
   // Step 1 (the accepting clock): read the depth word. Step 2: test against it -- or against the
-  // depth written the clock before at the same address, which the RAM read did not see yet --
+  // word written the clock before at the same address, which the RAM read did not see yet --
   // and write. written_q already holds that previous write.
   logic                 t_valid_q, lw_valid_q;
   logic [AddrBits-1:0]  t_addr_q, lw_addr_q;
-  logic [DepthBits-1:0] t_depth_q, lw_depth_q, mem_depth_q, old_depth;
+  logic [DWB-1:0]       t_word_q, lw_word_q, mem_word_q, old_word;
+  logic [DepthBits-1:0] t_depth, old_depth;
+  logic [PolyIdBits-1:0] t_poly, old_poly;
   logic [RB-1:0]        t_rgb_q;
-  logic                 wins;
+  logic                 wins, tie_wins;
 
   always_ff @(posedge clk_i) begin
-    if (frag_fire && !frag_eol_i) mem_depth_q <= depth_mem[wa];
+    if (frag_fire && !frag_eol_i) mem_word_q <= depth_mem[wa];
     if (frag_fire && !frag_eol_i) begin
-      t_addr_q  <= wa;
-      t_depth_q <= frag_depth_i;
-      t_rgb_q   <= frag_rgb_i;
+      t_addr_q <= wa;
+      t_word_q <= {frag_poly_i, frag_depth_i};
+      t_rgb_q  <= frag_rgb_i;
     end
-    lw_addr_q  <= t_addr_q;
-    lw_depth_q <= t_depth_q;
+    lw_addr_q <= t_addr_q;
+    lw_word_q <= t_word_q;
   end
 
-  assign old_depth = (lw_valid_q && lw_addr_q == t_addr_q) ? lw_depth_q : mem_depth_q;
-  assign wins      = t_valid_q && (!written_q[t_addr_q] || (t_depth_q < old_depth));
+  assign old_word  = (lw_valid_q && lw_addr_q == t_addr_q) ? lw_word_q : mem_word_q;
+  assign {t_poly, t_depth}     = t_word_q;
+  assign {old_poly, old_depth} = old_word;
+  // A tie goes to a strictly smaller id only: equal ids (one polygon's own spans) keep the first
+  // arrival, as the model does.
+  assign tie_wins  = tie_submission_i && t_depth == old_depth && t_poly < old_poly;
+  assign wins      = t_valid_q && (!written_q[t_addr_q] || (t_depth < old_depth) || tie_wins);
 
   always_ff @(posedge clk_i) begin
     if (wins) begin
-      depth_mem[t_addr_q] <= t_depth_q;
+      depth_mem[t_addr_q] <= t_word_q;
       rgb_mem[t_addr_q]   <= t_rgb_q;
     end
   end
@@ -214,8 +229,8 @@ module scanline_buffer #(
   end
   assign pixel_rgb_o = pixel_covered_o ? rgb_rd_q : background_q;
 
-  `WATKINS_ASSERT_HOLD(a_in_hold, frag_valid_i, frag_ready_o, {frag_x_i, frag_depth_i, frag_rgb_i,
-    frag_eol_i})
+  `WATKINS_ASSERT_HOLD(a_in_hold, frag_valid_i, frag_ready_o, {frag_x_i, frag_depth_i, frag_poly_i,
+    frag_rgb_i, frag_eol_i})
   `WATKINS_ASSERT_HOLD(a_out_hold, pixel_valid_o, pixel_ready_i, {pixel_rgb_o, pixel_covered_o,
     pixel_last_o, pixel_x_o, pixel_y_o})
   `WATKINS_ASSERT(a_sparse_covered, rd_load && sparse_i && !(rd_last && rd_lastline) |-> found)
@@ -226,4 +241,6 @@ module scanline_buffer #(
     frag_fire && !frag_eol_i && $past(frag_fire && !frag_eol_i) && frag_x_i == $past(frag_x_i))
   `WATKINS_COVER(c_forwarded, t_valid_q && lw_valid_q && lw_addr_q == t_addr_q)
   `WATKINS_COVER(c_eol_waits, frag_valid_i && !frag_ready_o)
+  `WATKINS_COVER(c_tie_won, t_valid_q && written_q[t_addr_q] && tie_wins)
+  `WATKINS_COVER(c_tie_forwarded, t_valid_q && lw_valid_q && lw_addr_q == t_addr_q && tie_wins)
 endmodule

@@ -5,7 +5,10 @@
 // edge's (both edges belong to one polygon, so one material).
 // Latency 1: output registered; ready_o = ready_i || !valid_o (combinational).
 // The open table has MaxActiveEdges entries, so it cannot fill: a line carries at most that
-// many edges. The channel vector passes through untouched, so only its width matters here.
+// many edges, so an edge that opens a segment takes the next entry never used on this line (a
+// counter, no search for a free one), and the closing edge's entry index is the OR of the
+// matching entries' indices (one matches at most: no priority search). The channel vector passes through
+// untouched, so only its width matters here.
 `include "watkins_assert.svh"
 
 module segment_former #(
@@ -32,46 +35,51 @@ module segment_former #(
 );
   localparam int unsigned N  = MaxActiveEdges;
   localparam int unsigned IB = (N > 1) ? $clog2(N) : 1;
+  localparam int unsigned CntB = $clog2(N + 1);
   typedef logic [VectorBits-1:0] chans_t;
 
   logic [N-1:0]          open_q;       // entry holds an unpaired edge
   logic [PolyIdBits-1:0] open_poly_q [N];
   chans_t                            open_value_q [N];
+  logic [CntB-1:0]       used_q;       // entries taken on this line (0 .. N), cleared by the marker
 
   logic          fire, hit, has_free;
+  logic [N-1:0]  hit_v;                // one-hot: the open entry of the edge's polygon
   logic [IB-1:0] hit_idx, free_idx;
 
   assign edge_ready_o = seg_ready_i || !seg_valid_o;
   assign fire         = edge_valid_i && edge_ready_o;
 
-  // Polygon ids are unique among open entries, so at most one entry matches.
+  // Polygon ids are unique among open entries, so at most one entry matches, and the OR of the
+  // indices of the matching entries is its index (0 when none matches).
   always_comb begin
-    hit = 1'b0;
     hit_idx = '0;
-    has_free = 1'b0;
-    free_idx = '0;
-    for (int i = N - 1; i >= 0; i--) begin
-      if (open_q[i] && open_poly_q[i] == edge_poly_i) begin
-        hit = 1'b1;
-        hit_idx = IB'(i);
-      end
-      if (!open_q[i]) begin
-        has_free = 1'b1;
-        free_idx = IB'(i);
-      end
+    for (int i = 0; i < N; i++) begin
+      hit_v[i] = open_q[i] && open_poly_q[i] == edge_poly_i;
+      hit_idx  = hit_idx | (IB'(i) & {IB{hit_v[i]}});
     end
   end
+  assign hit      = |hit_v;
+  assign has_free = used_q != CntB'(N);
+  assign free_idx = IB'(used_q);
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       open_q      <= '0;
+      used_q      <= '0;
       seg_valid_o <= 1'b0;
     end else begin
       if (edge_ready_o) seg_valid_o <= fire && (edge_eol_i || hit);
       if (fire) begin
-        if (edge_eol_i) open_q <= '0;
-        else if (hit) open_q[hit_idx] <= 1'b0;
-        else if (has_free) open_q[free_idx] <= 1'b1;
+        if (edge_eol_i) begin
+          open_q <= '0;
+          used_q <= '0;
+        end else if (hit) begin
+          open_q <= open_q & ~hit_v;
+        end else if (has_free) begin
+          open_q[free_idx] <= 1'b1;
+          used_q <= used_q + 1'b1;
+        end
       end
     end
   end

@@ -8,7 +8,8 @@
 // pixel) leave no bubble and a span's setup hides behind the previous spans' pixels.
 // Latency segment -> first fragment: 32 cycles. All stage outputs registered; ready is
 // combinational through the setup stages (one stall signal), registered at the FIFO.
-// End-of-line markers pass through in order. Each fragment carries both readings of the three
+// End-of-line markers pass through in order. Each fragment carries its segment's polygon id
+// (the scanline_buffer's equal-depth rule) and material id, and both readings of the three
 // attribute channels: frag_rgb_o (Gouraud shade levels) and frag_normal_o (Phong normal, the
 // channel rescaled to FracBits fraction bits and saturated to NormalInBits); a top uses one
 // and synthesis drops the other.
@@ -28,6 +29,7 @@ module segment_interpolator #(
   parameter int unsigned AttrBits       = watkins_pkg::ChannelBits,
   parameter int unsigned AttrFracBits   = watkins_pkg::FracBits,
   parameter int unsigned DepthBits      = watkins_pkg::DepthBits,     // fragment depth
+  parameter int unsigned PolyIdBits     = watkins_pkg::PolyIdBits,
   parameter int unsigned MaterialIdBits = watkins_pkg::MaterialIdBits,
   localparam int unsigned VB = watkins_pkg::vector_bits(XBits, ZBits, AttrBits)
 ) (
@@ -36,6 +38,7 @@ module segment_interpolator #(
   input  logic [watkins_pkg::LineBits-1:0]                                 width_i,  // screen width, stable per frame
   input  logic [VB-1:0]                                                    seg_e_i, // left end E
   input  logic [VB-1:0]                                                    seg_f_i, // right end F
+  input  logic [PolyIdBits-1:0]                                            seg_poly_i, // polygon id
   input  logic [MaterialIdBits-1:0]                                        seg_material_i,
   input  logic                                                             seg_eol_i, // end-of-line marker, no segment
   input  logic                                                             seg_valid_i,
@@ -44,6 +47,7 @@ module segment_interpolator #(
   output logic [DepthBits-1:0]                                             frag_depth_o,
   output watkins_pkg::rgb_t                                                frag_rgb_o,  // Gouraud shade
   output logic [3*watkins_pkg::NormalInBits-1:0]                           frag_normal_o, // {Nz,Ny,Nx}
+  output logic [PolyIdBits-1:0]                                            frag_poly_o, // its segment's
   output logic [MaterialIdBits-1:0]                                        frag_material_o,
   output logic                                                             frag_eol_o,  // end-of-line marker, no fragment
   output logic                                                             frag_valid_o,
@@ -84,6 +88,7 @@ module segment_interpolator #(
   typedef struct packed {
     logic                    eol;
     logic                    empty;   // no pixel centre in [X_E, X_F) on screen
+    logic [PolyIdBits-1:0]   poly;
     logic [MIB-1:0]          material;
     logic [LB-1:0]           xs;      // first pixel
     logic [LB-1:0]           xe;      // one past the last pixel
@@ -128,6 +133,7 @@ module segment_interpolator #(
     xe_full = (fcf > $signed(PCB'(width_i))) ? $signed(PCB'(width_i)) : fcf;
     s0_d.eol   = seg_eol_i;
     s0_d.empty = (xe_full <= xs_full);
+    s0_d.poly     = seg_poly_i;
     s0_d.material = seg_material_i;
     s0_d.xs    = LB'(xs_full);
     s0_d.xe    = LB'(xe_full);
@@ -262,6 +268,7 @@ module segment_interpolator #(
   // ---------------------------------------------------------------- FIFO of ready spans
   typedef struct packed {
     logic                  eol;
+    logic [PolyIdBits-1:0] poly;
     logic [MIB-1:0]        material;
     logic [LB-1:0]         xs;
     logic [LB-1:0]         xe;
@@ -290,6 +297,7 @@ module segment_interpolator #(
 
   always_comb begin
     f_in.eol      = sc_span_q.eol;
+    f_in.poly     = sc_span_q.poly;
     f_in.material = sc_span_q.material;
     f_in.xs       = sc_span_q.xs;
     f_in.xe       = sc_span_q.xe;
@@ -318,11 +326,13 @@ module segment_interpolator #(
   // ---------------------------------------------------------------- stepper
   logic                  st_active_q;  // a span is being stepped from the registers below
   logic [LB-1:0]         st_x_q, st_xe_q;
+  logic [PolyIdBits-1:0] st_poly_q;
   logic [MIB-1:0]        st_material_q;
   logic [IVB-1:0]        st_value_q, st_step_q;
 
   logic                  out_free, from_head, emit_frag, emit_eol;
   logic [LB-1:0]         cur_x, cur_xe;
+  logic [PolyIdBits-1:0] cur_poly;
   logic [MIB-1:0]        cur_material;
   logic [IVB-1:0]        cur_value, cur_step, next_value;
 
@@ -334,6 +344,7 @@ module segment_interpolator #(
 
   assign cur_x     = st_active_q ? st_x_q     : f_out.xs;
   assign cur_xe    = st_active_q ? st_xe_q    : f_out.xe;
+  assign cur_poly  = st_active_q ? st_poly_q  : f_out.poly;
   assign cur_material = st_active_q ? st_material_q : f_out.material;
   assign cur_value = st_active_q ? st_value_q : f_out.value;
   assign cur_step  = st_active_q ? st_step_q  : f_out.step;
@@ -416,9 +427,11 @@ module segment_interpolator #(
       frag_rgb_o.g  <= rgb_d[8 +: 8];
       frag_rgb_o.b  <= rgb_d[16 +: 8];
       frag_normal_o <= normal_d;
+      frag_poly_o   <= cur_poly;
       frag_material_o <= cur_material;
       frag_eol_o    <= 1'b0;
       st_x_q        <= cur_x + 1'b1;
+      st_poly_q     <= cur_poly;
       st_material_q <= cur_material;
       st_xe_q       <= cur_xe;
       st_step_q     <= cur_step;
@@ -428,9 +441,10 @@ module segment_interpolator #(
     end
   end
 
-  `WATKINS_ASSERT_HOLD(a_in_hold, seg_valid_i, seg_ready_o, {seg_e_i, seg_f_i, seg_material_i, seg_eol_i})
+  `WATKINS_ASSERT_HOLD(a_in_hold, seg_valid_i, seg_ready_o, {seg_e_i, seg_f_i, seg_poly_i, seg_material_i,
+    seg_eol_i})
   `WATKINS_ASSERT_HOLD(a_out_hold, frag_valid_o, frag_ready_i, {frag_x_o, frag_depth_o, frag_rgb_o,
-    frag_normal_o, frag_material_o, frag_eol_o})
+    frag_normal_o, frag_poly_o, frag_material_o, frag_eol_o})
   `WATKINS_ASSERT(a_x_on_screen, frag_valid_o && !frag_eol_o |-> frag_x_o < width_i)
   `WATKINS_COVER(c_back_to_back_spans, emit_frag && from_head && frag_valid_o && !frag_eol_o)
   `WATKINS_COVER(c_empty_dropped, sc_valid_q && !sc_keep)

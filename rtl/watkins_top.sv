@@ -10,14 +10,19 @@
 // latency, not throughput: still one fragment per clock, shaded before the depth test.
 // A frame starts with the first beat of its edge stream once the previous frame's last pixel
 // has left and its stream has been read up to its EOF beat; width, height and background are
-// sampled then (and sparse_i). Steady state: one fragment per clock; a line costs max(width, fragments +
-// setup) cycles, the active-edge list working on line y+1 while line y is drawn.
+// sampled then (and sparse_i, tie_submission_i). Steady state: one fragment per clock; a line
+// costs max(width, fragments + setup) cycles, the active-edge list working on line y+1 while
+// line y is drawn.
 // Sparse mode (sparse_i = 1 for the frame): the pixel stream carries only the covered pixels, in
 // raster order, each with pixel_x_o/pixel_y_o; a line then costs max(1, covered pixels,
 // fragments + setup) cycles. pixel_last_o marks the frame's last beat: its last covered pixel when
 // the last line has one, otherwise a terminating beat with pixel_covered_o = 0 (background rgb)
 // at (width-1, height-1) -- so a frame covering no pixel is exactly that one beat. The consumer
 // keeps the background elsewhere (e.g. a framebuffer cleared once). sparse_i = 0: every pixel.
+// Equal depth (tie_submission_i for the frame): 0 keeps the fragment that reached the depth test
+// first (segments in closing order); 1 keeps the smaller polygon id, i.e. the first polygon
+// submitted when ids follow submission order, as GL's GL_LESS depth test does. Each fragment
+// carries its polygon id from the segment former to the scanline buffer for it.
 // Built for a configuration (model/twins/config.hpp; `watkins_gen_pkg --params F --shading S`
 // prints these parameters): each channel group's word (IntBits, sign included, + FracBits) --
 // X, depth, and the attribute slots 2..4 (the shade in a Gouraud top, the normal in a Phong
@@ -50,6 +55,7 @@ module watkins_top #(
   input  logic [watkins_pkg::LineBits-1:0]   height_i,        // 1..4096
   input  watkins_pkg::rgb_t                  background_i,    // shade of pixels no polygon covers
   input  logic                               sparse_i,        // frame configuration: covered pixels only
+  input  logic                               tie_submission_i, // frame configuration: a depth tie goes to the smaller polygon id
   input  logic [EdgeBits-1:0]                edge_i,          // edge records, sorted by y0 (ties in stream order)
   input  logic                               edge_eof_i,      // with valid: this beat ends the frame's stream, carries no edge
   input  logic                               edge_valid_i,
@@ -83,7 +89,7 @@ module watkins_top #(
   logic          frame_busy_q, ael_busy, start;
   logic [LB-1:0] width_q, height_q;
   watkins_pkg::rgb_t background_q;
-  logic          sparse_q;
+  logic          sparse_q, tie_submission_q;
 
   assign start = edge_valid_i && !frame_busy_q && !ael_busy;
 
@@ -103,6 +109,7 @@ module watkins_top #(
       height_q     <= height_i;
       background_q <= background_i;
       sparse_q     <= sparse_i;
+      tie_submission_q <= tie_submission_i;
     end
   end
 
@@ -148,10 +155,8 @@ module watkins_top #(
   logic                  sg_eol   /*verilator public_flat_rd*/;
   logic                  sg_valid /*verilator public_flat_rd*/;
   logic                  sg_ready /*verilator public_flat_rd*/;
-  // The polygon id only pairs edges; nothing downstream needs it (the bench reads it).
-  /* verilator lint_off UNUSEDSIGNAL */
+  // The polygon id pairs edges here and breaks depth ties in the scanline buffer.
   logic [PolyIdBits-1:0] sg_poly /*verilator public_flat_rd*/;
-  /* verilator lint_on UNUSEDSIGNAL */
   logic [MIB-1:0]        sg_material /*verilator public_flat_rd*/;
 
   segment_former #(
@@ -181,6 +186,7 @@ module watkins_top #(
   logic [DepB-1:0]                   fr_depth /*verilator public_flat_rd*/;
   watkins_pkg::rgb_t                 fr_rgb   /*verilator public_flat_rd*/;
   logic [3*watkins_pkg::NormalInBits-1:0] fr_normal /*verilator public_flat_rd*/;
+  logic [PolyIdBits-1:0]             fr_poly  /*verilator public_flat_rd*/;
   logic [MIB-1:0]                    fr_material /*verilator public_flat_rd*/;
   logic                              fr_eol   /*verilator public_flat_rd*/;
   logic                              fr_valid /*verilator public_flat_rd*/;
@@ -194,12 +200,14 @@ module watkins_top #(
     .AttrBits      (AttrBits),
     .AttrFracBits  (AttrFracBits),
     .DepthBits     (DepthBits),
+    .PolyIdBits    (PolyIdBits),
     .MaterialIdBits(MaterialIdBits)
   ) u_segment_interpolator (
     .clk_i, .rst_ni,
     .width_i     (width_q),
     .seg_e_i     (sg_e),
     .seg_f_i     (sg_f),
+    .seg_poly_i  (sg_poly),
     .seg_material_i(sg_material),
     .seg_eol_i   (sg_eol),
     .seg_valid_i (sg_valid),
@@ -208,6 +216,7 @@ module watkins_top #(
     .frag_depth_o(fr_depth),
     .frag_rgb_o  (fr_rgb),
     .frag_normal_o(fr_normal),
+    .frag_poly_o (fr_poly),
     .frag_material_o(fr_material),
     .frag_eol_o  (fr_eol),
     .frag_valid_o(fr_valid),
@@ -218,6 +227,7 @@ module watkins_top #(
   // sh_*: the fragments the depth test receives, shaded (the bench compares them, too).
   logic [LB-1:0]   sh_x     /*verilator public_flat_rd*/;
   logic [DepB-1:0] sh_depth /*verilator public_flat_rd*/;
+  logic [PolyIdBits-1:0] sh_poly /*verilator public_flat_rd*/;
   watkins_pkg::rgb_t sh_rgb /*verilator public_flat_rd*/;
   logic            sh_eol   /*verilator public_flat_rd*/;
   logic            sh_valid /*verilator public_flat_rd*/;
@@ -225,7 +235,7 @@ module watkins_top #(
 
   if (Phong != 0) begin : g_phong
     localparam int unsigned UB = watkins_pkg::UnitBits;
-    localparam int unsigned ShadePayloadBits = 1 + LB + DepB;  // {eol, x, depth} rides along
+    localparam int unsigned ShadePayloadBits = 1 + LB + DepB + PolyIdBits;  // {eol, x, depth, poly} rides along
     logic [3*UB-1:0] light_q, eye_q;
     always_ff @(posedge clk_i) begin
       if (start) begin
@@ -254,7 +264,7 @@ module watkins_top #(
     ) u_normalizer (
       .clk_i, .rst_ni,
       .normal_i (fr_normal),
-      .payload_i({fr_material, fr_eol, fr_x, fr_depth}),
+      .payload_i({fr_material, fr_eol, fr_x, fr_depth, fr_poly}),
       .valid_i  (fr_valid),
       .ready_o  (fr_ready),
       .unit_o   (nm_unit),
@@ -288,10 +298,11 @@ module watkins_top #(
       .valid_o    (sh_valid),
       .ready_i    (sh_ready)
     );
-    assign {sh_eol, sh_x, sh_depth} = sh_payload;
+    assign {sh_eol, sh_x, sh_depth, sh_poly} = sh_payload;
   end else begin : g_gouraud
     assign sh_x     = fr_x;
     assign sh_depth = fr_depth;
+    assign sh_poly  = fr_poly;
     assign sh_rgb   = fr_rgb;
     assign sh_eol   = fr_eol;
     assign sh_valid = fr_valid;
@@ -304,16 +315,19 @@ module watkins_top #(
 
   // ------------------------------------------------------------ visibility and pixels
   scanline_buffer #(
-    .MaxWidth (MaxWidth),
-    .DepthBits(DepthBits)
+    .MaxWidth  (MaxWidth),
+    .DepthBits (DepthBits),
+    .PolyIdBits(PolyIdBits)
   ) u_scanline_buffer (
     .clk_i, .rst_ni,
     .width_i        (width_q),
     .height_i       (height_q),
     .background_i   (background_q),
     .sparse_i       (sparse_q),
+    .tie_submission_i(tie_submission_q),
     .frag_x_i       (sh_x),
     .frag_depth_i   (sh_depth),
+    .frag_poly_i    (sh_poly),
     .frag_rgb_i     (sh_rgb),
     .frag_eol_i     (sh_eol),
     .frag_valid_i   (sh_valid),

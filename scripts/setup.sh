@@ -17,6 +17,7 @@ packages=(
   nlohmann-json3-dev libcli11-dev libstb-dev zlib1g-dev
   clang-14 libclang-rt-14-dev                 # libFuzzer + ASan + UBSan: scripts/fuzz, the fuzz ctest
   yosys nextpnr-ice40 fpga-icestorm           # synthesis (lint in CI, resources and Fmax)
+  libosmesa6-dev valgrind                     # scripts/bench: Mesa's software GL beside the model, callgrind
   python3-pip                                 # the Python packages below
 )
 # From the Python package index: `watkins synth`'s ECP5 place and route, and the FuseSoC core check.

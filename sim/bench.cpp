@@ -3,9 +3,12 @@
 #include <CLI/CLI.hpp>
 
 #include <chrono>
+#include <algorithm>
 #include <cstdio>
+#include <string>
 
 #include "config_file.hpp"
+#include "grid_scene.hpp"
 #include "cycle_model.hpp"
 #include "float_reference.hpp"
 #include "watkins_top.hpp"
@@ -36,30 +39,56 @@ int main(int argc, char** argv) {
   CLI::App app{"watkins_bench: fragments per second of the model and the double reference"};
   std::string scene_path;
   double budget = 1.0;
-  app.add_option("scene", scene_path, "scene file (default: the embedded default scene)");
+  CLI::Option* scene_opt = app.add_option("scene", scene_path, "scene file (default: the embedded default scene)");
   std::string config_path;
+  int grid = 0;
+  app.add_option("--grid", grid, "instead of a scene: a 512x512 screen of 2*N*N triangles covering each pixel once")
+      ->check(CLI::Range(1, 256))
+      ->excludes(scene_opt);
+  int profile_frames = 0;
+  app.add_option("--profile-frames", profile_frames,
+                 "only render the model this many times and print its fragments (for callgrind: "
+                 "instructions per fragment)");
   app.add_option("--seconds", budget, "time budget per measurement")->capture_default_str();
   app.add_option("--config", config_path, "hardware configuration (docs/config-format.md); default: formats.hpp");
   CLI11_PARSE(app, argc, argv);
   try {
     using namespace watkins;
-    const BuiltScene scene = load_scene_or_default(scene_path);
+    const BuiltScene scene = grid > 0 ? watkins::grid_scene(512, grid) : load_scene_or_default(scene_path);
     Config cfg = config_path.empty() ? Config{} : load_config(config_path);
     cfg.max_active_edges = 1 << 20;  // measure speed, not capacity
     const PreparedScene prepared = prepare(scene, cfg);
     WatkinsTop pipe(cfg);
     pipe.render(prepared);
     const long long fragments = pipe.stats().fragments;
+    if (profile_frames > 0) {
+      for (int i = 1; i < profile_frames; ++i) pipe.render(prepared);
+      std::printf("profiled            %d model frames of %lld fragments\n", profile_frames, fragments);
+      return 0;
+    }
     const double pixels = double(scene.width) * scene.height;
     const double t_prep = best_seconds([&] { prepare(scene, cfg); }, budget);
     const double t_fixed = best_seconds([&] { pipe.render(prepared); }, budget);
     const double t_float = best_seconds([&] { render_float_reference(scene); }, budget);
+    // The same fractions with integer bits cut to what the scene needs (fit_int_bits, as
+    // `watkins size` does): the same arithmetic on narrower words, so the same image, and the
+    // model's setup stays in 64-bit words.
+    Config fitted = fit_int_bits(scene, cfg);
+    fitted.max_active_edges = cfg.max_active_edges;
+    const PreparedScene prepared_fitted = prepare(scene, fitted);
+    WatkinsTop pipe_fitted(fitted);
+    const bool same_image = pipe_fitted.render(prepared_fitted).rgb == pipe.render(prepared).rgb;
+    const double t_fitted = best_seconds([&] { pipe_fitted.render(prepared_fitted); }, budget);
+    int widest = 0;
+    for (const int b : fitted.channels(scene.shading).bits) widest = std::max(widest, b);
     std::printf("scene               %s (%dx%d, %zu polygons, %zu edge records, %lld fragments)\n",
                 scene.name.c_str(), scene.width, scene.height, scene.polygons.size(),
                 prepared.edges.size(), fragments);
     std::printf("scene preparation   %.3f ms\n", t_prep * 1e3);
     std::printf("fixed-point model   %.3f ms/frame  %.2f M fragments/s  %.2f M pixels/s\n", t_fixed * 1e3,
                 fragments / t_fixed / 1e6, pixels / t_fixed / 1e6);
+    std::printf("fixed-point fitted  %.3f ms/frame  %.2f M fragments/s  (integer bits fitted, words <= %d bits, %s)\n",
+                t_fitted * 1e3, fragments / t_fitted / 1e6, widest, same_image ? "same image" : "IMAGE DIFFERS");
     std::printf("double reference    %.3f ms/frame  %.2f M fragments/s\n", t_float * 1e3,
                 fragments / t_float / 1e6);
     for (const PixelOutput out : {PixelOutput::FullFrame, PixelOutput::Sparse}) {

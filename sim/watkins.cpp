@@ -1,5 +1,6 @@
 // watkins: the command line of the Watkins pipeline model.
 //   watkins render [SCENE] [--out image.png] [--model fixed|float] [--shading S] [--rule R] [--depth D]
+//                  [--depth-tie arrival|submission]
 //                  [--diff d.png] [--cull|--no-cull] [--max-active-edges N] [--config F]
 //                  [--rtl [--sparse] [--trace out.fst] [--seed N] [--gap P] [--stall P]]
 //   watkins sweep [SCENE ...] [--shadings ...] [--tess ...] [--csv F] [--md F] [--jobs N] [--shard i/N] [--rtl]
@@ -195,6 +196,8 @@ struct RenderArgs {
   std::string out = "watkins.png";
   std::string model = "fixed";
   std::string shading, rule, depth, diff, truth, truth_diff;
+  std::string depth_tie;  // equal-depth rule: arrival or submission
+  bool depth_tie_given = false;  // else the scene's shading.depth_tie
   bool cull = false, no_cull = false;
   int max_active_edges = watkins::fmt::MaxActiveEdges;
   bool max_active_edges_given = false;  // --max-active-edges overrides the configuration's
@@ -263,6 +266,11 @@ int render(const RenderArgs& a) {
     opt.depth = parse_depth_mode(a.depth);
     if (!opt.depth) throw SceneError("--depth: unknown depth mode \"" + a.depth + "\" (inverse-z, z)");
   }
+  if (a.depth_tie_given) {
+    opt.depth_tie = parse_depth_tie(a.depth_tie);
+    if (!opt.depth_tie)
+      throw UsageError("--depth-tie: unknown rule " + quote_input(a.depth_tie) + " (arrival, submission)");
+  }
   if (a.cull) opt.cull_backfaces = true;
   if (a.no_cull) opt.cull_backfaces = false;
   opt.strict = a.strict;
@@ -296,8 +304,9 @@ int render(const RenderArgs& a) {
   check_rtl_config(a.rtl, prepared, a.config);  // --rtl
   const double t_prep = seconds_since(t0);
 
-  std::printf("scene         %s  %dx%d  shading %s  rule %s  depth %s\n", scene.name.c_str(), scene.width,
-              scene.height, to_string(scene.shading), to_string(scene.rule), to_string(scene.depth));
+  std::printf("scene         %s  %dx%d  shading %s  rule %s  depth %s  depth-tie %s\n", scene.name.c_str(),
+              scene.width, scene.height, to_string(scene.shading), to_string(scene.rule), to_string(scene.depth),
+              to_string(scene.depth_tie));
   if (scene.shading == ShadingMode::Phong)
     std::printf("phong         %zu material(s), light (%.4f, %.4f, %.4f), eye (%.4f, %.4f, %.4f); the rule is unused\n",
                 scene.materials.size(), scene.light[0], scene.light[1], scene.light[2], scene.eye[0], scene.eye[1],
@@ -385,6 +394,9 @@ int main(int argc, char** argv) {
   r->add_option("--rule", ra.rule, "vertex shading rule of the gouraud pipeline: gouraud, lambert, warnock, romney, "
                                    "phong (eq. 3 at the vertices)");
   r->add_option("--depth", ra.depth, "depth channel: inverse-z (Gouraud eq. 1) or z (eq. 2)");
+  CLI::Option* depth_tie = r->add_option("--depth-tie", ra.depth_tie, "equal depth at a pixel: arrival (the segment that closes first, "
+                                             "the default) or submission (the polygon submitted first, as GL's "
+                                             "GL_LESS; tie_submission_i = 1); overrides shading.depth_tie");
   r->add_option("--diff", ra.diff, "PNG of |model - double reference| x16 (magenta: coverage differs)");
   r->add_flag("--cull", ra.cull, "cull back faces");
   r->add_flag("--no-cull", ra.no_cull, "keep back faces");
@@ -410,6 +422,7 @@ int main(int argc, char** argv) {
   }
   ra.max_active_edges_given = mae->count() > 0;
   ra.scene_given = scene_opt->count() > 0;
+  ra.depth_tie_given = depth_tie->count() > 0;
   try {
     if (*r) return render(ra);
     if (*s) return watkins::sweep::run_sweep(sa);

@@ -1,6 +1,6 @@
 // The frame driver's source (frame_driver.hpp): the edge records of every frame of a run, each
 // frame ended by its end-of-frame beat, with seeded input gaps; and the frame pins (size,
-// background, output mode, Phong light, eye and material table), changed only when the previous
+// background, output mode, equal-depth rule, Phong light, eye and material table), changed only when the previous
 // frames have drained. A source holds valid and data until the transfer (valid/ready as in
 // AXI-Stream); between beats edge_i carries a poison word the RTL must ignore.
 #pragma once
@@ -26,6 +26,7 @@ bool sparse_frame(const RtlOptions& opt, int f);
 struct FrameConfig {
   std::uint32_t width = 0, height = 0, background = 0;
   bool sparse = false;
+  bool tie_submission = false;  // the frame's depth_tie is Submission
   std::uint64_t light = 0, eye = 0;
   std::vector<QuantizedMaterial> materials;
   bool operator==(const FrameConfig& o) const;

@@ -32,11 +32,11 @@ StageStreams model_stage_streams(const PreparedScene& scene, Image* image) {
   };
   o.fragment = [&](int y, const Fragment& f, bool) {
     const std::uint32_t rgb = (std::uint32_t(f.rgb[0]) << 16) | (std::uint32_t(f.rgb[1]) << 8) | f.rgb[2];
-    s.fragments.push_back(StageFragment{y, kf++, false, f.x, f.depth, f.material, f.normal, rgb});
+    s.fragments.push_back(StageFragment{y, kf++, false, f.x, f.depth, f.poly, f.material, f.normal, rgb});
     s.shaded.push_back(s.fragments.back());
   };
   o.fragments_end = [&](int y) {
-    s.fragments.push_back(StageFragment{y, kf, true, 0, 0, 0, {}, 0});
+    s.fragments.push_back(StageFragment{y, kf, true, 0, 0, 0, 0, {}, 0});
     s.shaded.push_back(s.fragments.back());
     kf = 0;
   };

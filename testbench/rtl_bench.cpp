@@ -71,11 +71,12 @@ struct TopBench : sc_module, detail::TopPins {
 
   // ---- TopPins (top_pins.hpp) ----
   void reset_pin(bool v) override { io.rst_n.write(v); }
-  void frame_pins(std::uint32_t w, std::uint32_t h, std::uint32_t bg, bool sp) override {
+  void frame_pins(std::uint32_t w, std::uint32_t h, std::uint32_t bg, bool sp, bool tie) override {
     io.width.write(w);
     io.height.write(h);
     io.background.write(bg);
     io.sparse.write(sp);
+    io.tie_submission.write(tie);
   }
   void phong_pins(std::uint64_t l, std::uint64_t e) override {
     io.light.write(l);
@@ -151,6 +152,17 @@ struct Bench {
   bool dead = false;
 };
 
+// The process's choice of power-up state for the bench's tops (rtl_initial_state()), and whether
+// the tops exist already (then it is too late to choose).
+struct InitialState {
+  int seed = 0;
+  bool built = false;
+};
+InitialState& initial_state() {
+  static InitialState s;
+  return s;
+}
+
 // Built once per process and never destroyed (SystemC cannot elaborate twice, and its kernel is
 // torn down by static destructors in an order we do not control).
 Bench& bench() {
@@ -158,6 +170,11 @@ Bench& bench() {
     setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "1", 0);
     Verilated::traceEverOn(true);  // tracing can then be switched on for any later run
     Verilated::threadContextp()->fatalOnError(false);  // an assertion ends the run, not the process
+    // The tops' constructors draw the initial value of every variable (--x-initial unique).
+    const int seed = initial_state().seed;
+    Verilated::threadContextp()->randReset(seed == 0 ? 0 : 2);
+    if (seed != 0) Verilated::threadContextp()->randSeed(seed);
+    initial_state().built = true;
     sc_report_handler::set_actions(SC_INFO, SC_DO_NOTHING);
     auto* x = new Bench;
     sc_start(SC_ZERO_TIME);  // elaborate and park the thread on `start`
@@ -167,6 +184,12 @@ Bench& bench() {
 }
 
 }  // namespace
+
+void rtl_initial_state(int seed) {
+  if (initial_state().built && seed != initial_state().seed)
+    throw std::logic_error("rtl_initial_state: the Verilated tops of this process are built already");
+  initial_state().seed = seed;
+}
 
 std::string rtl_description() {
   return "SystemC bench (Verilated --sc watkins_top, Phong = 0 and 1, one SC_THREAD each, SystemC " +

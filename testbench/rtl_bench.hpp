@@ -43,6 +43,7 @@ struct StageFragment {  // segment_interpolator -> shading (fr_*) and shading ->
   bool eol = false;
   int x = 0;
   std::uint32_t depth = 0;
+  int poly = 0;                 // the polygon id (the scanline buffer's equal-depth rule)
   int material = 0;
   std::array<i64, 3> normal{};  // fr_*: the normal reading of channels 2..4
   std::uint32_t rgb = 0;        // sh_*: {R, G, B} as shaded (Gouraud: the interpolated shade)
@@ -156,6 +157,14 @@ struct RtlResult {
 
 // Which harness this library drives ("SystemC bench (...)" or "plain C++ harness (...)").
 std::string rtl_description();
+// Power-up state of the SystemC bench's two tops (Verilated with --x-initial unique): seed 0
+// starts every register and RAM word without a reset at zero (the default); another seed at
+// values drawn from it (Verilator's randReset(2) and randSeed(seed)). The tops are built once
+// per process, at its first RTL run: call this before that run; after it, it throws
+// std::logic_error. A run resets the top first, so a correct design renders the same image in
+// the same cycles whatever the seed (tests/cosim/test_x_initial.cpp). The per-configuration
+// --cc tops always start at zero.
+void rtl_initial_state(int seed);
 // The Verilated tops: the SystemC bench's two at the default configuration (Phong = 0 and 1), and
 // one plain --cc top per other configuration the build was asked for (CMake option
 // WATKINS_RTL_CONFIGS, testbench/CMakeLists.txt). run_rtl_frames runs frames on the top whose

@@ -46,6 +46,11 @@ Harness& harness() {
 
 std::string rtl_description() { return "plain C++ harness (Verilated --cc watkins_top, eval loop)"; }
 
+// The speed harness keeps the zero power-up state (tests/cosim/test_x_initial.cpp uses the SystemC bench).
+void rtl_initial_state(int seed) {
+  if (seed != 0) throw std::logic_error("rtl_initial_state: the plain C++ harness starts at zero only");
+}
+
 // Only the default configuration's Gouraud top is built here.
 std::string rtl_unavailable(const Config& config, ShadingMode shading, const std::string&) {
   if (shading == ShadingMode::Gouraud && rtl_parameters(config, shading) == rtl_parameters(Config{}, shading))

@@ -229,23 +229,25 @@ void StageChecker::fragment(long long c) {
   fragment_stage(c, fr_, &StageStreams::fragments, "segment_interpolator", *t.fr_eol, *t.fr_x, same, text, diff);
 }
 
-// shading output (what the depth test receives): x, depth and the shade.
+// shading output (what the depth test receives): x, depth, polygon id and the shade.
 void StageChecker::shaded(long long c) {
   const StageTaps& t = *taps_;
   auto text = [&](const StageFragment* m) {
     const std::uint32_t rgb = m ? m->rgb : *t.sh_rgb;
-    char b[96];
-    std::snprintf(b, sizeof b, "x %d depth %u rgb (%u, %u, %u)", m ? m->x : int(*t.sh_x), m ? m->depth : static_cast<std::uint32_t>(*t.sh_depth),
+    char b[128];
+    std::snprintf(b, sizeof b, "x %d depth %u poly %d rgb (%u, %u, %u)", m ? m->x : int(*t.sh_x),
+                  m ? m->depth : static_cast<std::uint32_t>(*t.sh_depth), m ? m->poly : t.sh_poly.as_int(),
                   (rgb >> 16) & 255u, (rgb >> 8) & 255u, rgb & 255u);
     return std::string(b);
   };
   auto same = [&](const StageFragment& m) {
-    return m.x == *t.sh_x && m.depth == *t.sh_depth && m.rgb == *t.sh_rgb;
+    return m.x == *t.sh_x && m.depth == *t.sh_depth && m.poly == t.sh_poly.as_int() && m.rgb == *t.sh_rgb;
   };
   auto diff = [&](const StageFragment& m) {
     std::string d;
     add(d, m.x != *t.sh_x, "x");
     add(d, m.depth != *t.sh_depth, "depth");
+    add(d, m.poly != t.sh_poly.as_int(), "poly");
     add(d, m.rgb != *t.sh_rgb, "rgb");
     return d;
   };

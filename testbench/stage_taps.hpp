@@ -62,7 +62,7 @@ struct StageTaps {
   const std::uint64_t* fr_normal = nullptr;  // {Nz, Ny, Nx}, NormalInBits each (54 bits)
   const std::uint8_t *sh_valid = nullptr, *sh_ready = nullptr, *sh_eol = nullptr;
   const std::uint16_t* sh_x = nullptr;
-  TapField sh_depth;
+  TapField sh_depth, sh_poly;
   const std::uint32_t* sh_rgb = nullptr;
 };
 
@@ -95,6 +95,7 @@ StageTaps stage_taps(const Root& root) {
   t.sh_eol = &root.watkins_top__DOT__sh_eol;
   t.sh_x = &root.watkins_top__DOT__sh_x;
   t.sh_depth = TapField(root.watkins_top__DOT__sh_depth);
+  t.sh_poly = TapField(root.watkins_top__DOT__sh_poly);
   t.sh_rgb = &root.watkins_top__DOT__sh_rgb;
   return t;
 }

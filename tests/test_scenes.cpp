@@ -49,6 +49,40 @@ TEST_P(ShippedScene, RendersWithinErrorBoundsOfTheDoubleReference) {
   EXPECT_LE(e.coverage_differs + e.visibility_differs, e.compared / 100);
 }
 
+// The model's fast path (depth test first; a hidden fragment's readings and Phong shade never
+// computed) renders what its observed path (every fragment complete, as the benches compare
+// them) renders, with the same counts; the observer sees every fragment and exactly the winners
+// as won. Both shading modes; overdraw, default, hypar, patch, romney and screen_polygons have
+// hidden fragments.
+TEST_P(ShippedScene, FastPathEqualsTheObservedPath) {
+  using namespace watkins;
+  int modes = 0;
+  for (const ShadingMode mode : {ShadingMode::Gouraud, ShadingMode::Phong}) {
+    SCOPED_TRACE(mode == ShadingMode::Phong ? "phong" : "gouraud");
+    BuildOptions opt;
+    opt.shading = mode;
+    BuiltScene scene;
+    try {
+      scene = load_scene(GetParam(), opt);
+    } catch (const SceneError&) {
+      continue;  // a screen-space command list without the other mode's vertex data
+    }
+    ++modes;
+    const PreparedScene prepared = prepare(scene);
+    WatkinsTop fast, observed;
+    const Image a = fast.render(prepared);
+    long long seen = 0, won = 0;
+    const Image b = observed.render(prepared, [&](int, const Fragment&, bool w) { ++seen, won += w; });
+    EXPECT_EQ(a.rgb, b.rgb);
+    EXPECT_EQ(a.covered, b.covered);
+    EXPECT_EQ(a.owner, b.owner);
+    EXPECT_EQ(fast.stats().fragments, seen);
+    EXPECT_EQ(fast.stats().visible, won);
+    EXPECT_EQ(observed.stats().visible, won);
+  }
+  EXPECT_GE(modes, 1);
+}
+
 INSTANTIATE_TEST_SUITE_P(Scenes, ShippedScene, ::testing::ValuesIn(shipped_scenes()),
                          [](const ::testing::TestParamInfo<std::string>& info) {
                            std::string n = info.param.substr(info.param.find_last_of('/') + 1);

@@ -201,7 +201,8 @@ TEST_F(SweepCli, TinySweepWritesTheColumnsAndPhongBeatsGouraudOnTheSphere) {
   EXPECT_EQ(g.at("v"), "8");
   // The configuration's own edge record: default fractions, the integer bits the sphere needs.
   EXPECT_LT(std::stoi(g.at("edge_record_bits")), 466);
-  EXPECT_EQ(g.at("line_buffer_bits"), std::to_string(2 * 320 * (24 + 24)));  // the sphere's 320-px line
+  // the sphere's 320-px line: depth, polygon id, shade
+  EXPECT_EQ(g.at("line_buffer_bits"), std::to_string(2 * 320 * (24 + 16 + 24)));
   EXPECT_EQ(g.at("cycles_source"), "predicted-sparse");  // the cycle model, no Verilator
   EXPECT_EQ(g.at("cycles"), "37062");  // what the RTL takes on this frame (README, --rtl --sparse)
   EXPECT_EQ(p.at("cycles"), "37083");

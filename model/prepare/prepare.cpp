@@ -233,6 +233,7 @@ static PreparedScene prepare_unnamed(const BuiltScene& scene, const Config& cfg)
         std::clamp<long>(std::lround(scene.background[c]), 0, fmt::ShadeMax));
   out.polygons = static_cast<int>(scene.polygons.size());
   out.shading = scene.shading;
+  out.depth_tie = scene.depth_tie;
   const bool phong = scene.shading == ShadingMode::Phong;
   if (phong) prepare_phong_constants(scene, cfg, out);
   const ChannelFormats formats = cfg.channels(scene.shading);

@@ -29,6 +29,10 @@ Attr attributes(const ScreenVertex& v, ShadingMode mode) {
   return Attr(v.depth, c[0], c[1], c[2]);
 }
 
+// Depth between two ends, exact when they are equal (a plane of constant depth stays exactly that
+// depth, so coplanar polygons tie as they do in the fixed-point pipeline).
+double exact_lerp(double a, double b, double t) { return a + t * (b - a); }
+
 // The shade of a visible pixel from its interpolated attributes: the Gouraud shade itself, or
 // Phong's eq. (3) on the normalized normal (a null normal stays null, as in the normalizer).
 std::array<double, 3> pixel_levels(const BuiltScene& scene, int poly, const Attr& a) {
@@ -44,6 +48,7 @@ std::array<double, 3> pixel_levels(const BuiltScene& scene, int poly, const Attr
 
 Image render_float_reference(const BuiltScene& scene, FloatReferenceStats* stats) {
   const int W = scene.width, H = scene.height;
+  const bool submission = scene.depth_tie == DepthTie::Submission;  // equal depth: smaller id wins
   Image img(W, H);
   // Bucket polygons by the scan lines they may cross.
   std::vector<std::vector<int>> bucket(H);
@@ -74,8 +79,9 @@ Image render_float_reference(const BuiltScene& scene, FloatReferenceStats* stats
         if (a->y > b->y) std::swap(a, b);  // top first, as the edge setup does
         if (!(a->y <= yc && yc < b->y)) continue;
         const double t = (yc - a->y) / (b->y - a->y);
-        xs.push_back({glm::mix(a->x, b->x, t),
-                      glm::mix(attributes(*a, scene.shading), attributes(*b, scene.shading), t), int(i)});
+        Attr at = glm::mix(attributes(*a, scene.shading), attributes(*b, scene.shading), t);
+        at.x = exact_lerp(a->depth, b->depth, t);
+        xs.push_back({glm::mix(a->x, b->x, t), at, int(i)});
       }
       std::sort(xs.begin(), xs.end(), [](const Crossing& l, const Crossing& r) {
         return l.x != r.x ? l.x < r.x : l.edge < r.edge;
@@ -92,9 +98,11 @@ Image render_float_reference(const BuiltScene& scene, FloatReferenceStats* stats
       const int x1 = std::min(W, int(std::ceil(s.xf - 0.5)));
       for (int x = x0; x < x1; ++x) {
         const double alpha = (x + 0.5 - s.xe) / (s.xf - s.xe);
-        const Attr a = (1.0 - alpha) * s.ae + alpha * s.af;  // S (or N) = (1 − α)S_E + αS_F
+        Attr a = (1.0 - alpha) * s.ae + alpha * s.af;  // S (or N) = (1 − α)S_E + αS_F
+        a.x = exact_lerp(s.ae.x, s.af.x, alpha);
         ++fragments;
-        if (written[x] && !(a.x < depth[x])) continue;
+        const bool tie_won = submission && a.x == depth[x] && s.poly < owner[x];
+        if (written[x] && !(a.x < depth[x]) && !tie_won) continue;
         written[x] = 1;
         depth[x] = a.x;
         colour[x] = a;

@@ -1,6 +1,7 @@
 // Double-precision reference of the same algorithm (GLM): the same edges, the same pixel-centre
 // coverage rule, even-odd pairing into segments, Gouraud's α interpolation evaluated directly
-// (S = (1 − α)S_E + αS_F, no stepping, no quantization), the same depth test and tie rule.
+// (S = (1 − α)S_E + αS_F, no stepping, no quantization), the same depth test and tie rule
+// (BuiltScene::depth_tie: first arrival, segments in closing-X order, or the smaller polygon id).
 // Phong shading (BuiltScene::shading): the vertex normal is interpolated the same way, normalized
 // in double and shaded with phong_levels (eq. 3). The fixed-point model's difference from it is
 // the cost of quantization alone.

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "depth_tie.hpp"
 #include "scene_error.hpp"
 #include "screen_polygon.hpp"
 #include "shading_mode.hpp"
@@ -26,6 +27,8 @@ std::optional<ShadingRule> parse_shading_rule(const std::string& s);  // "gourau
 std::optional<DepthMode> parse_depth_mode(const std::string& s);      // "inverse-z", "z"
 const char* to_string(ShadingMode m);
 std::optional<ShadingMode> parse_shading_mode(const std::string& s);  // "gouraud", "phong"
+const char* to_string(DepthTie t);
+std::optional<DepthTie> parse_depth_tie(const std::string& s);        // "arrival", "submission"
 
 struct Scene;  // parsed scene, defined in scene_types.hpp
 
@@ -36,6 +39,7 @@ struct BuildOptions {
   std::optional<bool> cull_backfaces;
   std::optional<ShadingMode> shading;
   std::optional<bool> flat;  // flat shading (see BuiltScene::flat)
+  std::optional<DepthTie> depth_tie;
   // Zero-area polygons are skipped and counted (BuiltScene::degenerate), as GL skips them; with
   // strict, a zero-area polygon of a "polygons" command list is an error naming it.
   bool strict = false;
@@ -59,6 +63,12 @@ struct BuiltScene {
   ShadingRule rule = ShadingRule::Gouraud;
   DepthMode depth = DepthMode::InverseZ;
   ShadingMode shading = ShadingMode::Gouraud;
+  // Equal depth at a pixel (depth_tie.hpp): Submission keeps the polygon that comes first in
+  // `polygons`, which hold the scene's polygons in submission order -- objects in file order, each
+  // object's polygons or faces in its own order (an OBJ file's faces in file order, a face of more
+  // than 4 vertices as consecutive triangles) -- with culled, near-clipped and zero-area ones left
+  // out (the others keep their relative order).
+  DepthTie depth_tie = DepthTie::Arrival;
   // Flat shading (Gouraud pipeline only): every polygon gets one shade, the vertex rule evaluated
   // at its centroid with its plane's normal, given to all its vertices — the faceted picture of
   // Warnock and Romney that Gouraud's interpolation removes (the depth still varies per vertex).

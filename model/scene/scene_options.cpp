@@ -16,6 +16,14 @@ const char* to_string(ShadingRule r) {
 
 const char* to_string(DepthMode m) { return m == DepthMode::InverseZ ? "inverse-z" : "z"; }
 
+const char* to_string(DepthTie t) { return t == DepthTie::Arrival ? "arrival" : "submission"; }
+
+std::optional<DepthTie> parse_depth_tie(const std::string& s) {
+  for (DepthTie t : {DepthTie::Arrival, DepthTie::Submission})
+    if (s == to_string(t)) return t;
+  return std::nullopt;
+}
+
 std::optional<ShadingRule> parse_shading_rule(const std::string& s) {
   for (ShadingRule r : {ShadingRule::Gouraud, ShadingRule::Lambert, ShadingRule::Warnock, ShadingRule::Romney,
                         ShadingRule::Phong})

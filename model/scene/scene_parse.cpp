@@ -209,7 +209,7 @@ void parse_light(const Reader& r, const json& j, Light& l) {
 void parse_shading(const Reader& r, const json& j, Shading& s) {
   const std::string f = "shading";
   r.expect_object(j, f);
-  r.check_keys(j, f, {"mode", "rule", "depth", "cull_backfaces", "specular_m", "flat"});
+  r.check_keys(j, f, {"mode", "rule", "depth", "depth_tie", "cull_backfaces", "specular_m", "flat"});
   opt(j, f, "mode", [&](const json& v, const std::string& ff) {
     auto mode = parse_shading_mode(r.string(v, ff));
     if (!mode) r.fail(ff, "expected \"gouraud\" or \"phong\", got " + show(v));
@@ -225,6 +225,11 @@ void parse_shading(const Reader& r, const json& j, Shading& s) {
     auto d = parse_depth_mode(r.string(v, ff));
     if (!d) r.fail(ff, "expected \"inverse-z\" or \"z\", got " + show(v));
     s.depth = *d;
+  });
+  opt(j, f, "depth_tie", [&](const json& v, const std::string& ff) {
+    auto t = parse_depth_tie(r.string(v, ff));
+    if (!t) r.fail(ff, "expected \"arrival\" or \"submission\", got " + show(v));
+    s.depth_tie = *t;
   });
   opt(j, f, "cull_backfaces", [&](const json& v, const std::string& ff) { s.cull_backfaces = r.boolean(v, ff); });
   opt(j, f, "flat", [&](const json& v, const std::string& ff) { s.flat = r.boolean(v, ff); });

@@ -49,6 +49,7 @@ struct Shading {
   double specular_m = 8.0;
   ShadingMode mode = ShadingMode::Gouraud;  // "mode": which pipeline shades
   bool flat = false;                         // "flat": one shade per polygon (BuiltScene::flat)
+  DepthTie depth_tie = DepthTie::Arrival;    // "depth_tie": equal-depth rule (BuiltScene::depth_tie)
 };
 
 enum class ObjectType { Sphere, Cone, QuarterTorus, HyperbolicParaboloid, BezierPatch, Mesh, Polygons };

@@ -9,21 +9,38 @@ static bool x_order(const ActiveEdge& a, const ActiveEdge& b) {
   return xa != xb ? xa < xb : a.rec.id < b.rec.id;
 }
 
+// (X, id) is a total order (ids are unique), so any correct placement gives the RTL's order;
+// these keep the list sorted without re-sorting it: a new edge goes to its place by binary
+// search, and a step leaves the list nearly sorted (edges swap only where they cross), which an
+// insertion sort restores in about one comparison per edge.
 bool ActiveEdgeList::insert(const EdgeRecord& rec) {
   if (size() >= capacity_) return false;
-  edges_.push_back(ActiveEdge{rec, rec.n});
-  sort();
+  const ActiveEdge e{rec, rec.n};
+  edges_.insert(std::upper_bound(edges_.begin(), edges_.end(), e, x_order), e);
   return true;
 }
 
 void ActiveEdgeList::advance() {
-  for (auto& e : edges_) EdgeIncrementer::step(e, formats_);
-  edges_.erase(std::remove_if(edges_.begin(), edges_.end(),
-                              [](const ActiveEdge& e) { return e.remaining <= 0; }),
-               edges_.end());
-  sort();
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < edges_.size(); ++i) {
+    ActiveEdge& e = edges_[i];
+    EdgeIncrementer::step(e, formats_);
+    if (e.remaining <= 0) continue;
+    // Insertion sort as the survivors are compacted: shift the sorted prefix up past e.
+    std::size_t j = kept;
+    if (j > 0 && x_order(e, edges_[j - 1])) {
+      const ActiveEdge moving = e;
+      do {
+        edges_[j] = edges_[j - 1];
+        --j;
+      } while (j > 0 && x_order(moving, edges_[j - 1]));
+      edges_[j] = moving;
+    } else if (j != i) {
+      edges_[j] = e;
+    }
+    ++kept;
+  }
+  edges_.resize(kept);
 }
-
-void ActiveEdgeList::sort() { std::sort(edges_.begin(), edges_.end(), x_order); }
 
 }  // namespace watkins

@@ -32,7 +32,6 @@ class ActiveEdgeList {
   int capacity() const { return capacity_; }
 
  private:
-  void sort();
   int capacity_;
   ChannelFormats formats_;
   std::vector<ActiveEdge> edges_;

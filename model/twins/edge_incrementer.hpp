@@ -7,6 +7,8 @@
 //   remaining                LineBits (not configurable)
 #pragma once
 
+#include <cstdint>
+
 #include "config.hpp"
 #include "edge_record.hpp"
 
@@ -22,8 +24,12 @@ struct EdgeIncrementer {
   // width. A slope wrapped to the word steps the same values (addition modulo 2^bits), so only
   // the values must fit; scene preparation checks that they do.
   static void step(ActiveEdge& e, const ChannelFormats& f) {
+    // Modulo 2^64 (unsigned, so defined for any slope), then the word's low bits: the same as
+    // the 128-bit sum wrapped, since a word is at most 62 bits.
     for (int c = 0; c < fmt::NumChannels; ++c)
-      e.rec.value[c] = wrap_signed(static_cast<i128>(e.rec.value[c]) + e.rec.slope[c], f.bits[c]);
+      e.rec.value[c] = wrap_signed64(static_cast<i64>(static_cast<std::uint64_t>(e.rec.value[c]) +
+                                                      static_cast<std::uint64_t>(e.rec.slope[c])),
+                                     f.bits[c]);
     --e.remaining;
   }
   // The default configuration (today's ChannelBits words).

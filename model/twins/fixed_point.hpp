@@ -76,10 +76,6 @@ constexpr bool fits_signed(i128 v, int bits) {
 }
 
 // Index of the most significant set bit of v > 0 (floor(log2 v)).
-constexpr int msb_index(std::uint64_t v) {
-  int p = -1;
-  while (v) { v >>= 1; ++p; }
-  return p;
-}
+constexpr int msb_index(std::uint64_t v) { return v ? 63 - __builtin_clzll(v) : -1; }
 
 }  // namespace watkins

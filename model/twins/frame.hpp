@@ -1,5 +1,5 @@
 // One frame as watkins_top receives it: the pins that are stable for the frame (size, background,
-// shading mode, the Phong material table, light and eye) and the y-sorted edge-record stream.
+// equal-depth rule, shading mode, the Phong material table, light and eye) and the y-sorted edge-record stream.
 // Scene preparation (model/prepare/) writes it; the twins and the RTL benches read nothing else.
 #pragma once
 
@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "depth_tie.hpp"
 #include "edge_record.hpp"
 #include "fixed_point.hpp"
 #include "shading_mode.hpp"
@@ -23,6 +24,7 @@ struct QuantizedMaterial {
 struct Frame {
   int width = 0, height = 0;
   std::array<std::uint8_t, 3> background{};
+  DepthTie depth_tie = DepthTie::Arrival;  // tie_submission_i = (depth_tie == Submission)
   // Phong: edge channels ChanNx.. hold normals, every edge a material id; light and eye are
   // unit vectors in Q2.14 (UnitBits), frame constants of the shader.
   ShadingMode shading = ShadingMode::Gouraud;

@@ -3,7 +3,9 @@
 // the error statistics live in model/image/.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -19,6 +21,19 @@ struct Image {
   Image(int w, int h)
       : width(w), height(h), rgb(std::size_t(w) * h * 3, 0), covered(std::size_t(w) * h, 0),
         owner(std::size_t(w) * h, -1) {}
+  // A frame of one shade, nothing covered: one row built and appended h times (each byte
+  // written once).
+  Image(int w, int h, const std::array<std::uint8_t, 3>& background)
+      : width(w), height(h), covered(std::size_t(w) * h, 0), owner(std::size_t(w) * h, -1) {
+    std::vector<std::uint8_t> row(std::size_t(w) * 3);
+    for (std::size_t i = 0; i < row.size(); i += 3) {
+      row[i] = background[0];
+      row[i + 1] = background[1];
+      row[i + 2] = background[2];
+    }
+    rgb.reserve(row.size() * static_cast<std::size_t>(h));
+    for (int y = 0; y < h; ++y) rgb.insert(rgb.end(), row.begin(), row.end());
+  }
   std::uint8_t* at(int x, int y) { return &rgb[(std::size_t(y) * width + x) * 3]; }
   const std::uint8_t* at(int x, int y) const { return &rgb[(std::size_t(y) * width + x) * 3]; }
   bool is_covered(int x, int y) const { return covered[std::size_t(y) * width + x] != 0; }

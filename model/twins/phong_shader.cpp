@@ -1,13 +1,15 @@
 // Twin of rtl/phong_shader.sv; see phong_shader.hpp for the stage list.
 #include "phong_shader.hpp"
 
+#include <algorithm>
+
 namespace watkins {
 
 i64 PhongShader::power(i64 base, int n) {
   i64 acc = One;
   for (int k = 0; k < NBits; ++k) {  // stage 4 + k
-    if ((n >> k) & 1) acc = static_cast<i64>(round_shift(static_cast<i128>(acc) * base, P));
-    base = static_cast<i64>(round_shift(static_cast<i128>(base) * base, P));
+    if ((n >> k) & 1) acc = round_shift64(acc * base, P);
+    base = round_shift64(base * base, P);
   }
   return acc;
 }
@@ -22,8 +24,8 @@ PhongShader::Terms PhongShader::terms(const Pixel& px, const Vec& light, const V
   t.ne = round_dot(nde, true);
   t.front = t.cos_i > 0;
   // Stage 3: cos(s) = 2 (N.L)(N.E) - L.E, and the diffuse factor.
-  const i128 cs2 = 2 * static_cast<i128>(t.cos_i) * t.ne - (static_cast<i128>(le) << D);  // 2D frac
-  t.cs = static_cast<i64>(clamp_i(round_shift(cs2, 2 * D - P), 0, One));
+  const i64 cs2 = 2 * t.cos_i * t.ne - le * (i64{1} << D);  // 2D frac
+  t.cs = std::clamp<i64>(round_shift64(cs2, 2 * D - P), 0, One);
   t.spec = t.front && t.cs > 0;
   const i64 d = px.d > (1 << MF) ? (1 << MF) : px.d;
   t.f = t.cos_i * ((1 << MF) - d) + (static_cast<i64>(d) << D);  // D + MF fraction bits
@@ -35,15 +37,21 @@ PhongShader::Terms PhongShader::terms(const Pixel& px, const Vec& light, const V
 std::array<int, 3> PhongShader::shade(const Pixel& px, const Vec& light, const Vec& eye) {
   const Terms t = terms(px, light, eye);
   // Stages 12, 13: levels with D + MF fraction bits; specular W pow is white (255 per channel).
-  const i128 spec = static_cast<i128>(255 * px.w) * t.pow << (D - P);
+  const i64 spec = 255 * px.w * t.pow * (i64{1} << (D - P));
   std::array<int, 3> out{};
   for (int c = 0; c < 3; ++c) {
-    const i128 level = static_cast<i128>(px.cp[c]) * t.f + spec;
-    out[c] = static_cast<int>(clamp_i(round_shift(level, OutFrac), 0, fmt::ShadeMax));
+    const i64 level = px.cp[c] * t.f + spec;
+    out[c] = static_cast<int>(std::clamp<i64>(round_shift64(level, OutFrac), 0, fmt::ShadeMax));
   }
   return out;
 }
 
 static_assert(PhongShader::D >= PhongShader::P, "specular term is aligned by a left shift");
+// Every product above fits 64 bits (with its rounding constant), as the RTL's widths do: powers
+// multiply two numbers <= 1.0 with P fraction bits; cos(i) and N.E are below 2^(D+1), L.E too;
+// a level is an 8-bit reflectance times f < 2^(D+MF+1) plus the specular term.
+static_assert(2 * (PhongShader::P + 1) <= 62, "power products fit 64 bits");
+static_assert(2 * (PhongShader::D + 1) + 2 <= 62, "cos(s) products fit 64 bits");
+static_assert(8 + PhongShader::D + PhongShader::MF + 3 <= 62, "levels fit 64 bits");
 
 }  // namespace watkins

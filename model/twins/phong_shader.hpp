@@ -24,6 +24,7 @@
 // 2^-14, and the level saturates at 255.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 
@@ -62,7 +63,8 @@ struct PhongShader {
   // cos(s) = R.E exact (a clamp there would move highlights of large n); the output saturates.
   static i64 round_dot(i64 v, bool neg_ok) {
     const i64 hi = (i64{1} << (D + 1)) - 1;
-    return static_cast<i64>(clamp_i(round_shift(v, 2 * UF - D), neg_ok ? -hi - 1 : 0, hi));
+    // |v| <= 3 * 2^(2 UF): 64 bits hold it and its rounding constant.
+    return std::clamp<i64>(round_shift64(v, 2 * UF - D), neg_ok ? -hi - 1 : 0, hi);
   }
   // L.E once per frame: D fraction bits.
   static i64 frame_le(const Vec& light, const Vec& eye) {

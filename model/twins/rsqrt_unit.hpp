@@ -3,6 +3,8 @@
 // a table, one Newton-Raphson step; 1/sqrt(m) = y 2^(j-2). m = 0 gives y = 0 and null.
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
 
 #include "fixed_point.hpp"
@@ -57,10 +59,21 @@ struct RsqrtUnit {
   // The seed ROM read: rows below 2^(P-2) (only mant = 0, the null vector) read 0, so y = 0
   // and every unit component becomes 0 without a special case.
   static constexpr std::uint32_t seed_row(int idx) { return idx < (1 << (P - 2)) ? 0u : seed(idx); }
+  // The whole ROM (RsqrtSeedRom below, built at compile time): the per-fragment path reads it
+  // instead of running the bit-serial square root of seed() (some 700 instructions) per normal.
+  static constexpr std::array<std::uint32_t, (1 << P)> seed_rom() {
+    std::array<std::uint32_t, (1 << P)> rom{};
+    for (int idx = 0; idx < (1 << P); ++idx) rom[static_cast<std::size_t>(idx)] = seed_row(idx);
+    return rom;
+  }
+
 
   static Mantissa normalize_mantissa(std::uint64_t m);
   // Stages 2..5: the refined y ~ 1/sqrt(m'c), RsqrtBits fraction bits, in [1, 2]; 0 for mant 0.
   static std::uint32_t rsqrt_mant(std::uint32_t mant);
 };
+
+// The seed ROM as rtl/rsqrt_unit.sv holds it, one constant table for every RsqrtUnit.
+inline constexpr std::array<std::uint32_t, (1 << RsqrtUnit::P)> RsqrtSeedRom = RsqrtUnit::seed_rom();
 
 }  // namespace watkins

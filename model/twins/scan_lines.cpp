@@ -9,6 +9,7 @@ namespace watkins {
 void walk_scan_lines(const std::vector<EdgeRecord>& edges, int height, int capacity,
                      const ChannelFormats& formats, const std::function<void(const ScanLine&)>& visit) {
   ActiveEdgeList active(capacity, formats);
+  SegmentFormer former;
   std::vector<Segment> segments;
   std::size_t next = 0;
   for (int y = 0; y < height; ++y) {
@@ -18,7 +19,7 @@ void walk_scan_lines(const std::vector<EdgeRecord>& edges, int height, int capac
         throw CapacityError("active-edge list overflow on scan line " + std::to_string(y) +
                             " (capacity " + std::to_string(capacity) + ")");
     segments.clear();
-    SegmentFormer::form(active.edges(), segments);
+    former.pair(active.edges(), segments);
     visit(ScanLine{y, entered, active, segments});
     active.advance();
   }

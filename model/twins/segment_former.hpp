@@ -22,8 +22,19 @@ struct Segment {
   ChannelVector f{};  // right end F: channel values of the closing edge
 };
 
-struct SegmentFormer {
-  static void form(const std::vector<ActiveEdge>& x_ordered, std::vector<Segment>& out);
+class SegmentFormer {
+ public:
+  // Appends one line's segments to `out`. The open table is kept between lines (indexed by
+  // polygon id, left empty after each line), so a frame allocates it once.
+  void pair(const std::vector<ActiveEdge>& x_ordered, std::vector<Segment>& out);
+  // One line with a fresh table.
+  static void form(const std::vector<ActiveEdge>& x_ordered, std::vector<Segment>& out) {
+    SegmentFormer former;
+    former.pair(x_ordered, out);
+  }
+
+ private:
+  std::vector<int> open_;  // polygon id -> index of its unpaired edge in x_ordered, or -1
 };
 
 }  // namespace watkins

@@ -19,6 +19,37 @@ std::pair<int, int> SegmentInterpolator::pixels(const Segment& s, int width, int
   return {static_cast<int>(x_start), static_cast<int>(std::max(x_end, x_start))};
 }
 
+namespace {
+
+// The setup's products in the narrowest machine word that holds them: 64 bits for sized
+// configurations, 128 for the widest words. Same formulas, same rounding, so the same values.
+i64 round_in(i64 v, int s) { return round_shift64(v, s); }
+i128 round_in(i128 v, int s) { return round_shift(v, s); }
+i64 wrap_in(i64 v, int bits) { return wrap_signed64(v, bits); }
+i64 wrap_in(i128 v, int bits) { return wrap_signed(v, bits); }
+
+// α0 in 2^-AlphaBits units; α0 <= 1 up to the reciprocal's error, so clamp at one.
+template <class W>
+i64 alpha0_in(const SpanReciprocal& r, i64 offset) {
+  return static_cast<i64>(std::min<W>(round_in(static_cast<W>(offset) * r.recip, r.p + fmt::RecipBits - fmt::AlphaBits),
+                                      W{1} << fmt::AlphaBits));
+}
+
+// Slot c's per-pixel step and its value at the first pixel.
+template <class W>
+void setup_slot(const Segment& s, int c, const ChannelFormats& formats, const SpanReciprocal& r, i64 alpha0,
+                SpanSetup& span) {
+  const W delta = static_cast<W>(s.f[c]) - s.e[c];
+  // ΔS per pixel = Δ·2^Fx/dx = Δ·recip·2^-(p+R-Fx). Saturation only matters when dx < 1 pixel,
+  // where the span holds at most one pixel and the step is never used.
+  const W hi = (W{1} << (formats.bits[c] - 1)) - 1;
+  span.step[c] = static_cast<i64>(
+      std::clamp<W>(round_in(delta * r.recip, r.p + fmt::RecipBits - formats.x_frac()), -hi - 1, hi));
+  span.value[c] = wrap_in(s.e[c] + round_in(delta * alpha0, fmt::AlphaBits), formats.bits[c]);
+}
+
+}  // namespace
+
 SpanSetup SegmentInterpolator::setup(const Segment& s, int width, const ChannelFormats& formats) {
   SpanSetup span;
   span.formats = formats;
@@ -31,47 +62,23 @@ SpanSetup SegmentInterpolator::setup(const Segment& s, int width, const ChannelF
   const i64 dx = xf - xe;  // > 0: a pixel centre lies in [X_E, X_F)
   const SpanReciprocal r = SpanReciprocal::of(dx);
   const i64 offset = static_cast<i64>(span.x_start) * (i64{1} << fx) + (i64{1} << (fx - 1)) - xe;  // >= 0
-  // α0 in 2^-AlphaBits units; α0 <= 1 up to the reciprocal's error, so clamp at one.
-  const i64 alpha0 = static_cast<i64>(std::min<i128>(
-      round_shift(static_cast<i128>(offset) * r.recip, r.p + fmt::RecipBits - fmt::AlphaBits),
-      i128{1} << fmt::AlphaBits));
+  // 64 bits hold a product and its rounding constant when the operands are small enough, which
+  // they usually are whatever the words: the offset is under a pixel except where the span is
+  // clipped, a delta is what the slot changes across the span. Checked on the values, per product;
+  // otherwise 128 bits. Same formulas and rounding either way, so the same values.
+  constexpr int Small = 62 - std::max(fmt::RecipBits, fmt::AlphaBits) - 1;  // operand bits
+  const i64 alpha0 = offset < (i64{1} << Small) ? alpha0_in<i64>(r, offset) : alpha0_in<i128>(r, offset);
+  const bool small_shift = r.p + fmt::RecipBits - fx <= 61;  // the step's rounding constant
   for (int c = fmt::ChanZ; c < fmt::NumChannels; ++c) {
-    const i128 delta = static_cast<i128>(s.f[c]) - s.e[c];
-    // ΔS per pixel = Δ·2^Fx/dx = Δ·recip·2^-(p+R-Fx). Saturation only matters when dx < 1 pixel,
-    // where the span holds at most one pixel and the step is never used.
-    span.step[c] = saturate_signed(round_shift(delta * r.recip, r.p + fmt::RecipBits - fx), formats.bits[c]);
-    span.value[c] = wrap_signed(s.e[c] + round_shift(delta * alpha0, fmt::AlphaBits), formats.bits[c]);
+    const i64 e = s.e[c], f = s.f[c];
+    const bool small = small_shift && e > -(i64{1} << Small) && e < (i64{1} << Small) &&
+                       f > -(i64{1} << Small) && f < (i64{1} << Small);  // |F - E| < 2^(Small+1)
+    if (small)
+      setup_slot<i64>(s, c, formats, r, alpha0, span);
+    else
+      setup_slot<i128>(s, c, formats, r, alpha0, span);
   }
   return span;
-}
-
-// The per-pixel path works in 64 bits (round_shift64, wrap_signed64): a channel word is at most
-// Config::MaxWordBits (62) bits, so a value plus a step, or plus half an ulp, cannot overflow.
-Fragment SegmentInterpolator::fragment(const SpanSetup& span, int x, const ChannelVector& value) {
-  const ChannelFormats& fm = span.formats;
-  Fragment f;
-  f.x = x;
-  f.poly = span.poly;
-  f.material = span.material;
-  f.depth = static_cast<std::uint32_t>(
-      std::clamp<i64>(round_shift64(value[fmt::ChanZ], fm.frac[fmt::ChanZ]), 0, (i64{1} << fm.depth_bits) - 1));
-  for (int c = 0; c < fmt::ShadeChannels; ++c)
-    f.rgb[c] = static_cast<std::uint8_t>(
-        std::clamp<i64>(round_shift64(value[fmt::ChanR + c], fm.frac[fmt::ChanR + c]), 0, fmt::ShadeMax));
-  constexpr i64 normal_hi = (i64{1} << (fmt::NormalInBits - 1)) - 1;
-  for (int c = 0; c < 3; ++c) {
-    // The normalizer reads FracBits fraction bits whatever the normal's channel format.
-    const int shift = fm.frac[fmt::ChanNx + c] - fmt::FracBits;
-    const i64 v = value[fmt::ChanNx + c];
-    f.normal[c] = shift >= 0 ? std::clamp<i64>(round_shift64(v, shift), -normal_hi - 1, normal_hi)
-                             : saturate_signed(static_cast<i128>(v) * (i128{1} << -shift), fmt::NormalInBits);
-  }
-  return f;
-}
-
-void SegmentInterpolator::step(const SpanSetup& span, ChannelVector& value) {
-  for (int c = fmt::ChanZ; c < fmt::NumChannels; ++c)
-    value[c] = wrap_signed64(value[c] + span.step[c], span.formats.bits[c]);
 }
 
 }  // namespace watkins

@@ -26,6 +26,7 @@
 //                   larger (the normalizer's input format does not change with the configuration)
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <utility>
@@ -64,10 +65,106 @@ struct SegmentInterpolator {
   static SpanSetup setup(const Segment& s, int width) {  // the default configuration
     return setup(s, width, Config{}.channels(ShadingMode::Gouraud));
   }
-  // Fragment at pixel x_start + k of a span whose values have been stepped k times.
+  // Which readings of the attribute slots a fragment carries: a pipeline uses one (Gouraud the
+  // shade, Phong the normal), a bench comparing the interpolator's ports needs both. The other
+  // stays zero.
+  enum class Readings { Both, Shade, Normal };
+  // Fragment at pixel x_start + k of a span whose values have been stepped k times (both
+  // readings).
   static Fragment fragment(const SpanSetup& span, int x, const ChannelVector& value);
   // One α step: value += step in every interpolated channel.
   static void step(const SpanSetup& span, ChannelVector& value);
 };
+
+// The per-pixel path (fragment() and step()) with the configuration's shifts, masks and limits
+// worked out once: what a frame's inner loop uses. All in 64 bits: a channel word is at most
+// Config::MaxWordBits (62) bits, so a value plus a step, or plus half an ulp, cannot overflow.
+class PixelPath {
+ public:
+  using Readings = SegmentInterpolator::Readings;
+  PixelPath(const ChannelFormats& f, Readings readings) : readings_(readings) {
+    for (int c = fmt::ChanZ; c < fmt::NumChannels; ++c) {
+      mask_[c] = (i64{1} << f.bits[c]) - 1;
+      sign_[c] = i64{1} << (f.bits[c] - 1);
+    }
+    z_shift_ = f.frac[fmt::ChanZ];
+    z_half_ = half(z_shift_);
+    depth_max_ = (i64{1} << f.depth_bits) - 1;
+    for (int c = 0; c < 3; ++c) {
+      shade_shift_[c] = f.frac[fmt::ChanR + c];
+      shade_half_[c] = half(shade_shift_[c]);
+      normal_shift_[c] = f.frac[fmt::ChanNx + c] - fmt::FracBits;
+    }
+  }
+
+  // The fragment's position, ids and depth: what the depth test needs.
+  Fragment head(const SpanSetup& span, int x, const ChannelVector& value) const {
+    Fragment f;
+    f.x = x;
+    f.poly = span.poly;
+    f.material = span.material;
+    f.depth = static_cast<std::uint32_t>(round_clamp(value[fmt::ChanZ], z_shift_, z_half_, depth_max_));
+    return f;
+  }
+  // The attribute readings, for a fragment that needs them (one that won its pixel, or one a
+  // bench observes).
+  void fill(Fragment& f, const ChannelVector& value) const {
+    if (readings_ != Readings::Normal)
+      for (int c = 0; c < fmt::ShadeChannels; ++c)
+        f.rgb[c] = static_cast<std::uint8_t>(
+            round_clamp(value[fmt::ChanR + c], shade_shift_[c], shade_half_[c], fmt::ShadeMax));
+    if (readings_ != Readings::Shade)
+      for (int c = 0; c < 3; ++c) f.normal[c] = normal(value[fmt::ChanNx + c], normal_shift_[c]);
+  }
+  Fragment fragment(const SpanSetup& span, int x, const ChannelVector& value) const {
+    Fragment f = head(span, x, value);
+    fill(f, value);
+    return f;
+  }
+
+  // value += step per slot, wrapping like a register of the slot's width: keep the low bits and
+  // sign-extend them by flipping and subtracting the sign bit (exact, no shift of a negative).
+  void step(const SpanSetup& span, ChannelVector& value) const {
+    for (int c = fmt::ChanZ; c < fmt::NumChannels; ++c)
+      value[c] = (((value[c] + span.step[c]) & mask_[c]) ^ sign_[c]) - sign_[c];
+  }
+
+ private:
+  // Half an ulp of a value with s fraction bits (none for s = 0): round_shift64's constant.
+  static i64 half(int s) { return s == 0 ? 0 : i64{1} << (s - 1); }
+  // clamp(round_shift64(v, s), 0, hi), with h = half(s): a negative sum rounds to a negative
+  // value, which clamps to 0, so only a non-negative sum is shifted.
+  static i64 round_clamp(i64 v, int s, i64 h, i64 hi) {
+    const i64 t = v + h;
+    if (t < 0) return 0;
+    const i64 r = t >> s;
+    return r > hi ? hi : r;
+  }
+  // The normalizer reads FracBits fraction bits whatever the normal's channel format: round away
+  // extra bits, or scale up, saturating to NormalInBits (compared before the shift, so nothing
+  // overflows; FracBits < NormalInBits - 1, so a shift never passes the word).
+  static i64 normal(i64 v, int shift) {
+    constexpr i64 hi = (i64{1} << (fmt::NormalInBits - 1)) - 1;
+    if (shift >= 0) return std::clamp<i64>(round_shift64(v, shift), -hi - 1, hi);
+    const int up = -shift;
+    return v > (hi >> up) ? hi : v < ~(hi >> up) ? -hi - 1 : v * (i64{1} << up);
+  }
+  static_assert(fmt::FracBits < fmt::NormalInBits - 1, "normal scaling stays within the word");
+
+  Readings readings_;
+  std::array<i64, fmt::NumChannels> mask_{}, sign_{};
+  int z_shift_ = 0;
+  i64 z_half_ = 0, depth_max_ = 0;
+  int shade_shift_[3] = {0, 0, 0}, normal_shift_[3] = {0, 0, 0};
+  i64 shade_half_[3] = {0, 0, 0};
+};
+
+inline Fragment SegmentInterpolator::fragment(const SpanSetup& span, int x, const ChannelVector& value) {
+  return PixelPath(span.formats, Readings::Both).fragment(span, x, value);
+}
+
+inline void SegmentInterpolator::step(const SpanSetup& span, ChannelVector& value) {
+  PixelPath(span.formats, Readings::Both).step(span, value);
+}
 
 }  // namespace watkins

@@ -24,7 +24,8 @@ struct SpanReciprocal {
     SpanReciprocal r;
     r.p = msb_index(static_cast<std::uint64_t>(dx));
     const i64 m = r.p >= R - 1 ? (dx >> (r.p - (R - 1))) : (dx << ((R - 1) - r.p));
-    r.recip = static_cast<i64>((static_cast<i128>(1) << (2 * R - 1)) / m);
+    static_assert(2 * R - 1 <= 62, "the dividend 2^(2R-1) is a 64-bit number");
+    r.recip = (i64{1} << (2 * R - 1)) / m;
     return r;
   }
 };

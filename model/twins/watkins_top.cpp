@@ -46,9 +46,16 @@ Image WatkinsTop::render(const Frame& frame, const FragmentObserver& observe) {
 
 Image WatkinsTop::render(const Frame& frame, const PipelineObserver& observe) {
   stats_ = PipelineStats{};
-  Image img(frame.width, frame.height);
-  ScanlineBuffer line(frame.width, frame.background);
+  Image img(frame.width, frame.height, frame.background);
+  ScanlineBuffer line(frame.width, frame.background, frame.depth_tie);
   const ChannelFormats formats = config_.channels(frame.shading);
+  // The shade or the normal reading, as the frame's pipeline uses; both for an observer (the
+  // benches compare the interpolator's ports, which carry both).
+  using Readings = SegmentInterpolator::Readings;
+  const bool observing = static_cast<bool>(observe.fragment);
+  const PixelPath path(formats, observing                             ? Readings::Both
+                                : frame.shading == ShadingMode::Phong ? Readings::Normal
+                                                                      : Readings::Shade);
   walk_scan_lines(frame.edges, frame.height, max_active_edges_, formats, [&](const ScanLine& sl) {
     const int y = sl.y;
     stats_.edges += sl.entered;
@@ -65,21 +72,30 @@ Image WatkinsTop::render(const Frame& frame, const PipelineObserver& observe) {
       const SpanSetup span = SegmentInterpolator::setup(s, frame.width, formats);
       ChannelVector v = span.value;
       for (int x = span.x_start; x < span.x_end; ++x) {
-        Fragment f = SegmentInterpolator::fragment(span, x, v);
-        if (frame.shading == ShadingMode::Phong) phong_shade(frame, f);
-        const bool won = line.write(f);
+        // The depth test first: a hidden fragment's readings (and Phong shade) are computed only
+        // when a bench observes it. The RTL computes them all; the values kept are the same.
+        Fragment f = path.head(span, x, v);
+        const bool won = line.wins(f);
+        if (won || observing) {
+          path.fill(f, v);
+          if (frame.shading == ShadingMode::Phong) phong_shade(frame, f);
+          if (won) line.store(f);
+          if (observing) observe.fragment(y, f, won);
+        }
         ++stats_.fragments;
         stats_.visible += won;
-        if (observe.fragment) observe.fragment(y, f, won);
-        SegmentInterpolator::step(span, v);
+        path.step(span, v);
       }
     }
     if (observe.fragments_end) observe.fragments_end(y);
-    for (int x = 0; x < frame.width; ++x) {
-      const auto p = line.pixel(x);
-      std::copy(p.begin(), p.end(), img.at(x, y));
-      img.covered[std::size_t(y) * frame.width + x] = line.covered(x);
-      img.owner[std::size_t(y) * frame.width + x] = line.owner(x);
+    // The image starts as background, uncovered: only the line's covered pixels are copied.
+    const std::size_t row = std::size_t(y) * frame.width;
+    for (const int x : line.written()) {
+      const auto& p = line.written_rgb(x);
+      std::uint8_t* out = &img.rgb[(row + x) * 3];
+      out[0] = p[0], out[1] = p[1], out[2] = p[2];  // byte stores: no library call per pixel
+      img.covered[row + x] = 1;
+      img.owner[row + x] = line.written_poly(x);
     }
   });
   return img;

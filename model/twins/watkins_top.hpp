@@ -3,7 +3,8 @@
 // segment_interpolator → [Phong: normalizer → phong_shader] → scanline_buffer → pixels in
 // raster order (every pixel of the screen). Gouraud shading (frame.shading) writes the
 // interpolated shade; Phong shading normalizes the interpolated normal and shades it with the
-// fragment's material, per pixel, before the depth test.
+// fragment's material, per pixel, before the depth test. At equal depth the frame's rule decides
+// (frame.depth_tie, the top's tie_submission_i): first arrival, or the smaller polygon id.
 //
 // From the configuration (config.hpp), as rtl/watkins_top.sv takes it (rtl_parameters()): one
 // format per group -- XIntBits/XFracBits, DepthIntBits/DepthFracBits, and the attribute slots'

@@ -3,7 +3,8 @@
 // active edges in (X, edge id) order (polygon id and every channel word) and the end-of-line
 // marker. Synthesized y-sorted edge streams (many edges starting on one line, equal X broken by
 // arrival index, edges crossing in X between lines, n = 1, edges on line 0 and on the last line,
-// empty lines, full-range wrapping channel words, records past the last line), streams of
+// empty lines, full-range wrapping channel words, records past the last line, late records behind
+// the line being filled, which are read and skipped), streams of
 // prepare()d random scenes and meshes, frames with no edges, frames back to back, exactly
 // MaxActiveEdges active and one more (sticky overflow_o), under random valid gaps, random output
 // back-pressure and start_i pulses while busy.
@@ -64,10 +65,11 @@ Expect model(const EdgeFrame& f) {
   std::size_t next = 0;
   for (int y = 0; y < f.height; ++y) {
     int fresh = 0;
-    while (next < f.edges.size() && f.edges[next].y0 == y) {
+    // A record behind the line (an unsorted stream) is read and skipped, as the RTL's drop_late.
+    for (; next < f.edges.size() && f.edges[next].y0 <= y; ++next) {
+      if (f.edges[next].y0 < y) continue;
       if (!a.insert(f.edges[next]) && x.ov_line < 0) x.ov_line = y;
       u.insert(f.edges[next]);
-      ++next;
       ++fresh;
     }
     x.lines.push_back(to_line(a));
@@ -450,7 +452,33 @@ EdgeFrame one_too_many_mixed(std::mt19937_64& rng) {
   return f;
 }
 
+// A y-sorted random frame with late records (y0 below the record before them) put in: the RTL
+// reads and skips them; their stream positions still count as edge ids (ties break by id).
+EdgeFrame with_late_records(std::mt19937_64& rng, EdgeFrame f, int count) {
+  for (int k = 0; k < count && !f.edges.empty(); ++k) {
+    const std::size_t at = 1 + rng() % f.edges.size();
+    const int before = f.edges[at - 1].y0;
+    if (before == 0) continue;
+    const int y0 = static_cast<int>(rng() % static_cast<unsigned>(std::min(before, f.height)));
+    f.edges.insert(f.edges.begin() + static_cast<long>(at), edge(rng, y0, 1 + static_cast<int>(rng() % 8),
+                                                                  rnd(rng, 0, 30 * One), 0));
+  }
+  for (std::size_t i = 0; i < f.edges.size(); ++i) f.edges[i].id = static_cast<int>(i);
+  return f;
+}
+
 }  // namespace
+
+TEST(RtlActiveEdgeList, LateRecordsSkipped) {
+  Ael a(6);
+  for (int i = 0; i < 600; ++i) {
+    const EdgeFrame base = random_frame(a.rng, 2 + static_cast<int>(a.rng() % 30), static_cast<int>(a.rng() % (2 * N)),
+                                        static_cast<Values>(i % 3));
+    const EdgeFrame f = with_late_records(a.rng, base, 1 + static_cast<int>(a.rng() % 6));
+    a.frame(f, (i % 3) * 30, (i % 4) * 25, i % 5 == 0);
+  }
+  a.report("active_edge_list late records");
+}
 
 TEST(RtlActiveEdgeList, DirectedCorners) {
   for (int pass = 0; pass < 3; ++pass) {

@@ -65,6 +65,7 @@ struct Frag {
   std::uint32_t depth, rgb;
   std::uint64_t normal;  // {Nz, Ny, Nx}, NormalInBits each
   int material;
+  int poly;  // the segment's polygon id (the scanline buffer's equal-depth rule)
 };
 
 Segment random_segment(std::mt19937_64& rng, int width) {
@@ -126,7 +127,7 @@ Segment random_segment(std::mt19937_64& rng, int width) {
 
 void expected(const Item& it, int width, std::deque<Frag>& out) {
   if (it.eol) {
-    out.push_back({true, 0, 0, 0, 0, 0});
+    out.push_back({true, 0, 0, 0, 0, 0, 0});
     return;
   }
   const SpanSetup span = SegmentInterpolator::setup(it.seg, width, formats());
@@ -136,7 +137,7 @@ void expected(const Item& it, int width, std::deque<Frag>& out) {
     std::uint64_t n = 0;
     for (int c = 0; c < 3; ++c) n |= wrap_unsigned(f.normal[c], fmt::NormalInBits) << (c * fmt::NormalInBits);
     out.push_back({false, x, f.depth, (std::uint32_t(f.rgb[0]) << 16) | (std::uint32_t(f.rgb[1]) << 8) | f.rgb[2], n,
-                   f.material});
+                   f.material, f.poly});
     SegmentInterpolator::step(span, v);
   }
 }
@@ -168,6 +169,7 @@ Result run(int items, int width, int gap_pct, int bp_pct, std::uint64_t seed, in
           set_bits(h.dut.seg_f_i, slots.lsb[c], slots.bits[c], to_bits(cur.seg.f[c], slots.bits[c]));
         }
         h.dut.seg_material_i = static_cast<std::uint8_t>(cur.seg.material);
+        h.dut.seg_poly_i = static_cast<std::uint16_t>(cur.seg.poly);
         h.dut.seg_eol_i = cur.eol;
         return true;
       },
@@ -180,14 +182,14 @@ Result run(int items, int width, int gap_pct, int bp_pct, std::uint64_t seed, in
         const bool ok = h.dut.frag_eol_o == w.eol &&
                         (w.eol || (int(h.dut.frag_x_o) == w.x && h.dut.frag_depth_o == w.depth &&
                                    h.dut.frag_rgb_o == w.rgb && h.dut.frag_normal_o == w.normal &&
-                                   int(h.dut.frag_material_o) == w.material));
+                                   int(h.dut.frag_material_o) == w.material && int(h.dut.frag_poly_o) == w.poly));
         if (ok) return std::string();
         std::ostringstream diff;
         diff << "rtl eol " << int(h.dut.frag_eol_o) << " x " << h.dut.frag_x_o << " depth " << h.dut.frag_depth_o
              << " rgb " << std::hex << h.dut.frag_rgb_o << " normal " << h.dut.frag_normal_o << std::dec
-             << " material " << int(h.dut.frag_material_o) << "; model eol " << w.eol << " x " << w.x << " depth "
+             << " material " << int(h.dut.frag_material_o) << " poly " << int(h.dut.frag_poly_o) << "; model eol " << w.eol << " x " << w.x << " depth "
              << w.depth << " rgb " << std::hex << w.rgb << " normal " << w.normal << std::dec << " material "
-             << w.material;
+             << w.material << " poly " << w.poly;
         return diff.str();
       });
   if (!ran) return res;
