@@ -1,17 +1,18 @@
-// scanline_buffer_formal: proves rtl/scanline_buffer.sv (MaxWidth 4, 2-bit depth, full mode) holds
-// valid and the whole pixel beat until ready, and emits every pixel of every marked line once, in
-// raster order: each end-of-line marker taken owes width pixels, each pixel taken pays one, and
-// the pixels owed are the reader's (the rest of its line, plus the beat on the output); every beat
-// carries the next position expected (x = 0..width-1, then the next line, y wrapping at height)
-// and pixel_last_o exactly on the frame's last pixel. Fragments are never refused; a marker waits
-// only while the reader is busy. Frame settings (width 1..MaxWidth, height >= 1, full mode) are
-// constant; fragments are anywhere in the line, any depth and shade; the shades themselves (the
-// depth test) are the unit bench's business.
+// scanline_buffer_formal: proves rtl/scanline_buffer.sv (MaxWidth 4, 2-bit depth and id, full mode)
+// holds valid and the whole pixel beat until ready, and emits every pixel of every marked line
+// once, in raster order: each end-of-line marker taken owes width pixels, each pixel taken pays
+// one, and the pixels owed are the reader's (the rest of its line, plus the beat on the output);
+// every beat carries the next position expected (x = 0..width-1, then the next line, y wrapping at
+// height) and pixel_last_o exactly on the frame's last pixel. Fragments are never refused; a marker
+// waits only while the reader is busy. Frame settings (width 1..MaxWidth, height >= 1, full mode)
+// are constant; fragments are anywhere in the line, any depth, polygon and shade, either tie rule;
+// the shades themselves (the depth test) are the unit bench's business.
 `include "formal_stream.svh"
 
 module scanline_buffer_formal #(
   localparam int unsigned MaxWidth  = 4,
   localparam int unsigned DepthBits = 2,
+  localparam int unsigned PolyIdBits = 2,
   localparam int unsigned LB        = watkins_pkg::LineBits
 ) (
   input  logic                 clk_i,
@@ -20,7 +21,9 @@ module scanline_buffer_formal #(
   input  logic [LB-1:0]        height_i,
   input  watkins_pkg::rgb_t    background_i,
   input  logic [LB-1:0]        frag_x_i,
+  input  logic                 tie_submission_i,
   input  logic [DepthBits-1:0] frag_depth_i,
+  input  logic [PolyIdBits-1:0] frag_poly_i,
   input  watkins_pkg::rgb_t    frag_rgb_i,
   input  logic                 frag_eol_i,
   input  logic                 frag_valid_i,
@@ -31,10 +34,11 @@ module scanline_buffer_formal #(
   watkins_pkg::rgb_t pixel_rgb_o;
   logic [LB-1:0]     pixel_x_o, pixel_y_o;
   assign sparse_i = 1'b0;
-  scanline_buffer #(.MaxWidth(MaxWidth), .DepthBits(DepthBits)) u_dut (.*);
+  scanline_buffer #(.MaxWidth(MaxWidth), .DepthBits(DepthBits), .PolyIdBits(PolyIdBits)) u_dut (.*);
 
   `FORMAL_PAST
-  `FORMAL_ASSUME_HOLD(in, frag_valid_i, frag_ready_o, {frag_x_i, frag_depth_i, frag_rgb_i, frag_eol_i})
+  `FORMAL_ASSUME_HOLD(in, frag_valid_i, frag_ready_o, {frag_x_i, frag_depth_i, frag_poly_i, frag_rgb_i,
+    frag_eol_i})
   `FORMAL_ASSERT_HOLD(out, pixel_valid_o, pixel_ready_i, {pixel_rgb_o, pixel_covered_o, pixel_last_o,
     pixel_x_o, pixel_y_o})
 

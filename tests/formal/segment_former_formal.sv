@@ -5,10 +5,11 @@
 // end-of-line marker) must come out as the next segment, with the opening edge's vector as e, its
 // own as f (each input edge carries its sequence number as its vector), its polygon, material
 // and marker; any other edge opens its polygon and emits nothing. Segments due minus segments
-// out is seg_valid_o. The environment keeps at most 3 polygons open (the table's capacity: a line
-// carries at most MaxActiveEdges edges). Induction invariants tie every table entry to the
-// reference: it holds an open polygon with its opening vector, no two entries hold one polygon,
-// and as many entries are open as polygons.
+// out is seg_valid_o. The environment opens at most 3 segments per line (the table's capacity: a
+// line carries at most MaxActiveEdges edges, and an opening edge takes the next entry never used
+// on the line). Induction invariants tie every table entry to the reference: it holds an open
+// polygon with its opening vector, no two entries hold one polygon, as many entries are open as
+// polygons, the entries used on the line are the segments opened on it and no later entry is open.
 `include "formal_stream.svh"
 
 module segment_former_formal #(
@@ -56,11 +57,19 @@ module segment_former_formal #(
   `FORMAL_COUNT(n_due_q, VectorBits, edge_valid_i && closes, edge_ready_o)
   `FORMAL_COUNT(n_out_q, VectorBits, seg_valid_o, seg_ready_i)
 
+  logic [1:0] opened_n_q;  // segments opened on this line, <= N
   always_ff @(posedge clk_i) begin
-    if (!rst_ni) open_q <= '0;
-    else if (fire) begin
-      if (edge_eol_i) open_q <= '0;
-      else open_q[edge_poly_i] <= !open_q[edge_poly_i];
+    if (!rst_ni) begin
+      open_q     <= '0;
+      opened_n_q <= '0;
+    end else if (fire) begin
+      if (edge_eol_i) begin
+        open_q     <= '0;
+        opened_n_q <= '0;
+      end else begin
+        open_q[edge_poly_i] <= !open_q[edge_poly_i];
+        if (!open_q[edge_poly_i]) opened_n_q <= opened_n_q + 1'b1;
+      end
     end
   end
   always_ff @(posedge clk_i) begin
@@ -81,6 +90,7 @@ module segment_former_formal #(
 
   // The table (hierconn wires: flatten connects them to u_dut's registers).
   (* hierconn *) logic [N-1:0]          \u_dut.open_q ;
+  (* hierconn *) logic [1:0]            \u_dut.used_q ;
   (* hierconn *) logic [PolyIdBits-1:0] \u_dut.open_poly_q[0] ;
   (* hierconn *) logic [PolyIdBits-1:0] \u_dut.open_poly_q[1] ;
   (* hierconn *) logic [PolyIdBits-1:0] \u_dut.open_poly_q[2] ;
@@ -99,8 +109,8 @@ module segment_former_formal #(
   always_comb begin
     if (edge_valid_i) begin
       assume (edge_value_i == n_in_q);
-      // At most N polygons open at once.
-      assume (edge_eol_i || open_q[edge_poly_i] || count(open_q) < N);
+      // At most N segments opened per line.
+      assume (edge_eol_i || open_q[edge_poly_i] || opened_n_q < 2'(N));
     end
     if (rst_ni) begin
       assert (edge_ready_o == (seg_ready_i || !seg_valid_o));
@@ -113,8 +123,10 @@ module segment_former_formal #(
       end
       // Induction invariants: the table mirrors the reference.
       assert (count(Polys'(\u_dut.open_q )) == count(open_q));
+      assert (\u_dut.used_q == opened_n_q);
       for (int unsigned i = 0; i < N; i++) begin
         if (\u_dut.open_q [i]) begin
+          assert (i < 32'(\u_dut.used_q ));
           assert (open_q[poly[i]] && value[i] == opened_q[poly[i]]);
           for (int unsigned j = i + 1; j < N; j++)
             if (\u_dut.open_q [j]) assert (poly[i] != poly[j]);
