@@ -1,0 +1,55 @@
+// formal_stream.svh: the handshake rules every formal harness of tests/formal states, written
+// once. Read by yosys 0.23 (`read_verilog -sv -formal`) only: immediate assert/assume in clocked
+// and combinational blocks; scripts/formal runs the proofs (sat -tempinduct).
+// A harness declares `logic past_q` (0 in the first clock, then 1) with FORMAL_PAST, resets its
+// DUT in the first clock, and leaves rst_ni free afterwards: a reset may come at any clock.
+`ifndef FORMAL_STREAM_SVH
+`define FORMAL_STREAM_SVH
+
+// past_q: a previous clock exists, so $past is meaningful; the first clock is a reset.
+`define FORMAL_PAST \
+  logic past_q; \
+  initial past_q = 1'b0; \
+  always_ff @(posedge clk_i) past_q <= 1'b1; \
+  always_comb if (!past_q) assume (!rst_ni);
+
+// The environment obeys valid/ready on an input stream: a beat offered and not taken is offered
+// again the next clock, unchanged (unless a reset came in between). Written with explicit
+// registers and an immediate assume in always_comb, so it constrains the same clock it speaks of:
+// yosys samples an assume inside a clocked block one clock late, which would leave the last step
+// of every base case unconstrained. name prefixes the two registers.
+`define FORMAL_ASSUME_HOLD(name, valid, ready, data) \
+  logic name``_held_q; \
+  logic [$bits(data)-1:0] name``_data_q; \
+  always_ff @(posedge clk_i) begin \
+    name``_held_q <= rst_ni && (valid) && !(ready); \
+    name``_data_q <= data; \
+  end \
+  always_comb if (past_q && name``_held_q) assume ((valid) && (data) == name``_data_q);
+
+// The stage obeys valid/ready on its output stream, whatever the back-pressure: a beat offered
+// and not taken is offered again the next clock, unchanged.
+`define FORMAL_ASSERT_HOLD(name, valid, ready, data) \
+  logic name``_held_q; \
+  logic [$bits(data)-1:0] name``_data_q; \
+  always_ff @(posedge clk_i) begin \
+    name``_held_q <= rst_ni && (valid) && !(ready); \
+    name``_data_q <= data; \
+  end \
+  always_comb if (past_q && name``_held_q) assert ((valid) && (data) == name``_data_q);
+
+// Beats taken on a stream since the last reset, modulo 2^bits: the sequence number the next beat
+// carries (the harnesses tag each input beat with it, and expect it back at the output).
+`define FORMAL_COUNT(name, bits, valid, ready) \
+  logic [(bits)-1:0] name; \
+  always_ff @(posedge clk_i) \
+    if (!rst_ni) name <= '0; \
+    else if ((valid) && (ready)) name <= name + 1'b1;
+
+// A probe of word k of a register array or RAM inside the harness's DUT: a hierconn wire (flatten
+// connects it to the register of that name, e.g. \u_dut.g_ram.mem[3] ), packed into vec.
+`define FORMAL_WORD(vec, bits, k, name) \
+  (* hierconn *) logic [(bits)-1:0] name ; \
+  assign vec[(k)*(bits) +: (bits)] = name ;
+
+`endif

@@ -1,0 +1,81 @@
+// normalizer_formal: proves rtl/normalizer.sv (8 stages, a 4-bit payload) holds valid and its whole
+// output until ready, passes every beat once, in order, with its payload unchanged (each input
+// beat carries its sequence number as payload), keeps ready_o = ready_i || !valid_o and holds at
+// most 8 beats. stall_pipe_checker ties the payload RAM of its u_pipe to the tags in flight; the
+// normal's datapath is free (its values are the unit benches' business).
+`include "formal_stream.svh"
+
+module normalizer_formal #(
+  parameter int unsigned PayloadBits = 4,  // the tag: >= log2 of the RAM depth
+  localparam int unsigned NB      = watkins_pkg::NormalInBits,
+  localparam int unsigned UB      = watkins_pkg::UnitBits,
+  localparam int unsigned Stages  = 8,  // normalizer's pipe: squares, rsqrt (5), product, round
+  localparam int unsigned PtrBits = $clog2(Stages + 1),
+  localparam int unsigned Depth   = 2 ** PtrBits
+) (
+  input  logic                   clk_i,
+  input  logic                   rst_ni,
+  input  logic [3*NB-1:0]        normal_i,
+  input  logic [PayloadBits-1:0] payload_i,
+  input  logic                   valid_i,
+  input  logic                   ready_i
+);
+  logic                   ready_o, valid_o;
+  logic [3*UB-1:0]        unit_o;
+  logic                   null_o;
+  logic [PayloadBits-1:0] payload_o;
+  normalizer #(.PayloadBits(PayloadBits)) u_dut (.*);
+
+  `FORMAL_PAST
+  `FORMAL_COUNT(n_in_q, PayloadBits, valid_i, ready_o)
+  `FORMAL_COUNT(n_out_q, PayloadBits, valid_o, ready_i)
+  `FORMAL_ASSUME_HOLD(in, valid_i, ready_o, {normal_i, payload_i})
+  `FORMAL_ASSERT_HOLD(out, valid_o, ready_i, {unit_o, null_o, payload_o})
+
+  always_comb begin
+    if (valid_i) assume (payload_i == n_in_q);
+    if (rst_ni) begin
+      if (valid_o) assert (payload_o == n_out_q);
+      assert (ready_o == (ready_i || !valid_o));
+      assert (PayloadBits'(n_in_q - n_out_q) <= PayloadBits'(Stages));
+    end
+  end
+
+  // The internals of u_pipe (stall_pipe with PayloadRam) and the stall.
+  (* hierconn *) logic                   \u_dut.en ;
+  (* hierconn *) logic [Stages-1:0]      \u_dut.u_pipe.valid_q ;
+  (* hierconn *) logic [PtrBits-1:0]     \u_dut.u_pipe.g_ram.wr_q ;
+  (* hierconn *) logic [PtrBits-1:0]     \u_dut.u_pipe.g_ram.rd_q ;
+  (* hierconn *) logic [PayloadBits-1:0] \u_dut.u_pipe.g_ram.out_q ;
+  logic [Depth*PayloadBits-1:0] mem;
+  `FORMAL_WORD(mem, PayloadBits, 0, \u_dut.u_pipe.g_ram.mem[0] )
+  `FORMAL_WORD(mem, PayloadBits, 1, \u_dut.u_pipe.g_ram.mem[1] )
+  `FORMAL_WORD(mem, PayloadBits, 2, \u_dut.u_pipe.g_ram.mem[2] )
+  `FORMAL_WORD(mem, PayloadBits, 3, \u_dut.u_pipe.g_ram.mem[3] )
+  `FORMAL_WORD(mem, PayloadBits, 4, \u_dut.u_pipe.g_ram.mem[4] )
+  `FORMAL_WORD(mem, PayloadBits, 5, \u_dut.u_pipe.g_ram.mem[5] )
+  `FORMAL_WORD(mem, PayloadBits, 6, \u_dut.u_pipe.g_ram.mem[6] )
+  `FORMAL_WORD(mem, PayloadBits, 7, \u_dut.u_pipe.g_ram.mem[7] )
+  `FORMAL_WORD(mem, PayloadBits, 8, \u_dut.u_pipe.g_ram.mem[8] )
+  `FORMAL_WORD(mem, PayloadBits, 9, \u_dut.u_pipe.g_ram.mem[9] )
+  `FORMAL_WORD(mem, PayloadBits, 10, \u_dut.u_pipe.g_ram.mem[10] )
+  `FORMAL_WORD(mem, PayloadBits, 11, \u_dut.u_pipe.g_ram.mem[11] )
+  `FORMAL_WORD(mem, PayloadBits, 12, \u_dut.u_pipe.g_ram.mem[12] )
+  `FORMAL_WORD(mem, PayloadBits, 13, \u_dut.u_pipe.g_ram.mem[13] )
+  `FORMAL_WORD(mem, PayloadBits, 14, \u_dut.u_pipe.g_ram.mem[14] )
+  `FORMAL_WORD(mem, PayloadBits, 15, \u_dut.u_pipe.g_ram.mem[15] )
+
+  stall_pipe_checker #(.Stages(Stages), .PayloadBits(PayloadBits), .PayloadRam(1'b1)) u_check (
+    .clk_i,
+    .rst_ni,
+    .en_i        (\u_dut.en ),
+    .n_in_i      (n_in_q),
+    .n_out_i     (n_out_q),
+    .valid_q_i   (\u_dut.u_pipe.valid_q ),
+    .shift_q_i   ('0),
+    .wr_q_i      (\u_dut.u_pipe.g_ram.wr_q ),
+    .rd_q_i      (\u_dut.u_pipe.g_ram.rd_q ),
+    .mem_i       (mem),
+    .out_q_i     (\u_dut.u_pipe.g_ram.out_q )
+  );
+endmodule

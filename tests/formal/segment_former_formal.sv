@@ -1,0 +1,137 @@
+// segment_former_formal: proves rtl/segment_former.sv (3 table entries, 4 polygon ids, 3-bit
+// channel vector) holds valid and its whole output until ready, and emits exactly the segments a
+// reference pairing says, once each, in order: the harness keeps which polygons are open on the
+// line and the vector of each one's opening edge; an input edge of an open polygon (or the
+// end-of-line marker) must come out as the next segment, with the opening edge's vector as e, its
+// own as f (each input edge carries its sequence number as its vector), its polygon, material
+// and marker; any other edge opens its polygon and emits nothing. Segments due minus segments
+// out is seg_valid_o. The environment opens at most 3 segments per line (the table's capacity: a
+// line carries at most MaxActiveEdges edges, and an opening edge takes the next entry never used
+// on the line). Induction invariants tie every table entry to the reference: it holds an open
+// polygon with its opening vector, no two entries hold one polygon, as many entries are open as
+// polygons, the entries used on the line are the segments opened on it and no later entry is open.
+`include "formal_stream.svh"
+
+module segment_former_formal #(
+  localparam int unsigned N              = 3,  // MaxActiveEdges: the entries probed below
+  localparam int unsigned VectorBits     = 3,  // the tag
+  localparam int unsigned PolyIdBits     = 2,
+  localparam int unsigned MaterialIdBits = 1,
+  localparam int unsigned Polys          = 2 ** PolyIdBits
+) (
+  input  logic                      clk_i,
+  input  logic                      rst_ni,
+  input  logic [PolyIdBits-1:0]     edge_poly_i,
+  input  logic [MaterialIdBits-1:0] edge_material_i,
+  input  logic [VectorBits-1:0]     edge_value_i,
+  input  logic                      edge_eol_i,
+  input  logic                      edge_valid_i,
+  input  logic                      seg_ready_i
+);
+  logic                      edge_ready_o, seg_eol_o, seg_valid_o;
+  logic [VectorBits-1:0]     seg_e_o, seg_f_o;
+  logic [PolyIdBits-1:0]     seg_poly_o;
+  logic [MaterialIdBits-1:0] seg_material_o;
+  segment_former #(
+    .MaxActiveEdges(N), .VectorBits(VectorBits), .PolyIdBits(PolyIdBits),
+    .MaterialIdBits(MaterialIdBits)
+  ) u_dut (.*);
+
+  `FORMAL_PAST
+  `FORMAL_ASSUME_HOLD(in, edge_valid_i, edge_ready_o, {edge_poly_i, edge_material_i, edge_value_i,
+    edge_eol_i})
+  `FORMAL_ASSERT_HOLD(out, seg_valid_o, seg_ready_i, {seg_e_o, seg_f_o, seg_poly_o, seg_material_o,
+    seg_eol_o})
+
+  // The reference: open polygons and their opening vectors; the segment due next.
+  logic                  fire, closes;
+  logic [Polys-1:0]      open_q;
+  logic [VectorBits-1:0] opened_q [Polys];
+  logic [VectorBits-1:0] exp_e_q, exp_f_q;
+  logic [PolyIdBits-1:0] exp_poly_q;
+  logic [MaterialIdBits-1:0] exp_material_q;
+  logic                  exp_eol_q;
+  assign fire   = edge_valid_i && edge_ready_o;
+  assign closes = edge_eol_i || open_q[edge_poly_i];
+  `FORMAL_COUNT(n_in_q, VectorBits, edge_valid_i, edge_ready_o)
+  `FORMAL_COUNT(n_due_q, VectorBits, edge_valid_i && closes, edge_ready_o)
+  `FORMAL_COUNT(n_out_q, VectorBits, seg_valid_o, seg_ready_i)
+
+  logic [1:0] opened_n_q;  // segments opened on this line, <= N
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      open_q     <= '0;
+      opened_n_q <= '0;
+    end else if (fire) begin
+      if (edge_eol_i) begin
+        open_q     <= '0;
+        opened_n_q <= '0;
+      end else begin
+        open_q[edge_poly_i] <= !open_q[edge_poly_i];
+        if (!open_q[edge_poly_i]) opened_n_q <= opened_n_q + 1'b1;
+      end
+    end
+  end
+  always_ff @(posedge clk_i) begin
+    if (fire && !edge_eol_i && !open_q[edge_poly_i]) opened_q[edge_poly_i] <= edge_value_i;
+    if (fire && closes) begin
+      exp_e_q        <= opened_q[edge_poly_i];
+      exp_f_q        <= edge_value_i;
+      exp_poly_q     <= edge_poly_i;
+      exp_material_q <= edge_material_i;
+      exp_eol_q      <= edge_eol_i;
+    end
+  end
+
+  function automatic int unsigned count(logic [Polys-1:0] v);
+    count = 0;
+    for (int unsigned i = 0; i < Polys; i++) count = count + 32'(v[i]);
+  endfunction
+
+  // The table (hierconn wires: flatten connects them to u_dut's registers).
+  (* hierconn *) logic [N-1:0]          \u_dut.open_q ;
+  (* hierconn *) logic [1:0]            \u_dut.used_q ;
+  (* hierconn *) logic [PolyIdBits-1:0] \u_dut.open_poly_q[0] ;
+  (* hierconn *) logic [PolyIdBits-1:0] \u_dut.open_poly_q[1] ;
+  (* hierconn *) logic [PolyIdBits-1:0] \u_dut.open_poly_q[2] ;
+  (* hierconn *) logic [VectorBits-1:0] \u_dut.open_value_q[0] ;
+  (* hierconn *) logic [VectorBits-1:0] \u_dut.open_value_q[1] ;
+  (* hierconn *) logic [VectorBits-1:0] \u_dut.open_value_q[2] ;
+  logic [PolyIdBits-1:0] poly [N];
+  logic [VectorBits-1:0] value [N];
+  assign poly[0]  = \u_dut.open_poly_q[0] ;
+  assign poly[1]  = \u_dut.open_poly_q[1] ;
+  assign poly[2]  = \u_dut.open_poly_q[2] ;
+  assign value[0] = \u_dut.open_value_q[0] ;
+  assign value[1] = \u_dut.open_value_q[1] ;
+  assign value[2] = \u_dut.open_value_q[2] ;
+
+  always_comb begin
+    if (edge_valid_i) begin
+      assume (edge_value_i == n_in_q);
+      // At most N segments opened per line.
+      assume (edge_eol_i || open_q[edge_poly_i] || opened_n_q < 2'(N));
+    end
+    if (rst_ni) begin
+      assert (edge_ready_o == (seg_ready_i || !seg_valid_o));
+      // Every segment due comes out once, in order, as the reference pairs it.
+      assert (VectorBits'(n_due_q - n_out_q) == VectorBits'(seg_valid_o));
+      if (seg_valid_o) begin
+        assert (seg_f_o == exp_f_q && seg_poly_o == exp_poly_q && seg_material_o == exp_material_q
+                && seg_eol_o == exp_eol_q);
+        if (!seg_eol_o) assert (seg_e_o == exp_e_q);
+      end
+      // Induction invariants: the table mirrors the reference.
+      assert (count(Polys'(\u_dut.open_q )) == count(open_q));
+      assert (\u_dut.used_q == opened_n_q);
+      for (int unsigned i = 0; i < N; i++) begin
+        if (\u_dut.open_q [i]) begin
+          assert (i < 32'(\u_dut.used_q ));
+          assert (open_q[poly[i]] && value[i] == opened_q[poly[i]]);
+          for (int unsigned j = i + 1; j < N; j++)
+            if (\u_dut.open_q [j]) assert (poly[i] != poly[j]);
+        end
+      end
+    end
+  end
+endmodule
