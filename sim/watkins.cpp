@@ -126,14 +126,16 @@ void check_rtl_config(const RtlArgs& a, const watkins::PreparedScene& prepared, 
 // Runs the RTL on the prepared scene, compares with the model image, prints the statistics and
 // replaces `image` with the RTL's. Returns the exit code: 3 on mismatch, hang, overflow or protocol error.
 int run_rtl_mode(const RtlArgs& a, const watkins::PreparedScene& prepared, watkins::Image& image,
-                 long long fragments, long long predicted) {
+                 long long fragments, long long predicted, watkins::OutputFiles& files) {
 #ifdef WATKINS_HAVE_RTL
   namespace tb = watkins::tb;
   tb::RtlOptions opt;
   opt.seed = a.seed;
   opt.gap = a.gap;
   opt.stall = a.stall;
-  opt.trace_path = a.trace;
+  // The waveform streams out during the run, under a temporary name renamed with the other
+  // outputs only when the whole run succeeded.
+  if (!a.trace.empty()) opt.trace_path = files.stage(a.trace);
   opt.sparse = a.sparse;
   const tb::RtlResult r = tb::run_rtl(prepared, opt, &image);
   std::printf("rtl           %s\n", r.top.c_str());
@@ -164,7 +166,7 @@ int run_rtl_mode(const RtlArgs& a, const watkins::PreparedScene& prepared, watki
   }
   return 0;
 #else
-  (void)a, (void)prepared, (void)image, (void)fragments, (void)predicted;
+  (void)a, (void)prepared, (void)image, (void)fragments, (void)predicted, (void)files;
   return 3;
 #endif
 }
@@ -325,6 +327,7 @@ int render(const RenderArgs& a) {
   const Image reference = render_float_reference(scene, &fstats);
   const double t_ref = seconds_since(t1);
 
+  OutputFiles files;     // every output, written only when the whole run succeeded
   Image result;          // the fixed model's image, or the RTL's with --rtl
   int rtl_status = 0;  // --rtl: 1 when the RTL differs from the model
   if (a.model == "fixed") {
@@ -347,7 +350,7 @@ int render(const RenderArgs& a) {
     std::printf("predicted     %lld cycles (full-frame), %lld cycles (sparse): the RTL with no gaps or stalls "
                 "(cycle model, %.3f s)\n", full.cycles, sparse.cycles, seconds_since(t3));
     if (a.rtl.enabled)  // --rtl
-      rtl_status = run_rtl_mode(a.rtl, prepared, result, s.fragments, (a.rtl.sparse ? sparse : full).cycles);
+      rtl_status = run_rtl_mode(a.rtl, prepared, result, s.fragments, (a.rtl.sparse ? sparse : full).cycles, files);
   } else {
     result = reference;
     std::printf("double model  %lld fragments, %.3f s\n", fstats.fragments, t_ref);
@@ -363,7 +366,6 @@ int render(const RenderArgs& a) {
   if ((!a.truth.empty() || !a.truth_diff.empty()) && !truth.unavailable.empty())
     throw SceneError(std::string(!a.truth.empty() ? "--truth " + a.truth : "--truth-diff " + a.truth_diff) +
                      ": no analytic truth for " + scene.name + ": " + truth.unavailable + " (nothing written)");
-  OutputFiles files;
   if (!a.diff.empty()) files.add(a.diff, encode_png(diff_image(result, reference)));
   if (!a.truth.empty()) files.add(a.truth, encode_png(truth.image));
   if (!a.truth_diff.empty()) files.add(a.truth_diff, encode_png(truth_diff_image(scene, result, truth)));

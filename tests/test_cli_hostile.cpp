@@ -112,6 +112,22 @@ TEST_F(CliHostile, NoOutputWhenTheTruthFailsAfterTheImage) {
   EXPECT_EQ(files(), 0u);
 }
 
+// The RTL's waveform streams out during the run: under a temporary name, renamed with the other
+// outputs only when everything succeeded, removed when anything failed.
+TEST_F(CliHostile, RtlTraceIsWrittenAllOrNothing) {
+  const CliRun r = run_cli("render " + sphere() + " --rule lambert --rtl --trace w.fst --out a.png --truth t.png", dir_);
+  if (r.output.find("this build has no RTL simulation") != std::string::npos) GTEST_SKIP() << r.output;
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("rtl vs model  0 mismatching pixels"), std::string::npos) << r.output;  // it ran
+  EXPECT_NE(r.output.find("(nothing written)"), std::string::npos) << r.output;
+  EXPECT_EQ(files(), 0u) << "no trace and no temporary";
+  const CliRun ok = run_cli("render " + sphere() + " --rtl --trace w.fst --out a.png", dir_);
+  EXPECT_EQ(ok.exit_code, 0) << ok.output;
+  ASSERT_TRUE(exists("w.fst") && exists("a.png"));
+  EXPECT_GT(std::filesystem::file_size(dir_ + "/w.fst"), 1000u);
+  EXPECT_EQ(files(), 2u);
+}
+
 TEST_F(CliHostile, SuccessWritesEveryOutputAndNoTemporary) {
   const CliRun r = run_cli("render " + sphere() + " --shading phong --out a.png --diff d.png --truth t.png", dir_);
   EXPECT_EQ(r.exit_code, 0) << r.output;

@@ -51,18 +51,29 @@ void OutputFiles::add(const std::string& path, std::vector<unsigned char> bytes)
   files_.push_back({path, "", std::move(bytes)});
 }
 
+// The temporary beside `path`, or "" when path names an existing non-regular file (/dev/null, a
+// FIFO), which is written in place.
+std::string OutputFiles::temporary_for(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) return "";
+  const std::filesystem::path p(path);
+  return (p.parent_path() / ("." + p.filename().string() + ".tmp" + std::to_string(::getpid()))).string();
+}
+
+std::string OutputFiles::stage(const std::string& path) {
+  const std::string temp = temporary_for(path);
+  files_.push_back({path, temp, {}, true});
+  return temp.empty() ? path : temp;
+}
+
 void OutputFiles::commit() {
   for (File& f : files_) {
-    struct stat st {};
-    if (::stat(f.path.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) continue;  // a device: in place below
-    const std::filesystem::path p(f.path);
-    const std::string temp = (p.parent_path() / ("." + p.filename().string() + ".tmp" +
-                                                  std::to_string(::getpid()))).string();
-    f.temp = temp;  // set first: the destructor removes it if the write fails half-way
-    write_bytes(temp, f.bytes, f.path);
+    if (f.staged) continue;
+    f.temp = temporary_for(f.path);  // set first: the destructor removes it if the write fails half-way
+    if (!f.temp.empty()) write_bytes(f.temp, f.bytes, f.path);
   }
   for (File& f : files_)
-    if (f.temp.empty()) write_bytes(f.path, f.bytes);
+    if (f.temp.empty() && !f.staged) write_bytes(f.path, f.bytes);
   for (File& f : files_) {
     if (f.temp.empty()) continue;
     if (std::rename(f.temp.c_str(), f.path.c_str()) != 0)

@@ -24,6 +24,10 @@ class OutputFiles {
  public:
   void add(const std::string& path, std::vector<unsigned char> bytes);
   void add(const std::string& path, const std::string& text) { add(path, std::vector<unsigned char>(text.begin(), text.end())); }
+  // A file another writer streams out (e.g. the simulator's waveform): returns the name to write
+  // it under, a temporary beside `path` that commit() renames over it and a failed run removes
+  // (or `path` itself when it names a device).
+  std::string stage(const std::string& path);
   void commit();
   ~OutputFiles();
 
@@ -31,7 +35,9 @@ class OutputFiles {
   struct File {
     std::string path, temp;
     std::vector<unsigned char> bytes;
+    bool staged = false;  // written by someone else under temp (or in place): only renamed here
   };
+  static std::string temporary_for(const std::string& path);
   std::vector<File> files_;
 };
 
