@@ -45,6 +45,9 @@ int main(int argc, char** argv) {
   app.add_option("--grid", grid, "instead of a scene: a 512x512 screen of 2*N*N triangles covering each pixel once")
       ->check(CLI::Range(1, 256))
       ->excludes(scene_opt);
+  std::string shading;
+  app.add_option("--shading", shading, "gouraud or phong: the pipeline (default: the scene's)")
+      ->check(CLI::IsMember({"gouraud", "phong"}));
   int profile_frames = 0;
   app.add_option("--profile-frames", profile_frames,
                  "only render the model this many times and print its fragments (for callgrind: "
@@ -54,7 +57,9 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   try {
     using namespace watkins;
-    const BuiltScene scene = grid > 0 ? watkins::grid_scene(512, grid) : load_scene_or_default(scene_path);
+    BuildOptions opt;
+    if (!shading.empty()) opt.shading = shading == "phong" ? ShadingMode::Phong : ShadingMode::Gouraud;
+    const BuiltScene scene = grid > 0 ? watkins::grid_scene(512, grid) : load_scene_or_default(scene_path, opt);
     Config cfg = config_path.empty() ? Config{} : load_config(config_path);
     cfg.max_active_edges = 1 << 20;  // measure speed, not capacity
     const PreparedScene prepared = prepare(scene, cfg);
