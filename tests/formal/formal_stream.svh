@@ -52,4 +52,46 @@
   (* hierconn *) logic [(bits)-1:0] name ; \
   assign vec[(k)*(bits) +: (bits)] = name ;
 
+// A stage that passes a payload through untouched, checked with tags: the environment tags each
+// input beat with its sequence number (payload_i == n_in_q); each output beat must carry the next
+// one expected (nothing dropped, duplicated or reordered), ready_o = ready_i || !valid_o, and the
+// beats inside stay within capacity. Names: valid_i, ready_o, payload_i, valid_o, ready_i,
+// payload_o, n_in_q, n_out_q (FORMAL_COUNT), PayloadBits.
+`define FORMAL_TAGGED_STAGE(capacity) \
+  always_comb begin \
+    if (valid_i) assume (payload_i == n_in_q); \
+    if (rst_ni) begin \
+      if (valid_o) assert (payload_o == n_out_q); \
+      assert (ready_o == (ready_i || !valid_o)); \
+      assert (PayloadBits'(n_in_q - n_out_q) <= PayloadBits'(capacity)); \
+    end \
+  end
+
+// The probes of a DUT whose payload rides a stall_pipe with PayloadRam (u_dut.u_pipe) and the
+// stall u_dut.en: declares the hierconn wires and the packed `mem` that FORMAL_WORD fills with the
+// RAM's Depth words (one line per word: yosys names each word's register apart).
+`define FORMAL_RAM_PIPE_PROBES \
+  (* hierconn *) logic                   \u_dut.en ; \
+  (* hierconn *) logic [Stages-1:0]      \u_dut.u_pipe.valid_q ; \
+  (* hierconn *) logic [PtrBits-1:0]     \u_dut.u_pipe.g_ram.wr_q ; \
+  (* hierconn *) logic [PtrBits-1:0]     \u_dut.u_pipe.g_ram.rd_q ; \
+  (* hierconn *) logic [PayloadBits-1:0] \u_dut.u_pipe.g_ram.out_q ; \
+  logic [Depth*PayloadBits-1:0] mem;
+
+// stall_pipe_checker over those probes: the tags in flight, stage by stage.
+`define FORMAL_RAM_PIPE_CHECK \
+  stall_pipe_checker #(.Stages(Stages), .PayloadBits(PayloadBits), .PayloadRam(1'b1)) u_check ( \
+    .clk_i, \
+    .rst_ni, \
+    .en_i        (\u_dut.en ), \
+    .n_in_i      (n_in_q), \
+    .n_out_i     (n_out_q), \
+    .valid_q_i   (\u_dut.u_pipe.valid_q ), \
+    .shift_q_i   ('0), \
+    .wr_q_i      (\u_dut.u_pipe.g_ram.wr_q ), \
+    .rd_q_i      (\u_dut.u_pipe.g_ram.rd_q ), \
+    .mem_i       (mem), \
+    .out_q_i     (\u_dut.u_pipe.g_ram.out_q ) \
+  );
+
 `endif

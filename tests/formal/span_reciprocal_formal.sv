@@ -33,22 +33,10 @@ module span_reciprocal_formal #(
   `FORMAL_ASSUME_HOLD(in, valid_i, ready_o, {dx_i, payload_i})
   `FORMAL_ASSERT_HOLD(out, valid_o, ready_i, {recip_o, p_o, payload_o})
 
-  always_comb begin
-    if (valid_i) assume (payload_i == n_in_q);
-    if (rst_ni) begin
-      if (valid_o) assert (payload_o == n_out_q);
-      assert (ready_o == (ready_i || !valid_o));
-      assert (PayloadBits'(n_in_q - n_out_q) <= PayloadBits'(Stages));
-    end
-  end
+  `FORMAL_TAGGED_STAGE(Stages)
 
   // The internals of u_pipe (stall_pipe with PayloadRam).
-  (* hierconn *) logic                  \u_dut.en ;
-  (* hierconn *) logic [Stages-1:0]      \u_dut.u_pipe.valid_q ;
-  (* hierconn *) logic [PtrBits-1:0]     \u_dut.u_pipe.g_ram.wr_q ;
-  (* hierconn *) logic [PtrBits-1:0]     \u_dut.u_pipe.g_ram.rd_q ;
-  (* hierconn *) logic [PayloadBits-1:0] \u_dut.u_pipe.g_ram.out_q ;
-  logic [Depth*PayloadBits-1:0] mem;
+  `FORMAL_RAM_PIPE_PROBES
   `FORMAL_WORD(mem, PayloadBits, 0, \u_dut.u_pipe.g_ram.mem[0] )
   `FORMAL_WORD(mem, PayloadBits, 1, \u_dut.u_pipe.g_ram.mem[1] )
   `FORMAL_WORD(mem, PayloadBits, 2, \u_dut.u_pipe.g_ram.mem[2] )
@@ -82,17 +70,5 @@ module span_reciprocal_formal #(
   `FORMAL_WORD(mem, PayloadBits, 30, \u_dut.u_pipe.g_ram.mem[30] )
   `FORMAL_WORD(mem, PayloadBits, 31, \u_dut.u_pipe.g_ram.mem[31] )
 
-  stall_pipe_checker #(.Stages(Stages), .PayloadBits(PayloadBits), .PayloadRam(1'b1)) u_check (
-    .clk_i,
-    .rst_ni,
-    .en_i        (\u_dut.en ),
-    .n_in_i      (n_in_q),
-    .n_out_i     (n_out_q),
-    .valid_q_i   (\u_dut.u_pipe.valid_q ),
-    .shift_q_i   ('0),
-    .wr_q_i      (\u_dut.u_pipe.g_ram.wr_q ),
-    .rd_q_i      (\u_dut.u_pipe.g_ram.rd_q ),
-    .mem_i       (mem),
-    .out_q_i     (\u_dut.u_pipe.g_ram.out_q )
-  );
+  `FORMAL_RAM_PIPE_CHECK
 endmodule
