@@ -34,6 +34,7 @@
 #include "prepare.hpp"
 #include "scene.hpp"
 #include "scene_error.hpp"
+#include "usage_error.hpp"
 #include "watkins_top.hpp"
 
 namespace watkins::size {
@@ -213,7 +214,7 @@ int parse_bound(const std::string& s) {
     used = 0;
   }
   if (s.empty() || used != s.size() || v < 0 || v > fmt::ShadeMax)
-    throw std::runtime_error("--bound: expected a whole number of levels in 0..255, got \"" + s + "\"");
+    throw UsageError("--bound: expected a whole number of levels in 0..255, got \"" + s + "\"");
   return static_cast<int>(v);
 }
 
@@ -246,7 +247,7 @@ int run_size(const SizeArgs& a) {
   BuildOptions opt;
   if (!a.shading.empty()) {
     opt.shading = parse_shading_mode(a.shading);
-    if (!opt.shading) throw SceneError("--shading: unknown shading mode \"" + a.shading + "\" (gouraud, phong)");
+    if (!opt.shading) throw UsageError("--shading: unknown shading mode \"" + a.shading + "\" (gouraud, phong)");
   }
   const auto t0 = std::chrono::steady_clock::now();
   const BuiltScene scene = load_scene_or_default(a.scene, opt);

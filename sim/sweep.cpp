@@ -43,6 +43,7 @@
 #include "image_io.hpp"
 #include "prepare.hpp"
 #include "scene.hpp"
+#include "usage_error.hpp"
 #include "watkins_top.hpp"
 
 #ifdef WATKINS_HAVE_RTL
@@ -410,9 +411,9 @@ void parse_shard(const std::string& s, long long& i, long long& n) {
     i = std::stoll(s.substr(0, slash));
     n = std::stoll(s.substr(slash + 1));
   } catch (const std::exception&) {
-    throw std::runtime_error("--shard: expected i/N (0 <= i < N), got \"" + s + "\"");
+    throw UsageError("--shard: expected i/N (0 <= i < N), got \"" + s + "\"");
   }
-  if (n < 1 || i < 0 || i >= n) throw std::runtime_error("--shard: expected i/N with 0 <= i < N, got \"" + s + "\"");
+  if (n < 1 || i < 0 || i >= n) throw UsageError("--shard: expected i/N with 0 <= i < N, got \"" + s + "\"");
 }
 
 }  // namespace
@@ -460,9 +461,9 @@ int run_sweep(const SweepArgs& in) {
     const std::string root = WATKINS_SOURCE_DIR;
     a.scenes = {root + "/scenes/sphere.json", root + "/scenes/cone.json"};
   }
-  if (a.full_frame && !a.rtl) throw std::runtime_error("--full-frame needs --rtl");
+  if (a.full_frame && !a.rtl) throw UsageError("--full-frame needs --rtl");
 #ifndef WATKINS_HAVE_RTL
-  if (a.rtl) throw std::runtime_error("--rtl: this build has no RTL simulation (install Verilator and SystemC)");
+  if (a.rtl) throw UsageError("--rtl: this build has no RTL simulation (install Verilator and SystemC)");
 #endif
   long long shard = 0, shards = 1;
   parse_shard(a.shard, shard, shards);

@@ -49,6 +49,7 @@
 
 #include "config.hpp"
 #include "config_file.hpp"
+#include "usage_error.hpp"
 
 namespace watkins::synth {
 namespace {
@@ -666,8 +667,8 @@ CLI::App* add_synth_command(CLI::App& app, SynthArgs& a) {
 }
 
 int run_synth(const SynthArgs& a) {
-  if (a.jobs < 1) throw std::runtime_error("--jobs: must be at least 1");
-  if (a.timeout < 1) throw std::runtime_error("--timeout: must be at least 1 second");
+  if (a.jobs < 1) throw UsageError("--jobs: must be at least 1");
+  if (a.timeout < 1) throw UsageError("--timeout: must be at least 1 second");
   std::vector<const Design*> designs;
   const std::vector<std::string> design_names = split_list(a.designs);
   if (design_names.empty()) {
@@ -678,7 +679,7 @@ int run_synth(const SynthArgs& a) {
       if (it == std::end(kDesigns)) {
         std::string known;
         for (const Design& d : kDesigns) known += (known.empty() ? "" : ", ") + std::string(d.name);
-        throw std::runtime_error("--designs: unknown design \"" + n + "\" (" + known + ")");
+        throw UsageError("--designs: unknown design \"" + n + "\" (" + known + ")");
       }
       designs.push_back(&*it);
     }
@@ -689,10 +690,10 @@ int run_synth(const SynthArgs& a) {
   for (const std::string& n : split_list(a.targets)) {
     auto it = std::find_if(std::begin(kTargets), std::end(kTargets), [&](const Target& t) { return n == t.name; });
     if (it == std::end(kTargets))
-      throw std::runtime_error("--targets: unknown target \"" + n + "\" (ice40-up5k, ice40-hx8k, ecp5-85)");
+      throw UsageError("--targets: unknown target \"" + n + "\" (ice40-up5k, ice40-hx8k, ecp5-85)");
     targets.push_back(&*it);
   }
-  if (targets.empty()) throw std::runtime_error("--targets: none given");
+  if (targets.empty()) throw UsageError("--targets: none given");
   struct NamedConfig {
     std::string arg, label;
     Config config;
@@ -700,7 +701,7 @@ int run_synth(const SynthArgs& a) {
   std::vector<NamedConfig> configs;
   for (const std::string& c : split_list(a.configs))
     configs.push_back({c, config_label(c), c == "default" ? Config{} : load_config(c)});
-  if (configs.empty()) throw std::runtime_error("--config: none given");
+  if (configs.empty()) throw UsageError("--config: none given");
 
   const Rtl rtl = find_rtl(a.rtl_dir.empty() ? std::string(WATKINS_SOURCE_DIR) + "/rtl" : a.rtl_dir);
   if (!on_path("yosys")) throw std::runtime_error("yosys not found on PATH (scripts/setup.sh installs it)");

@@ -31,6 +31,7 @@
 #include "size.hpp"
 #include "sweep.hpp"
 #include "synth.hpp"
+#include "usage_error.hpp"
 #include "watkins_top.hpp"
 
 // ==== RTL co-simulation (--rtl): owned by the testbench; see testbench/rtl_bench.hpp ==========
@@ -40,10 +41,7 @@
 
 namespace {
 
-// A wrong command line (exit code 2), as against bad input (1) and internal errors (3).
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
+using watkins::UsageError;  // a wrong command line: exit code 2 (usage_error.hpp)
 
 // CLI::Range lets NaN through (every comparison with it is false).
 const CLI::Validator kFinite(
@@ -257,16 +255,16 @@ int render(const RenderArgs& a) {
   BuildOptions opt;
   if (!a.shading.empty()) {
     opt.shading = parse_shading_mode(a.shading);
-    if (!opt.shading) throw SceneError("--shading: unknown shading mode \"" + a.shading + "\" (gouraud, phong)");
+    if (!opt.shading) throw UsageError("--shading: unknown shading mode \"" + a.shading + "\" (gouraud, phong)");
   }
   if (!a.rule.empty()) {
     opt.rule = parse_shading_rule(a.rule);
-    if (!opt.rule) throw SceneError("--rule: unknown shading rule \"" + a.rule +
+    if (!opt.rule) throw UsageError("--rule: unknown shading rule \"" + a.rule +
                                     "\" (gouraud, lambert, warnock, romney, phong)");
   }
   if (!a.depth.empty()) {
     opt.depth = parse_depth_mode(a.depth);
-    if (!opt.depth) throw SceneError("--depth: unknown depth mode \"" + a.depth + "\" (inverse-z, z)");
+    if (!opt.depth) throw UsageError("--depth: unknown depth mode \"" + a.depth + "\" (inverse-z, z)");
   }
   if (a.depth_tie_given) {
     opt.depth_tie = parse_depth_tie(a.depth_tie);

@@ -113,15 +113,15 @@ TEST_F(Cli, ScreenTooLarge) {
 
 TEST_F(Cli, UnknownShadingRuleOnCommandLine) {
   const CliRun r = run("render --rule blinn --out " + dir_ + "/x.png");
-  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.exit_code, 2);  // a wrong option value: usage
   EXPECT_NE(r.output.find("--rule: unknown shading rule \"blinn\""), std::string::npos) << r.output;
   EXPECT_FALSE(exists(dir_ + "/x.png"));
 }
 
 TEST_F(Cli, UnknownShadingModeOnCommandLine) {
   const CliRun r = run("render --shading flat --out " + dir_ + "/x.png");
-  EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.output.find("watkins: error: --shading: unknown shading mode \"flat\" (gouraud, phong)"),
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("watkins: usage: --shading: unknown shading mode \"flat\" (gouraud, phong)"),
             std::string::npos) << r.output;
   EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << "one-line error:\n" << r.output;
   EXPECT_FALSE(exists(dir_ + "/x.png"));

@@ -1,5 +1,6 @@
 // `watkins synth` refuses bad input before it runs any tool: one line naming the option and the
-// value (and the names it accepts), exit code 1, no work folder. (The place-and-route itself is
+// value (and the names it accepts), exit code 2 for a wrong option value (usage), 1 for a bad
+// configuration file, no work folder. (The place-and-route itself is
 // the ctest synth_smoke, label synth: tests/synth/smoke.py.)
 #include <gtest/gtest.h>
 
@@ -12,11 +13,13 @@ namespace {
 
 class CliSynth : public ::testing::Test, protected watkins::test::ScratchDir {
  protected:
-  void expect_refused(const std::string& args, const std::string& message) {
+  // code 2: a wrong option value ("watkins: usage: "); 1: a bad file ("watkins: error: ").
+  void expect_refused(const std::string& args, const std::string& message, int code = 2) {
     const std::string work = dir_ + "/work";
     const watkins::test::CliRun r = watkins::test::run_cli("synth " + args + " --work " + work);
-    EXPECT_EQ(r.exit_code, 1) << r.output;
-    EXPECT_NE(r.output.find("watkins: error: " + message), std::string::npos) << r.output;
+    EXPECT_EQ(r.exit_code, code) << r.output;
+    EXPECT_NE(r.output.find((code == 2 ? "watkins: usage: " : "watkins: error: ") + message), std::string::npos)
+        << r.output;
     EXPECT_EQ(r.output.find('\n'), r.output.size() - 1) << "expected one line:\n" << r.output;
     EXPECT_FALSE(std::filesystem::exists(work)) << "nothing may run for bad input";
   }
@@ -31,12 +34,12 @@ TEST_F(CliSynth, UnknownTargetListsTheTargets) {
 }
 
 TEST_F(CliSynth, MissingConfigurationFile) {
-  expect_refused("--config " + dir_ + "/nope.json", dir_ + "/nope.json: cannot open configuration file");
+  expect_refused("--config " + dir_ + "/nope.json", dir_ + "/nope.json: cannot open configuration file", 1);
 }
 
 TEST_F(CliSynth, InvalidConfigurationNamesTheField) {
   const std::string cfg = write("narrow.json", R"({"max_width": 0})");
-  expect_refused("--config " + cfg, "");
+  expect_refused("--config " + cfg, "", 1);
   const watkins::test::CliRun r = watkins::test::run_cli("synth --config " + cfg + " --work " + dir_ + "/w");
   EXPECT_NE(r.output.find("max_width"), std::string::npos) << r.output;
 }

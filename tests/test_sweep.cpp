@@ -284,7 +284,7 @@ TEST_F(SweepCli, ShardsSplitTheGrid) {
   EXPECT_EQ(points, (std::set<std::string>{"0", "1", "2"}));
   int code = 0;
   EXPECT_NE(run("sweep --shard 2/2", &code).find("--shard"), std::string::npos);
-  EXPECT_EQ(code, 1);
+  EXPECT_EQ(code, 2);  // a wrong option value: usage
 }
 
 }  // namespace
