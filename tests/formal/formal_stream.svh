@@ -94,4 +94,43 @@
     .out_q_i     (\u_dut.u_pipe.g_ram.out_q ) \
   );
 
+// The RAM's words into `mem`, for Depth = 16 (words 0..15) and 32 (then 16..31 as well): one
+// probe per word, since yosys names each word's register apart.
+`define FORMAL_RAM_PIPE_WORDS_16 \
+  `FORMAL_WORD(mem, PayloadBits, 0, \u_dut.u_pipe.g_ram.mem[0] ) \
+  `FORMAL_WORD(mem, PayloadBits, 1, \u_dut.u_pipe.g_ram.mem[1] ) \
+  `FORMAL_WORD(mem, PayloadBits, 2, \u_dut.u_pipe.g_ram.mem[2] ) \
+  `FORMAL_WORD(mem, PayloadBits, 3, \u_dut.u_pipe.g_ram.mem[3] ) \
+  `FORMAL_WORD(mem, PayloadBits, 4, \u_dut.u_pipe.g_ram.mem[4] ) \
+  `FORMAL_WORD(mem, PayloadBits, 5, \u_dut.u_pipe.g_ram.mem[5] ) \
+  `FORMAL_WORD(mem, PayloadBits, 6, \u_dut.u_pipe.g_ram.mem[6] ) \
+  `FORMAL_WORD(mem, PayloadBits, 7, \u_dut.u_pipe.g_ram.mem[7] ) \
+  `FORMAL_WORD(mem, PayloadBits, 8, \u_dut.u_pipe.g_ram.mem[8] ) \
+  `FORMAL_WORD(mem, PayloadBits, 9, \u_dut.u_pipe.g_ram.mem[9] ) \
+  `FORMAL_WORD(mem, PayloadBits, 10, \u_dut.u_pipe.g_ram.mem[10] ) \
+  `FORMAL_WORD(mem, PayloadBits, 11, \u_dut.u_pipe.g_ram.mem[11] ) \
+  `FORMAL_WORD(mem, PayloadBits, 12, \u_dut.u_pipe.g_ram.mem[12] ) \
+  `FORMAL_WORD(mem, PayloadBits, 13, \u_dut.u_pipe.g_ram.mem[13] ) \
+  `FORMAL_WORD(mem, PayloadBits, 14, \u_dut.u_pipe.g_ram.mem[14] ) \
+  `FORMAL_WORD(mem, PayloadBits, 15, \u_dut.u_pipe.g_ram.mem[15] )
+
+`define FORMAL_RAM_PIPE_WORDS_32 \
+  `FORMAL_RAM_PIPE_WORDS_16 \
+  `FORMAL_WORD(mem, PayloadBits, 16, \u_dut.u_pipe.g_ram.mem[16] ) \
+  `FORMAL_WORD(mem, PayloadBits, 17, \u_dut.u_pipe.g_ram.mem[17] ) \
+  `FORMAL_WORD(mem, PayloadBits, 18, \u_dut.u_pipe.g_ram.mem[18] ) \
+  `FORMAL_WORD(mem, PayloadBits, 19, \u_dut.u_pipe.g_ram.mem[19] ) \
+  `FORMAL_WORD(mem, PayloadBits, 20, \u_dut.u_pipe.g_ram.mem[20] ) \
+  `FORMAL_WORD(mem, PayloadBits, 21, \u_dut.u_pipe.g_ram.mem[21] ) \
+  `FORMAL_WORD(mem, PayloadBits, 22, \u_dut.u_pipe.g_ram.mem[22] ) \
+  `FORMAL_WORD(mem, PayloadBits, 23, \u_dut.u_pipe.g_ram.mem[23] ) \
+  `FORMAL_WORD(mem, PayloadBits, 24, \u_dut.u_pipe.g_ram.mem[24] ) \
+  `FORMAL_WORD(mem, PayloadBits, 25, \u_dut.u_pipe.g_ram.mem[25] ) \
+  `FORMAL_WORD(mem, PayloadBits, 26, \u_dut.u_pipe.g_ram.mem[26] ) \
+  `FORMAL_WORD(mem, PayloadBits, 27, \u_dut.u_pipe.g_ram.mem[27] ) \
+  `FORMAL_WORD(mem, PayloadBits, 28, \u_dut.u_pipe.g_ram.mem[28] ) \
+  `FORMAL_WORD(mem, PayloadBits, 29, \u_dut.u_pipe.g_ram.mem[29] ) \
+  `FORMAL_WORD(mem, PayloadBits, 30, \u_dut.u_pipe.g_ram.mem[30] ) \
+  `FORMAL_WORD(mem, PayloadBits, 31, \u_dut.u_pipe.g_ram.mem[31] )
+
 `endif

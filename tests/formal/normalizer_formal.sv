@@ -36,22 +36,7 @@ module normalizer_formal #(
 
   // The internals of u_pipe (stall_pipe with PayloadRam) and the stall.
   `FORMAL_RAM_PIPE_PROBES
-  `FORMAL_WORD(mem, PayloadBits, 0, \u_dut.u_pipe.g_ram.mem[0] )
-  `FORMAL_WORD(mem, PayloadBits, 1, \u_dut.u_pipe.g_ram.mem[1] )
-  `FORMAL_WORD(mem, PayloadBits, 2, \u_dut.u_pipe.g_ram.mem[2] )
-  `FORMAL_WORD(mem, PayloadBits, 3, \u_dut.u_pipe.g_ram.mem[3] )
-  `FORMAL_WORD(mem, PayloadBits, 4, \u_dut.u_pipe.g_ram.mem[4] )
-  `FORMAL_WORD(mem, PayloadBits, 5, \u_dut.u_pipe.g_ram.mem[5] )
-  `FORMAL_WORD(mem, PayloadBits, 6, \u_dut.u_pipe.g_ram.mem[6] )
-  `FORMAL_WORD(mem, PayloadBits, 7, \u_dut.u_pipe.g_ram.mem[7] )
-  `FORMAL_WORD(mem, PayloadBits, 8, \u_dut.u_pipe.g_ram.mem[8] )
-  `FORMAL_WORD(mem, PayloadBits, 9, \u_dut.u_pipe.g_ram.mem[9] )
-  `FORMAL_WORD(mem, PayloadBits, 10, \u_dut.u_pipe.g_ram.mem[10] )
-  `FORMAL_WORD(mem, PayloadBits, 11, \u_dut.u_pipe.g_ram.mem[11] )
-  `FORMAL_WORD(mem, PayloadBits, 12, \u_dut.u_pipe.g_ram.mem[12] )
-  `FORMAL_WORD(mem, PayloadBits, 13, \u_dut.u_pipe.g_ram.mem[13] )
-  `FORMAL_WORD(mem, PayloadBits, 14, \u_dut.u_pipe.g_ram.mem[14] )
-  `FORMAL_WORD(mem, PayloadBits, 15, \u_dut.u_pipe.g_ram.mem[15] )
+  `FORMAL_RAM_PIPE_WORDS_16
 
   `FORMAL_RAM_PIPE_CHECK
 endmodule
