@@ -29,3 +29,20 @@ printf "verilator %-52s %s cycles/s\n" "SystemC bench, Gouraud top (one SC_THREA
 [ -x "$build/testbench/watkins_rtl_speed_cc" ] &&
   printf "verilator %-52s %s cycles/s\n" "plain C++ harness, Gouraud top (eval loop)" "$(speed cc gouraud)"
 printf "verilator %-52s %s cycles/s\n" "SystemC bench, Phong top" "$(speed sc phong)"
+# Instructions per simulated cycle of the plain harness (callgrind: repeatable on a shared machine):
+# the difference between a 3-frame and a 1-frame run over the difference in cycles, so the warm-up
+# frame and the set-up cancel; with the stage checker off, the Verilated model alone.
+if [ -x "$build/testbench/watkins_rtl_speed_cc" ] && command -v valgrind >/dev/null; then
+  per_cycle() {  # $@: extra harness options
+    local ir=() cyc=()
+    for r in 1 3; do
+      out=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null \
+        "$build/testbench/watkins_rtl_speed_cc" --repeat $r "$@" 2>&1)
+      ir+=("$(echo "$out" | sed -n 's/.*I *refs: *\([0-9,]*\)/\1/p' | tr -d ,)")
+      cyc+=("$(echo "$out" | sed -n 's/^speed .*over [0-9]* frames (\([0-9]*\) cycles.*/\1/p')")
+    done
+    echo $(( (ir[1] - ir[0]) / (cyc[1] - cyc[0]) ))
+  }
+  printf "verilator %-52s %s instructions/cycle\n" "plain C++ harness, Gouraud top, no stage checker" "$(per_cycle --no-stage-check)"
+  printf "verilator %-52s %s instructions/cycle\n" "plain C++ harness, Gouraud top, stage checker on" "$(per_cycle)"
+fi
