@@ -49,6 +49,7 @@
 
 #include "config.hpp"
 #include "config_file.hpp"
+#include "image_io.hpp"
 #include "usage_error.hpp"
 
 namespace watkins::synth {
@@ -160,9 +161,11 @@ std::string read_text(const fs::path& p) {
   return s.str();
 }
 
+// A work file (wrapper, yosys script): the close is checked too, so a full disk is an error.
 void write_text(const fs::path& p, const std::string& text) {
   std::ofstream f(p);
   f << text;
+  f.close();
   if (!f) throw std::runtime_error("cannot write " + p.string());
 }
 
@@ -794,7 +797,10 @@ int run_synth(const SynthArgs& a) {
     md << "\nParameters: a top's are what `watkins_gen_pkg --params CONFIG --shading S` prints; a block's are what "
           "that top gives it (the Gouraud top's instance; the normalizer's and the shader's from the Phong top):\n\n";
     for (const auto& [key, note] : notes) md << "- " << key << ": " << note << "\n";
-    if (!a.md.empty()) write_text(a.md, md.str());
+    // The user's tables, rewritten after every run, each replaced whole (OutputFiles): an
+    // interrupted or failed write leaves the previous table, never a truncated one.
+    OutputFiles tables;
+    if (!a.md.empty()) tables.add(a.md, md.str());
     if (print_it) std::printf("%s", md.str().c_str());
     if (!a.csv.empty()) {
       std::ostringstream c;
@@ -812,8 +818,9 @@ int run_synth(const SynthArgs& a) {
           << r.nextpnr_s << "," << csv_quote(versions["yosys"]) << "," << csv_quote(versions[nextpnr_binary(t)]) << ","
           << csv_quote(r.dir) << "\n";
       }
-      write_text(a.csv, c.str());
+      tables.add(a.csv, c.str());
     }
+    tables.commit();
   };
   std::atomic<size_t> next{0};
   std::atomic<size_t> done{0};

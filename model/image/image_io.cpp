@@ -45,8 +45,6 @@ std::vector<unsigned char> encode_png(const Image& img) {
   return out;
 }
 
-void write_png(const Image& img, const std::string& path) { write_bytes(path, encode_png(img)); }
-
 void OutputFiles::add(const std::string& path, std::vector<unsigned char> bytes) {
   files_.push_back({path, "", std::move(bytes)});
 }

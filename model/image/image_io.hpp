@@ -12,9 +12,6 @@ namespace watkins {
 
 // The PNG file's bytes.
 std::vector<unsigned char> encode_png(const Image& img);
-// Writes a PNG; throws std::runtime_error naming the path and the reason when it cannot (every
-// write and the close are checked: a full disk is an error, not a truncated file).
-void write_png(const Image& img, const std::string& path);
 
 // Output files written all or nothing: add() keeps each file's bytes; commit() writes each to a
 // temporary name beside it and renames them over their names only once all were written, so a
@@ -26,7 +23,8 @@ class OutputFiles {
   void add(const std::string& path, const std::string& text) { add(path, std::vector<unsigned char>(text.begin(), text.end())); }
   // A file another writer streams out (e.g. the simulator's waveform): returns the name to write
   // it under, a temporary beside `path` that commit() renames over it and a failed run removes
-  // (or `path` itself when it names a device).
+  // (or `path` itself when it names a device). Every write and close is checked (a full disk is
+  // an error, not a truncated file).
   std::string stage(const std::string& path);
   void commit();
   ~OutputFiles();

@@ -49,12 +49,13 @@ constexpr i64 wrap_signed(i128 v, int bits) {
   return static_cast<i64>(u);
 }
 
+// wrap_signed on 64 bits for a word whose sign bit is `sign` (2^(bits-1)): keep the low bits and
+// sign-extend them by flipping and subtracting the sign bit (exact, no branch, no shift of a
+// negative value). Loops over one word keep `sign` instead of recomputing it.
+constexpr i64 wrap_to_sign(i64 v, i64 sign) { return ((v & (2 * sign - 1)) ^ sign) - sign; }
+
 // wrap_signed on 64 bits, for words of at most 62 bits.
-constexpr i64 wrap_signed64(i64 v, int bits) {
-  const i64 m = (i64{1} << bits) - 1;
-  const i64 u = v & m;
-  return (u >> (bits - 1)) ? u - (i64{1} << bits) : u;
-}
+constexpr i64 wrap_signed64(i64 v, int bits) { return wrap_to_sign(v, i64{1} << (bits - 1)); }
 
 // Keep the low `bits` bits as an unsigned value.
 constexpr std::uint64_t wrap_unsigned(i128 v, int bits) {

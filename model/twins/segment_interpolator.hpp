@@ -83,10 +83,7 @@ class PixelPath {
  public:
   using Readings = SegmentInterpolator::Readings;
   PixelPath(const ChannelFormats& f, Readings readings) : readings_(readings) {
-    for (int c = fmt::ChanZ; c < fmt::NumChannels; ++c) {
-      mask_[c] = (i64{1} << f.bits[c]) - 1;
-      sign_[c] = i64{1} << (f.bits[c] - 1);
-    }
+    for (int c = fmt::ChanZ; c < fmt::NumChannels; ++c) sign_[c] = i64{1} << (f.bits[c] - 1);
     z_shift_ = f.frac[fmt::ChanZ];
     z_half_ = half(z_shift_);
     depth_max_ = (i64{1} << f.depth_bits) - 1;
@@ -122,11 +119,9 @@ class PixelPath {
     return f;
   }
 
-  // value += step per slot, wrapping like a register of the slot's width: keep the low bits and
-  // sign-extend them by flipping and subtracting the sign bit (exact, no shift of a negative).
+  // value += step per slot, wrapping like a register of the slot's width.
   void step(const SpanSetup& span, ChannelVector& value) const {
-    for (int c = fmt::ChanZ; c < fmt::NumChannels; ++c)
-      value[c] = (((value[c] + span.step[c]) & mask_[c]) ^ sign_[c]) - sign_[c];
+    for (int c = fmt::ChanZ; c < fmt::NumChannels; ++c) value[c] = wrap_to_sign(value[c] + span.step[c], sign_[c]);
   }
 
  private:
@@ -152,7 +147,7 @@ class PixelPath {
   static_assert(fmt::FracBits < fmt::NormalInBits - 1, "normal scaling stays within the word");
 
   Readings readings_;
-  std::array<i64, fmt::NumChannels> mask_{}, sign_{};
+  std::array<i64, fmt::NumChannels> sign_{};  // per slot: 2^(bits-1), wrap_to_sign's word
   int z_shift_ = 0;
   i64 z_half_ = 0, depth_max_ = 0;
   int shade_shift_[3] = {0, 0, 0}, normal_shift_[3] = {0, 0, 0};
