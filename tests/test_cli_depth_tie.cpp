@@ -18,11 +18,6 @@ using watkins::test::run_cli;
 
 class CliDepthTie : public ::testing::Test, protected watkins::test::ScratchDir {
  protected:
-  bool exists(const std::string& name) const { return std::filesystem::exists(dir_ + "/" + name); }
-  std::string bytes(const std::string& name) const {
-    std::ifstream in(dir_ + "/" + name, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  }
   static int lines(const std::string& s) { return static_cast<int>(std::count(s.begin(), s.end(), '\n')); }
   static std::string coplanar() { return WATKINS_SOURCE_DIR "/scenes/coplanar.json"; }
 };
@@ -36,8 +31,8 @@ TEST_F(CliDepthTie, RuleIsReportedAndChangesTheImage) {
   EXPECT_NE(arr.output.find("depth-tie arrival"), std::string::npos) << arr.output;
   const CliRun sub = run_cli("render " + coplanar() + " --depth-tie submission --out submission.png", dir_);
   ASSERT_EQ(sub.exit_code, 0) << sub.output;
-  EXPECT_EQ(bytes("scene.png"), bytes("submission.png"));
-  EXPECT_NE(bytes("arrival.png"), bytes("submission.png"));
+  EXPECT_EQ(contents("scene.png"), contents("submission.png"));
+  EXPECT_NE(contents("arrival.png"), contents("submission.png"));
   // The built-in scene keeps the default rule.
   const CliRun def = run_cli("render --out default.png", dir_);
   ASSERT_EQ(def.exit_code, 0) << def.output;
@@ -51,11 +46,11 @@ TEST_F(CliDepthTie, BadOptionValueIsOneUsageLine) {
     EXPECT_EQ(lines(r.output), 1) << r.output;
     EXPECT_NE(r.output.find("--depth-tie: unknown rule"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("(arrival, submission)"), std::string::npos) << r.output;
-    EXPECT_FALSE(exists("a.png")) << v;
+    EXPECT_FALSE(has("a.png")) << v;
   }
   const CliRun missing = run_cli("render " + coplanar() + " --out a.png --depth-tie", dir_);
   EXPECT_EQ(missing.exit_code, 2) << missing.output;
-  EXPECT_FALSE(exists("a.png"));
+  EXPECT_FALSE(has("a.png"));
 }
 
 TEST_F(CliDepthTie, BadSceneValueNamesTheField) {
@@ -66,7 +61,7 @@ TEST_F(CliDepthTie, BadSceneValueNamesTheField) {
   EXPECT_EQ(lines(r.output), 1) << r.output;
   EXPECT_NE(r.output.find("shading.depth_tie: expected \"arrival\" or \"submission\", got \"sideways\""),
             std::string::npos) << r.output;
-  EXPECT_FALSE(exists("a.png"));
+  EXPECT_FALSE(has("a.png"));
   // The option overrides the scene's value only when the scene is valid: still an error.
   EXPECT_EQ(run_cli("render " + path + " --depth-tie arrival --out a.png", dir_).exit_code, 1);
 }

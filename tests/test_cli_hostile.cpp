@@ -21,25 +21,18 @@ using watkins::test::run_cli;
 
 class CliHostile : public ::testing::Test, protected watkins::test::ScratchDir {
  protected:
-  bool exists(const std::string& name) const { return std::filesystem::exists(dir_ + "/" + name); }
   // Files in the scratch folder: nothing but what the test wrote may be left (no temporaries).
   size_t files() const {
     size_t n = 0;
     for (const auto& e : std::filesystem::directory_iterator(dir_)) n += e.is_regular_file();
     return n;
   }
-  std::string read(const std::string& name) const {
-    std::ifstream in(dir_ + "/" + name);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-  }
   // `watkins ARGS`: expects `code`, `needle` in a one-line error, no a.png.
   CliRun expect(const std::string& args, int code, const std::string& needle) {
     const CliRun r = run_cli(args, dir_);
     EXPECT_EQ(r.exit_code, code) << args << "\n" << r.output;
     EXPECT_NE(r.output.find(needle), std::string::npos) << "expected \"" << needle << "\" in:\n" << r.output;
-    EXPECT_FALSE(exists("a.png")) << args;
+    EXPECT_FALSE(has("a.png")) << args;
     return r;
   }
   static std::string sphere() { return WATKINS_SOURCE_DIR "/scenes/sphere.json"; }
@@ -74,13 +67,13 @@ TEST_F(CliHostile, OutputOverAnInputIsRefused) {
   expect("render s.json --out s.json", 2, "--out s.json is the scene file; refusing to overwrite it");
   expect("render s.json --out a.png --diff ./s.json", 2, "--diff ./s.json is the scene file");
   expect("render s.json --out a.png --diff a.png", 2, "--diff and --out name the same file a.png");
-  EXPECT_EQ(read("s.json"), text) << "the scene is untouched";
+  EXPECT_EQ(contents("s.json"), text) << "the scene is untouched";
   // Nor the OBJ file a scene reads.
   write("m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
   write("m.json", R"({"screen": {"width": 16, "height": 16}, "objects": [{"type": "mesh", "file": "m.obj",
       "normals": "average", "translate": [0, 0, 5]}]})");
   expect("render m.json --out m.obj", 2, "--out m.obj is the OBJ file of objects[0]");
-  EXPECT_EQ(read("m.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  EXPECT_EQ(contents("m.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
 }
 
 TEST_F(CliHostile, PngWriteErrorsAreReported) {
@@ -97,10 +90,10 @@ TEST_F(CliHostile, NoPartialOutputsWhenAnyWriteFails) {
   // --diff was written before --out failed; now neither is, and no temporary is left.
   const CliRun r = run_cli("render " + sphere() + " --diff d.png --out /dev/full", dir_);
   EXPECT_EQ(r.exit_code, 1) << r.output;
-  EXPECT_FALSE(exists("d.png"));
+  EXPECT_FALSE(has("d.png"));
   const CliRun f = run_cli("render " + sphere() + " --diff d.png --out missing/a.png", dir_);
   EXPECT_EQ(f.exit_code, 1) << f.output;
-  EXPECT_FALSE(exists("d.png"));
+  EXPECT_FALSE(has("d.png"));
   EXPECT_EQ(files(), 0u) << "no temporaries left";
 }
 
@@ -123,7 +116,7 @@ TEST_F(CliHostile, RtlTraceIsWrittenAllOrNothing) {
   EXPECT_EQ(files(), 0u) << "no trace and no temporary";
   const CliRun ok = run_cli("render " + sphere() + " --rtl --trace w.fst --out a.png", dir_);
   EXPECT_EQ(ok.exit_code, 0) << ok.output;
-  ASSERT_TRUE(exists("w.fst") && exists("a.png"));
+  ASSERT_TRUE(has("w.fst") && has("a.png"));
   EXPECT_GT(std::filesystem::file_size(dir_ + "/w.fst"), 1000u);
   EXPECT_EQ(files(), 2u);
 }
@@ -131,7 +124,7 @@ TEST_F(CliHostile, RtlTraceIsWrittenAllOrNothing) {
 TEST_F(CliHostile, SuccessWritesEveryOutputAndNoTemporary) {
   const CliRun r = run_cli("render " + sphere() + " --shading phong --out a.png --diff d.png --truth t.png", dir_);
   EXPECT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_TRUE(exists("a.png") && exists("d.png") && exists("t.png"));
+  EXPECT_TRUE(has("a.png") && has("d.png") && has("t.png"));
   EXPECT_EQ(files(), 3u);
   EXPECT_NE(r.output.find("wrote         a.png, d.png, t.png"), std::string::npos) << r.output;
   // An existing output is replaced whole.

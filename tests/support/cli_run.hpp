@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 
@@ -51,6 +52,12 @@ class ScratchDir {
     const std::string path = dir_ + "/" + name;
     std::ofstream(path) << text;
     return path;
+  }
+  // Whether dir/name exists, and its bytes ("" when it does not).
+  bool has(const std::string& name) const { return std::filesystem::exists(dir_ + "/" + name); }
+  std::string contents(const std::string& name) const {
+    std::ifstream in(dir_ + "/" + name, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
   }
 
  protected:
