@@ -632,12 +632,20 @@ std::string machine() {
   return std::to_string(std::thread::hardware_concurrency()) + " cores, " + cpu + ", " + date;
 }
 
-std::vector<std::string> split_list(const std::vector<std::string>& items) {
+// A comma-separated option's items (each occurrence may hold several): an empty item ("a,,b",
+// "a,") is a usage error, as in `watkins sweep`, not silently dropped.
+std::vector<std::string> split_list(const char* option, const std::vector<std::string>& items) {
   std::vector<std::string> out;
   for (const std::string& item : items) {
-    std::stringstream s(item);
-    for (std::string x; std::getline(s, x, ',');)
-      if (!x.empty()) out.push_back(x);
+    std::size_t start = 0;
+    for (;;) {
+      const std::size_t comma = item.find(',', start);
+      const std::string x = item.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+      if (x.empty()) throw UsageError(std::string(option) + ": empty item in \"" + item + "\"");
+      out.push_back(x);
+      if (comma == std::string::npos) break;
+      start = comma + 1;
+    }
   }
   return out;
 }
@@ -673,7 +681,7 @@ int run_synth(const SynthArgs& a) {
   if (a.jobs < 1) throw UsageError("--jobs: must be at least 1");
   if (a.timeout < 1) throw UsageError("--timeout: must be at least 1 second");
   std::vector<const Design*> designs;
-  const std::vector<std::string> design_names = split_list(a.designs);
+  const std::vector<std::string> design_names = split_list("--designs", a.designs);
   if (design_names.empty()) {
     for (const Design& d : kDesigns) designs.push_back(&d);
   } else {
@@ -690,7 +698,7 @@ int run_synth(const SynthArgs& a) {
     std::stable_sort(designs.begin(), designs.end(), [](const Design* x, const Design* y) { return !x->top && y->top; });
   }
   std::vector<const Target*> targets;
-  for (const std::string& n : split_list(a.targets)) {
+  for (const std::string& n : split_list("--targets", a.targets)) {
     auto it = std::find_if(std::begin(kTargets), std::end(kTargets), [&](const Target& t) { return n == t.name; });
     if (it == std::end(kTargets))
       throw UsageError("--targets: unknown target \"" + n + "\" (ice40-up5k, ice40-hx8k, ecp5-85)");
@@ -702,7 +710,7 @@ int run_synth(const SynthArgs& a) {
     Config config;
   };
   std::vector<NamedConfig> configs;
-  for (const std::string& c : split_list(a.configs))
+  for (const std::string& c : split_list("--config", a.configs))
     configs.push_back({c, config_label(c), c == "default" ? Config{} : load_config(c)});
   if (configs.empty()) throw UsageError("--config: none given");
 

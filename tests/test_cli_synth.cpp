@@ -44,6 +44,12 @@ TEST_F(CliSynth, InvalidConfigurationNamesTheField) {
   EXPECT_NE(r.output.find("max_width"), std::string::npos) << r.output;
 }
 
+TEST_F(CliSynth, EmptyListItemsAreRefused) {
+  expect_refused("--designs edge_incrementer,,segment_former", "--designs: empty item in \"edge_incrementer,,segment_former\"");
+  expect_refused("--targets ecp5-85,", "--targets: empty item in \"ecp5-85,\"");
+  expect_refused("--config ,default", "--config: empty item in \",default\"");
+}
+
 TEST_F(CliSynth, JobsMustBePositive) { expect_refused("--jobs 0", "--jobs: must be at least 1"); }
 
 }  // namespace
