@@ -6,7 +6,8 @@
 //
 // Defined when the scene's illumination is eq. (3): Phong shading, or Gouraud shading with the
 // "phong" vertex rule. Exact surfaces: sphere, cone (side and base cap), quarter torus,
-// hyperbolic paraboloid, bicubic Bezier patch; meshes and screen-space polygons have no truth
+// hyperbolic paraboloid, bicubic Bezier patch, cross vault (each barrel on its side of the
+// groins), pier and portico (vaults and box piers, closed-form roots); meshes and screen-space polygons have no truth
 // (their pixels are left uncovered and so are not compared).
 #pragma once
 
