@@ -29,7 +29,7 @@ namespace {
 // One piece of an exact surface in object space.
 struct Implicit {
   std::function<double(const glm::dvec3&)> f;          // zero on the surface
-  std::function<glm::dvec3(const glm::dvec3&)> grad;   // its gradient (the normal's direction)
+  std::function<glm::dvec3(const glm::dvec3&)> grad;   // its gradient, or minus it: the normal of the front side
   std::function<bool(const glm::dvec3&)> inside;       // the part that belongs to the object
   // Closed-form roots of f along the ray o + t e (quadrics, planes): up to 2, in t[]; their count.
   // When set, the roots replace the marching below (thin pieces cannot slip between its steps).
@@ -65,10 +65,10 @@ Implicit barrel(const glm::dvec3& c, double A, double B, double h, int across) {
     const double dw = (p[w] - c[w]) / half, dy = (p.y - c.y) / h;
     return dw * dw + dy * dy - 1;
   };
-  b.grad = [=](const glm::dvec3& p) {
+  b.grad = [=](const glm::dvec3& p) {  // minus the gradient: the intrados, the front side, faces the axis
     glm::dvec3 g(0.0);
-    g[w] = (p[w] - c[w]) / (half * half);
-    g.y = (p.y - c.y) / (h * h);
+    g[w] = -(p[w] - c[w]) / (half * half);
+    g.y = -(p.y - c.y) / (h * h);
     return g;
   };
   b.inside = [=](const glm::dvec3& p) {
@@ -239,7 +239,10 @@ struct Hit {
   glm::dvec3 normal{0.0};  // camera space, unit
 };
 
-std::optional<Hit> cast(const Surface& s, const glm::dvec3& d, double near, double far) {
+// `cull`: a hit on the back of a surface (its normal, as the tessellation orients it, facing away
+// from the eye) is not seen and the ray goes on, as back-face culling hides the back of an open
+// surface in the render (a closed surface's first hit is a front one anyway).
+std::optional<Hit> cast(const Surface& s, const glm::dvec3& d, double near, double far, bool cull) {
   // Object-space ray o + t*e for the camera ray t*d.
   const glm::dvec3 o = s.to_object * (-s.offset), e = s.to_object * d;
   // Bounding sphere, a little larger so roots on it are bracketed from outside.
@@ -265,6 +268,7 @@ std::optional<Hit> cast(const Surface& s, const glm::dvec3& d, double near, doub
           Hit h;
           h.t = t;
           h.normal = glm::normalize(s.normal_to_camera * piece.grad(p));
+          if (cull && glm::dot(h.normal, d) > 0) continue;  // its back: unseen
           best = h;
           break;  // the roots are ascending
         }
@@ -286,13 +290,16 @@ std::optional<Hit> cast(const Surface& s, const glm::dvec3& d, double near, doub
         const glm::dvec3 p = o + t * e;
         const double z = t * d.z;  // camera-space depth of the hit
         if (piece.inside(p) && z >= near && z < far) {
-          if (!best || t < best->t) {
-            Hit h;
-            h.t = t;
-            h.normal = glm::normalize(s.normal_to_camera * piece.grad(p));
-            best = h;
+          const glm::dvec3 n = glm::normalize(s.normal_to_camera * piece.grad(p));
+          if (!(cull && glm::dot(n, d) > 0)) {
+            if (!best || t < best->t) {
+              Hit h;
+              h.t = t;
+              h.normal = n;
+              best = h;
+            }
+            break;  // the first root of this piece inside its domain
           }
-          break;  // the first root of this piece inside its domain
         }
       }
       ta = tb, fa = fb;
@@ -304,7 +311,7 @@ std::optional<Hit> cast(const Surface& s, const glm::dvec3& d, double near, doub
       Hit hit;
       hit.t = h->first;
       hit.normal = glm::normalize(s.normal_to_camera * h->second);
-      best = hit;
+      if (!(cull && glm::dot(hit.normal, d) > 0)) best = hit;
     }
   }
   return best;
@@ -365,7 +372,7 @@ AnalyticTruth render_analytic_truth(const BuiltScene& scene) {
       std::optional<Hit> best;
       const Surface* owner = nullptr;
       for (const Surface& s : surfaces) {
-        const std::optional<Hit> h = cast(s, d, sc.camera.near, sc.camera.far);
+        const std::optional<Hit> h = cast(s, d, sc.camera.near, sc.camera.far, scene.cull_backfaces);
         if (h && (!best || h->t < best->t)) best = h, owner = &s;
       }
       if (!best) continue;

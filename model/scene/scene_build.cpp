@@ -103,6 +103,7 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
     throw SceneError(sc.name + ": shading.flat: flat shading gives one shade per polygon to the gouraud pipeline; "
                      "the phong pipeline shades every pixel");
   const bool cull = opt.cull_backfaces.value_or(sc.shading.cull_backfaces);
+  out.cull_backfaces = cull;
   const Camera& cam = sc.camera;
   const View view = make_view(cam);
   const glm::dvec3 light_cam = view.dir(sc.light.towards);
