@@ -386,8 +386,9 @@ std::string fit_grid(const std::function<std::vector<PatchFn>(int)>& patches, do
                      bool split, int umin, int vmin, bool u_even, int& nu, int& nv) {
   nu = umin, nv = vmin;
   auto grow = [&](int n, double len) {
-    const double want = std::ceil(n * std::min(len / L, 4.0 * kMaxSegments));
-    return std::max(n + 1, static_cast<int>(std::min(want, 2.0 * kMaxSegments)));
+    const double ratio = len / L;
+    if (!(ratio < 2.0 * kMaxSegments)) return kMaxSegments + 1;  // hopeless (or not a number): refused below
+    return std::max(n + 1, static_cast<int>(std::min(std::ceil(n * ratio), 2.0 * kMaxSegments)));
   };
   for (;;) {
     const Longest e = longest_edges(patches(nu), nu, nv, scale);
