@@ -4,6 +4,7 @@
 // are asserted with a margin.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -142,6 +143,38 @@ TEST(CrossVault, GroinsAreSharedEdgesWithEachWebsOwnNormals) {
   }
   EXPECT_EQ(groin_edges.size(), 4u * 6);  // 6 chords on each of the 4 groins (u/2 = 6 segments)
   for (const auto& [e, n] : groin_edges) EXPECT_EQ(n, 2);
+}
+
+// A pier: six faces, each normal the outward axis direction of its face, each face wound
+// front-facing towards it; every corner of the box is the same doubles on the three faces meeting
+// there (the box's edges are watertight); with max_edge_length the faces become grids.
+TEST(Pier, OutwardFacesWithSharedCorners) {
+  const SceneObject o = parse_one(R"({"type": "pier", "center": [1, 0.5, -2], "size": [0.5, 0.8], "height": 3})");
+  const IndexedMesh m = tessellate_surface(o);
+  ASSERT_EQ(m.faces.size(), 6u);
+  const glm::dvec3 mid(1, 0.5 + 1.5, -2);
+  std::map<Key, int> corners;
+  for (const IndexedMesh::Face& f : m.faces) {
+    ASSERT_EQ(f.n, 4);
+    glm::dvec3 newell(0.0), centre(0.0);
+    const glm::dvec3 n = m.normal[std::size_t(f.idx[0])];
+    for (int k = 0; k < 4; ++k) {
+      const glm::dvec3 a = m.position[std::size_t(f.idx[k])], b = m.position[std::size_t(f.idx[(k + 1) % 4])];
+      newell += glm::cross(a, b);
+      centre += a / 4.0;
+      EXPECT_EQ(m.normal[std::size_t(f.idx[k])], n);
+      ++corners[key(a)];
+    }
+    EXPECT_NEAR(glm::length(n), 1, 0);
+    EXPECT_GT(glm::dot(n, centre - mid), 0);                   // outward
+    EXPECT_NEAR(glm::length(glm::cross(n, centre - mid)), 0, 1e-12);  // the face's own axis
+    EXPECT_LT(glm::dot(newell, n), 0);                          // front-facing from outside
+  }
+  ASSERT_EQ(corners.size(), 8u);
+  for (const auto& [p, count] : corners) EXPECT_EQ(count, 3);
+  const SceneObject fine = parse_one(R"({"type": "pier", "size": [0.5, 0.8], "height": 3, "max_edge_length": 0.3})");
+  EXPECT_EQ(fine.box_segments, (std::array<int, 3>{2, 10, 3}));
+  EXPECT_EQ(tessellate_surface(fine).faces.size(), 2u * (2 * 10 + 10 * 3 + 3 * 2));
 }
 
 // A camera at eye level under the middle bay of a 3-bay portico looks straight up through a 1 x 1
