@@ -415,7 +415,7 @@ SceneObject parse_object(const Reader& r, const json& j, const std::string& f, i
     common({"span", "rise", "u", "v", "max_edge_length"});
     plan(r.required(j, f, "span"), f + ".span", o.span_x, o.span_z);
     rise();
-    uv(2, 16, 1, 8);
+    uv(2, 16, 1, 1);  // v = 1: the barrels are straight along their axes
     if (o.u % 2) r.fail(f + ".u", "must be even (the key of the vault is a vertex), got " + std::to_string(o.u));
   } else if (type == "pier") {
     o.type = ObjectType::Pier;
@@ -435,7 +435,7 @@ SceneObject parse_object(const Reader& r, const json& j, const std::string& f, i
     if (!(o.pier_x < o.span_x && o.pier_z < o.span_z))
       r.fail(f + ".pier", "must be smaller than the span in x and in z (the piers would fill the bays)");
     o.pier_height = r.positive(r.required(j, f, "springing"), f + ".springing");
-    uv(2, 16, 1, 8);
+    uv(2, 16, 1, 1);  // v = 1: the barrels are straight along their axes
     if (o.u % 2) r.fail(f + ".u", "must be even (the key of the vault is a vertex), got " + std::to_string(o.u));
   } else if (type == "mesh") {
     o.type = ObjectType::Mesh;
