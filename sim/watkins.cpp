@@ -8,6 +8,7 @@
 //   watkins synth [--config F ...] [--designs D,...] [--targets T,...] [--md F] [--csv F] [--jobs N]
 //                  (sim/synth.cpp)
 //   watkins size [SCENE] [--bound L] [--shading S] [--out F]   (sim/size.cpp)
+//   watkins export-stl SCENE --out F [--ascii]   (model/scene/stl_export.hpp)
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -29,6 +30,7 @@
 #include "scene.hpp"
 #include "scene_types.hpp"
 #include "size.hpp"
+#include "stl_export.hpp"
 #include "sweep.hpp"
 #include "synth.hpp"
 #include "usage_error.hpp"
@@ -374,6 +376,41 @@ int render(const RenderArgs& a) {
   return 0;
 }
 
+// ==== export-stl: a scene's tessellated objects as STL, world space (model/scene/stl_export.hpp) ====
+struct ExportStlArgs {
+  std::string scene, out;
+  bool ascii = false;
+};
+
+CLI::App* add_export_stl_command(CLI::App& app, ExportStlArgs& a) {
+  auto* x = app.add_subcommand("export-stl", "write a scene's analytic surfaces and meshes, tessellated as render "
+                                             "tessellates them, as STL in world space (z negated: STL and OBJ are "
+                                             "right-handed; facets counter-clockwise seen from the front)");
+  x->add_option("scene", a.scene, "scene file (JSON)")->required();
+  x->add_option("--out,-o", a.out, "STL file to write")->required();
+  x->add_flag("--ascii", a.ascii, "ASCII STL (default: binary)");
+  return x;
+}
+
+int export_stl(const ExportStlArgs& a) {
+  using namespace watkins;
+  if (a.out == a.scene) throw UsageError("--out " + a.out + " would overwrite the scene");
+  const BuildOptions opt;
+  const BuiltScene built = load_scene(a.scene, opt);  // validates the whole scene first
+  const StlExport e = watkins::export_stl(*built.source, opt.max_faces);
+  const std::string name = std::filesystem::path(a.scene).stem().string();
+  OutputFiles files;
+  if (a.ascii) files.add(a.out, stl_ascii(e, name));
+  else files.add(a.out, stl_binary(e, "watkins export-stl " + name));
+  files.commit();
+  std::printf("wrote         %s: %zu facets (%s STL, world space, z negated)%s%s\n", a.out.c_str(), e.facets.size(),
+              a.ascii ? "ASCII" : "binary", e.degenerate ? ", zero-area triangles left out: " : "",
+              e.degenerate ? std::to_string(e.degenerate).c_str() : "");
+  if (e.screen_polygons)
+    std::printf("skipped       %d screen-space polygons object(s): no world geometry\n", e.screen_polygons);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -406,6 +443,8 @@ int main(int argc, char** argv) {
   r->add_option("--config", ra.config, "hardware configuration (JSON, docs/config-format.md): the format of each "
                                        "channel group and the capacities; default: model/twins/formats.hpp");
   add_rtl_options(r, ra.rtl);  // --rtl, --trace, --seed, --gap, --stall
+  ExportStlArgs xa;
+  auto* x = add_export_stl_command(app, xa);
   watkins::sweep::SweepArgs sa;
   auto* s = watkins::sweep::add_sweep_command(app, sa);
   watkins::size::SizeArgs za;
@@ -425,6 +464,7 @@ int main(int argc, char** argv) {
   ra.depth_tie_given = depth_tie->count() > 0;
   try {
     if (*r) return render(ra);
+    if (*x) return export_stl(xa);
     if (*s) return watkins::sweep::run_sweep(sa);
     if (*z) return watkins::size::run_size(za);
     if (*y) return watkins::synth::run_synth(ya);

@@ -13,6 +13,7 @@
 #include <optional>
 #include <utility>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
@@ -28,9 +29,81 @@ namespace {
 // One piece of an exact surface in object space.
 struct Implicit {
   std::function<double(const glm::dvec3&)> f;          // zero on the surface
-  std::function<glm::dvec3(const glm::dvec3&)> grad;   // its gradient (the normal's direction)
+  std::function<glm::dvec3(const glm::dvec3&)> grad;   // its gradient, or minus it: the normal of the front side
   std::function<bool(const glm::dvec3&)> inside;       // the part that belongs to the object
+  // Closed-form roots of f along the ray o + t e (quadrics, planes): up to 2, in t[]; their count.
+  // When set, the roots replace the marching below (thin pieces cannot slip between its steps).
+  std::function<int(const glm::dvec3& o, const glm::dvec3& e, double t[2])> roots;
 };
+
+// Roots of a t^2 + b t + c = 0 (a may be 0), ascending.
+int quadratic_roots(double a, double b, double c, double t[2]) {
+  if (a == 0) {
+    if (b == 0) return 0;
+    t[0] = -c / b;
+    return 1;
+  }
+  const double disc = b * b - 4 * a * c;
+  if (disc < 0) return 0;
+  // The stable pair: q = -(b + sign(b) sqrt(disc)) / 2, roots q/a and c/q.
+  const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+  t[0] = q / a;
+  t[1] = q != 0 ? c / q : t[0];
+  if (t[0] > t[1]) std::swap(t[0], t[1]);
+  return 2;
+}
+
+// One barrel of a cross-vault bay (surfaces.cpp, cross_vault_bay): the half-elliptic cylinder
+// ((w - cw)/half)^2 + ((y - cy)/h)^2 = 1 with w = z (axis along X, across = 0) or w = x (axis
+// along Z), restricted to where it is the ceiling seen from below: above the springing plane,
+// inside the bay, and on its own side of the groins (|x|/A >= |z|/B for the barrel along X).
+Implicit barrel(const glm::dvec3& c, double A, double B, double h, int across) {
+  const int w = across == 0 ? 2 : 0, along = 2 - w;  // the spanned axis and the axis of the barrel
+  const double half = across == 0 ? B : A, len = across == 0 ? A : B;
+  Implicit b;
+  b.f = [=](const glm::dvec3& p) {
+    const double dw = (p[w] - c[w]) / half, dy = (p.y - c.y) / h;
+    return dw * dw + dy * dy - 1;
+  };
+  b.grad = [=](const glm::dvec3& p) {  // minus the gradient: the intrados, the front side, faces the axis
+    glm::dvec3 g(0.0);
+    g[w] = -(p[w] - c[w]) / (half * half);
+    g.y = -(p.y - c.y) / (h * h);
+    return g;
+  };
+  b.inside = [=](const glm::dvec3& p) {
+    const double da = std::fabs(p[along] - c[along]), dw = std::fabs(p[w] - c[w]);
+    return p.y >= c.y && da <= len && da / len >= dw / half;
+  };
+  b.roots = [=](const glm::dvec3& o, const glm::dvec3& e, double t[2]) {
+    const double ow = (o[w] - c[w]) / half, ew = e[w] / half, oy = (o.y - c.y) / h, ey = e.y / h;
+    return quadratic_roots(ew * ew + ey * ey, 2 * (ow * ew + oy * ey), ow * ow + oy * oy - 1, t);
+  };
+  return b;
+}
+
+// The face of a box (a pier) on the plane p[axis] = at, bounded by lo..hi on the other two axes.
+Implicit box_face(const glm::dvec3& lo, const glm::dvec3& hi, int axis, bool upper) {
+  const double at = upper ? hi[axis] : lo[axis];
+  Implicit b;
+  b.f = [=](const glm::dvec3& p) { return upper ? p[axis] - at : at - p[axis]; };
+  b.grad = [=](const glm::dvec3&) {
+    glm::dvec3 g(0.0);
+    g[axis] = upper ? 1 : -1;
+    return g;
+  };
+  b.inside = [=](const glm::dvec3& p) {
+    for (int a = 0; a < 3; ++a)
+      if (a != axis && (p[a] < lo[a] || p[a] > hi[a])) return false;
+    return true;
+  };
+  b.roots = [=](const glm::dvec3& o, const glm::dvec3& e, double t[2]) {
+    if (e[axis] == 0) return 0;
+    t[0] = (at - o[axis]) / e[axis];
+    return 1;
+  };
+  return b;
+}
 
 struct Surface {
   int object = 0;
@@ -50,7 +123,7 @@ std::vector<Implicit> pieces_of(const SceneObject& o, glm::dvec3& centre, double
     case ObjectType::Sphere: {
       const double r = o.radius;
       v.push_back({[=](const glm::dvec3& p) { return glm::dot(p - c, p - c) - r * r; },
-                   [=](const glm::dvec3& p) { return p - c; }, [](const glm::dvec3&) { return true; }});
+                   [=](const glm::dvec3& p) { return p - c; }, [](const glm::dvec3&) { return true; }, nullptr});
       centre = c, radius = r;
       break;
     }
@@ -61,14 +134,15 @@ std::vector<Implicit> pieces_of(const SceneObject& o, glm::dvec3& centre, double
                      return dx * dx + dz * dz - k * k * a * a;
                    },
                    [=](const glm::dvec3& p) { return glm::dvec3(p.x - c.x, k * k * (apex - p.y), p.z - c.z); },
-                   [=](const glm::dvec3& p) { return p.y >= c.y && p.y <= apex; }});
+                   [=](const glm::dvec3& p) { return p.y >= c.y && p.y <= apex; }, nullptr});
       if (o.cap)
         v.push_back({[=](const glm::dvec3& p) { return p.y - c.y; },
                      [](const glm::dvec3&) { return glm::dvec3(0, -1, 0); },
                      [=](const glm::dvec3& p) {
                        const double dx = p.x - c.x, dz = p.z - c.z;
                        return dx * dx + dz * dz <= r * r;
-                     }});
+                     },
+                     nullptr});
       centre = c + glm::dvec3(0, h / 2, 0), radius = std::sqrt(r * r + h * h / 4);
       break;
     }
@@ -82,7 +156,7 @@ std::vector<Implicit> pieces_of(const SceneObject& o, glm::dvec3& centre, double
                      const double rho = std::sqrt(p.x * p.x + p.z * p.z), q = rho - R;
                      return rho > 0 ? glm::dvec3(q * p.x / rho, p.y, q * p.z / rho) : glm::dvec3(0, p.y, 0);
                    },
-                   [](const glm::dvec3& p) { return p.x >= 0 && p.z >= 0; }});
+                   [](const glm::dvec3& p) { return p.x >= 0 && p.z >= 0; }, nullptr});
       centre = glm::dvec3(0.0), radius = R + r;
       break;
     }
@@ -90,8 +164,30 @@ std::vector<Implicit> pieces_of(const SceneObject& o, glm::dvec3& centre, double
       const double cc = o.c, s = o.size;
       v.push_back({[=](const glm::dvec3& p) { return (p.x * p.x - p.y * p.y) / cc - p.z; },
                    [=](const glm::dvec3& p) { return glm::dvec3(2 * p.x / cc, -2 * p.y / cc, -1); },
-                   [=](const glm::dvec3& p) { return std::fabs(p.x) <= s && std::fabs(p.y) <= s; }});
+                   [=](const glm::dvec3& p) { return std::fabs(p.x) <= s && std::fabs(p.y) <= s; }, nullptr});
       centre = glm::dvec3(0.0), radius = std::sqrt(2 * s * s + std::pow(2 * s * s / std::fabs(cc), 2));
+      break;
+    }
+    case ObjectType::CrossVault:
+    case ObjectType::Pier:
+    case ObjectType::Portico: {
+      const VaultLayout l = vault_layout(o);
+      const double A = o.span_x / 2, B = o.span_z / 2;
+      glm::dvec3 lo(INFINITY), hi(-INFINITY);
+      for (const glm::dvec3& b : l.bays) {
+        for (int across = 0; across < 2; ++across) v.push_back(barrel(b, A, B, o.rise, across));
+        lo = glm::min(lo, b - glm::dvec3(A, 0, B));
+        hi = glm::max(hi, b + glm::dvec3(A, o.rise, B));
+      }
+      for (const glm::dvec3& p : l.piers) {
+        const glm::dvec3 plo = p - glm::dvec3(o.pier_x / 2, 0, o.pier_z / 2),
+                         phi = p + glm::dvec3(o.pier_x / 2, o.pier_height, o.pier_z / 2);
+        for (int axis = 0; axis < 3; ++axis)
+          for (bool upper : {false, true}) v.push_back(box_face(plo, phi, axis, upper));
+        lo = glm::min(lo, plo);
+        hi = glm::max(hi, phi);
+      }
+      centre = 0.5 * (lo + hi), radius = 0.5 * glm::length(hi - lo);
       break;
     }
     default:
@@ -143,7 +239,10 @@ struct Hit {
   glm::dvec3 normal{0.0};  // camera space, unit
 };
 
-std::optional<Hit> cast(const Surface& s, const glm::dvec3& d, double near, double far) {
+// `cull`: a hit on the back of a surface (its normal, as the tessellation orients it, facing away
+// from the eye) is not seen and the ray goes on, as back-face culling hides the back of an open
+// surface in the render (a closed surface's first hit is a front one anyway).
+std::optional<Hit> cast(const Surface& s, const glm::dvec3& d, double near, double far, bool cull) {
   // Object-space ray o + t*e for the camera ray t*d.
   const glm::dvec3 o = s.to_object * (-s.offset), e = s.to_object * d;
   // Bounding sphere, a little larger so roots on it are bracketed from outside.
@@ -157,6 +256,25 @@ std::optional<Hit> cast(const Surface& s, const glm::dvec3& d, double near, doub
   std::optional<Hit> best;
   constexpr int Steps = 256;  // brackets: the surfaces here have no feature thinner than radius/100
   for (const Implicit& piece : s.pieces) {
+    if (piece.roots) {
+      double ts[2];
+      const int n = piece.roots(o, e, ts);
+      for (int k = 0; k < n; ++k) {
+        const double t = ts[k];
+        if (!(t > 0) || (best && t >= best->t)) continue;
+        const glm::dvec3 p = o + t * e;
+        const double z = t * d.z;
+        if (piece.inside(p) && z >= near && z < far) {
+          Hit h;
+          h.t = t;
+          h.normal = glm::normalize(s.normal_to_camera * piece.grad(p));
+          if (cull && glm::dot(h.normal, d) > 0) continue;  // its back: unseen
+          best = h;
+          break;  // the roots are ascending
+        }
+      }
+      continue;
+    }
     const double dt = (t1 - t0) / Steps;
     double ta = t0, fa = piece.f(o + ta * e);
     for (int k = 1; k <= Steps; ++k) {
@@ -172,13 +290,16 @@ std::optional<Hit> cast(const Surface& s, const glm::dvec3& d, double near, doub
         const glm::dvec3 p = o + t * e;
         const double z = t * d.z;  // camera-space depth of the hit
         if (piece.inside(p) && z >= near && z < far) {
-          if (!best || t < best->t) {
-            Hit h;
-            h.t = t;
-            h.normal = glm::normalize(s.normal_to_camera * piece.grad(p));
-            best = h;
+          const glm::dvec3 n = glm::normalize(s.normal_to_camera * piece.grad(p));
+          if (!(cull && glm::dot(n, d) > 0)) {
+            if (!best || t < best->t) {
+              Hit h;
+              h.t = t;
+              h.normal = n;
+              best = h;
+            }
+            break;  // the first root of this piece inside its domain
           }
-          break;  // the first root of this piece inside its domain
         }
       }
       ta = tb, fa = fb;
@@ -190,7 +311,7 @@ std::optional<Hit> cast(const Surface& s, const glm::dvec3& d, double near, doub
       Hit hit;
       hit.t = h->first;
       hit.normal = glm::normalize(s.normal_to_camera * h->second);
-      best = hit;
+      if (!(cull && glm::dot(hit.normal, d) > 0)) best = hit;
     }
   }
   return best;
@@ -234,7 +355,8 @@ AnalyticTruth render_analytic_truth(const BuiltScene& scene) {
   }
   out.surfaces = static_cast<int>(surfaces.size());
   if (surfaces.empty()) {
-    out.unavailable = "no object of the scene has an exact surface here (sphere, cone, torus, hypar, patch)";
+    out.unavailable = "no object of the scene has an exact surface here (sphere, cone, torus, hypar, patch, "
+                      "cross vault, pier, portico)";
     return out;
   }
   const int W = scene.width, H = scene.height;
@@ -250,7 +372,7 @@ AnalyticTruth render_analytic_truth(const BuiltScene& scene) {
       std::optional<Hit> best;
       const Surface* owner = nullptr;
       for (const Surface& s : surfaces) {
-        const std::optional<Hit> h = cast(s, d, sc.camera.near, sc.camera.far);
+        const std::optional<Hit> h = cast(s, d, sc.camera.near, sc.camera.far, scene.cull_backfaces);
         if (h && (!best || h->t < best->t)) best = h, owner = &s;
       }
       if (!best) continue;

@@ -79,6 +79,7 @@ struct BuiltScene {
   double eye[3] = {0, 0, -1};
   std::vector<PhongMaterial> materials;
   std::vector<ScreenPolygon> polygons;
+  bool cull_backfaces = true;  // the setting the polygons were built with (the truth hides back sides too)
   int culled_backfaces = 0;   // dropped by back-face culling
   int near_clipped = 0;       // dropped: a vertex behind the camera's near plane
   int degenerate = 0;         // dropped: zero projected area (the pole quads of a sphere, zero-area

@@ -103,6 +103,7 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
     throw SceneError(sc.name + ": shading.flat: flat shading gives one shade per polygon to the gouraud pipeline; "
                      "the phong pipeline shades every pixel");
   const bool cull = opt.cull_backfaces.value_or(sc.shading.cull_backfaces);
+  out.cull_backfaces = cull;
   const Camera& cam = sc.camera;
   const View view = make_view(cam);
   const glm::dvec3 light_cam = view.dir(sc.light.towards);
@@ -117,11 +118,7 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
   // are counted as they are read, against what the budget has left).
   std::size_t faces = 0;
   for (const SceneObject& o : sc.objects) {
-    std::size_t f = 0;
-    if (o.type == ObjectType::Polygons) f = o.polygons.size();
-    else if (o.type != ObjectType::Mesh)  // a u x v grid, a cone's cap row, quads split into two
-      f = std::size_t(o.u) * std::size_t(o.v + 1) * (o.triangles ? 2 : 1);
-    faces += f;
+    faces += estimated_faces(o);
     if (faces > opt.max_faces)
       throw SceneError(sc.name + ": " + o.field + (o.type == ObjectType::Polygons ? ".polygons" : ".u") +
                        ": the objects up to here make about " + std::to_string(faces) +

@@ -14,6 +14,7 @@
 #include "formats.hpp"
 #include "strict_json.hpp"
 #include "scene_types.hpp"
+#include "surfaces.hpp"
 
 namespace watkins {
 namespace {
@@ -349,17 +350,38 @@ SceneObject parse_object(const Reader& r, const json& j, const std::string& f, i
     o.v = vdef;
     opt(j, f, "u", [&](const json& v, const std::string& ff) { o.u = r.integer_in(v, ff, umin, 1024); });
     opt(j, f, "v", [&](const json& v, const std::string& ff) { o.v = r.integer_in(v, ff, vmin, 1024); });
+    // "max_edge_length" (world units) chooses the segments instead: giving both is an error.
+    opt(j, f, "max_edge_length", [&](const json& v, const std::string& ff) {
+      for (const char* k : {"u", "v"})
+        if (j.contains(k)) r.fail(ff, std::string("give either \"") + k + "\" or \"max_edge_length\", not both");
+      o.max_edge_length = r.positive(v, ff);
+    });
+  };
+  // A plan size: one number (square) or [x, z].
+  auto plan = [&](const json& v, const std::string& ff, double& x, double& z) {
+    if (v.is_number()) {
+      x = z = r.positive(v, ff);
+      return;
+    }
+    if (!v.is_array() || v.size() != 2) r.fail(ff, "expected a number or an array of 2 numbers [x, z], got " + show(v));
+    x = r.positive(v[0], ff + "[0]");
+    z = r.positive(v[1], ff + "[1]");
+  };
+  // The barrels' rise: by default a half circle over the narrower span.
+  auto rise = [&]() {
+    o.rise = std::min(o.span_x, o.span_z) / 2;
+    opt(j, f, "rise", [&](const json& v, const std::string& ff) { o.rise = r.positive(v, ff); });
   };
 
   if (type == "sphere") {
     o.type = ObjectType::Sphere;
-    common({"center", "radius", "u", "v"});
+    common({"center", "radius", "u", "v", "max_edge_length"});
     opt(j, f, "center", [&](const json& v, const std::string& ff) { o.center = r.vec3(v, ff); });
     o.radius = r.positive(r.required(j, f, "radius"), f + ".radius");
     uv(3, 24, 2, 12);
   } else if (type == "cone") {
     o.type = ObjectType::Cone;
-    common({"center", "radius", "height", "u", "v", "cap"});
+    common({"center", "radius", "height", "u", "v", "max_edge_length", "cap"});
     opt(j, f, "center", [&](const json& v, const std::string& ff) { o.center = r.vec3(v, ff); });
     o.radius = r.positive(r.required(j, f, "radius"), f + ".radius");
     o.height = r.positive(r.required(j, f, "height"), f + ".height");
@@ -367,7 +389,7 @@ SceneObject parse_object(const Reader& r, const json& j, const std::string& f, i
     uv(3, 12, 1, 1);
   } else if (type == "quarter_torus") {
     o.type = ObjectType::QuarterTorus;
-    common({"major_radius", "minor_radius", "u", "v"});
+    common({"major_radius", "minor_radius", "u", "v", "max_edge_length"});
     o.major_radius = r.positive(r.required(j, f, "major_radius"), f + ".major_radius");
     o.minor_radius = r.positive(r.required(j, f, "minor_radius"), f + ".minor_radius");
     if (!(o.minor_radius < o.major_radius))
@@ -375,19 +397,46 @@ SceneObject parse_object(const Reader& r, const json& j, const std::string& f, i
     uv(2, 12, 3, 16);
   } else if (type == "hyperbolic_paraboloid") {
     o.type = ObjectType::HyperbolicParaboloid;
-    common({"c", "size", "u", "v"});
+    common({"c", "size", "u", "v", "max_edge_length"});
     o.c = r.number(r.required(j, f, "c"), f + ".c");
     if (o.c == 0) r.fail(f + ".c", "must be non-zero");
     o.size = r.positive(r.required(j, f, "size"), f + ".size");
     uv(2, 12, 2, 12);
   } else if (type == "bezier_patch") {
     o.type = ObjectType::BezierPatch;
-    common({"control_points", "u", "v"});
+    common({"control_points", "u", "v", "max_edge_length"});
     const std::string cf = f + ".control_points";
     const json& cp = r.array(r.required(j, f, "control_points"), cf);
     if (cp.size() != 16) r.fail(cf, "expected 16 points (4 rows of 4), got " + std::to_string(cp.size()));
     for (size_t k = 0; k < 16; ++k) o.control_points.push_back(r.vec3(cp[k], cf + "[" + std::to_string(k) + "]"));
     uv(2, 12, 2, 12);
+  } else if (type == "cross_vault") {
+    o.type = ObjectType::CrossVault;
+    common({"span", "rise", "u", "v", "max_edge_length"});
+    plan(r.required(j, f, "span"), f + ".span", o.span_x, o.span_z);
+    rise();
+    uv(2, 16, 1, 1);  // v = 1: the barrels are straight along their axes
+    if (o.u % 2) r.fail(f + ".u", "must be even (the key of the vault is a vertex), got " + std::to_string(o.u));
+  } else if (type == "pier") {
+    o.type = ObjectType::Pier;
+    common({"center", "size", "height", "max_edge_length"});
+    opt(j, f, "center", [&](const json& v, const std::string& ff) { o.center = r.vec3(v, ff); });
+    plan(r.required(j, f, "size"), f + ".size", o.pier_x, o.pier_z);
+    o.pier_height = r.positive(r.required(j, f, "height"), f + ".height");
+    opt(j, f, "max_edge_length", [&](const json& v, const std::string& ff) { o.max_edge_length = r.positive(v, ff); });
+  } else if (type == "portico") {
+    o.type = ObjectType::Portico;
+    common({"bays", "span", "rise", "pier", "springing", "u", "v", "max_edge_length"});
+    o.bays = r.integer_in(r.required(j, f, "bays"), f + ".bays", 1, 64);
+    plan(r.required(j, f, "span"), f + ".span", o.span_x, o.span_z);
+    rise();
+    o.pier_x = o.pier_z = std::min(o.span_x, o.span_z) / 8;
+    opt(j, f, "pier", [&](const json& v, const std::string& ff) { plan(v, ff, o.pier_x, o.pier_z); });
+    if (!(o.pier_x < o.span_x && o.pier_z < o.span_z))
+      r.fail(f + ".pier", "must be smaller than the span in x and in z (the piers would fill the bays)");
+    o.pier_height = r.positive(r.required(j, f, "springing"), f + ".springing");
+    uv(2, 16, 1, 1);  // v = 1: the barrels are straight along their axes
+    if (o.u % 2) r.fail(f + ".u", "must be even (the key of the vault is a vertex), got " + std::to_string(o.u));
   } else if (type == "mesh") {
     o.type = ObjectType::Mesh;
     common({"file", "normals"});
@@ -415,8 +464,10 @@ SceneObject parse_object(const Reader& r, const json& j, const std::string& f, i
   } else {
     r.fail(f + ".type",
            "unknown object type " + show(j["type"]) +
-               " (expected sphere, cone, quarter_torus, hyperbolic_paraboloid, bezier_patch, mesh or polygons)");
+               " (expected sphere, cone, quarter_torus, hyperbolic_paraboloid, bezier_patch, cross_vault, pier, portico, "
+               "mesh or polygons)");
   }
+  if (const std::string e = choose_tessellation(o); !e.empty()) r.fail(f + ".max_edge_length", e);
   return o;
 }
 

@@ -4,6 +4,7 @@
 // the frame of Watkins and Gouraud ("observer at the origin looking in the Z direction").
 #pragma once
 
+#include <array>
 #include <map>
 #include <string>
 #include <vector>
@@ -52,7 +53,8 @@ struct Shading {
   DepthTie depth_tie = DepthTie::Arrival;    // "depth_tie": equal-depth rule (BuiltScene::depth_tie)
 };
 
-enum class ObjectType { Sphere, Cone, QuarterTorus, HyperbolicParaboloid, BezierPatch, Mesh, Polygons };
+enum class ObjectType { Sphere, Cone, QuarterTorus, HyperbolicParaboloid, BezierPatch, CrossVault, Pier, Portico, Mesh,
+                        Polygons };
 
 enum class MeshNormals { File, Average };
 
@@ -72,6 +74,15 @@ struct SceneObject {
   double minor_radius = 0.5;
   double c = 1.0, size = 1.0;     // hyperbolic paraboloid z = (x^2 - y^2)/c, |x|,|y| <= size
   std::vector<glm::dvec3> control_points;  // Bezier patch: 16, row by row
+  int cap_rings = 1;              // cone: rings of the base cap (more only under max_edge_length)
+  // Cross vault / portico bay: plan size (x, z) of a bay, crown height above the springing line;
+  // the two barrels are half ellipses of that rise (surfaces.hpp, cross_vault).
+  double span_x = 4.0, span_z = 4.0, rise = 2.0;
+  // Pier (a box column, base centre `center`) and the portico's piers: plan section and height.
+  double pier_x = 0.5, pier_z = 0.5, pier_height = 4.0;
+  int bays = 1;                   // portico: bays in a row along +X
+  std::array<int, 3> box_segments{1, 1, 1};  // pier faces: segments along x, y, z
+  double max_edge_length = 0;     // > 0: u, v (and the above) were chosen from it, world units
   std::string file;               // mesh: OBJ path already resolved against the scene's folder
   MeshNormals normals = MeshNormals::File;
   std::vector<ScreenPolygon> polygons;  // "polygons": screen-space, validated, passed through

@@ -1,8 +1,11 @@
 // Tessellation of the analytic surfaces of Gouraud's and Phong's figures.
 #include "surfaces.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
+#include <memory>
+#include <string>
 
 #include <glm/geometric.hpp>
 
@@ -117,6 +120,17 @@ IndexedMesh cone(const SceneObject& o) {
     int c = m.add_vertex(o.center, {0, -1, 0});
     std::vector<int> rim;
     for (int i = 0; i < nu; ++i) rim.push_back(m.add_vertex(m.position[at(i, 0)], {0, -1, 0}));
+    // cap_rings > 1 (max_edge_length): rings of quads inside the rim, so no spoke is longer than the limit.
+    for (int k = 1; k < o.cap_rings; ++k) {
+      std::vector<int> inner;
+      const double f = 1.0 - static_cast<double>(k) / o.cap_rings;
+      for (int i = 0; i < nu; ++i) {
+        const double phi = 2 * kPi * i / nu;
+        inner.push_back(m.add_vertex(o.center + glm::dvec3(f * r * std::cos(phi), 0, f * r * std::sin(phi)), {0, -1, 0}));
+      }
+      for (int i = 0; i < nu; ++i) m.add_face({rim[i], rim[(i + 1) % nu], inner[(i + 1) % nu], inner[i]}, o.triangles);
+      rim = std::move(inner);
+    }
     for (int i = 0; i < nu; ++i) m.add_face({c, rim[i], rim[(i + 1) % nu]}, false);
   }
   return m;
@@ -197,6 +211,319 @@ IndexedMesh bezier(const SceneObject& o) {
 
 }  // namespace
 
+VaultLayout vault_layout(const SceneObject& o) {
+  VaultLayout l;
+  switch (o.type) {
+    case ObjectType::CrossVault: l.bays.push_back(glm::dvec3(0.0)); break;
+    case ObjectType::Pier: l.piers.push_back(o.center); break;
+    case ObjectType::Portico:
+      // Bays along +X from x = 0, centred on z = 0; a pier under every corner of every bay.
+      for (int k = 0; k < o.bays; ++k) l.bays.push_back({(k + 0.5) * o.span_x, o.pier_height, 0.0});
+      for (int k = 0; k <= o.bays; ++k)
+        for (double side : {-0.5, 0.5}) l.piers.push_back({k * o.span_x, 0.0, side * o.span_z});
+      break;
+    default: break;
+  }
+  return l;
+}
+
+namespace {
+
+// Arch samples of a bay's barrels: angle pi*k/nu for k = 0..nu/2, exact at the springing (k = 0)
+// and at the key (2k = nu), so the four webs meet at one point and the corners are exact.
+struct ArchSamples {
+  std::vector<double> c, s;  // cos, sin
+  explicit ArchSamples(int nu) : c(std::size_t(nu / 2 + 1)), s(std::size_t(nu / 2 + 1)) {
+    for (int k = 0; k <= nu / 2; ++k) {
+      c[std::size_t(k)] = std::cos(kPi * k / nu);
+      s[std::size_t(k)] = std::sin(kPi * k / nu);
+    }
+    c.front() = 1, s.front() = 0, c.back() = 0, s.back() = 1;
+  }
+};
+
+// One web of a cross vault, as a (u, v) patch for the edge-length measure and the tessellation:
+// `across` 0 is barrel X (axis along X, spanning z: y = h sqrt(1 - (z/B)^2)), 1 is barrel Z (axis
+// along Z, spanning x); `side` is the sign of x (barrel X) or z (barrel Z) of the web. Arch row i
+// (0..nu) is the barrel's angle pi*i/nu; along a row the web runs from the groin (j = 0), where
+// |x|/A = |z|/B, to the face arch (j = nw) at |x| = A (barrel X) or |z| = B (barrel Z).
+struct Web {
+  const ArchSamples& arch;
+  glm::dvec3 c;
+  double A, B, h;
+  int nu, across, side;
+  int k(int i) const { return std::min(i, nu - i); }
+  int arch_sign(int i) const { return 2 * i <= nu ? 1 : -1; }
+  // The groin point of row i: one expression for both webs that share it, so both get the same doubles.
+  glm::dvec3 groin(int sx, int sz, int kk) const {
+    return c + glm::dvec3(sx * A * arch.c[std::size_t(kk)], h * arch.s[std::size_t(kk)], sz * B * arch.c[std::size_t(kk)]);
+  }
+  glm::dvec3 point(int i, double t) const {
+    const int kk = k(i), sg = arch_sign(i);
+    const double ck = arch.c[std::size_t(kk)], sk = arch.s[std::size_t(kk)];
+    if (t == 0) return across == 0 ? groin(side, sg, kk) : groin(sg, side, kk);
+    if (across == 0) {
+      const double xg = A * ck, x = t == 1 ? A : xg + t * (A - xg);
+      return c + glm::dvec3(side * x, h * sk, sg * B * ck);
+    }
+    const double zg = B * ck, z = t == 1 ? B : zg + t * (B - zg);
+    return c + glm::dvec3(sg * A * ck, h * sk, side * z);
+  }
+  // The intrados normal: towards the barrel's axis (into the vaulted space), minus grad of
+  // (z/B)^2 + (y/h)^2 (barrel X) or (x/A)^2 + (y/h)^2 (barrel Z).
+  glm::dvec3 normal(int i) const {
+    const int kk = k(i), sg = arch_sign(i);
+    const double ck = arch.c[std::size_t(kk)], sk = arch.s[std::size_t(kk)];
+    return across == 0 ? -glm::dvec3(0, sk / h, sg * ck / B) : -glm::dvec3(sg * ck / A, sk / h, 0);
+  }
+};
+
+// One bay (volta a crociera): two half-elliptic barrels of rise h over a plan of half spans A (x)
+// and B (z), springing plane through c. Seen from below each barrel is the ceiling where it is the
+// higher of the two, |x|/A >= |z|/B for barrel X: four triangular webs whose edges are the face
+// arches and the groins, half ellipses in the vertical planes of the plan's diagonals. The groin
+// vertices are shared in position (not in normal) by the two webs meeting there, so the crease stays
+// sharp with each web's exact normals; rows 0 and nu collapse to the springing corner (triangles).
+void cross_vault_bay(IndexedMesh& m, const ArchSamples& arch, const glm::dvec3& c, double A, double B, double h,
+                     int nu, int nw, bool split) {
+  for (int across = 0; across < 2; ++across)
+    for (int side : {1, -1}) {
+      const Web w{arch, c, A, B, h, nu, across, side};
+      std::vector<std::vector<int>> row(std::size_t(nu) + 1);
+      for (int i = 0; i <= nu; ++i) {
+        const glm::dvec3 n = w.normal(i);
+        auto& r = row[std::size_t(i)];
+        if (w.k(i) == 0) {
+          r.push_back(m.add_vertex(w.point(i, 0), n));
+          continue;
+        }
+        for (int j = 0; j <= nw; ++j) r.push_back(m.add_vertex(w.point(i, static_cast<double>(j) / nw), n));
+      }
+      for (int i = 0; i < nu; ++i) {
+        const auto &a = row[std::size_t(i)], &b = row[std::size_t(i) + 1];
+        for (int j = 0; j < nw; ++j) {
+          const std::size_t jj = std::size_t(j);
+          if (a.size() == 1) m.add_face({a[0], b[jj], b[jj + 1]}, false);
+          else if (b.size() == 1) m.add_face({a[jj], a[jj + 1], b[0]}, false);
+          else m.add_face({a[jj], a[jj + 1], b[jj + 1], b[jj]}, split);
+        }
+      }
+    }
+}
+
+// A box column: base centre `base`, size (x, height, z), each face a grid of seg[] segments with
+// its own vertices (sharp edges, exact face normals). A coordinate is computed by one expression
+// on every face that has it, so the edges between faces are watertight.
+void box(IndexedMesh& m, const glm::dvec3& base, const glm::dvec3& size, const std::array<int, 3>& seg, bool split) {
+  const glm::dvec3 lo = base - glm::dvec3(size.x / 2, 0, size.z / 2), hi = base + glm::dvec3(size.x / 2, size.y, size.z / 2);
+  auto coord = [&](int axis, int i) {
+    const int n = seg[std::size_t(axis)];
+    return i == 0 ? lo[axis] : i == n ? hi[axis] : lo[axis] + (hi[axis] - lo[axis]) * i / n;
+  };
+  for (int axis = 0; axis < 3; ++axis)
+    for (int end = 0; end < 2; ++end) {
+      const int b = (axis + 1) % 3, cc = (axis + 2) % 3, nb = seg[std::size_t(b)], nc = seg[std::size_t(cc)];
+      glm::dvec3 n(0.0);
+      n[axis] = end ? 1 : -1;
+      std::vector<int> id;
+      for (int j = 0; j <= nc; ++j)
+        for (int i = 0; i <= nb; ++i) {
+          glm::dvec3 p;
+          p[axis] = end ? hi[axis] : lo[axis];
+          p[b] = coord(b, i);
+          p[cc] = coord(cc, j);
+          id.push_back(m.add_vertex(p, n));
+        }
+      auto at = [&](int i, int j) { return id[std::size_t(j) * std::size_t(nb + 1) + std::size_t(i)]; };
+      for (int j = 0; j < nc; ++j)
+        for (int i = 0; i < nb; ++i) m.add_face({at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)}, split);
+    }
+}
+
+IndexedMesh vaulted(const SceneObject& o) {
+  IndexedMesh m;
+  const VaultLayout l = vault_layout(o);
+  const ArchSamples arch(o.u);
+  for (const glm::dvec3& c : l.bays) cross_vault_bay(m, arch, c, o.span_x / 2, o.span_z / 2, o.rise, o.u, o.v, o.triangles);
+  for (const glm::dvec3& p : l.piers) box(m, p, {o.pier_x, o.pier_height, o.pier_z}, o.box_segments, o.triangles);
+  return m;
+}
+
+// ---- Tessellation by maximum edge length -----------------------------------------------------
+
+using PatchFn = std::function<glm::dvec3(double s, double t)>;
+
+struct Longest {
+  double u = 0, v = 0, diagonal = 0;  // world units
+};
+
+// Longest edge along s, along t and across each quad (the diagonal a split quad gets) of an
+// nu x nv grid over each patch; lengths in world units (after the object's scale).
+Longest longest_edges(const std::vector<PatchFn>& patches, int nu, int nv, const glm::dvec3& scale) {
+  Longest e;
+  std::vector<glm::dvec3> p(std::size_t(nu + 1) * std::size_t(nv + 1));
+  auto at = [&](int i, int j) -> glm::dvec3& { return p[std::size_t(j) * std::size_t(nu + 1) + std::size_t(i)]; };
+  for (const PatchFn& f : patches) {
+    for (int j = 0; j <= nv; ++j)
+      for (int i = 0; i <= nu; ++i) at(i, j) = scale * f(static_cast<double>(i) / nu, static_cast<double>(j) / nv);
+    for (int j = 0; j <= nv; ++j)
+      for (int i = 0; i <= nu; ++i) {
+        if (i < nu) e.u = std::max(e.u, glm::length(at(i + 1, j) - at(i, j)));
+        if (j < nv) e.v = std::max(e.v, glm::length(at(i, j + 1) - at(i, j)));
+        if (i < nu && j < nv) e.diagonal = std::max(e.diagonal, glm::length(at(i + 1, j + 1) - at(i, j)));
+      }
+  }
+  return e;
+}
+
+constexpr int kMaxSegments = 1024;
+
+// Grows nu and nv from their minimums until no edge is longer than L. A chord shrinks about as
+// 1/n, so n * (longest / L) segments is the next guess; ok once every edge fits.
+// `patches(nu)` gives the surface's patches sampled for nu segments along s (the cross vault's
+// arch rows depend on nu; the other surfaces ignore it).
+std::string fit_grid(const std::function<std::vector<PatchFn>(int)>& patches, double L, const glm::dvec3& scale,
+                     bool split, int umin, int vmin, bool u_even, int& nu, int& nv) {
+  nu = umin, nv = vmin;
+  auto grow = [&](int n, double len) {
+    const double ratio = len / L;
+    if (!(ratio < 2.0 * kMaxSegments)) return kMaxSegments + 1;  // hopeless (or not a number): refused below
+    return std::max(n + 1, static_cast<int>(std::min(std::ceil(n * ratio), 2.0 * kMaxSegments)));
+  };
+  for (;;) {
+    const Longest e = longest_edges(patches(nu), nu, nv, scale);
+    const bool ok_u = e.u <= L, ok_v = e.v <= L, ok_d = !split || e.diagonal <= L;
+    if (ok_u && ok_v && ok_d) return "";
+    if (!ok_u) nu = grow(nu, e.u);
+    if (!ok_v) nv = grow(nv, e.v);
+    if (ok_u && ok_v) (e.u >= e.v ? nu : nv) += 1;  // only a split quad's diagonal is too long
+    if (u_even && nu % 2) ++nu;
+    if (nu > kMaxSegments || nv > kMaxSegments)
+      return number_text(L) + " needs more than " + std::to_string(kMaxSegments) + " segments along " +
+             (nu > kMaxSegments ? "u" : "v") + " (the tessellation's limit)";
+  }
+}
+
+// Segments of a box's edges (x, height, z) so that no edge, nor a split face's diagonal, is longer than L.
+std::string fit_box(const glm::dvec3& size, double L, bool split, std::array<int, 3>& seg) {
+  for (int a = 0; a < 3; ++a) seg[std::size_t(a)] = std::max(1, static_cast<int>(std::ceil(std::min(size[a] / L, 2.0 * kMaxSegments))));
+  for (;;) {
+    int worst = -1;
+    if (split)
+      for (int a = 0; a < 3; ++a) {
+        const int b = (a + 1) % 3;
+        const double db = size[b] / seg[std::size_t(b)], da = size[a] / seg[std::size_t(a)];
+        if (std::hypot(da, db) > L) worst = da >= db ? a : b;
+      }
+    for (int a = 0; a < 3; ++a)
+      if (seg[std::size_t(a)] > kMaxSegments)
+        return number_text(L) + " needs more than " + std::to_string(kMaxSegments) + " segments along a pier's " +
+               (a == 0 ? "x" : a == 1 ? "height" : "z") + " (the tessellation's limit)";
+    if (worst < 0) return "";
+    ++seg[std::size_t(worst)];
+  }
+}
+
+std::vector<PatchFn> vault_patches(const SceneObject& o, const ArchSamples& arch, int nu) {
+  std::vector<PatchFn> v;
+  for (int across = 0; across < 2; ++across)
+    for (int side : {1, -1}) {
+      const Web w{arch, glm::dvec3(0.0), o.span_x / 2, o.span_z / 2, o.rise, nu, across, side};
+      // s picks the arch row, so the measure sees exactly the tessellation's rows for this nu.
+      v.push_back([w](double s, double t) { return w.point(static_cast<int>(std::lround(s * w.nu)), t); });
+    }
+  return v;
+}
+
+}  // namespace
+
+std::string choose_tessellation(SceneObject& o) {
+  const double L = o.max_edge_length;
+  if (!(L > 0)) return "";
+  const glm::dvec3 sc = o.transform.scale;
+  const bool split = o.triangles;
+  std::vector<PatchFn> p;
+  const auto fixed = [&p](int) { return p; };
+  switch (o.type) {
+    case ObjectType::Sphere:
+      p.push_back([&o](double s, double t) {
+        const double phi = 2 * kPi * s, th = kPi * t;
+        return o.center + o.radius * glm::dvec3(std::sin(th) * std::cos(phi), std::cos(th), std::sin(th) * std::sin(phi));
+      });
+      return fit_grid(fixed, L, sc, split, 3, 2, false, o.u, o.v);
+    case ObjectType::Cone: {
+      p.push_back([&o](double s, double t) {
+        const double phi = 2 * kPi * s;
+        return o.center + glm::dvec3((1 - t) * o.radius * std::cos(phi), t * o.height, (1 - t) * o.radius * std::sin(phi));
+      });
+      const std::string e = fit_grid(fixed, L, sc, split, 3, 1, false, o.u, o.v);
+      if (!e.empty() || !o.cap) return e;
+      // The cap's spokes: rings of equal width, the widest of the plan scale.
+      const double spoke = o.radius * std::max(sc.x, sc.z);
+      o.cap_rings = std::max(1, static_cast<int>(std::ceil(std::min(spoke / L, 2.0 * kMaxSegments))));
+      // Split cap quads: the diagonal across a ring's outermost quad.
+      while (split && o.cap_rings <= kMaxSegments &&
+             std::hypot(spoke / o.cap_rings, 2 * spoke * std::sin(kPi / o.u)) > L)
+        ++o.cap_rings;
+      if (o.cap_rings > kMaxSegments)
+        return number_text(L) + " needs more than " + std::to_string(kMaxSegments) + " rings in the cone's cap";
+      return "";
+    }
+    case ObjectType::QuarterTorus:
+      p.push_back([&o](double s, double t) {
+        const double phi = 0.5 * kPi * s, th = 2 * kPi * t, R = o.major_radius, r = o.minor_radius;
+        return glm::dvec3((R + r * std::cos(th)) * std::cos(phi), r * std::sin(th), (R + r * std::cos(th)) * std::sin(phi));
+      });
+      return fit_grid(fixed, L, sc, split, 2, 3, false, o.u, o.v);
+    case ObjectType::HyperbolicParaboloid:
+      p.push_back([&o](double s, double t) {
+        const double x = o.size * (2 * s - 1), y = o.size * (2 * t - 1);
+        return glm::dvec3(x, y, (x * x - y * y) / o.c);
+      });
+      return fit_grid(fixed, L, sc, split, 2, 2, false, o.u, o.v);
+    case ObjectType::BezierPatch:
+      p.push_back([&o](double s, double t) {
+        glm::dvec3 q, ds, dt;
+        bezier_point(o.control_points, s, t, q, ds, dt);
+        return q;
+      });
+      return fit_grid(fixed, L, sc, split, 2, 2, false, o.u, o.v);
+    case ObjectType::CrossVault:
+    case ObjectType::Portico:
+    case ObjectType::Pier: {
+      if (o.type != ObjectType::Pier) {
+        std::unique_ptr<ArchSamples> arch;  // alive while fit_grid measures the patches built on it
+        const std::string e = fit_grid(
+            [&](int nu) {
+              arch = std::make_unique<ArchSamples>(nu);
+              return vault_patches(o, *arch, nu);
+            },
+            L, sc, split, 2, 1, true, o.u, o.v);
+        if (!e.empty()) return e;
+      }
+      if (o.type == ObjectType::CrossVault) return "";
+      return fit_box(sc * glm::dvec3(o.pier_x, o.pier_height, o.pier_z), L, split, o.box_segments);
+    }
+    default: return "";
+  }
+}
+
+std::size_t estimated_faces(const SceneObject& o) {
+  const std::size_t split = o.triangles ? 2 : 1, u = std::size_t(o.u), v = std::size_t(o.v);
+  const std::size_t sx = std::size_t(o.box_segments[0]), sy = std::size_t(o.box_segments[1]),
+                    sz = std::size_t(o.box_segments[2]);
+  const std::size_t box_faces = 2 * (sx * sy + sy * sz + sz * sx) * split, bay = 4 * u * v * split;
+  switch (o.type) {
+    case ObjectType::Mesh: return 0;  // counted while the file is read
+    case ObjectType::Polygons: return o.polygons.size();
+    case ObjectType::CrossVault: return bay;
+    case ObjectType::Pier: return box_faces;
+    case ObjectType::Portico: return std::size_t(o.bays) * bay + 2 * std::size_t(o.bays + 1) * box_faces;
+    case ObjectType::Cone: return u * (v + std::size_t(o.cap_rings)) * split;
+    default: return u * (v + 1) * split;  // a u x v grid (a sphere's poles, a torus' ring)
+  }
+}
+
 IndexedMesh tessellate_surface(const SceneObject& o) {
   switch (o.type) {
     case ObjectType::Sphere: return sphere(o);
@@ -204,6 +531,9 @@ IndexedMesh tessellate_surface(const SceneObject& o) {
     case ObjectType::QuarterTorus: return quarter_torus(o);
     case ObjectType::HyperbolicParaboloid: return hypar(o);
     case ObjectType::BezierPatch: return bezier(o);
+    case ObjectType::CrossVault:
+    case ObjectType::Pier:
+    case ObjectType::Portico: return vaulted(o);
     default: return {};
   }
 }

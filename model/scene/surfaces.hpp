@@ -3,6 +3,8 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
+#include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -28,8 +30,24 @@ struct IndexedMesh {
   void add_face(std::initializer_list<int> idx, bool split);
 };
 
-// Sphere, cone, quarter_torus, hyperbolic_paraboloid, bezier_patch. Object space, untransformed.
+// Sphere, cone, quarter_torus, hyperbolic_paraboloid, bezier_patch, cross_vault, pier, portico.
+// Object space, untransformed.
 IndexedMesh tessellate_surface(const SceneObject& o);
+
+// Faces tessellate_surface makes for `o` at most (before culling), for the builder's budget.
+std::size_t estimated_faces(const SceneObject& o);
+
+// o.max_edge_length > 0: sets o.u, o.v (cone: o.cap_rings; pier, portico: o.box_segments) to the
+// fewest segments for which no edge of the tessellation, measured in world units (after the
+// object's scale), is longer than it. Returns an error message (no counts fit in 1024), else "".
+std::string choose_tessellation(SceneObject& o);
+
+// Where the parts of a cross_vault, pier or portico object sit in object space: each bay's centre
+// on its springing plane (the barrels' axes cross there) and each pier's base centre.
+struct VaultLayout {
+  std::vector<glm::dvec3> bays, piers;
+};
+VaultLayout vault_layout(const SceneObject& o);
 
 // Bicubic Bezier patch (control_points[4*row + col]; s along a row, t from row to row): the point
 // and its partial derivatives dP/ds, dP/dt at (s, t). Shared by the tessellation and the analytic truth.
