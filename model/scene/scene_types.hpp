@@ -54,7 +54,7 @@ struct Shading {
 
 enum class ObjectType { Sphere, Cone, QuarterTorus, HyperbolicParaboloid, BezierPatch, Mesh, Polygons };
 
-enum class MeshNormals { File, Average };
+enum class MeshNormals { File, Average, Crease };
 
 struct SceneObject {
   ObjectType type = ObjectType::Sphere;
@@ -72,8 +72,12 @@ struct SceneObject {
   double minor_radius = 0.5;
   double c = 1.0, size = 1.0;     // hyperbolic paraboloid z = (x^2 - y^2)/c, |x|,|y| <= size
   std::vector<glm::dvec3> control_points;  // Bezier patch: 16, row by row
-  std::string file;               // mesh: OBJ path already resolved against the scene's folder
+  std::string file;               // mesh: OBJ or STL path already resolved against the scene's folder
   MeshNormals normals = MeshNormals::File;
+  bool normals_given = false;     // mesh: "normals" was in the scene (an STL file has no normals)
+  double crease_angle_deg = 0;    // mesh, MeshNormals::Crease: faces further apart are not smoothed
+  double max_edge_length = 0;     // mesh: split edges longer than this (object space); 0: never
+  double weld_tolerance = -1;     // STL: weld corners this close (file units); < 0: 1e-6 x bbox diagonal
   std::vector<ScreenPolygon> polygons;  // "polygons": screen-space, validated, passed through
   // "polygons": the first vertex without "rgb" / "normal" (field path, empty when none); which
   // one is an error depends on the shading mode, known only once the command line is applied.
