@@ -431,6 +431,28 @@ TEST(Split, CubeFacesSplitWatertightWithShortEdges) {
   }
 }
 
+TEST(Split, ThinAndObtuseFacesStayWatertight) {
+  // The cylinder's sides are 2 x 0.26 slivers, its caps fans of thin triangles around a centre.
+  int d = 0;
+  for (double L : {0.1, 0.13, 0.4, 0.9}) {
+    for (double crease : {0.0, 80.0}) {
+      SceneObject o = obj_object("cylinder.stl", MeshNormals::Crease, crease);
+      o.max_edge_length = L;
+      const IndexedMesh m = watkins::load_mesh_file(o, "w", 1000000, false, d);
+      expect_watertight(m);
+      double area = 0;
+      for (const auto& f : m.faces) {
+        const glm::dvec3 &a = m.position[f.idx[0]], &b = m.position[f.idx[1]], &c = m.position[f.idx[2]];
+        area += 0.5 * glm::length(glm::cross(b - a, c - a));
+        EXPECT_GT(glm::length(glm::cross(b - a, c - a)), 0) << "a zero-area piece at L = " << L;
+      }
+      // 24 side rectangles 2 x (2 sin(7.5 deg)) and two 24-gons of (24/2) sin(15 deg).
+      EXPECT_NEAR(area, 24 * 2 * 2 * std::sin(M_PI / 24) + 2 * 12 * std::sin(M_PI / 12), 1e-5) << L;
+    }
+  }
+  EXPECT_EQ(d, 0);
+}
+
 TEST(Split, QuadsWithFileNormalsKeepThemAndShortFacesStayQuads) {
   SceneObject o = obj_object("cube.obj", MeshNormals::File);
   o.max_edge_length = 0.6;
