@@ -34,7 +34,7 @@ glm::dvec3 newell(const PolygonMesh& m, const PolygonMesh::Face& f) {
 // Faces a polygon of n vertices becomes when nothing is split (as indexed_mesh_from_polygons makes them).
 double faces_of(std::size_t n) { return n == 4 ? 1.0 : double(n - 2); }
 
-// One triangle of a split face: its corners as the face's file positions and file normals, and
+// One triangle of a split face: its corners as the face's positions and (resolved) normals, and
 // where the interior and subdivided-edge points come from.
 class TriangleSplitter {
  public:
@@ -56,7 +56,7 @@ class TriangleSplitter {
     return ring * ring + k0 + k1 + k2 + 3 * ring;
   }
 
-  // pos/nrm: the triangle's corners (positions, file normals or -1), counter-clockwise.
+  // pos/nrm: the triangle's corners (positions, normals or -1), counter-clockwise.
   void split(const int pos[3], const int nrm[3], long origin) {
     for (int k = 0; k < 3; ++k) pos_[k] = pos[k], nrm_[k] = nrm[k];
     origin_ = origin;
@@ -179,7 +179,14 @@ class TriangleSplitter {
     for (int c = 0; c < 3; ++c)
       if (p.w[c] == 1) return nrm_[c];
     if (nrm_[0] < 0 || nrm_[1] < 0 || nrm_[2] < 0) return -1;
-    m_.normal.push_back(p.w.x * m_.normal[nrm_[0]] + p.w.y * m_.normal[nrm_[1]] + p.w.z * m_.normal[nrm_[2]]);
+    // The corners' directions, blended as Phong blends them along a scan line.
+    glm::dvec3 n(0.0);
+    for (int c = 0; c < 3; ++c) {
+      const glm::dvec3& nc = m_.normal[nrm_[c]];
+      const double len = glm::length(nc);
+      if (len > 0 && std::isfinite(len)) n += p.w[c] * (nc / len);
+    }
+    m_.normal.push_back(n);
     return int(m_.normal.size()) - 1;
   }
 
@@ -265,20 +272,28 @@ void split_long_edges(PolygonMesh& m, double max_edge, std::size_t max_faces, co
   m.faces = std::move(out);
 }
 
-IndexedMesh indexed_mesh_from_polygons(const PolygonMesh& pm, const SceneObject& o, const MeshFail& fail) {
+void resolve_normals(PolygonMesh& pm, const SceneObject& o, const MeshFail& fail) {
   const std::vector<glm::dvec3>& pos = pm.position;
-
-  // Averaged normals: sum of Newell normals (length = twice the face area), i.e. area-weighted,
-  // computed in the file's own right-handed frame where counter-clockwise faces point outward.
-  std::vector<glm::dvec3> avg;
+  if (o.normals == MeshNormals::File) {
+    for (const auto& f : pm.faces)
+      for (int n : f.normal)
+        if (n < 0) fail(f.origin, "no vertex normal");
+    return;
+  }
+  std::vector<glm::dvec3> normal;
   if (o.normals == MeshNormals::Average) {
-    avg.assign(pos.size(), glm::dvec3(0.0));
+    // Averaged normals: sum of Newell normals (length = twice the face area), i.e. area-weighted,
+    // computed in the file's own right-handed frame where counter-clockwise faces point outward.
+    // One per position.
+    normal.assign(pos.size(), glm::dvec3(0.0));
     for (const auto& f : pm.faces) {
       const glm::dvec3 nw = newell(pm, f);
-      for (int p : f.position) avg[p] += nw;
+      for (int p : f.position) normal[p] += nw;
     }
+    for (auto& f : pm.faces) f.normal = f.position;
+    pm.normal = std::move(normal);
+    return;
   }
-
   // Crease-angle normals: a corner of face f averages the faces g around its vertex whose unit
   // normals are less than the angle away from f's (f itself always), each weighted by g's angle at
   // that vertex. Angle rather than area weights: the normal then does not depend on how a flat
@@ -286,57 +301,55 @@ IndexedMesh indexed_mesh_from_polygons(const PolygonMesh& pm, const SceneObject&
   // another; by angle each side counts 90 degrees, so the corner normal is the diagonal).
   std::vector<glm::dvec3> unit;                           // per face (zero when degenerate)
   std::vector<std::vector<std::pair<int, double>>> ring;  // per position: (face, its angle there)
-  double cos_limit = -1;
-  if (o.normals == MeshNormals::Crease) {
-    cos_limit = std::cos(o.crease_angle_deg * (kPi / 180));
-    if (o.crease_angle_deg >= 180) cos_limit = -2;  // everything, even faces back to back
-    unit.reserve(pm.faces.size());
-    ring.assign(pos.size(), {});
-    for (std::size_t fi = 0; fi < pm.faces.size(); ++fi) {
-      const auto& f = pm.faces[fi];
-      const glm::dvec3 nw = newell(pm, f);
-      const double len = glm::length(nw);
-      unit.push_back(len > 0 && std::isfinite(len) ? nw / len : glm::dvec3(0.0));
-      const std::size_t n = f.position.size();
-      for (std::size_t k = 0; k < n; ++k) {
-        const glm::dvec3& p = pos[f.position[k]];
-        const glm::dvec3 a = pos[f.position[(k + n - 1) % n]] - p, b = pos[f.position[(k + 1) % n]] - p;
-        ring[f.position[k]].push_back({int(fi), std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b))});
-      }
+  const double cos_limit = o.crease_angle_deg >= 180 ? -2  // everything, even faces back to back
+                                                     : std::cos(o.crease_angle_deg * (kPi / 180));
+  unit.reserve(pm.faces.size());
+  ring.assign(pos.size(), {});
+  for (std::size_t fi = 0; fi < pm.faces.size(); ++fi) {
+    const auto& f = pm.faces[fi];
+    const glm::dvec3 nw = newell(pm, f);
+    const double len = glm::length(nw);
+    unit.push_back(len > 0 && std::isfinite(len) ? nw / len : glm::dvec3(0.0));
+    const std::size_t n = f.position.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      const glm::dvec3& p = pos[f.position[k]];
+      const glm::dvec3 a = pos[f.position[(k + n - 1) % n]] - p, b = pos[f.position[(k + 1) % n]] - p;
+      ring[f.position[k]].push_back({int(fi), std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b))});
     }
   }
-  auto crease_normal = [&](std::size_t fi, int p) {
+  // (position, normal) -> index: corners agreeing share a normal (and so a vertex), a corner
+  // across a crease gets its own.
+  std::map<std::tuple<int, double, double, double>, int> index;
+  for (std::size_t fi = 0; fi < pm.faces.size(); ++fi) {
+    auto& f = pm.faces[fi];
     const glm::dvec3& own = unit[fi];
     const bool flat_face = own == glm::dvec3(0.0);  // a zero-area face takes its neighbours' normal
-    glm::dvec3 sum(0.0);
-    for (const auto& [g, angle] : ring[p])
-      if (std::size_t(g) == fi || flat_face || glm::dot(own, unit[g]) > cos_limit) sum += angle * unit[g];
-    return sum == glm::dvec3(0.0) ? own : sum;
-  };
-
-  IndexedMesh m;
-  // (position, normal) -> vertex: shared vertices stay shared, a corner across a crease gets its own.
-  std::map<std::tuple<int, double, double, double>, int> index;
-  auto vertex = [&](std::size_t fi, std::size_t k) {
-    const PolygonMesh::Face& f = pm.faces[fi];
-    const int p = f.position[k];
-    glm::dvec3 n(0.0);
-    std::tuple<int, double, double, double> key{p, 0, 0, 0};
-    if (o.normals == MeshNormals::File) {
-      if (f.normal[k] < 0) fail(f.origin, "no vertex normal");
-      n = pm.normal[f.normal[k]];
-      key = {p, double(f.normal[k]), 0, 0};
-    } else if (o.normals == MeshNormals::Average) {
-      n = avg[p];
-    } else {
-      n = crease_normal(fi, p);
-      key = {p, n.x, n.y, n.z};
+    for (std::size_t k = 0; k < f.position.size(); ++k) {
+      const int p = f.position[k];
+      glm::dvec3 sum(0.0);
+      for (const auto& [g, angle] : ring[p])
+        if (std::size_t(g) == fi || flat_face || glm::dot(own, unit[g]) > cos_limit) sum += angle * unit[g];
+      if (sum == glm::dvec3(0.0)) sum = own;
+      auto it = index.emplace(std::make_tuple(p, sum.x, sum.y, sum.z), int(normal.size())).first;
+      if (it->second == int(normal.size())) normal.push_back(sum);
+      f.normal[k] = it->second;
     }
+  }
+  pm.normal = std::move(normal);
+}
+
+IndexedMesh indexed_mesh_from_polygons(const PolygonMesh& pm, const SceneObject& o, const MeshFail& fail) {
+  IndexedMesh m;
+  // (position, normal) -> vertex: shared vertices stay shared.
+  std::map<std::pair<int, int>, int> index;
+  auto vertex = [&](const PolygonMesh::Face& f, std::size_t k) {
+    const std::pair<int, int> key{f.position[k], f.normal[k]};
     auto it = index.find(key);
     if (it != index.end()) return it->second;
+    const glm::dvec3 n = f.normal[k] < 0 ? glm::dvec3(0.0) : pm.normal[f.normal[k]];
     const double len = glm::length(n);
     if (!std::isfinite(len) || len < 1e-300) fail(f.origin, "zero or invalid vertex normal");
-    m.position.push_back(mirror_z(pos[p]));
+    m.position.push_back(mirror_z(pm.position[key.first]));
     m.normal.push_back(mirror_z(n / len));
     const int id = static_cast<int>(m.position.size()) - 1;
     index.emplace(key, id);
@@ -345,10 +358,10 @@ IndexedMesh indexed_mesh_from_polygons(const PolygonMesh& pm, const SceneObject&
   // Faces keep the file's order: mirroring z both reverses the handedness and the apparent
   // winding, so a face counter-clockwise from outside in the file stays front-facing here.
   // Polygons of more than 4 vertices become a fan of triangles (right for convex faces).
-  for (std::size_t fi = 0; fi < pm.faces.size(); ++fi) {
+  for (const auto& f : pm.faces) {
     std::vector<int> id;
-    id.reserve(pm.faces[fi].position.size());
-    for (std::size_t k = 0; k < pm.faces[fi].position.size(); ++k) id.push_back(vertex(fi, k));
+    id.reserve(f.position.size());
+    for (std::size_t k = 0; k < f.position.size(); ++k) id.push_back(vertex(f, k));
     if (id.size() == 4 && !o.triangles) {
       m.faces.push_back({4, {id[0], id[1], id[2], id[3]}});
     } else {

@@ -41,18 +41,24 @@ std::string read_mesh_file(const SceneObject& o, const std::string& where, const
 // Reports a problem with face `origin` (0: the file as a whole); never returns.
 using MeshFail = std::function<void(long origin, const std::string& what)>;
 
+// Sets every face corner's normal (PolygonMesh::Face::normal) to the one o asks for: the file's
+// (o.normals File: each corner must have one), the area-weighted average of the faces around the
+// position (Average), or the crease-angle normal at o.crease_angle_deg (Crease). Computed normals
+// are sums, not yet of unit length.
+void resolve_normals(PolygonMesh& m, const SceneObject& o, const MeshFail& fail);
+
 // Splits every edge longer than `max_edge` into ceil(length / max_edge) equal pieces, each edge
 // once for all the faces sharing it (the same positions, so no T-junction), and triangulates every
 // face with a split edge from its subdivided edges: a uniform grid of n = the face's largest piece
 // count inside, stitched to the subdivided boundary. Faces whose edges are all short stay as they
-// are. File normals are interpolated across a split face. Refuses, before allocating, a split
-// making more than `max_faces` faces in all.
+// are. The corners' normals (resolved first) are interpolated across a split face, so splitting
+// changes the tessellation, not the surface's normals. Refuses, before allocating, a split making
+// more than `max_faces` faces in all.
 void split_long_edges(PolygonMesh& m, double max_edge, std::size_t max_faces, const MeshFail& fail);
 
-// The vertex normals o asks for (o.normals: the file's, the area-weighted average, or crease-angle
-// normals at o.crease_angle_deg), z mirrored into the Watkins frame, faces of more than 4 vertices
-// fan-triangulated (and quads split when o.triangles). Vertices are shared wherever position and
-// normal agree.
+// The indexed vertex array: each corner's position and normal (made unit length), z mirrored into
+// the Watkins frame, faces of more than 4 vertices fan-triangulated (and quads split when
+// o.triangles). Corners with the same position and normal share a vertex.
 IndexedMesh indexed_mesh_from_polygons(const PolygonMesh& m, const SceneObject& o, const MeshFail& fail);
 
 }  // namespace watkins

@@ -290,6 +290,7 @@ IndexedMesh stl_mesh_from_bytes(const std::string& bytes, const SceneObject& o, 
   SceneObject so = o;
   if (!o.normals_given && o.normals == MeshNormals::File) so.normals = MeshNormals::Average;  // STL's default
   const MeshFail fail = [&r](long origin, const std::string& what) { r.fail(origin, what); };
+  resolve_normals(pm, so, fail);
   if (o.max_edge_length > 0) split_long_edges(pm, o.max_edge_length, max_faces, fail);
   return indexed_mesh_from_polygons(pm, so, fail);
 }
