@@ -139,7 +139,7 @@ TEST_F(CliHostile, BadInputFilesGiveOneLineAndExitOne) {
   expect("render /dev/zero --out a.png", 1, "/dev/zero: scene file is larger than 16 MiB (the limit)");
   write("z.json", R"({"screen": {"width": 16, "height": 16}, "objects": [{"type": "mesh", "file": "/dev/zero",
       "normals": "average"}]})");
-  expect("render z.json --out a.png", 1, "z.json: objects[0].file: OBJ file \"/dev/zero\" is not a regular file");
+  expect("render z.json --out a.png", 1, "z.json: objects[0].file: mesh file \"/dev/zero\" is not a regular file");  // no .obj or .stl: told by content
   write("d.json", R"({"screen": {"width": 16, "height": 16, "height": 8}, "objects": []})");
   const CliRun r = expect("render d.json --out a.png", 1, "watkins: error: d.json: screen: duplicate key \"height\"");
   EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;

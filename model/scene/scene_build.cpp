@@ -16,7 +16,7 @@
 #include "camera.hpp"
 #include "formats.hpp"
 #include "illumination.hpp"
-#include "mesh_obj.hpp"
+#include "mesh_stl.hpp"
 #include "scene.hpp"
 #include "scene_types.hpp"
 #include "surfaces.hpp"
@@ -136,7 +136,8 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
     co.src = &o;
     co.index = static_cast<int>(i);
     if (o.type == ObjectType::Mesh) {
-      co.mesh = load_obj_mesh(o, sc.name + ": " + o.field + ".file", opt.max_faces - std::min(faces, opt.max_faces));
+      co.mesh = load_mesh_file(o, sc.name + ": " + o.field + ".file", opt.max_faces - std::min(faces, opt.max_faces),
+                               opt.strict, out.degenerate);
       faces += co.mesh.faces.size();
     } else {
       co.mesh = tessellate_surface(o);

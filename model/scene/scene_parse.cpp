@@ -439,7 +439,7 @@ SceneObject parse_object(const Reader& r, const json& j, const std::string& f, i
     if (o.u % 2) r.fail(f + ".u", "must be even (the key of the vault is a vertex), got " + std::to_string(o.u));
   } else if (type == "mesh") {
     o.type = ObjectType::Mesh;
-    common({"file", "normals"});
+    common({"file", "normals", "crease_angle_deg", "max_edge_length", "weld_tolerance"});
     std::string file = r.string(r.required(j, f, "file"), f + ".file");
     if (file.empty()) r.fail(f + ".file", "must not be empty");
     std::filesystem::path p(file);
@@ -449,6 +449,19 @@ SceneObject parse_object(const Reader& r, const json& j, const std::string& f, i
       if (n == "file") o.normals = MeshNormals::File;
       else if (n == "average") o.normals = MeshNormals::Average;
       else r.fail(ff, "expected \"file\" or \"average\", got " + show(v));
+    });
+    o.normals_given = j.contains("normals");
+    opt(j, f, "crease_angle_deg", [&](const json& v, const std::string& ff) {
+      if (o.normals_given)
+        r.fail(ff, "crease_angle_deg chooses the normals (smoothed across edges sharper than it): leave out \"normals\"");
+      o.crease_angle_deg = r.number_in(v, ff, 0, 180);
+      o.normals = MeshNormals::Crease;
+    });
+    opt(j, f, "max_edge_length", [&](const json& v, const std::string& ff) { o.max_edge_length = r.positive(v, ff); });
+    opt(j, f, "weld_tolerance", [&](const json& v, const std::string& ff) {
+      o.weld_tolerance = r.number_in(v, ff, 0, kMaxMagnitude);
+      if (o.weld_tolerance > 0 && o.weld_tolerance < kMinPositive)
+        r.fail(ff, "expected 0 (exact) or at least " + number_text(kMinPositive) + ", got " + show(v));
     });
   } else if (type == "polygons") {
     o.type = ObjectType::Polygons;

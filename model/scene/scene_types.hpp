@@ -56,7 +56,7 @@ struct Shading {
 enum class ObjectType { Sphere, Cone, QuarterTorus, HyperbolicParaboloid, BezierPatch, CrossVault, Pier, Portico, Mesh,
                         Polygons };
 
-enum class MeshNormals { File, Average };
+enum class MeshNormals { File, Average, Crease };
 
 struct SceneObject {
   ObjectType type = ObjectType::Sphere;
@@ -82,9 +82,12 @@ struct SceneObject {
   double pier_x = 0.5, pier_z = 0.5, pier_height = 4.0;
   int bays = 1;                   // portico: bays in a row along +X
   std::array<int, 3> box_segments{1, 1, 1};  // pier faces: segments along x, y, z
-  double max_edge_length = 0;     // > 0: u, v (and the above) were chosen from it, world units
-  std::string file;               // mesh: OBJ path already resolved against the scene's folder
+  std::string file;               // mesh: OBJ or STL path already resolved against the scene's folder
   MeshNormals normals = MeshNormals::File;
+  bool normals_given = false;     // mesh: "normals" was in the scene (an STL file has no normals)
+  double crease_angle_deg = 0;    // mesh, MeshNormals::Crease: faces further apart are not smoothed
+  double max_edge_length = 0;     // mesh: split edges longer than this (object space); 0: never
+  double weld_tolerance = -1;     // STL: weld corners this close (file units); < 0: 1e-6 x bbox diagonal
   std::vector<ScreenPolygon> polygons;  // "polygons": screen-space, validated, passed through
   // "polygons": the first vertex without "rgb" / "normal" (field path, empty when none); which
   // one is an error depends on the shading mode, known only once the command line is applied.
