@@ -227,7 +227,8 @@ TEST_F(SweepCli, VaultTessellationStaysEven) {
                                   "/scenes/portico.json --shadings phong --tess 0.5,0.3 --csv " + csv,
                               &code);
   ASSERT_EQ(code, 0) << out;
-  const auto rows = read_csv(csv, nullptr);
+  std::vector<std::string> header;
+  const auto rows = read_csv(csv, &header);
   ASSERT_EQ(rows.size(), 2u);
   EXPECT_EQ(rows[0].at("u"), "6");  // 5 rounded to even
   EXPECT_EQ(rows[1].at("u"), "4");  // 3 rounded to even
