@@ -510,7 +510,8 @@ TEST(CreaseSurface, StlBayAgreesWithTheBuiltInBay) {
   const test::PhongVsGouraud opt = test::phong_vs_gouraud();
   for (const BuildOptions* b : {&opt.gouraud, &opt.phong}) {
     const BuiltScene builtin = load_scene_text(with(R"({"type": "portico", "bays": 1, "span": 4, "rise": 2, "pier": 0.6,
-        "springing": 4, "max_edge_length": 1, "crease_angle_deg": 0, "material": "stone"})"), "bay", WATKINS_SOURCE_DIR "/scenes", *b);
+        "springing": 4, "max_edge_length": 1, "crease_angle_deg": 0, "material": "stone"})"),
+                                               "bay", WATKINS_SOURCE_DIR "/scenes", *b);
     const BuiltScene stl = load_scene_text(with(R"({"type": "mesh", "file": "vault_bay.stl", "crease_angle_deg": 0,
         "material": "stone"})"), "bay", WATKINS_SOURCE_DIR "/scenes", *b);
     const Image a = test::render_fixed(builtin), c = test::render_fixed(stl);
@@ -535,7 +536,9 @@ TEST(CreaseSurface, StlBayAgreesWithTheBuiltInBay) {
   ASSERT_EQ(builtin.position.size(), stl.position.size());
   // Positions: the STL's are float32, so matched to 1e-6 (a bay of 4 m).
   std::map<Key, std::vector<glm::dvec3>> by_position;
-  auto rounded = [](const glm::dvec3& p) { return Key{std::round(p.x * 1e5), std::round(p.y * 1e5), std::round(p.z * 1e5)}; };
+  auto rounded = [](const glm::dvec3& p) {
+    return Key{std::round(p.x * 1e5), std::round(p.y * 1e5), std::round(p.z * 1e5)};
+  };
   for (std::size_t k = 0; k < stl.position.size(); ++k) by_position[rounded(stl.position[k])].push_back(stl.normal[k]);
   for (std::size_t k = 0; k < builtin.position.size(); ++k) {
     const auto it = by_position.find(rounded(builtin.position[k]));
