@@ -72,8 +72,16 @@ TEST_F(CliHostile, OutputOverAnInputIsRefused) {
   write("m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
   write("m.json", R"({"screen": {"width": 16, "height": 16}, "objects": [{"type": "mesh", "file": "m.obj",
       "normals": "average", "translate": [0, 0, 5]}]})");
-  expect("render m.json --out m.obj", 2, "--out m.obj is the OBJ file of objects[0]");
+  expect("render m.json --out m.obj", 2, "--out m.obj is the mesh file of objects[0]");
   EXPECT_EQ(contents("m.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  // Nor an STL file.
+  const std::string stl = "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+                          "endloop\nendfacet\nendsolid t\n";
+  write("m.stl", stl);
+  write("n.json", R"({"screen": {"width": 16, "height": 16}, "objects": [{"type": "mesh", "file": "m.stl",
+      "translate": [0, 0, 5]}]})");
+  expect("render n.json --out m.stl", 2, "--out m.stl is the mesh file of objects[0]");
+  EXPECT_EQ(contents("m.stl"), stl);
 }
 
 TEST_F(CliHostile, PngWriteErrorsAreReported) {

@@ -594,3 +594,37 @@ TEST(StlCli, RtlRendersTheStlSceneBitExact) {
 }
 
 }  // namespace
+
+// max_edge_length is in world units for meshes as for the analytic surfaces: the cube (side 2 in
+// its file) scaled by 2 is split as the same cube of side 4 would be, and no cube edge is longer
+// than the limit once scaled; a non-uniform scale measures each edge along its own axes.
+TEST(Split, LimitIsInWorldUnitsAfterTheScale) {
+  SceneObject scaled = stl_object();
+  scaled.transform.scale = glm::dvec3(2.0);
+  scaled.max_edge_length = 1.5;
+  const IndexedMesh m = stl(binary_stl(cube_triangles()), scaled);
+  SceneObject plain = stl_object();
+  plain.max_edge_length = 0.75;  // the same limit in the file's units
+  EXPECT_EQ(m.faces.size(), stl(binary_stl(cube_triangles()), plain).faces.size());
+  EXPECT_GT(m.faces.size(), 12u * 9);  // edges of 4 world units in 3 pieces at least
+  expect_watertight(m);
+  for (const auto& f : m.faces)
+    for (int k = 0; k < 3; ++k) {
+      const glm::dvec3 p = m.position[f.idx[k]], q = m.position[f.idx[(k + 1) % 3]];
+      int on = 0;
+      for (int c = 0; c < 3; ++c) on += p[c] == q[c] && std::fabs(p[c]) == 1;
+      if (on == 2) EXPECT_LE(glm::length(2.0 * (q - p)), 1.5 + 1e-12);
+    }
+  // Stretched along x only: the x edges are split, the y and z edges (2 world units) are not.
+  SceneObject stretched = stl_object();
+  stretched.transform.scale = glm::dvec3(4, 1, 1);
+  stretched.max_edge_length = 2.5;
+  const IndexedMesh s = stl(binary_stl(cube_triangles()), stretched);
+  std::set<Key> on_x_edges, on_y_edges;  // positions (a split point has a vertex per face normal)
+  for (const glm::dvec3& p : s.position) {
+    if (std::fabs(p.y) == 1 && std::fabs(p.z) == 1 && std::fabs(p.x) < 1) on_x_edges.insert(key(p));
+    if (std::fabs(p.x) == 1 && std::fabs(p.z) == 1 && std::fabs(p.y) < 1) on_y_edges.insert(key(p));
+  }
+  EXPECT_EQ(on_x_edges.size(), 4u * 3);  // 8 world units in 4 pieces: 3 new points on each of the 4 x edges
+  EXPECT_EQ(on_y_edges.size(), 0u) << "the y edges (2 world units) stay whole";
+}

@@ -187,7 +187,7 @@ IndexedMesh obj_mesh_from_text(const std::string& text, const SceneObject& o, co
     r.fail(line ? "f: " + what : what);
   };
   resolve_normals(pm, o, fail);
-  if (o.max_edge_length > 0) split_long_edges(pm, o.max_edge_length, max_faces, fail);
+  if (o.max_edge_length > 0) split_long_edges(pm, o.max_edge_length, o.transform.scale, max_faces, fail);
   return indexed_mesh_from_polygons(pm, o, fail);
 }
 

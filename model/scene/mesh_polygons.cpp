@@ -38,13 +38,14 @@ double faces_of(std::size_t n) { return n == 4 ? 1.0 : double(n - 2); }
 // where the interior and subdivided-edge points come from.
 class TriangleSplitter {
  public:
-  TriangleSplitter(PolygonMesh& m, double max_edge, std::map<std::pair<int, int>, std::vector<int>>& edges,
-                   std::vector<PolygonMesh::Face>& out)
-      : m_(m), max_edge_(max_edge), edges_(edges), out_(out) {}
+  TriangleSplitter(PolygonMesh& m, double max_edge, const glm::dvec3& scale,
+                   std::map<std::pair<int, int>, std::vector<int>>& edges, std::vector<PolygonMesh::Face>& out)
+      : m_(m), max_edge_(max_edge), scale_(scale), edges_(edges), out_(out) {}
 
-  // Pieces an edge is split into (at least 1). Both faces of an edge compute the same number.
+  // Pieces an edge is split into (at least 1), by its length in world units. Both faces of an
+  // edge compute the same number.
   double pieces(int a, int b) const {
-    return std::max(1.0, std::ceil(glm::length(m_.position[b] - m_.position[a]) / max_edge_));
+    return std::max(1.0, std::ceil(glm::length(scale_ * (m_.position[b] - m_.position[a])) / max_edge_));
   }
 
   // Faces split() makes of triangle (a, b, c).
@@ -192,6 +193,7 @@ class TriangleSplitter {
 
   PolygonMesh& m_;
   double max_edge_;
+  glm::dvec3 scale_;
   std::map<std::pair<int, int>, std::vector<int>>& edges_;
   std::vector<PolygonMesh::Face>& out_;
   int pos_[3] = {}, nrm_[3] = {};
@@ -208,6 +210,41 @@ bool has_long_edge(const TriangleSplitter& s, const PolygonMesh::Face& f) {
 }
 
 }  // namespace
+
+int PositionWelder::add(const glm::dvec3& p, std::vector<glm::dvec3>& out) {
+  const std::array<std::int64_t, 3> c = cell(p);
+  if (tol_ > 0) {
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -1; dz <= 1; ++dz) {
+          auto it = cells_.find({c[0] + dx, c[1] + dy, c[2] + dz});
+          if (it == cells_.end()) continue;
+          for (int v : it->second) {
+            const glm::dvec3 d = glm::abs(out[v] - p);
+            if (std::max({d.x, d.y, d.z}) <= tol_) return v;
+          }
+        }
+  } else {
+    auto it = cells_.find(c);
+    if (it != cells_.end())
+      for (int v : it->second)
+        if (out[v] == p) return v;
+  }
+  out.push_back(p);
+  const int id = int(out.size()) - 1;
+  cells_[c].push_back(id);
+  return id;
+}
+
+std::array<std::int64_t, 3> PositionWelder::cell(const glm::dvec3& p) const {
+  std::array<std::int64_t, 3> c{};
+  for (int k = 0; k < 3; ++k) {
+    // Below 2^62: coordinates span at most 2e9 and a positive tolerance is at least 1e-9.
+    if (tol_ > 0) c[k] = std::int64_t(std::floor((p[k] - lo_[k]) / tol_));
+    else std::memcpy(&c[k], &p[k], sizeof(double));  // exact welding: the coordinate's bits
+  }
+  return c;
+}
 
 std::string mesh_number(std::string_view t, double& x) {
   std::string_view s = t;
@@ -238,10 +275,11 @@ std::string read_mesh_file(const SceneObject& o, const std::string& where, const
   return bytes;
 }
 
-void split_long_edges(PolygonMesh& m, double max_edge, std::size_t max_faces, const MeshFail& fail) {
+void split_long_edges(PolygonMesh& m, double max_edge, const glm::dvec3& scale, std::size_t max_faces,
+                      const MeshFail& fail) {
   std::map<std::pair<int, int>, std::vector<int>> edges;
   std::vector<PolygonMesh::Face> out;
-  TriangleSplitter splitter(m, max_edge, edges, out);
+  TriangleSplitter splitter(m, max_edge, scale, edges, out);
   // A face with a long edge becomes a fan of triangles (a quad: two, across corners 0-2) and each
   // triangle is split. Counted first, so a tiny limit on a large mesh is refused unallocated.
   double total = 0;
@@ -369,6 +407,36 @@ IndexedMesh indexed_mesh_from_polygons(const PolygonMesh& pm, const SceneObject&
     }
   }
   return m;
+}
+
+void crease_surface_normals(IndexedMesh& m, const SceneObject& o) {
+  if (m.faces.empty()) return;
+  glm::dvec3 lo(INFINITY), hi(-INFINITY);
+  for (const glm::dvec3& p : m.position) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  // The tessellation computes a seam's or a groin's vertex once per side, so the copies can
+  // differ in the last bits: weld to well below any edge, well above the rounding.
+  PositionWelder weld(lo, 1e-9 * glm::length(hi - lo));
+  // The surfaces are in the Watkins (left-handed) frame and front faces are wound as seen from
+  // their normals' side; mirroring z gives the right-handed, counter-clockwise-outside polygons
+  // resolve_normals expects, and indexed_mesh_from_polygons mirrors back.
+  PolygonMesh pm;
+  std::vector<int> welded(m.position.size());
+  for (std::size_t k = 0; k < m.position.size(); ++k) welded[k] = weld.add(mirror_z(m.position[k]), pm.position);
+  for (const auto& f : m.faces) {
+    PolygonMesh::Face pf;
+    for (int k = 0; k < f.n; ++k) {
+      pf.position.push_back(welded[f.idx[k]]);
+      pf.normal.push_back(-1);
+    }
+    pm.faces.push_back(std::move(pf));
+  }
+  SceneObject so = o;
+  so.normals = MeshNormals::Crease;
+  const MeshFail fail = [&o](long, const std::string& what) {
+    throw SceneError(o.field + ".crease_angle_deg: " + what);
+  };
+  resolve_normals(pm, so, fail);
+  m = indexed_mesh_from_polygons(pm, so, fail);
 }
 
 }  // namespace watkins

@@ -3,8 +3,11 @@
 // array are shared by every mesh format.
 #pragma once
 
+#include <array>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -41,6 +44,24 @@ std::string read_mesh_file(const SceneObject& o, const std::string& where, const
 // Reports a problem with face `origin` (0: the file as a whole); never returns.
 using MeshFail = std::function<void(long origin, const std::string& what)>;
 
+// Corners within `tol` in every coordinate become the first such corner seen (tol 0: the same
+// bits): a grid of tol-sized cells, each corner compared with the vertices already in its cell and
+// the 26 around it. Used by STL reading and by crease-angle normals on analytic surfaces.
+class PositionWelder {
+ public:
+  // lo: the smallest corner of the positions' bounding box (the grid's origin).
+  PositionWelder(const glm::dvec3& lo, double tol) : lo_(lo), tol_(tol) {}
+  // The index in `out` of a position within tol of p, appending p when there is none.
+  int add(const glm::dvec3& p, std::vector<glm::dvec3>& out);
+
+ private:
+  std::array<std::int64_t, 3> cell(const glm::dvec3& p) const;
+
+  glm::dvec3 lo_;
+  double tol_;
+  std::map<std::array<std::int64_t, 3>, std::vector<int>> cells_;
+};
+
 // Sets every face corner's normal (PolygonMesh::Face::normal) to the one o asks for: the file's
 // (o.normals File: each corner must have one), the area-weighted average of the faces around the
 // position (Average), or the crease-angle normal at o.crease_angle_deg (Crease). Computed normals
@@ -54,11 +75,21 @@ void resolve_normals(PolygonMesh& m, const SceneObject& o, const MeshFail& fail)
 // are. The corners' normals (resolved first) are interpolated across a split face, so splitting
 // changes the tessellation, not the surface's normals. Refuses, before allocating, a split making
 // more than `max_faces` faces in all.
-void split_long_edges(PolygonMesh& m, double max_edge, std::size_t max_faces, const MeshFail& fail);
+// Lengths are measured in world units: each edge scaled by `scale` (the object's scale; its
+// rotation keeps lengths), so a scaled mesh splits as a scaled analytic surface does.
+void split_long_edges(PolygonMesh& m, double max_edge, const glm::dvec3& scale, std::size_t max_faces,
+                      const MeshFail& fail);
 
 // The indexed vertex array: each corner's position and normal (made unit length), z mirrored into
 // the Watkins frame, faces of more than 4 vertices fan-triangulated (and quads split when
 // o.triangles). Corners with the same position and normal share a vertex.
 IndexedMesh indexed_mesh_from_polygons(const PolygonMesh& m, const SceneObject& o, const MeshFail& fail);
+
+// Replaces the normals of a tessellated analytic surface (tessellate_surface's exact ones) by the
+// crease-angle normals at o.crease_angle_deg, computed by resolve_normals from its faces. Vertices
+// at the same position (to 1e-9 of the bounding box's diagonal) are welded first, so a seam or a
+// vault's groin, where the tessellation splits vertices by normal, is smoothed when the faces
+// meeting there are less than the angle apart. Positions are kept; faces keep their order.
+void crease_surface_normals(IndexedMesh& m, const SceneObject& o);
 
 }  // namespace watkins

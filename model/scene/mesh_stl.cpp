@@ -199,53 +199,6 @@ class StlReader {
   bool binary_ = false;
 };
 
-// Corners within `tol` in every coordinate become the first such corner seen: a grid of tol-sized
-// cells, each corner compared with the vertices already in its cell and the 26 around it.
-class Welder {
- public:
-  Welder(const glm::dvec3& lo, double tol) : lo_(lo), tol_(tol) {}
-
-  int add(const glm::dvec3& p, std::vector<glm::dvec3>& out) {
-    const std::array<std::int64_t, 3> c = cell(p);
-    if (tol_ > 0) {
-      for (int dx = -1; dx <= 1; ++dx)
-        for (int dy = -1; dy <= 1; ++dy)
-          for (int dz = -1; dz <= 1; ++dz) {
-            auto it = cells_.find({c[0] + dx, c[1] + dy, c[2] + dz});
-            if (it == cells_.end()) continue;
-            for (int v : it->second) {
-              const glm::dvec3 d = glm::abs(out[v] - p);
-              if (std::max({d.x, d.y, d.z}) <= tol_) return v;
-            }
-          }
-    } else {
-      auto it = cells_.find(c);
-      if (it != cells_.end())
-        for (int v : it->second)
-          if (out[v] == p) return v;
-    }
-    out.push_back(p);
-    const int id = int(out.size()) - 1;
-    cells_[c].push_back(id);
-    return id;
-  }
-
- private:
-  std::array<std::int64_t, 3> cell(const glm::dvec3& p) const {
-    std::array<std::int64_t, 3> c{};
-    for (int k = 0; k < 3; ++k) {
-      // Below 2^62: coordinates span at most 2e9 and a positive tolerance is at least 1e-9.
-      if (tol_ > 0) c[k] = std::int64_t(std::floor((p[k] - lo_[k]) / tol_));
-      else std::memcpy(&c[k], &p[k], sizeof(double));  // exact welding: the coordinate's bits
-    }
-    return c;
-  }
-
-  glm::dvec3 lo_;
-  double tol_;
-  std::map<std::array<std::int64_t, 3>, std::vector<int>> cells_;
-};
-
 }  // namespace
 
 bool is_binary_stl(const std::string& bytes) {
@@ -263,7 +216,7 @@ IndexedMesh stl_mesh_from_bytes(const std::string& bytes, const SceneObject& o, 
   for (const auto& f : r.facets)
     for (const glm::dvec3& p : f.corner) lo = glm::min(lo, p), hi = glm::max(hi, p);
   const double tol = o.weld_tolerance >= 0 ? o.weld_tolerance : 1e-6 * glm::length(hi - lo);
-  Welder weld(lo, tol);
+  PositionWelder weld(lo, tol);
   PolygonMesh pm;
   int skipped = 0;
   for (const auto& f : r.facets) {
@@ -291,7 +244,7 @@ IndexedMesh stl_mesh_from_bytes(const std::string& bytes, const SceneObject& o, 
   if (!o.normals_given && o.normals == MeshNormals::File) so.normals = MeshNormals::Average;  // STL's default
   const MeshFail fail = [&r](long origin, const std::string& what) { r.fail(origin, what); };
   resolve_normals(pm, so, fail);
-  if (o.max_edge_length > 0) split_long_edges(pm, o.max_edge_length, max_faces, fail);
+  if (o.max_edge_length > 0) split_long_edges(pm, o.max_edge_length, o.transform.scale, max_faces, fail);
   return indexed_mesh_from_polygons(pm, so, fail);
 }
 

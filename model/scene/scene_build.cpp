@@ -16,6 +16,7 @@
 #include "camera.hpp"
 #include "formats.hpp"
 #include "illumination.hpp"
+#include "mesh_polygons.hpp"
 #include "mesh_stl.hpp"
 #include "scene.hpp"
 #include "scene_types.hpp"
@@ -141,6 +142,7 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
       faces += co.mesh.faces.size();
     } else {
       co.mesh = tessellate_surface(o);
+      if (o.normals == MeshNormals::Crease) crease_surface_normals(co.mesh, o);
     }
     const glm::dmat3 rot = rotation(o.transform.rotate_deg);
     const glm::dvec3 s = o.transform.scale;

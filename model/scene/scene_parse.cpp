@@ -334,7 +334,9 @@ SceneObject parse_object(const Reader& r, const json& j, const std::string& f, i
   const std::string type = r.string(r.required(j, f, "type"), f + ".type");
   // Keys every camera-space object accepts.
   auto common = [&](std::initializer_list<const char*> extra) {
-    std::vector<const char*> keys = {"type", "material", "translate", "rotate_deg", "scale", "triangles"};
+    // crease_angle_deg: meshes and the tessellated analytic surfaces alike.
+    std::vector<const char*> keys = {"type", "material", "translate", "rotate_deg", "scale", "triangles",
+                                     "crease_angle_deg"};
     keys.insert(keys.end(), extra.begin(), extra.end());
     for (auto it = j.begin(); it != j.end(); ++it) {
       bool ok = false;
@@ -480,6 +482,12 @@ SceneObject parse_object(const Reader& r, const json& j, const std::string& f, i
                " (expected sphere, cone, quarter_torus, hyperbolic_paraboloid, bezier_patch, cross_vault, pier, portico, "
                "mesh or polygons)");
   }
+  if (o.type != ObjectType::Mesh && o.type != ObjectType::Polygons)
+    // The tessellation's faces give the normals (crease rule) instead of the exact ones.
+    opt(j, f, "crease_angle_deg", [&](const json& v, const std::string& ff) {
+      o.crease_angle_deg = r.number_in(v, ff, 0, 180);
+      o.normals = MeshNormals::Crease;
+    });
   if (const std::string e = choose_tessellation(o); !e.empty()) r.fail(f + ".max_edge_length", e);
   return o;
 }

@@ -83,10 +83,10 @@ struct SceneObject {
   int bays = 1;                   // portico: bays in a row along +X
   std::array<int, 3> box_segments{1, 1, 1};  // pier faces: segments along x, y, z
   std::string file;               // mesh: OBJ or STL path already resolved against the scene's folder
-  MeshNormals normals = MeshNormals::File;
+  MeshNormals normals = MeshNormals::File;  // analytic surfaces: File = exact normals, or Crease
   bool normals_given = false;     // mesh: "normals" was in the scene (an STL file has no normals)
-  double crease_angle_deg = 0;    // mesh, MeshNormals::Crease: faces further apart are not smoothed
-  double max_edge_length = 0;     // mesh: split edges longer than this (object space); 0: never
+  double crease_angle_deg = 0;    // MeshNormals::Crease: faces further apart are not smoothed
+  double max_edge_length = 0;     // split edges longer than this (world units, after scale); 0: never
   double weld_tolerance = -1;     // STL: weld corners this close (file units); < 0: 1e-6 x bbox diagonal
   std::vector<ScreenPolygon> polygons;  // "polygons": screen-space, validated, passed through
   // "polygons": the first vertex without "rgb" / "normal" (field path, empty when none); which
