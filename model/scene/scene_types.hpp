@@ -6,6 +6,7 @@
 
 #include <array>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 
 #include "scene.hpp"
 #include "screen_polygon.hpp"
+#include "voxels.hpp"
 
 namespace watkins {
 
@@ -54,9 +56,10 @@ struct Shading {
 };
 
 enum class ObjectType { Sphere, Cone, QuarterTorus, HyperbolicParaboloid, BezierPatch, CrossVault, Pier, Portico, Mesh,
-                        Polygons };
+                        Polygons, Voxels };
 
-enum class MeshNormals { File, Average };
+// File: the OBJ file's normals; Average: averaged over the faces at a vertex; Face: each face its own (voxels).
+enum class MeshNormals { File, Average, Face };
 
 struct SceneObject {
   ObjectType type = ObjectType::Sphere;
@@ -85,6 +88,11 @@ struct SceneObject {
   double max_edge_length = 0;     // > 0: u, v (and the above) were chosen from it, world units
   std::string file;               // mesh: OBJ path already resolved against the scene's folder
   MeshNormals normals = MeshNormals::File;
+  // Voxels: the thresholded volume or the sampled phantom (voxels.hpp), made by the parser, and the
+  // phantom itself when there is one (the analytic truth ray-casts it).
+  std::shared_ptr<const VoxelGrid> voxels;
+  bool has_phantom = false;
+  Phantom phantom;
   std::vector<ScreenPolygon> polygons;  // "polygons": screen-space, validated, passed through
   // "polygons": the first vertex without "rgb" / "normal" (field path, empty when none); which
   // one is an error depends on the shading mode, known only once the command line is applied.
