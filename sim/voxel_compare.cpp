@@ -28,10 +28,7 @@
 #include "image_io.hpp"
 #include "prepare.hpp"
 #include "scene.hpp"
-#if __has_include("smoother.hpp")
 #include "smoother.hpp"
-#define VOXEL_HAVE_SMOOTHER 1
-#endif
 #include "watkins_top.hpp"
 
 namespace watkins::voxel_compare {
@@ -176,7 +173,6 @@ int run_voxel_compare(const VoxelCompareArgs& a) {
     rows.push_back(measure(stem, "Gouraud, averaged normals (Fig. 3)", g, g.image, truth));
     rows.push_back(measure(stem, "Phong, averaged normals", p, p.image, truth));
     Image smoothed08;
-#ifdef VOXEL_HAVE_SMOOTHER
     for (double W : a.weights) {
       const int w = static_cast<int>(std::lround(W * (1 << fmt::SmoothWFracBits)));
       const Image s = Smoother(w).apply(f.image);
@@ -189,7 +185,6 @@ int run_voxel_compare(const VoxelCompareArgs& a) {
       rows.push_back(row);
       if (std::fabs(W - 0.8) < 1e-9) smoothed08 = s;
     }
-#endif
     for (const Rendered* r : {&f, &g, &p})
       if (r->frame.needs.max_active_edges > fmt::MaxActiveEdges)
         std::fprintf(stderr, "note: %s needs %d active edges, over the default hardware's %d\n", stem.c_str(),
