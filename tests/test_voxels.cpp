@@ -181,7 +181,7 @@ TEST(Voxels, SceneObjectBuildsFrontFacesOnly) {
 
 TEST(Voxels, RawFileIsThresholdedU8AndU16) {
   Scratch dir;
-  // 2 x 1 x 1: densities 10 and 200 (u8); 300 and 70000-clipped... u16: 0x0100 = 256 and 0x0010 = 16.
+  // 2 x 1 x 1 voxels: densities 10 and 200 (u8); 256 and 16 (u16, little-endian: bytes 00 01, 10 00).
   dir.write("a.raw", std::string("\x0a\xc8", 2));
   dir.write("b.raw", std::string("\x00\x01\x10\x00", 4));
   auto obj = [](const std::string& file, const std::string& format, int threshold) {
