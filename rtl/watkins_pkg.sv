@@ -40,6 +40,8 @@ package watkins_pkg;
   localparam int MaterialFracBits = 8;  // phong: fraction bits of d and W
   localparam int ShininessBits = 8;  // phong: unsigned width of the specular exponent n (0..255)
   localparam int MaterialIdBits = 4;  // material id carried by every edge, segment and fragment (16 materials)
+  localparam int SmoothWBits = 8;  // smoother: unsigned width of Herman & Liu's weight W, in [0, 2)
+  localparam int SmoothWFracBits = 7;  // smoother: fraction bits of W (1.0 = 128; W = 0 turns smoothing off)
   localparam int MaxScreen = 4096;  // 2^ScreenBits
   localparam int ShadeMax = 255;  // largest 8-bit level
   localparam int SubPixelToFrac = 12;  // FracBits - SubPixelBits

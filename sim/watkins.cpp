@@ -33,6 +33,7 @@
 #include "stl_export.hpp"
 #include "sweep.hpp"
 #include "synth.hpp"
+#include "voxel_compare.hpp"
 #include "usage_error.hpp"
 #include "watkins_top.hpp"
 
@@ -451,6 +452,8 @@ int main(int argc, char** argv) {
   auto* z = watkins::size::add_size_command(app, za);
   watkins::synth::SynthArgs ya;
   auto* y = watkins::synth::add_synth_command(app, ya);
+  watkins::voxel_compare::VoxelCompareArgs va;
+  auto* vc = watkins::voxel_compare::add_voxel_compare_command(app, va);
   // Exit codes (README): 0 ok, 1 bad input (scene, OBJ, configuration, an output that cannot be
   // written), 2 usage (the command line), 3 internal error or RTL mismatch.
   try {
@@ -468,6 +471,7 @@ int main(int argc, char** argv) {
     if (*s) return watkins::sweep::run_sweep(sa);
     if (*z) return watkins::size::run_size(za);
     if (*y) return watkins::synth::run_synth(ya);
+    if (*vc) return watkins::voxel_compare::run_voxel_compare(va);
   } catch (const UsageError& e) {
     std::fprintf(stderr, "watkins: usage: %s\n", e.what());
     return 2;

@@ -44,12 +44,15 @@ ErrorStats error_stats(const Image& a, const Image& b) {
   return e;
 }
 
-double mach_band(const Image& img, const std::vector<int>& polygon, const Image* ref) {
+namespace {
+
+// Calls jump(|d12 - d01|, |d23 - d12|) at every polygon edge mach_band measures (see the header).
+template <typename F>
+void for_each_edge_jump(const Image& img, const std::vector<int>& polygon, const Image* ref, F jump) {
   const int W = img.width, H = img.height;
-  if (ref && (ref->width != W || ref->height != H)) return 0;
+  if (ref && (ref->width != W || ref->height != H)) return;
   auto usable = [&](std::size_t i) { return ref ? same_owner(img, *ref, i) : img.covered[i] != 0; };
   auto value = [&](std::size_t i) { return intensity(img, i) - (ref ? intensity(*ref, i) : 0.0); };
-  double worst = 0;
   // Along rows (step 1) and along columns (step W): p1 at (x, y), p2 the next pixel.
   for (int dir = 0; dir < 2; ++dir) {
     const int len = dir == 0 ? W : H, lines = dir == 0 ? H : W;
@@ -61,10 +64,24 @@ double mach_band(const Image& img, const std::vector<int>& polygon, const Image*
         if (!(usable(p0) && usable(p1) && usable(p2) && usable(p3))) continue;
         if (polygon[p0] != polygon[p1] || polygon[p3] != polygon[p2]) continue;  // a sliver: no slope on one side
         const double d01 = value(p1) - value(p0), d12 = value(p2) - value(p1), d23 = value(p3) - value(p2);
-        worst = std::max({worst, std::fabs(d12 - d01), std::fabs(d23 - d12)});
+        jump(std::fabs(d12 - d01), std::fabs(d23 - d12));
       }
   }
+}
+
+}  // namespace
+
+double mach_band(const Image& img, const std::vector<int>& polygon, const Image* ref) {
+  double worst = 0;
+  for_each_edge_jump(img, polygon, ref, [&](double a, double b) { worst = std::max({worst, a, b}); });
   return worst;
+}
+
+double mach_band_mean(const Image& img, const std::vector<int>& polygon, const Image* ref) {
+  double sum = 0;
+  long long n = 0;
+  for_each_edge_jump(img, polygon, ref, [&](double a, double b) { sum += a + b, n += 2; });
+  return n ? sum / double(n) : 0;
 }
 
 }  // namespace watkins

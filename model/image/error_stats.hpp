@@ -28,5 +28,8 @@ ErrorStats error_stats(const Image& a, const Image& b);
 // (a highlight) does not count; p0..p3 must then show the same owner in img and ref. Without it,
 // p0..p3 need only be covered. Returns 0 when there is no such edge.
 double mach_band(const Image& img, const std::vector<int>& polygon, const Image* ref = nullptr);
+// The same jumps averaged instead of their maximum: how strong the bands are over the whole image
+// (a surface of thousands of voxel faces has one worst edge whatever the shading).
+double mach_band_mean(const Image& img, const std::vector<int>& polygon, const Image* ref = nullptr);
 
 }  // namespace watkins

@@ -190,6 +190,36 @@ std::vector<Implicit> pieces_of(const SceneObject& o, glm::dvec3& centre, double
       centre = 0.5 * (lo + hi), radius = 0.5 * glm::length(hi - lo);
       break;
     }
+    case ObjectType::Voxels: {
+      // The phantom the voxels sample (a file volume has no closed form): each ball of its union,
+      // scaled per axis, where no other ball holds the point. q = p / size is the unit frame.
+      if (!o.has_phantom) break;
+      const Phantom& ph = o.phantom;
+      const glm::dvec3 size = ph.size;
+      const std::vector<Phantom::Ball> balls = ph.balls;
+      for (std::size_t b = 0; b < balls.size(); ++b) {
+        const glm::dvec3 bc = balls[b].centre;
+        const double r = balls[b].radius;
+        v.push_back({[=](const glm::dvec3& p) {
+                       const glm::dvec3 q = p / size - bc;
+                       return glm::dot(q, q) - r * r;
+                     },
+                     [=](const glm::dvec3& p) { return (p / size - bc) / size; },
+                     [=](const glm::dvec3& p) {
+                       for (std::size_t other = 0; other < balls.size(); ++other) {
+                         const glm::dvec3 q = p / size - balls[other].centre;
+                         if (other != b && glm::dot(q, q) < balls[other].radius * balls[other].radius) return false;
+                       }
+                       return true;
+                     },
+                     [=](const glm::dvec3& o, const glm::dvec3& e, double t[2]) {
+                       const glm::dvec3 oq = o / size - bc, eq = e / size;
+                       return quadratic_roots(glm::dot(eq, eq), 2 * glm::dot(oq, eq), glm::dot(oq, oq) - r * r, t);
+                     }});
+      }
+      centre = glm::dvec3(0.0), radius = ph.extent * std::max({size.x, size.y, size.z});
+      break;
+    }
     default:
       break;
   }
@@ -356,7 +386,7 @@ AnalyticTruth render_analytic_truth(const BuiltScene& scene) {
   out.surfaces = static_cast<int>(surfaces.size());
   if (surfaces.empty()) {
     out.unavailable = "no object of the scene has an exact surface here (sphere, cone, torus, hypar, patch, "
-                      "cross vault, pier, portico)";
+                      "cross vault, pier, portico, voxel phantom)";
     return out;
   }
   const int W = scene.width, H = scene.height;

@@ -7,7 +7,8 @@
 // Defined when the scene's illumination is eq. (3): Phong shading, or Gouraud shading with the
 // "phong" vertex rule. Exact surfaces: sphere, cone (side and base cap), quarter torus,
 // hyperbolic paraboloid, bicubic Bezier patch, cross vault (each barrel on its side of the
-// groins), pier and portico (vaults and box piers, closed-form roots); meshes and screen-space
+// groins), pier and portico (vaults and box piers, closed-form roots), voxel phantoms (the union of balls the
+// voxels sample, not the voxel faces); meshes, voxel files and screen-space
 // polygons have no truth (their pixels are left uncovered and so are not compared). When the scene
 // culls back faces, a hit on the back of a surface (a vault's extrados) is not seen: the ray goes on.
 #pragma once

@@ -2,6 +2,8 @@
 // and non-finite numbers are all errors naming the file and the JSON field, so a typo in a
 // scene never silently renders something else.
 #include <algorithm>
+#include <array>
+#include <cstdio>
 #include <cmath>
 #include <filesystem>
 #include <initializer_list>
@@ -326,6 +328,96 @@ const Material& find_material(const Reader& r, const std::map<std::string, Mater
   return m->second;
 }
 
+// A "voxels" object: a raw density file thresholded, or a built-in phantom, on a grid of `dims`
+// voxels of `spacing` (voxels.hpp). The surface is extracted here so that a bad volume is refused at
+// its field, before anything is built.
+void parse_voxels(const Reader& r, const json& j, const std::string& f, const std::string& base_dir, SceneObject& o) {
+  const bool has_file = j.contains("file"), has_phantom = j.contains("phantom");
+  if (has_file == has_phantom) r.fail(f, "give exactly one of \"file\" (a raw density volume) or \"phantom\"");
+  std::array<int, 3> dims{};
+  const std::string df = f + ".dims";
+  const json& d = r.required(j, f, "dims");
+  if (!d.is_array() || d.size() != 3) r.fail(df, "expected an array of 3 integers [nx, ny, nz], got " + show(d));
+  for (std::size_t a = 0; a < 3; ++a) dims[a] = r.integer_in(d[a], df + "[" + std::to_string(a) + "]", 1, 1024);
+  const std::size_t voxels = std::size_t(dims[0]) * std::size_t(dims[1]) * std::size_t(dims[2]);
+  if (voxels > (std::size_t{1} << 24))
+    r.fail(df, std::to_string(voxels) + " voxels, over the limit of " + std::to_string(std::size_t{1} << 24));
+  glm::dvec3 spacing(1.0);
+  opt(j, f, "spacing", [&](const json& v, const std::string& ff) {
+    spacing = r.vec3(v, ff);
+    for (int a = 0; a < 3; ++a)
+      if (!(spacing[a] >= kMinPositive)) r.positive(v[std::size_t(a)], ff + "[" + std::to_string(a) + "]");
+  });
+  o.normals = MeshNormals::Face;
+  opt(j, f, "normals", [&](const json& v, const std::string& ff) {
+    const std::string n = r.string(v, ff);
+    if (n == "face") o.normals = MeshNormals::Face;
+    else if (n == "average") o.normals = MeshNormals::Average;
+    else r.fail(ff, "expected \"face\" or \"average\", got " + show(v));
+  });
+  std::string limit_field = df;  // what to change when the surface has too many faces
+  if (has_phantom) {
+    for (const char* k : {"format", "threshold"})
+      if (j.contains(k)) r.fail(Reader::sub(f, k), "applies to a raw \"file\" only, not to a phantom");
+    const std::string pf = f + ".phantom", name = r.string(j["phantom"], pf);
+    PhantomShape shape = PhantomShape::Ellipsoid;
+    if (name == "ellipsoid") shape = PhantomShape::Ellipsoid;
+    else if (name == "beaded_sphere") shape = PhantomShape::BeadedSphere;
+    else if (name == "two_lobed") shape = PhantomShape::TwoLobed;
+    else r.fail(pf, "expected \"ellipsoid\", \"beaded_sphere\" or \"two_lobed\", got " + show(j["phantom"]));
+    // Default size: the phantom reaches to 90% of the grid's half extent along every axis.
+    const double reach = make_phantom(shape, glm::dvec3(1.0)).extent;
+    glm::dvec3 size(0.0);
+    for (int a = 0; a < 3; ++a) size[a] = 0.45 * dims[std::size_t(a)] * spacing[a] / reach;
+    opt(j, f, "size", [&](const json& v, const std::string& ff) {
+      if (v.is_number()) {
+        size = glm::dvec3(r.positive(v, ff));
+        return;
+      }
+      size = r.vec3(v, ff);
+      for (int a = 0; a < 3; ++a)
+        if (!(size[a] >= kMinPositive)) r.positive(v[std::size_t(a)], ff + "[" + std::to_string(a) + "]");
+    });
+    o.has_phantom = true;
+    o.phantom = make_phantom(shape, size);
+    o.voxels = std::make_shared<const VoxelGrid>(voxelize(o.phantom, dims, spacing));
+  } else {
+    if (j.contains("size")) r.fail(f + ".size", "applies to a phantom only");
+    const std::string ff = f + ".file", file = r.string(j["file"], ff);
+    if (file.empty()) r.fail(ff, "must not be empty");
+    std::filesystem::path p(file);
+    const std::string path = p.is_absolute() || base_dir.empty() ? p.string() : (std::filesystem::path(base_dir) / p).string();
+    int bytes = 1;
+    opt(j, f, "format", [&](const json& v, const std::string& fmtf) {
+      const std::string s = r.string(v, fmtf);
+      if (s == "u8") bytes = 1;
+      else if (s == "u16") bytes = 2;
+      else r.fail(fmtf, "expected \"u8\" or \"u16\" (little-endian), got " + show(v));
+    });
+    const double threshold = r.number_in(r.required(j, f, "threshold"), f + ".threshold", 0, bytes == 1 ? 255 : 65535);
+    std::error_code ec;
+    const std::uintmax_t have = std::filesystem::is_regular_file(path, ec) ? std::filesystem::file_size(path, ec) : 0;
+    if (ec || !std::filesystem::is_regular_file(path, ec)) r.fail(ff, quote_input(path) + " is not a readable regular file");
+    const std::size_t need = voxels * std::size_t(bytes);
+    if (have != need)
+      r.fail(ff, quote_input(path) + " holds " + std::to_string(have) + " bytes; dims [" + std::to_string(dims[0]) + ", " +
+                     std::to_string(dims[1]) + ", " + std::to_string(dims[2]) + "] of " + (bytes == 1 ? "u8" : "u16") +
+                     " need " + std::to_string(need));
+    std::vector<std::uint8_t> raw(need);
+    std::FILE* in = std::fopen(path.c_str(), "rb");
+    const bool ok = in && std::fread(raw.data(), 1, need, in) == need;
+    if (in) std::fclose(in);
+    if (!ok) r.fail(ff, "cannot read " + quote_input(path));
+    o.voxels = std::make_shared<const VoxelGrid>(threshold_volume(raw, bytes, dims, spacing, threshold));
+    limit_field = f + ".threshold";
+  }
+  const std::size_t faces = o.voxels->boundary_faces() * (o.triangles ? 2 : 1);
+  if (faces == 0) r.fail(limit_field, "no voxel is inside: the surface is empty");
+  if (faces > std::size_t(fmt::MaxPolygons))
+    r.fail(limit_field, "the surface has " + std::to_string(faces) + " voxel faces" + (o.triangles ? " (as triangles)" : "") +
+                            ", over the pipeline's " + std::to_string(fmt::MaxPolygons) + " polygons");
+}
+
 SceneObject parse_object(const Reader& r, const json& j, const std::string& f, int index,
                          const std::map<std::string, Material>& mats, const std::string& base_dir) {
   r.expect_object(j, f);
@@ -465,6 +557,10 @@ SceneObject parse_object(const Reader& r, const json& j, const std::string& f, i
       if (o.weld_tolerance > 0 && o.weld_tolerance < kMinPositive)
         r.fail(ff, "expected 0 (exact) or at least " + number_text(kMinPositive) + ", got " + show(v));
     });
+  } else if (type == "voxels") {
+    o.type = ObjectType::Voxels;
+    common({"file", "format", "threshold", "phantom", "size", "dims", "spacing", "normals"});
+    parse_voxels(r, j, f, base_dir, o);
   } else if (type == "polygons") {
     o.type = ObjectType::Polygons;
     r.check_keys(j, f, {"type", "polygons", "material"});
@@ -480,9 +576,9 @@ SceneObject parse_object(const Reader& r, const json& j, const std::string& f, i
     r.fail(f + ".type",
            "unknown object type " + show(j["type"]) +
                " (expected sphere, cone, quarter_torus, hyperbolic_paraboloid, bezier_patch, cross_vault, pier, portico, "
-               "mesh or polygons)");
+               "mesh, voxels or polygons)");
   }
-  if (o.type != ObjectType::Mesh && o.type != ObjectType::Polygons)
+  if (o.type != ObjectType::Mesh && o.type != ObjectType::Polygons && o.type != ObjectType::Voxels)
     // The tessellation's faces give the normals (crease rule) instead of the exact ones.
     opt(j, f, "crease_angle_deg", [&](const json& v, const std::string& ff) {
       o.crease_angle_deg = r.number_in(v, ff, 0, 180);

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 
 #include "scene.hpp"
 #include "screen_polygon.hpp"
+#include "voxels.hpp"
 
 namespace watkins {
 
@@ -54,9 +56,12 @@ struct Shading {
 };
 
 enum class ObjectType { Sphere, Cone, QuarterTorus, HyperbolicParaboloid, BezierPatch, CrossVault, Pier, Portico, Mesh,
-                        Polygons };
+                        Polygons, Voxels };
 
-enum class MeshNormals { File, Average, Crease };
+// File: the OBJ file's normals (analytic surfaces: the exact ones); Average: averaged over the
+// faces at a vertex; Crease: averaged over the faces within crease_angle_deg; Face: each face its
+// own (voxels).
+enum class MeshNormals { File, Average, Crease, Face };
 
 struct SceneObject {
   ObjectType type = ObjectType::Sphere;
@@ -88,6 +93,11 @@ struct SceneObject {
   double crease_angle_deg = 0;    // MeshNormals::Crease: faces further apart are not smoothed
   double max_edge_length = 0;     // split edges longer than this (world units, after scale); 0: never
   double weld_tolerance = -1;     // STL: weld corners this close (file units); < 0: 1e-6 x bbox diagonal
+  // Voxels: the thresholded volume or the sampled phantom (voxels.hpp), made by the parser, and the
+  // phantom itself when there is one (the analytic truth ray-casts it).
+  std::shared_ptr<const VoxelGrid> voxels;
+  bool has_phantom = false;
+  Phantom phantom;
   std::vector<ScreenPolygon> polygons;  // "polygons": screen-space, validated, passed through
   // "polygons": the first vertex without "rgb" / "normal" (field path, empty when none); which
   // one is an error depends on the shading mode, known only once the command line is applied.

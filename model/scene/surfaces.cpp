@@ -9,6 +9,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "voxels.hpp"
+
 namespace watkins {
 
 int IndexedMesh::add_vertex(const glm::dvec3& p, const glm::dvec3& n) {
@@ -516,6 +518,7 @@ std::size_t estimated_faces(const SceneObject& o) {
   switch (o.type) {
     case ObjectType::Mesh: return 0;  // counted while the file is read
     case ObjectType::Polygons: return o.polygons.size();
+    case ObjectType::Voxels: return o.voxels ? o.voxels->boundary_faces() * split : 0;
     case ObjectType::CrossVault: return bay;
     case ObjectType::Pier: return box_faces;
     case ObjectType::Portico: return std::size_t(o.bays) * bay + 2 * std::size_t(o.bays + 1) * box_faces;
@@ -534,6 +537,7 @@ IndexedMesh tessellate_surface(const SceneObject& o) {
     case ObjectType::CrossVault:
     case ObjectType::Pier:
     case ObjectType::Portico: return vaulted(o);
+    case ObjectType::Voxels: return voxel_surface(*o.voxels, o.normals == MeshNormals::Average, o.triangles);
     default: return {};
   }
 }

@@ -30,7 +30,7 @@ struct IndexedMesh {
   void add_face(std::initializer_list<int> idx, bool split);
 };
 
-// Sphere, cone, quarter_torus, hyperbolic_paraboloid, bezier_patch, cross_vault, pier, portico.
+// Sphere, cone, quarter_torus, hyperbolic_paraboloid, bezier_patch, cross_vault, pier, portico, voxels.
 // Object space, untransformed.
 IndexedMesh tessellate_surface(const SceneObject& o);
 

@@ -48,7 +48,9 @@
   X(MaterialBits, 9, "phong: unsigned width of d and W (1.0 = 2^MaterialFracBits)")              \
   X(MaterialFracBits, 8, "phong: fraction bits of d and W")                                      \
   X(ShininessBits, 8, "phong: unsigned width of the specular exponent n (0..255)")              \
-  X(MaterialIdBits, 4, "material id carried by every edge, segment and fragment (16 materials)")
+  X(MaterialIdBits, 4, "material id carried by every edge, segment and fragment (16 materials)") \
+  X(SmoothWBits, 8, "smoother: unsigned width of Herman & Liu's weight W, in [0, 2)")            \
+  X(SmoothWFracBits, 7, "smoother: fraction bits of W (1.0 = 128; W = 0 turns smoothing off)")
 
 namespace watkins::fmt {
 #define WATKINS_DECLARE_FORMAT(name, value, comment) constexpr int name = value;

@@ -30,6 +30,9 @@ struct Frame {
   ShadingMode shading = ShadingMode::Gouraud;
   std::vector<QuantizedMaterial> materials;  // at most 2^MaterialIdBits
   std::array<i64, 3> light{}, eye{};
+  // Herman & Liu's 3x3 smoothing of the finished image (model/twins/smoother.hpp, the top's
+  // smooth_w_i): W with SmoothWFracBits fraction bits; 0 = off (the smoother is bypassed).
+  int smooth_w = 0;
   std::vector<EdgeRecord> edges;  // sorted by (y0, id)
 };
 

@@ -5,6 +5,7 @@
 #include "normalizer.hpp"
 #include "phong_shader.hpp"
 #include "scan_lines.hpp"
+#include "smoother.hpp"
 
 namespace watkins {
 namespace {
@@ -98,6 +99,8 @@ Image WatkinsTop::render(const Frame& frame, const PipelineObserver& observe) {
       img.owner[row + x] = line.written_poly(x);
     }
   });
+  // The smoother after the line buffer, when the frame enables it (it sees the full raster).
+  if (frame.smooth_w != 0) return Smoother(frame.smooth_w).apply(img);
   return img;
 }
 

@@ -5,6 +5,8 @@
 // interpolated shade; Phong shading normalizes the interpolated normal and shades it with the
 // fragment's material, per pixel, before the depth test. At equal depth the frame's rule decides
 // (frame.depth_tie, the top's tie_submission_i): first arrival, or the smaller polygon id.
+// frame.smooth_w != 0: Herman & Liu's 3x3 smoother (smoother.hpp) after the scanline buffer; it
+// needs the full raster, so a smoothed frame is always emitted in full (sparse_i is ignored).
 //
 // From the configuration (config.hpp), as rtl/watkins_top.sv takes it (rtl_parameters()): one
 // format per group -- XIntBits/XFracBits, DepthIntBits/DepthFracBits, and the attribute slots'
