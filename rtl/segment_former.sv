@@ -51,12 +51,20 @@ module segment_former #(
   assign fire         = edge_valid_i && edge_ready_o;
 
   // Polygon ids are unique among open entries, so at most one entry matches, and the OR of the
-  // indices of the matching entries is its index (0 when none matches).
+  // indices of the matching entries is its index (0 when none matches). Written as a search
+  // guarded by "some entry is open" -- the same function (no entry open, no match), but a
+  // simulator skips the 64 compares on the many clocks with an empty table, and sets bits
+  // instead of rebuilding the vector bit by bit.
   always_comb begin
+    hit_v   = '0;
     hit_idx = '0;
-    for (int i = 0; i < N; i++) begin
-      hit_v[i] = open_q[i] && open_poly_q[i] == edge_poly_i;
-      hit_idx  = hit_idx | (IB'(i) & {IB{hit_v[i]}});
+    if (open_q != '0) begin
+      for (int i = 0; i < N; i++) begin
+        if (open_q[i] && open_poly_q[i] == edge_poly_i) begin
+          hit_v[i] = 1'b1;
+          hit_idx  = hit_idx | IB'(i);
+        end
+      end
     end
   end
   assign hit      = |hit_v;
