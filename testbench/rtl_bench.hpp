@@ -64,7 +64,6 @@ struct StageStreams {
 enum class RtlHarness { SystemC, Fast };
 
 struct RtlOptions {
-  RtlHarness harness = RtlHarness::SystemC;
   std::uint64_t seed = 1;
   double gap = 0.0;        // probability that the edge source idles a cycle before presenting a beat
   double stall = 0.0;      // probability that the pixel sink starts a stall (pixel_ready_i low)
@@ -85,6 +84,7 @@ struct RtlOptions {
   // Test hook for the checker itself: called with each frame's model stage streams before the
   // run (a test corrupts one item and checks that the report names that stage).
   std::function<void(int frame, StageStreams&)> edit_stage_streams;
+  RtlHarness harness = RtlHarness::SystemC;  // the default configuration's bench (last: tests list the fields above in order)
 };
 
 struct RtlFrame {
