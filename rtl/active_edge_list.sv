@@ -89,9 +89,10 @@ module active_edge_list #(
   localparam int unsigned EB = LB + TB + 2 * VB;
   localparam int unsigned AB = IB + 1;
   logic [EB-1:0]   body_mem [2 ** AB];
-  // The filling bank's order: entry i's key and its body's index (past the count: don't care).
-  logic [KB-1:0]   key_q [N];
-  logic [IB-1:0]   idx_q [N];
+  // The filling bank's order: entry i's {sort key, body index} in one word (past the count:
+  // don't care). One array written once per entry: a simulator keeps one pending-write flag per
+  // written element, so this costs half what separate key and index arrays did.
+  logic [KB+IB-1:0] order_q [N];
   // The streaming bank's order from the entry at rd_q on: its body indices, IB bits each.
   logic [N*IB-1:0] sidx_q, sidx_d;
   logic [CntB-1:0] cnt_stream_q, cnt_fill_q;
@@ -153,7 +154,6 @@ module active_edge_list #(
   logic   nsel, ins_step, take_new, drop_late, ins_valid, ins_write, src_done, swap, next_line;
   entry_t ins;
   logic [KB-1:0] ins_key;
-  logic [N-1:0]  lt;
   logic   head_edge;
 
   assign nsel      = !sel_q;
@@ -182,8 +182,16 @@ module active_edge_list #(
       ins.slope     = rec.slope;
     end
     ins_key = {ins.value[XLo +: XBits] ^ XSign, ins.id};
-    for (int i = 0; i < N; i++) lt[i] = (CntB'(i) < cnt_fill_q) && (key_q[i] < ins_key);
   end
+
+  // Whether the filling bank's entry i (below the count) sorts before the inserted key: one
+  // comparator per entry. Called inside the insertion's `if (ins_write)` below, not kept as a
+  // signal: the same hardware, but a simulator then compares only on the clocks that insert
+  // (about one in twenty) instead of on every evaluation of the input-driven logic.
+  function automatic logic sorts_before(input logic [KB-1:0] key, input logic [CntB-1:0] i,
+                                        input logic [CntB-1:0] count, input logic [KB-1:0] new_key);
+    sorts_before = (i < count) && (key < new_key);
+  endfunction
 
   // Line line_q is complete when line_q - 1 has streamed out (marker sent), its stepped edges
   // are in, and the input holds no more records for line_q.
@@ -202,7 +210,7 @@ module active_edge_list #(
     if (next_line) begin
       sel_d = nsel;
       rd_d  = '0;
-      for (int i = 0; i < N; i++) sidx_d[i * IB +: IB] = idx_q[i];
+      for (int i = 0; i < N; i++) sidx_d[i * IB +: IB] = order_q[i][IB-1:0];
     end else if (advance) begin
       rd_d   = rd_q + 1'b1;
       sidx_d = sidx_q >> IB;
@@ -286,14 +294,10 @@ module active_edge_list #(
   always_ff @(posedge clk_i) begin
     if (ins_write) begin
       for (int i = 0; i < N; i++) begin
-        if (!lt[i]) begin
-          if (i == 0 || lt[(i + N - 1) % N]) begin
-            key_q[i] <= ins_key;
-            idx_q[i] <= IB'(cnt_fill_q);
-          end else begin
-            key_q[i] <= key_q[(i + N - 1) % N];
-            idx_q[i] <= idx_q[(i + N - 1) % N];
-          end
+        if (!sorts_before(order_q[i][IB +: KB], CntB'(i), cnt_fill_q, ins_key)) begin
+          order_q[i] <= (i == 0 || sorts_before(order_q[(i + N - 1) % N][IB +: KB], CntB'((i + N - 1) % N),
+                                                cnt_fill_q, ins_key))
+                        ? {ins_key, IB'(cnt_fill_q)} : order_q[(i + N - 1) % N];
         end
       end
     end

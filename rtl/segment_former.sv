@@ -43,23 +43,26 @@ module segment_former #(
   chans_t                            open_value_q [N];
   logic [CntB-1:0]       used_q;       // entries taken on this line (0 .. N), cleared by the marker
 
-  logic          fire, hit, has_free;
-  logic [N-1:0]  hit_v;                // one-hot: the open entry of the edge's polygon
-  logic [IB-1:0] hit_idx, free_idx;
+  logic          fire, has_free;
+  logic [IB-1:0] free_idx;
 
   assign edge_ready_o = seg_ready_i || !seg_valid_o;
   assign fire         = edge_valid_i && edge_ready_o;
 
-  // Polygon ids are unique among open entries, so at most one entry matches, and the OR of the
-  // indices of the matching entries is its index (0 when none matches).
-  always_comb begin
-    hit_idx = '0;
-    for (int i = 0; i < N; i++) begin
-      hit_v[i] = open_q[i] && open_poly_q[i] == edge_poly_i;
-      hit_idx  = hit_idx | (IB'(i) & {IB{hit_v[i]}});
-    end
-  end
-  assign hit      = |hit_v;
+  // The open entries of polygon `poly` (one-hot: polygon ids are unique among open entries) and
+  // the entry's index, the OR of the matching entries' indices (0 when none matches). Functions
+  // called inside the `if (fire)` of the registers they feed, not kept as signals: the same
+  // comparators in hardware (the calls share them), but a simulator then searches only on the
+  // clocks that take an edge, not on every evaluation.
+  function automatic logic [N-1:0] open_match(input logic [PolyIdBits-1:0] poly);
+    for (int i = 0; i < N; i++) open_match[i] = open_q[i] && open_poly_q[i] == poly;
+  endfunction
+  function automatic logic [IB-1:0] open_index(input logic [PolyIdBits-1:0] poly);
+    logic [N-1:0] match;
+    match = open_match(poly);
+    open_index = '0;
+    for (int i = 0; i < N; i++) open_index = open_index | (IB'(i) & {IB{match[i]}});
+  endfunction
   assign has_free = used_q != CntB'(N);
   assign free_idx = IB'(used_q);
 
@@ -69,13 +72,16 @@ module segment_former #(
       used_q      <= '0;
       seg_valid_o <= 1'b0;
     end else begin
-      if (edge_ready_o) seg_valid_o <= fire && (edge_eol_i || hit);
+      // seg_valid_o <= fire && (edge_eol_i || hit) whenever edge_ready_o.
+      if (edge_ready_o) seg_valid_o <= 1'b0;
       if (fire) begin
         if (edge_eol_i) begin
+          seg_valid_o <= 1'b1;
           open_q <= '0;
           used_q <= '0;
-        end else if (hit) begin
-          open_q <= open_q & ~hit_v;
+        end else if (open_match(edge_poly_i) != '0) begin
+          seg_valid_o <= 1'b1;
+          open_q <= open_q & ~open_match(edge_poly_i);
         end else if (has_free) begin
           open_q[free_idx] <= 1'b1;
           used_q <= used_q + 1'b1;
@@ -85,16 +91,18 @@ module segment_former #(
   end
 
   always_ff @(posedge clk_i) begin
-    if (fire && !edge_eol_i && !hit && has_free) begin
-      open_poly_q[free_idx]  <= edge_poly_i;
-      open_value_q[free_idx] <= edge_value_i;
-    end
-    if (fire && (edge_eol_i || hit)) begin
-      seg_e_o    <= open_value_q[hit_idx];
-      seg_f_o    <= edge_value_i;
-      seg_poly_o <= edge_poly_i;
-      seg_material_o <= edge_material_i;
-      seg_eol_o  <= edge_eol_i;
+    if (fire) begin
+      if (!edge_eol_i && open_match(edge_poly_i) == '0 && has_free) begin
+        open_poly_q[free_idx]  <= edge_poly_i;
+        open_value_q[free_idx] <= edge_value_i;
+      end
+      if (edge_eol_i || open_match(edge_poly_i) != '0) begin
+        seg_e_o    <= open_value_q[open_index(edge_poly_i)];
+        seg_f_o    <= edge_value_i;
+        seg_poly_o <= edge_poly_i;
+        seg_material_o <= edge_material_i;
+        seg_eol_o  <= edge_eol_i;
+      end
     end
   end
 
@@ -102,6 +110,6 @@ module segment_former #(
     edge_value_i, edge_eol_i})
   `WATKINS_ASSERT_HOLD(a_out_hold, seg_valid_o, seg_ready_i, {seg_e_o, seg_f_o, seg_poly_o,
     seg_material_o, seg_eol_o})
-  `WATKINS_ASSERT(a_table_room, fire && !edge_eol_i && !hit |-> has_free)
+  `WATKINS_ASSERT(a_table_room, fire && !edge_eol_i && open_match(edge_poly_i) == '0 |-> has_free)
   `WATKINS_COVER(c_two_open, $countones(open_q) >= 2)
 endmodule

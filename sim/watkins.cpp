@@ -2,7 +2,7 @@
 //   watkins render [SCENE] [--out image.png] [--model fixed|float] [--shading S] [--rule R] [--depth D]
 //                  [--depth-tie arrival|submission]
 //                  [--diff d.png] [--cull|--no-cull] [--max-active-edges N] [--config F]
-//                  [--rtl [--sparse] [--trace out.fst] [--seed N] [--gap P] [--stall P]]
+//                  [--rtl [--systemc] [--sparse] [--trace out.fst] [--seed N] [--gap P] [--stall P]]
 //   watkins sweep [SCENE ...] [--shadings ...] [--tess ...] [--csv F] [--md F] [--jobs N] [--shard i/N] [--rtl]
 //                  (sim/sweep.cpp)
 //   watkins synth [--config F ...] [--designs D,...] [--targets T,...] [--md F] [--csv F] [--jobs N]
@@ -76,12 +76,16 @@ struct RtlArgs {
   double gap = 0.0;              // probability of an idle cycle before each edge beat
   double stall = 0.0;            // probability that the pixel sink holds pixel_ready_i low
   bool sparse = false;           // sparse output mode: only covered pixels, with (x, y)
+  bool systemc = false;          // the SystemC bench (assertions on) instead of the plain C++ harness
 };
 
 void add_rtl_options(CLI::App* r, RtlArgs& a) {
   r->add_flag("--rtl", a.enabled, "also run the Verilated RTL, compare it with the fixed model and write "
                                   "the RTL image to --out (exit code 3 and no output on any mismatch)");
-  r->add_option("--trace", a.trace, "with --rtl: write an FST waveform of the RTL run");
+  r->add_flag("--systemc", a.systemc, "with --rtl: run the default configuration on the SystemC bench (Verilated "
+                                      "with assertions, as the co-simulation tests do) instead of the plain C++ "
+                                      "harness built for speed");
+  r->add_option("--trace", a.trace, "with --rtl: write an FST waveform of the RTL run (on the SystemC bench)");
   r->add_option("--seed", a.seed, "with --rtl: random seed of input gaps and output stalls (0 .. 2^64 - 1)")
       ->transform(kSeed)->capture_default_str();
   r->add_option("--gap", a.gap, "with --rtl: probability of an idle cycle before each edge beat")
@@ -97,6 +101,7 @@ void check_rtl_args(const RtlArgs& a, const std::string& model) {
   if (!a.enabled) {
     if (!a.trace.empty()) throw UsageError("--trace needs --rtl");
     if (a.sparse) throw UsageError("--sparse needs --rtl");
+    if (a.systemc) throw UsageError("--systemc needs --rtl");
     return;
   }
 #ifndef WATKINS_HAVE_RTL
@@ -108,6 +113,11 @@ void check_rtl_args(const RtlArgs& a, const std::string& model) {
                            "); install Verilator and SystemC (libsystemc-dev) and re-run cmake");
 #endif
   if (model != "fixed") throw UsageError("--rtl compares with the fixed model; drop --model " + model);
+#ifdef WATKINS_HAVE_RTL
+  const std::string no_systemc = watkins::tb::rtl_systemc_unavailable();
+  if (!no_systemc.empty() && (a.systemc || !a.trace.empty()))
+    throw UsageError(std::string(a.systemc ? "--systemc" : "--trace") + ": " + no_systemc);
+#endif
 }
 
 // A Verilated top exists for the default configuration and for each one the build was asked for
@@ -131,6 +141,7 @@ int run_rtl_mode(const RtlArgs& a, const watkins::PreparedScene& prepared, watki
 #ifdef WATKINS_HAVE_RTL
   namespace tb = watkins::tb;
   tb::RtlOptions opt;
+  opt.harness = a.systemc ? tb::RtlHarness::SystemC : tb::RtlHarness::Fast;
   opt.seed = a.seed;
   opt.gap = a.gap;
   opt.stall = a.stall;

@@ -1,7 +1,7 @@
 // TopPins (top_pins.hpp) of a plain Verilated (--cc) watkins_top, clocked by eval(): one cycle
-// is clock low + eval (settle), clock high + eval (posedge). Used by the speed harness
-// (rtl_harness_cc.cpp) and the top's unit test (tests/rtl/test_rtl_watkins_top.cpp), whatever
-// the model's parameters. `Trace` is FstTrace (fst_trace.hpp) for a model Verilated with
+// is clock low + eval (settle), clock high + eval (posedge). Used by every --cc top of the
+// registry (cc_models.hpp: the plain C++ harness) and the top's unit test
+// (tests/rtl/test_rtl_watkins_top.cpp), whatever the model's parameters. `Trace` is FstTrace (fst_trace.hpp) for a model Verilated with
 // --trace-fst, NoTrace otherwise.
 #pragma once
 

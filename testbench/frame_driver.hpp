@@ -1,5 +1,5 @@
 // The transaction-level bench of watkins_top, the one drive loop shared by the SystemC bench
-// (rtl_bench.cpp), the plain C++ harness (rtl_harness_cc.cpp) and the top's unit test
+// (sc_bench.cpp), the plain C++ harness (the --cc tops, rtl_bench.cpp) and the top's unit test
 // (tests/rtl/test_rtl_watkins_top.cpp). Each talks to its Verilated top through TopPins
 // (top_pins.hpp). A run clocks the source (edge_source.hpp), the sink and pixel check
 // (pixel_sink.hpp) and the stage check (stage_checker.hpp), watches for hangs, and counts cycles.

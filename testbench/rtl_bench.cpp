@@ -1,200 +1,56 @@
-// SystemC bench: the Verilated (--sc) watkins_top bound to sc_signals and clocked by one
-// SC_THREAD that also runs the drive loop (frame_driver.hpp) through TopPins on the signals.
-// Two Verilated builds of the one top: Phong = 0 (Vwatkins_top) and Phong = 1
-// (Vwatkins_top_phong), each in its own bench module; a run clocks only the one its scenes need.
-//
-// Why one thread and no sc_clock: the driver is the same plain C++ as the plain harness's
-// (so both run identical checks and must agree on every cycle), a cycle is two timed waits with
-// the model's SC_METHOD evaluating once per half cycle, and with no sc_clock the kernel starves
-// when a run is over, so sc_start() returns after each run and the next run continues the same
-// simulation. Speed is within ~1.3x of the plain harness, like the per-signal style
-// (testbench/README.md has the measurement).
+// run_rtl_frames (rtl_bench.hpp): picks the Verilated top of the frames' configuration and
+// shading and runs the one drive loop (frame_driver.hpp) on it. The default configuration has two
+// benches: the plain C++ harness on --cc tops built for speed (no assertions, no tracing) and the
+// SystemC bench (sc_bench.hpp: assertions, FST tracing); every other configuration its --cc top
+// from the generated registry (cc_models.hpp), assertions on.
 #include "rtl_bench.hpp"
 
-#include <cstdlib>
-#include <functional>
 #include <map>
 #include <memory>
 #include <stdexcept>
 
-#include <systemc.h>
-#include <verilated.h>
-#include <verilated_fst_c.h>
-
-#include "Vwatkins_top.h"
-#include "Vwatkins_top___024root.h"  // the public internal stage signals
-#include "Vwatkins_top_phong.h"
-#include "Vwatkins_top_phong___024root.h"
 #include "cc_models.hpp"
 #include "expectations.hpp"
-#include "formats.hpp"
-#include "fst_trace.hpp"
 #include "frame_driver.hpp"
-#include "sc_top_signals.hpp"
-#include "top_pins.hpp"
-#include "verilated_stop.hpp"
-
-// libsystemc's own main() calls sc_main; our programs have their own main() and run the kernel
-// from ordinary code (run_rtl), but the shared library still needs the symbol.
-int sc_main(int, char**) { return 0; }
+#if WATKINS_HAVE_SYSTEMC_BENCH
+#include "sc_bench.hpp"
+#endif
 
 namespace watkins::tb {
 namespace {
 
-// The SystemC tops at their default parameters (not overridden in testbench/CMakeLists.txt but
-// for Phong): the default configuration's.
-constexpr int MaxWidth = fmt::DefaultMaxWidth;
-
-template <class Dut>
-struct TopBench : sc_module, detail::TopPins {
-  sc_signal<bool> clk{"clk"};
-  TopSignals io;  // every other port
-  Dut dut{"dut"};
-
-  sc_event start;
-  std::function<void()> job;  // runs inside the thread, so it may wait()
-  bool job_done = false;
-
-  SC_HAS_PROCESS(TopBench);
-  explicit TopBench(sc_module_name name) : sc_module(name) {
-    io.bind(dut, clk);
-    SC_THREAD(main);
-  }
-
-  void main() {
-    for (;;) {
-      wait(start);
-      job();
-      job_done = true;
-    }
-  }
-
-  // ---- TopPins (top_pins.hpp) ----
-  void reset_pin(bool v) override { io.rst_n.write(v); }
-  void frame_pins(std::uint32_t w, std::uint32_t h, std::uint32_t bg, bool sp, bool tie) override {
-    io.width.write(w);
-    io.height.write(h);
-    io.background.write(bg);
-    io.sparse.write(sp);
-    io.tie_submission.write(tie);
-  }
-  void phong_pins(std::uint64_t l, std::uint64_t e) override {
-    io.light.write(l);
-    io.eye.write(e);
-  }
-  void material_pins(const detail::MaterialPins& m) override {
-    io.material_we.write(m.we);
-    io.material_addr.write(m.addr);
-    io.material_cp.write(m.cp);
-    io.material_d.write(m.d);
-    io.material_w.write(m.w);
-    io.material_n.write(m.n);
-  }
-  void edge_pins(bool valid, bool eof, const EdgeWords& data) override {
-    io.edge_valid.write(valid);
-    io.edge_eof.write(eof);
-    if (data != last_edge_) {  // a 466-bit sc_bv write is the costly one; skip it when unchanged
-      last_edge_ = data;
-      for (int i = 0; i < default_edge_layout().words; ++i) edge_bv_.set_word(i, data[i]);
-      io.edge.write(edge_bv_);
-    }
-  }
-  void ready_pin(bool v) override { io.pixel_ready.write(v); }
-  void settle(std::uint64_t t) override {
-    clk.write(false);
-    wait(half_);
-    trace_.dump(t);
-  }
-  detail::PinsOut sample() override {
-    detail::PinsOut o;
-    o.edge_ready = io.edge_ready.read();
-    o.pixel_valid = io.pixel_valid.read();
-    o.pixel_last = io.pixel_last.read();
-    o.pixel_covered = io.pixel_covered.read();
-    o.pixel_rgb = io.pixel_rgb.read();
-    o.pixel_x = io.pixel_x.read();
-    o.pixel_y = io.pixel_y.read();
-    o.overflow = io.overflow.read();
-    return o;
-  }
-  void posedge(std::uint64_t t) override {
-    clk.write(true);
-    wait(half_);
-    trace_.dump(t);
-  }
-  bool stopped() override { return detail::take_stop(*dut.contextp()); }
-  bool trace_open(const std::string& path) override { return trace_.open(dut, path); }
-  void trace_close() override { trace_.close(); }
-  const detail::StageTaps* stage_taps() override {
-    if (!taps_.ae_valid) taps_ = detail::stage_taps(*dut.rootp);
-    return &taps_;
-  }
-
- private:
-  const sc_time half_{5, SC_NS};
-  EdgeWords last_edge_{};
-  sc_bv<fmt::EdgeRecordBits> edge_bv_;
-  FstTrace trace_;
-  detail::StageTaps taps_;
-};
-
-// One Verilated top, its bench module and its driver.
-template <class Dut>
-struct Side {
-  TopBench<Dut>* top = nullptr;
-  detail::FrameDriver* driver = nullptr;
-  explicit Side(const char* name) : top(new TopBench<Dut>(name)), driver(new detail::FrameDriver(*top)) {}
-};
-
-struct Bench {
-  Side<Vwatkins_top> gouraud{"watkins_tb"};
-  Side<Vwatkins_top_phong> phong{"watkins_tb_phong"};
-  bool dead = false;
-};
-
-// The process's choice of power-up state for the bench's tops (rtl_initial_state()), and whether
-// the tops exist already (then it is too late to choose).
-struct InitialState {
-  int seed = 0;
-  bool built = false;
-};
-InitialState& initial_state() {
-  static InitialState s;
-  return s;
-}
-
-// Built once per process and never destroyed (SystemC cannot elaborate twice, and its kernel is
-// torn down by static destructors in an order we do not control).
-Bench& bench() {
-  static Bench* b = [] {
-    setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "1", 0);
-    Verilated::traceEverOn(true);  // tracing can then be switched on for any later run
-    Verilated::threadContextp()->fatalOnError(false);  // an assertion ends the run, not the process
-    // The tops' constructors draw the initial value of every variable (--x-initial unique).
-    const int seed = initial_state().seed;
-    Verilated::threadContextp()->randReset(seed == 0 ? 0 : 2);
-    if (seed != 0) Verilated::threadContextp()->randSeed(seed);
-    initial_state().built = true;
-    sc_report_handler::set_actions(SC_INFO, SC_DO_NOTHING);
-    auto* x = new Bench;
-    sc_start(SC_ZERO_TIME);  // elaborate and park the thread on `start`
-    return x;
-  }();
-  return *b;
+// The --cc tops of configurations other than the default.
+std::size_t other_tops() {
+  std::size_t n = 0;
+  for (const detail::CcModelEntry& m : detail::cc_models()) n += m.default_config ? 0 : 1;
+  return n;
 }
 
 }  // namespace
 
 void rtl_initial_state(int seed) {
-  if (initial_state().built && seed != initial_state().seed)
-    throw std::logic_error("rtl_initial_state: the Verilated tops of this process are built already");
-  initial_state().seed = seed;
+#if WATKINS_HAVE_SYSTEMC_BENCH
+  detail::systemc_initial_state(seed);
+#else
+  if (seed != 0) throw std::logic_error("rtl_initial_state: this build has no SystemC bench (WATKINS_RTL_SYSTEMC=OFF)");
+#endif
+}
+
+std::string rtl_systemc_unavailable() {
+#if WATKINS_HAVE_SYSTEMC_BENCH
+  return "";
+#else
+  return "this build has no SystemC bench (configured with -DWATKINS_RTL_SYSTEMC=OFF)";
+#endif
 }
 
 std::string rtl_description() {
-  return "SystemC bench (Verilated --sc watkins_top, Phong = 0 and 1, one SC_THREAD each, SystemC " +
-         std::string(sc_release()) + ") and " + std::to_string(detail::cc_models().size()) +
-         " per-configuration --cc top(s)";
+  std::string s = "plain C++ harness (Verilated --cc watkins_top built for speed at the default configuration, "
+                  "Phong = 0 and 1)";
+#if WATKINS_HAVE_SYSTEMC_BENCH
+  s += ", " + detail::systemc_description();
+#endif
+  return s + " and " + std::to_string(other_tops()) + " per-configuration --cc top(s)";
 }
 
 namespace {
@@ -203,7 +59,7 @@ bool is_default_top(const std::vector<RtlParameter>& params, ShadingMode shading
   return params == rtl_parameters(Config{}, shading);
 }
 
-// The per-configuration model built with `params`, or null.
+// The --cc model built with `params` (the default configuration's speed tops included), or null.
 const detail::CcModelEntry* find_cc_model(const std::vector<RtlParameter>& params) {
   for (const detail::CcModelEntry& m : detail::cc_models())
     if (m.params == params) return &m;
@@ -216,55 +72,8 @@ std::string parameter_text(const std::vector<RtlParameter>& params) {
   return s;
 }
 
-}  // namespace
-
-std::string rtl_unavailable(const Config& config, ShadingMode shading, const std::string& file) {
-  const std::vector<RtlParameter> params = rtl_parameters(config, shading);
-  if (is_default_top(params, shading) || find_cc_model(params)) return "";
-  const char* s = shading == ShadingMode::Phong ? "phong" : "gouraud";
-  return std::string("no Verilated watkins_top for this configuration (") + parameter_text(params) +
-         "): this build has the default configuration's and " + std::to_string(detail::cc_models().size()) +
-         " other(s); build one with cmake -DWATKINS_RTL_CONFIGS=" + file + "@" + s + " (or add it to the list)";
-}
-
-int rtl_max_width(const Config& config, ShadingMode shading) {
-  const std::vector<RtlParameter> params = rtl_parameters(config, shading);
-  if (is_default_top(params, shading)) return MaxWidth;
-  if (const detail::CcModelEntry* m = find_cc_model(params))
-    for (const RtlParameter& p : m->params)
-      if (std::string(p.name) == "MaxWidth") return static_cast<int>(p.value);
-  return 0;
-}
-
-namespace {
-
-// Runs the frames on one side's thread and returns when it is done.
-template <class Dut, class Work>
-void run_on(Bench& b, Side<Dut>& side, const Work& work) {
-  std::exception_ptr error;
-  side.top->job = [&] {
-    try {
-      work(*side.driver);
-    } catch (...) {
-      error = std::current_exception();
-    }
-  };
-  side.top->job_done = false;
-  side.top->start.notify(SC_ZERO_TIME);
-  sc_start();  // returns when the thread waits for the next job (nothing left to simulate)
-  if (!side.top->job_done) {
-    b.dead = true;
-    throw std::runtime_error("RTL bench: the SystemC kernel stopped before the run finished");
-  }
-  if (error) std::rethrow_exception(error);
-}
-
-}  // namespace
-
-namespace {
-
-// A per-configuration top and its driver, made on first use and kept (the driver resets it
-// before its first run and after a failed one).
+// A --cc top and its driver, made on first use and kept (the driver resets it before its first
+// run and after a failed one).
 struct CcSide {
   std::unique_ptr<detail::CcModel> model;
   std::unique_ptr<detail::FrameDriver> driver;
@@ -284,38 +93,49 @@ CcSide& cc_side(const detail::CcModelEntry& m) {
 
 }  // namespace
 
+std::string rtl_unavailable(const Config& config, ShadingMode shading, const std::string& file) {
+  const std::vector<RtlParameter> params = rtl_parameters(config, shading);
+  if (find_cc_model(params)) return "";
+  const char* s = shading == ShadingMode::Phong ? "phong" : "gouraud";
+  return std::string("no Verilated watkins_top for this configuration (") + parameter_text(params) +
+         "): this build has the default configuration's and " + std::to_string(other_tops()) +
+         " other(s); build one with cmake -DWATKINS_RTL_CONFIGS=" + file + "@" + s + " (or add it to the list)";
+}
+
+int rtl_max_width(const Config& config, ShadingMode shading) {
+  if (const detail::CcModelEntry* m = find_cc_model(rtl_parameters(config, shading)))
+    for (const RtlParameter& p : m->params)
+      if (std::string(p.name) == "MaxWidth") return static_cast<int>(p.value);
+  return 0;
+}
+
 RtlResult run_rtl_frames(const std::vector<const PreparedScene*>& scenes, const RtlOptions& opt,
                          const std::vector<const Image*>& expected) {
-  const bool phong = detail::phong_frames(scenes);
-  const ShadingMode shading = phong ? ShadingMode::Phong : ShadingMode::Gouraud;
+  const ShadingMode shading = detail::phong_frames(scenes) ? ShadingMode::Phong : ShadingMode::Gouraud;
   const Config& config = detail::frames_config(scenes);
   const std::vector<RtlParameter> params = rtl_parameters(config, shading);
   RtlResult r;
-  if (!is_default_top(params, shading)) {
-    // Another configuration: its own --cc top through the same drive loop.
-    const detail::CcModelEntry* m = find_cc_model(params);
-    if (!m) {
-      r.unavailable = rtl_unavailable(config, shading, "F");
-      return r;
-    }
-    if (!opt.trace_path.empty())
-      throw std::invalid_argument("RTL: --trace: the top built for " + m->built_for +
-                                  " is Verilated without FST tracing (only the default configuration's traces)");
-    r.top = "Verilated --cc watkins_top built for " + m->built_for + " (" + parameter_text(params) + ")";
-    const detail::Expectations want = detail::expect(scenes, opt, expected, r, rtl_max_width(config, shading));
-    cc_side(*m).driver->run(scenes, want.images, want.stages, opt, r);
+  const detail::CcModelEntry* m = find_cc_model(params);
+  if (!m) {
+    r.unavailable = rtl_unavailable(config, shading, "F");
     return r;
   }
-  r.top = std::string("SystemC bench, Verilated --sc watkins_top at the default configuration (Phong = ") +
-          (phong ? "1)" : "0)");
-  const detail::Expectations want = detail::expect(scenes, opt, expected, r, MaxWidth);
-  Bench& b = bench();
-  if (b.dead) throw std::runtime_error("RTL bench: the SystemC kernel stopped in an earlier run");
-  auto work = [&](detail::FrameDriver& d) { d.run(scenes, want.images, want.stages, opt, r); };
-  if (phong)
-    run_on(b, b.phong, work);
-  else
-    run_on(b, b.gouraud, work);
+  // The default configuration's waveforms come from the SystemC bench: its tops are the traced ones.
+  if (is_default_top(params, shading) && (opt.harness == RtlHarness::SystemC || !opt.trace_path.empty())) {
+#if WATKINS_HAVE_SYSTEMC_BENCH
+    detail::run_systemc(scenes, opt, expected, r);
+#else
+    r.unavailable = (opt.trace_path.empty() ? "the SystemC bench: " : "--trace needs the SystemC bench: ") +
+                    rtl_systemc_unavailable();
+#endif
+    return r;
+  }
+  if (!opt.trace_path.empty())
+    throw std::invalid_argument("RTL: --trace: the top built for " + m->built_for +
+                                " is Verilated without FST tracing (only the default configuration's traces)");
+  r.top = "Verilated --cc watkins_top built for " + m->built_for + " (" + parameter_text(params) + ")";
+  const detail::Expectations want = detail::expect(scenes, opt, expected, r, rtl_max_width(config, shading));
+  cc_side(*m).driver->run(scenes, want.images, want.stages, opt, r);
   return r;
 }
 

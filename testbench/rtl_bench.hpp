@@ -56,6 +56,13 @@ struct StageStreams {
   std::vector<StageFragment> shaded;     // shading output (x, depth, rgb): the same items
 };
 
+// The bench that runs frames of the default configuration (other configurations have one --cc
+// top each, assertions on): the SystemC bench (sc_bench.hpp: --sc tops with assertions and FST
+// tracing; the co-simulation tests' bench) or the plain C++ harness on --cc tops built for speed
+// (no assertions, no tracing; `watkins render --rtl`). Both run the same drive loop and checks,
+// so they agree on every cycle. A run with a trace_path uses the SystemC bench.
+enum class RtlHarness { SystemC, Fast };
+
 struct RtlOptions {
   std::uint64_t seed = 1;
   double gap = 0.0;        // probability that the edge source idles a cycle before presenting a beat
@@ -77,6 +84,7 @@ struct RtlOptions {
   // Test hook for the checker itself: called with each frame's model stage streams before the
   // run (a test corrupts one item and checks that the report names that stage).
   std::function<void(int frame, StageStreams&)> edit_stage_streams;
+  RtlHarness harness = RtlHarness::SystemC;  // the default configuration's bench (last: tests list the fields above in order)
 };
 
 struct RtlFrame {
@@ -155,8 +163,10 @@ struct RtlResult {
   }
 };
 
-// Which harness this library drives ("SystemC bench (...)" or "plain C++ harness (...)").
+// The Verilated tops and benches this library has, in one line.
 std::string rtl_description();
+// "" when this build has the SystemC bench (RtlHarness::SystemC, --trace), else why not.
+std::string rtl_systemc_unavailable();
 // Power-up state of the SystemC bench's two tops (Verilated with --x-initial unique): seed 0
 // starts every register and RAM word without a reset at zero (the default); another seed at
 // values drawn from it (Verilator's randReset(2) and randSeed(seed)). The tops are built once
@@ -165,10 +175,11 @@ std::string rtl_description();
 // the same cycles whatever the seed (tests/cosim/test_x_initial.cpp). The per-configuration
 // --cc tops always start at zero.
 void rtl_initial_state(int seed);
-// The Verilated tops: the SystemC bench's two at the default configuration (Phong = 0 and 1), and
-// one plain --cc top per other configuration the build was asked for (CMake option
-// WATKINS_RTL_CONFIGS, testbench/CMakeLists.txt). run_rtl_frames runs frames on the top whose
-// parameters equal rtl_parameters(frames' PreparedScene::config, shading).
+// The Verilated tops: at the default configuration (Phong = 0 and 1) the speed build's two --cc
+// tops and the SystemC bench's two (RtlHarness), and one plain --cc top per other configuration
+// the build was asked for (CMake option WATKINS_RTL_CONFIGS, testbench/CMakeLists.txt).
+// run_rtl_frames runs frames on the top whose parameters equal rtl_parameters(frames'
+// PreparedScene::config, shading).
 //
 // "" when this build has a top for frames prepared for `config` with `shading`; else one line
 // naming the configuration's parameters and how to build its top (`file`: the configuration's

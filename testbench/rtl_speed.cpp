@@ -1,5 +1,6 @@
-// Simulation speed of the RTL on one harness: built twice, as watkins_rtl_speed_sc (SystemC bench)
-// and watkins_rtl_speed_cc (plain C++ harness, a second Verilated build), from this one source.
+// Simulation speed of the RTL on one bench of the default configuration, built twice from this one
+// source: watkins_rtl_speed_sc (the SystemC bench: --sc tops with assertions and tracing) and
+// watkins_rtl_speed_cc (the plain C++ harness on the speed build's --cc tops).
 //   watkins_rtl_speed_{sc,cc} [SCENE] [--shading gouraud|phong] [--repeat N] [--gap P] [--stall P]
 //                             [--seed N] [--no-stage-check]
 #include <CLI/CLI.hpp>
@@ -25,11 +26,16 @@ int main(int argc, char** argv) {
   app.add_option("--stall", opt.stall, "pixel sink stall probability")->capture_default_str();
   app.add_option("--seed", opt.seed, "random seed")->capture_default_str();
   std::string shading;
-  app.add_option("--shading", shading, "gouraud or phong (default: the scene's); the plain C++ harness has Gouraud only");
+  app.add_option("--shading", shading, "gouraud or phong (default: the scene's)");
   bool no_stages = false;
   app.add_flag("--no-stage-check", no_stages, "compare the pixels only, not the internal stage streams");
   CLI11_PARSE(app, argc, argv);
   opt.check_stages = !no_stages;
+#ifdef WATKINS_SPEED_CC
+  opt.harness = watkins::tb::RtlHarness::Fast;
+#else
+  opt.harness = watkins::tb::RtlHarness::SystemC;
+#endif
   try {
     using namespace watkins;
     BuildOptions build;
@@ -54,7 +60,7 @@ int main(int argc, char** argv) {
       if (!r.ok()) warm = r;
     }
     const double cpu = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
-    std::printf("harness       %s\n", tb::rtl_description().c_str());
+    std::printf("harness       %s\n", warm.top.c_str());
     std::printf("scene         %s %dx%d, %zu edge records, %s shading\n", scene.name.c_str(), prepared.width,
                 prepared.height, prepared.edges.size(), to_string(prepared.shading));
     std::printf("frame cycles  %lld (gap %.2f, stall %.2f)\n", warm.cycles, opt.gap, opt.stall);

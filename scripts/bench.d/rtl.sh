@@ -2,12 +2,14 @@
 # RTL figures: cycles per frame and fragments per cycle of the Verilated pipeline, Gouraud and
 # Phong shading (watkins_top with Phong = 0 and 1), in full-frame output (bound by one pixel per
 # clock) and sparse output (--sparse: covered pixels only, bound by the fragment path); the
-# overdraw scene is bound by the fragment rate. Then simulated cycles per second: the SystemC
-# bench against a plain C++ harness on the same RTL, and the Phong top on the SystemC bench.
+# overdraw scene is bound by the fragment rate. Then simulated cycles per second of both tops on
+# both benches: the plain C++ harness (the speed build: no assertions, no tracing) and the
+# SystemC bench (assertions and tracing compiled in).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 build="${WATKINS_BUILD:-$root/build}"
-[ -x "$build/testbench/watkins_rtl_speed_sc" ] || { echo "rtl: not built (needs Verilator and SystemC)"; exit 0; }
+[ -x "$build/testbench/watkins_rtl_speed_sc" ] && [ -x "$build/testbench/watkins_rtl_speed_cc" ] ||
+  { echo "rtl: not built (needs Verilator, SystemC, WATKINS_RTL_SPEED and WATKINS_RTL_SYSTEMC)"; exit 0; }
 scenes=("" "$root/scenes/sphere.json" "$root/scenes/cone.json" "$root/scenes/overdraw.json")
 printf "%-26s %9s %9s %8s %11s %10s\n" "rtl frame" "cycles" "fragments" "frag/cyc" "pixels/cyc" "mismatches"
 for scene in "${scenes[@]}"; do
@@ -25,24 +27,32 @@ done
 speed() {  # $1: harness (sc, cc), $2: shading
   "$build/testbench/watkins_rtl_speed_$1" --repeat 3 --shading "$2" | sed -n 's/^speed *\([0-9]*\) cycles\/s.*/\1/p'
 }
-printf "verilator %-52s %s cycles/s\n" "SystemC bench, Gouraud top (one SC_THREAD clocks it)" "$(speed sc gouraud)"
-[ -x "$build/testbench/watkins_rtl_speed_cc" ] &&
-  printf "verilator %-52s %s cycles/s\n" "plain C++ harness, Gouraud top (eval loop)" "$(speed cc gouraud)"
-printf "verilator %-52s %s cycles/s\n" "SystemC bench, Phong top" "$(speed sc phong)"
-# Instructions per simulated cycle of the plain harness (callgrind: repeatable on a shared machine):
-# the difference between a 3-frame and a 1-frame run over the difference in cycles, so the warm-up
-# frame and the set-up cancel; with the stage checker off, the Verilated model alone.
-if [ -x "$build/testbench/watkins_rtl_speed_cc" ] && command -v valgrind >/dev/null; then
-  per_cycle() {  # $@: extra harness options
-    local ir=() cyc=()
+# Both benches, both tops, in one run (the machine is shared: compare figures of the same run).
+for shading in gouraud phong; do
+  printf "verilator %-60s %s cycles/s\n" "plain C++ harness, ${shading} top (speed build, eval loop)" "$(speed cc $shading)"
+  printf "verilator %-60s %s cycles/s\n" "SystemC bench, ${shading} top (assertions; one SC_THREAD)" "$(speed sc $shading)"
+done
+# Instructions per simulated cycle (callgrind: repeatable on a shared machine): the difference
+# between a 3-frame and a 1-frame run over the difference in cycles, so the warm-up frame and the
+# set-up cancel; with the stage checker off, the Verilated model alone.
+if command -v valgrind >/dev/null; then
+  per_cycle() {  # $1: harness (sc, cc); then extra options
+    local h=$1 ir=() cyc=()
+    shift
     for r in 1 3; do
       out=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null \
-        "$build/testbench/watkins_rtl_speed_cc" --repeat $r "$@" 2>&1)
+        "$build/testbench/watkins_rtl_speed_$h" --repeat $r "$@" 2>&1)
       ir+=("$(echo "$out" | sed -n 's/.*I *refs: *\([0-9,]*\)/\1/p' | tr -d ,)")
       cyc+=("$(echo "$out" | sed -n 's/^speed .*over [0-9]* frames (\([0-9]*\) cycles.*/\1/p')")
     done
     echo $(( (ir[1] - ir[0]) / (cyc[1] - cyc[0]) ))
   }
-  printf "verilator %-52s %s instructions/cycle\n" "plain C++ harness, Gouraud top, no stage checker" "$(per_cycle --no-stage-check)"
-  printf "verilator %-52s %s instructions/cycle\n" "plain C++ harness, Gouraud top, stage checker on" "$(per_cycle)"
+  for shading in gouraud phong; do
+    printf "verilator %-60s %s instructions/cycle\n" "plain C++ harness, ${shading} top, no stage checker" \
+      "$(per_cycle cc --shading $shading --no-stage-check)"
+    printf "verilator %-60s %s instructions/cycle\n" "plain C++ harness, ${shading} top, stage checker on" \
+      "$(per_cycle cc --shading $shading)"
+  done
+  printf "verilator %-60s %s instructions/cycle\n" "SystemC bench, gouraud top, stage checker on" \
+    "$(per_cycle sc --shading gouraud)"
 fi

@@ -1,0 +1,121 @@
+// The default configuration's two benches (RtlHarness in testbench/rtl_bench.hpp): the plain C++
+// harness on the speed build's --cc tops (no assertions, no tracing; `watkins render --rtl`) and
+// the SystemC bench (assertions, tracing; `--rtl --systemc`) run the same RTL through the same
+// drive loop, so they must agree on every cycle count and every pixel.
+#include <gtest/gtest.h>
+
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "cli_run.hpp"
+#include "cosim_support.hpp"
+#include "prepare.hpp"
+#include "rtl_bench.hpp"
+#include "scene.hpp"
+
+using namespace watkins;
+using namespace watkins::tb;
+using namespace watkins::tb::test;
+using namespace watkins::test;
+
+namespace {
+
+RtlResult run_on(RtlHarness harness, const PreparedScene& p, RtlOptions o) {
+  o.harness = harness;
+  return run_rtl(p, o);
+}
+
+void expect_same_run(const std::string& what, const RtlOptions& o, const RtlResult& fast, const RtlResult& sc) {
+  expect_clean(what + " on the plain C++ harness", o, fast);
+  expect_clean(what + " on the SystemC bench", o, sc);
+  EXPECT_NE(fast.top.find("speed build"), std::string::npos) << fast.top;
+  EXPECT_NE(sc.top.find("SystemC bench"), std::string::npos) << sc.top;
+  EXPECT_EQ(fast.cycles, sc.cycles) << what;
+  EXPECT_EQ(fast.sim_cycles, sc.sim_cycles) << what;
+  EXPECT_EQ(fast.stage_items, sc.stage_items) << what;
+  ASSERT_EQ(fast.frames.size(), sc.frames.size()) << what;
+  for (std::size_t f = 0; f < fast.frames.size(); ++f) {
+    EXPECT_EQ(fast.frames[f].first_edge_cycle, sc.frames[f].first_edge_cycle) << what << " frame " << f;
+    EXPECT_EQ(fast.frames[f].last_pixel_cycle, sc.frames[f].last_pixel_cycle) << what << " frame " << f;
+    EXPECT_EQ(fast.frames[f].pixels, sc.frames[f].pixels) << what << " frame " << f;
+    EXPECT_EQ(fast.frames[f].image.rgb, sc.frames[f].image.rgb) << what << " frame " << f;
+    EXPECT_EQ(fast.frames[f].image.covered, sc.frames[f].image.covered) << what << " frame " << f;
+  }
+}
+
+// The default scene and sphere.json, both tops, full-frame and sparse, without and with gaps
+// and stalls (random_options: none, light, heavy, all-stall bursts).
+TEST(CosimHarness, PlainAndSystemCBenchesAgreeOnEveryCycle) {
+  for (const std::string scene_path : {std::string(), std::string(WATKINS_SOURCE_DIR "/scenes/sphere.json")}) {
+    for (const ShadingMode shading : {ShadingMode::Gouraud, ShadingMode::Phong}) {
+      BuildOptions b;
+      b.shading = shading;
+      const PreparedScene p = prepare(load_scene_or_default(scene_path, b));
+      for (std::uint64_t seed = 0; seed < 4; ++seed) {
+        RtlOptions o = random_options(seed);
+        o.sparse = seed % 2 == 1;
+        const std::string what = (scene_path.empty() ? "default scene" : scene_path) + " " + to_string(shading) +
+                                 (o.sparse ? " sparse" : " full-frame");
+        expect_same_run(what, o, run_on(RtlHarness::Fast, p, o), run_on(RtlHarness::SystemC, p, o));
+      }
+    }
+  }
+}
+
+// Frames back to back (the driver keeps its cycle count between them) on both benches.
+TEST(CosimHarness, FramesBackToBackAgree) {
+  const PreparedScene a = prepare(load_scene_or_default(""));
+  const PreparedScene s = prepare(load_scene_or_default(WATKINS_SOURCE_DIR "/scenes/sphere.json"));
+  RtlOptions o = random_options(1);
+  o.sparse_frames = {false, true, false};
+  RtlOptions fo = o, so = o;
+  fo.harness = RtlHarness::Fast;
+  so.harness = RtlHarness::SystemC;
+  expect_same_run("default, sphere, default", o, run_rtl_frames({&a, &s, &a}, fo), run_rtl_frames({&a, &s, &a}, so));
+}
+
+// A waveform comes from the SystemC bench's traced tops, whichever bench was asked for.
+TEST(CosimHarness, TraceRunsOnTheSystemCBench) {
+  const ScratchDir dir;
+  const PreparedScene p = prepare(load_scene_or_default(WATKINS_SOURCE_DIR "/scenes/sphere.json"));
+  RtlOptions o;
+  o.harness = RtlHarness::Fast;
+  o.trace_path = dir.write("w.fst", "");
+  const RtlResult r = run_rtl(p, o);
+  EXPECT_TRUE(r.ok()) << r.summary();
+  EXPECT_NE(r.top.find("SystemC bench"), std::string::npos) << r.top;
+  EXPECT_GT(dir.contents("w.fst").size(), 1000u);
+}
+
+// The command line: `render --rtl` (plain C++ harness) and `render --rtl --systemc` name their
+// bench, count the same cycles and write the same image, under gaps and stalls, both shadings.
+std::string cycles_line(const std::string& out) {
+  std::smatch m;
+  return std::regex_search(out, m, std::regex("rtl cycles +([0-9]+)")) ? m[1].str() : "";
+}
+
+TEST(CosimHarness, CliRtlAndSystemcAgree) {
+  const ScratchDir dir;
+  const std::string fast_png = dir.write("fast.png", ""), sc_png = dir.write("sc.png", "");
+  for (const std::string shading : {"gouraud", "phong"}) {
+    const std::string common = "render " WATKINS_SOURCE_DIR "/scenes/sphere.json --shading " + shading +
+                               " --rtl --gap 0.1 --stall 0.2 --seed 3";
+    const CliRun f = run_cli(common + " --out " + fast_png);
+    const CliRun s = run_cli(common + " --systemc --out " + sc_png);
+    ASSERT_EQ(f.exit_code, 0) << f.output;
+    ASSERT_EQ(s.exit_code, 0) << s.output;
+    EXPECT_NE(f.output.find("rtl           Verilated --cc watkins_top built for the default configuration (speed build"), std::string::npos)
+        << f.output;
+    EXPECT_NE(s.output.find("rtl           SystemC bench"), std::string::npos) << s.output;
+    EXPECT_NE(cycles_line(f.output), "") << f.output;
+    EXPECT_EQ(cycles_line(f.output), cycles_line(s.output)) << f.output << s.output;
+    EXPECT_NE(dir.contents("fast.png").size(), 0u);
+    EXPECT_EQ(dir.contents("fast.png"), dir.contents("sc.png")) << shading;
+  }
+  const CliRun bad = run_cli("render --systemc --out " + fast_png);
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("--systemc needs --rtl"), std::string::npos) << bad.output;
+}
+
+}  // namespace
