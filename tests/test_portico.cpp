@@ -438,6 +438,7 @@ TEST(CreaseSurface, ReplacesOnlyTheNormalsAndApproachesTheExactOnes) {
     for (const char* a : {"80", "180"}) {
       const SceneObject o = parse_one(std::string(obj) + R"(, "crease_angle_deg": )" + a + "}");
       EXPECT_EQ(o.normals, MeshNormals::Crease);
+      EXPECT_THROW(parse_one(std::string(obj) + R"(, "crease_angle_deg": 181})"), SceneError);
       const IndexedMesh plain = tessellate_surface(o);  // the crease is applied by the builder
       ASSERT_EQ(plain.normal, exact.normal);
       IndexedMesh m = plain;
