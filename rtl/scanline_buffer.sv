@@ -65,7 +65,9 @@ module scanline_buffer #(
   localparam int unsigned DWB = PolyIdBits + DepthBits;
   logic [DWB-1:0]            depth_mem [2 * MaxWidth];
   logic [RB-1:0]             rgb_mem   [2 * MaxWidth];
-  logic [2 * MaxWidth - 1:0] written_q;  // flops: cleared by reset and by reading
+  // Written bits, one per pixel, by x, in flops (cleared by reset and by reading): the read bank's
+  // and the write bank's, exchanged at the swap.
+  logic [MaxWidth-1:0] rd_written_q, wr_written_q;
 
   logic          wsel_q;           // bank being written; the reader uses the other one
   logic          rd_busy_q;
@@ -79,9 +81,9 @@ module scanline_buffer #(
   /* verilator lint_on UNUSEDSIGNAL */
 
   // ------------------------------------------------------------ written bits
-  // One per pixel and bank, by x: bank b's pixel x is written_q[b * MaxWidth + x] (no bank-base
-  // adder on their paths; only the RAM addresses add it). The writer's bank is wsel_q's, the
-  // reader's the other. Decoded in two levels, a 32-pixel word and a bit in it.
+  // Kept by role, not by bank: neither wsel_q (a mux with a fan-out of 2 * MaxWidth) nor the
+  // bank-base adder is on their paths; only the RAM addresses use them. Decoded in two levels, a
+  // 32-pixel word and a bit in it.
   localparam int unsigned WordBits = 32;
   localparam int unsigned WIB      = $clog2(WordBits);
   localparam int unsigned Words    = (MaxWidth + WordBits - 1) / WordBits;
@@ -89,8 +91,8 @@ module scanline_buffer #(
   localparam int unsigned PB       = $clog2(Words * WordBits);  // an x in the padded words
   logic [MaxWidth-1:0]       rbits, wbits;  // the read bank's and the write bank's
   logic [Words*WordBits-1:0] rpad, wpad;
-  assign rbits = wsel_q ? written_q[MaxWidth-1:0] : written_q[2*MaxWidth-1:MaxWidth];
-  assign wbits = wsel_q ? written_q[2*MaxWidth-1:MaxWidth] : written_q[MaxWidth-1:0];
+  assign rbits = rd_written_q;
+  assign wbits = wr_written_q;
   assign rpad  = (Words * WordBits)'(rbits);
   assign wpad  = (Words * WordBits)'(wbits);
 
@@ -164,7 +166,7 @@ module scanline_buffer #(
 
   // Step 1 (the accepting clock): read the depth word. Step 2: test against it -- or against the
   // word written the clock before at the same address, which the RAM read did not see yet --
-  // and write. written_q already holds that previous write.
+  // and write. wr_written_q already holds that previous write.
   logic                 t_valid_q, lw_valid_q;
   logic [AddrBits-1:0]  t_addr_q, lw_addr_q;
   logic [LB-1:0]        t_x_q;     // t_addr_q's x (its bank is wsel_q's: a marker swaps only after)
@@ -214,7 +216,7 @@ module scanline_buffer #(
   /* verilator lint_off UNUSEDSIGNAL */
   logic [Words*WordBits-1:0] set_pad, clr_pad;  // their padding is unused
   /* verilator lint_on UNUSEDSIGNAL */
-  logic [2 * MaxWidth - 1:0] written_d;
+  logic [MaxWidth-1:0]       rd_kept, wr_set;    // the read bank cleared, the write bank set
   logic                      covered;          // the pixel the reader takes is written
   assign take = rd_busy_q && (!pixel_valid_o || pixel_ready_i);
   for (genvar w = 0; w < Words; w++) begin : g_word_hot
@@ -235,14 +237,15 @@ module scanline_buffer #(
   end
   // Sparse: the pixel found is written (none found: the terminating beat is not).
   assign covered   = sparse_i ? found : rpad[rx_q[PB-1:0]];
-  assign written_d = wsel_q ? {wbits | set_pad[MaxWidth-1:0], rbits & ~clr_pad[MaxWidth-1:0]}
-                            : {rbits & ~clr_pad[MaxWidth-1:0], wbits | set_pad[MaxWidth-1:0]};
+  assign rd_kept   = rbits & ~clr_pad[MaxWidth-1:0];
+  assign wr_set    = wbits | set_pad[MaxWidth-1:0];
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       t_valid_q     <= 1'b0;
       lw_valid_q    <= 1'b0;
-      written_q     <= '0;
+      rd_written_q  <= '0;
+      wr_written_q  <= '0;
       wsel_q        <= 1'b0;
       rd_busy_q     <= 1'b0;
       rx_q          <= '0;
@@ -251,9 +254,10 @@ module scanline_buffer #(
     end else begin
       t_valid_q  <= frag_take;
       lw_valid_q <= wins;
-      // Reader and writer always use different banks, so their updates never collide (a
-      // fragment still being tested belongs to the bank the reader starts on only after it).
-      written_q  <= written_d;
+      // The swap exchanges the roles: the line just written (with its last fragment, tested on
+      // this clock) is read next; the line just read is empty by now (a_swap_read_clear).
+      rd_written_q <= eol_take ? wr_set : rd_kept;
+      wr_written_q <= eol_take ? '0 : wr_set;
       if (rd_step) begin
         rx_q <= rd_x + 1'b1;
         if (rd_last) begin
@@ -296,19 +300,24 @@ module scanline_buffer #(
   // Public, so that Verilator keeps them as variables instead of inlining the vector back in.
   logic below_dirty /* verilator public_flat_rd */;
   logic ra_written /* verilator public_flat_rd */;
-  logic t_written_p /* verilator public_flat_rd */;
   logic t_addr_ok /* verilator public_flat_rd */;
+  logic rd_left /* verilator public_flat_rd */;
+  logic t_written_p /* verilator public_flat_rd */;
+  logic covered_p /* verilator public_flat_rd */;
+  assign t_written_p = t_written;
+  assign covered_p   = covered;
   assign below_dirty = |(rbits & ~({MaxWidth{1'b1}} << rx_q));
-  assign ra_written  = written_q[ra];
-  assign t_written_p = written_q[t_addr_q];
+  assign ra_written  = rpad[rd_x[PB-1:0]];
   assign t_addr_ok   = t_addr_q == addr(wsel_q, t_x_q);
+  assign rd_left     = |rd_kept;
 `endif
   // Why the sparse search needs no rx_q compare, and why covered needs no read at ra.
   `WATKINS_ASSERT(a_sparse_below_clear, rd_busy_q && sparse_i |-> !below_dirty)
-  `WATKINS_ASSERT(a_covered_is_written, rd_load |-> covered == ra_written)
-  // Why the written bits need neither the bank-base adder nor the depth test.
+  `WATKINS_ASSERT(a_covered_is_written, rd_load |-> covered_p == ra_written)
+  // Why the written bits can be kept by role: the tested fragment is in the write bank, and the
+  // read bank is empty when the swap makes it the write bank.
   `WATKINS_ASSERT(a_tested_in_write_bank, t_valid_q |-> t_addr_ok)
-  `WATKINS_ASSERT(a_loser_was_written, t_valid_q && !wins |-> t_written_p)
+  `WATKINS_ASSERT(a_swap_read_clear, eol_take |-> !rd_left)
   `WATKINS_ASSERT(a_banks_apart, t_valid_q && rd_load |-> t_addr_q != ra)
   `WATKINS_COVER(c_sparse_empty_line, rd_step && !rd_emit)
   `WATKINS_ASSERT(a_x_in_line, frag_valid_i && !frag_eol_i |-> frag_x_i < width_i)

@@ -83,6 +83,14 @@ module segment_interpolator #(
   localparam int unsigned IDB = ZD + 3 * AD;           // delta
   localparam int unsigned IPS = ZPS + 3 * APS;         // delta * recip
   localparam int unsigned IPV = ZPV + 3 * APV;         // delta * alpha0
+  // The sb shifts: p + RecipBits - AlphaBits (alpha0) and p + RecipBits - FX (the steps), p <
+  // DxBits, in shift amounts only as wide as their largest value (a shift amount as wide as the
+  // product made yosys build a shifter stage for every one of its bits).
+  localparam int unsigned ShAMax = (RecipBits > AlphaBits) ? DxBits - 1 + RecipBits - AlphaBits
+                                                          : DxBits - 1;
+  localparam int unsigned ShSMax = DxBits - 1 + RecipBits - FX;
+  localparam int unsigned ShAB   = $clog2(ShAMax + 1);
+  localparam int unsigned ShSB   = $clog2(ShSMax + 1);
 
   // ---------------------------------------------------------------- s0: range and clipping
   typedef struct packed {
@@ -198,7 +206,8 @@ module segment_interpolator #(
   // 2^AlphaBits); round_shift by 0 is exact.
   logic                sa_valid_q, sb_valid_q, sc_valid_q;
   span_pre_t           sa_span_q, sb_span_q;
-  logic [ExpBits-1:0]  sa_p_q;
+  logic [ShAB-1:0]     sa_sha_q;     // alpha0's shift p + RecipBits - AlphaBits
+  logic [ShSB-1:0]     sa_shs_q;     // the steps' shift p + RecipBits - FX (> 0)
   logic [APBits-1:0]   sa_pa_q;      // offset * recip, unsigned
   logic [AlphaBits:0]  sb_alpha_q;   // alpha0 in [0, 2^AlphaBits]
   // offset and delta are spent by the FIFO; keeping one span type is simpler than a third struct.
@@ -212,13 +221,14 @@ module segment_interpolator #(
   always_ff @(posedge clk_i) begin
     if (tail_en) begin
       logic [APBits-1:0] ra;
-      logic [APBits-1:0] sh;
       sa_span_q <= rc_span;
-      sa_p_q    <= rc_p;
+      // Both shifts are known from p alone: computed here, beside the products.
+      sa_sha_q  <= ShAB'(rc_p) + ShAB'(RecipBits) - ShAB'(AlphaBits);
+      sa_shs_q  <= ShSB'(rc_p) + ShSB'(RecipBits) - ShSB'(FX);
       sa_pa_q   <= APBits'(rc_span.offset) * APBits'(rc_recip);
       sb_span_q <= sa_span_q;
-      sh = APBits'(sa_p_q) + APBits'(RecipBits) - APBits'(AlphaBits);
-      ra = (sh == '0) ? sa_pa_q : ((sa_pa_q + (APBits'(1) << (sh - 1))) >> sh);
+      ra = (sa_sha_q == '0) ? sa_pa_q
+                            : ((sa_pa_q + (APBits'(1) << (sa_sha_q - 1'b1))) >> sa_sha_q);
       sb_alpha_q <= (ra > APBits'(1 << AlphaBits)) ? (AlphaBits + 1)'(1 << AlphaBits)
                                                    : (AlphaBits + 1)'(ra);
       sc_span_q <= sb_span_q;
@@ -240,13 +250,12 @@ module segment_interpolator #(
     localparam logic signed [PS-1:0] StepMin = -$signed(PS'(1) << (W - 1));
     always_ff @(posedge clk_i) begin
       if (tail_en) begin
-        logic [PS-1:0]        s2;
         logic signed [PS-1:0] rs;
         sa_ps_q[Pl +: PS] <= PS'($signed(rc_span.delta[Dl +: W + 1]) * $signed({1'b0, rc_recip}));
-        s2 = PS'(sa_p_q) + PS'(RecipBits) - PS'(FX);
-        rs = ($signed(sa_ps_q[Pl +: PS]) + $signed(PS'(1) << (s2 - 1))) >>> s2;
-        if (rs > StepMax) sb_step_q[Lo +: W] <= W'(StepMax);
-        else if (rs < StepMin) sb_step_q[Lo +: W] <= W'(StepMin);
+        rs = ($signed(sa_ps_q[Pl +: PS]) + $signed(PS'(1) << (sa_shs_q - 1'b1))) >>> sa_shs_q;
+        // Saturate: rs fits W bits when its bits from W - 1 up are all equal (cheaper than
+        // comparing with StepMax and StepMin, the same result).
+        if (!(&rs[PS-1:W-1] || ~|rs[PS-1:W-1])) sb_step_q[Lo +: W] <= rs[PS-1] ? W'(StepMin) : W'(StepMax);
         else sb_step_q[Lo +: W] <= W'(rs);
         sc_pv_q[Vl +: PV] <= PV'($signed(sb_span_q.delta[Dl +: W + 1]) * $signed({1'b0, sb_alpha_q}));
       end
