@@ -1,8 +1,9 @@
 // libFuzzer target over the scene front end and preparation (scripts/fuzz builds and runs it
 // under ASan + UBSan). An input that starts (after white space) with '{' or '/' is a JSON scene:
-// parsed, built and prepared, and read as a configuration file too. Anything else is an OBJ file: written to a scratch file, loaded as
-// the mesh of a small fixed scene (normals from the file when it has vn lines, else averaged),
-// built and prepared. A clean SceneError (or the prepare's capacity error) is the expected
+// parsed, built and prepared, and read as a configuration file too. Anything else is a mesh file: written to a scratch file, loaded as
+// the mesh of a small fixed scene, built and prepared: STL (binary by its size, or starting with
+// "solid") with crease-angle normals and its faces split, else OBJ (normals from the file when it
+// has vn lines, else averaged). A clean SceneError (or the prepare's capacity error) is the expected
 // outcome of bad input; any other exception, a crash or a sanitizer report is a finding.
 #include <unistd.h>
 
@@ -12,6 +13,7 @@
 #include <string>
 
 #include "config_file.hpp"
+#include "mesh_stl.hpp"
 #include "prepare.hpp"
 #include "scene.hpp"
 
@@ -21,7 +23,7 @@ namespace {
 constexpr std::size_t kFuzzMaxFaces = 20000;
 
 const std::string& scratch_obj() {
-  static const std::string path = "/tmp/watkins_fuzz_" + std::to_string(::getpid()) + ".obj";
+  static const std::string path = "/tmp/watkins_fuzz_" + std::to_string(::getpid()) + ".mesh";  // told by content
   return path;
 }
 
@@ -54,12 +56,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (!f) return 0;
   std::fwrite(text.data(), 1, text.size(), f);
   std::fclose(f);
+  const bool stl = watkins::is_binary_stl(text) || text.compare(0, 5, "solid") == 0;
   const bool vn = text.find("vn") != std::string::npos;
+  const std::string normals = stl ? "\"crease_angle_deg\": 60, \"max_edge_length\": 0.5"
+                                  : std::string("\"normals\": \"") + (vn ? "file" : "average") + "\"";
   run(std::string("{\"screen\": {\"width\": 64, \"height\": 48},\n"
                   " \"camera\": {\"type\": \"lookat\", \"eye\": [0, 1, -4], \"target\": [0, 0, 0]},\n"
                   " \"shading\": {\"cull_backfaces\": false},\n"
                   " \"objects\": [{\"type\": \"mesh\", \"file\": \"") +
-          scratch_obj() + "\", \"normals\": \"" + (vn ? "file" : "average") + "\"}]}",
+          scratch_obj() + "\", " + normals + "}]}",
       "fuzz-obj.json");
   return 0;
 }

@@ -7,8 +7,9 @@
 // Storage: depth (with the winner's polygon id beside it, PolyIdBits + DepthBits per word) and
 // shade in two RAMs of 2 * MaxWidth words with synchronous reads (block RAM:
 // SB_RAM40_4K / DP16KD), each with one write port (the writer) and one read port (depth: the
-// writer's depth test; shade: the reader), and one written bit per pixel in flops (cleared as the
-// reader takes the pixel; unwritten words are never read as values). Write side: one fragment per
+// writer's depth test; shade: the reader), and one written bit per pixel and bank in flops, by x
+// (set by every fragment tested, cleared as the reader takes the pixel; unwritten words are never
+// read as values). Write side: one fragment per
 // clock in two steps -- the clock it is accepted its depth word is read, the next it is tested
 // and written; the depth word (id included) written the clock before is forwarded, so
 // back-to-back fragments to the same x see each other. frag_ready_o is combinational (low only
@@ -17,9 +18,9 @@
 // from the shade RAM's output register (and registered coverage and background), latency 1,
 // the same cycles as flops.
 // Sparse mode (sparse_i, stable per frame): the reader emits only the covered pixels of a line,
-// in raster order, one per clock: a find-next-written search over the read bank's written bits
-// at and above the current x picks the next one, found hierarchically (per 32-pixel word: which
-// words hold a candidate, then the first word's lowest bit), and the line ends with its last
+// in raster order, one per clock: the lowest written bit of the read bank is the next one (those
+// below the current x are already cleared), found hierarchically (per 32-pixel word: which
+// words hold one, then the first word's lowest bit), and the line ends with its last
 // covered pixel; a line with no covered pixel costs one cycle and emits nothing. The frame's
 // last beat (pixel_last_o) is the last covered pixel of the last line; when the last line has no
 // covered pixel (in particular when the frame covers none), a terminating beat with
@@ -77,55 +78,70 @@ module scanline_buffer #(
   endfunction
   /* verilator lint_on UNUSEDSIGNAL */
 
-  // ------------------------------------------------------------ read-side search (sparse)
-  // The read bank's written bits at or above rx_q; the lowest one is the next covered pixel.
-  // Two levels instead of one MaxWidth-bit priority encoder (whose borrow chain was the clock's
-  // limit): per 32-pixel word, does it hold a candidate; the first such word's lowest candidate.
+  // ------------------------------------------------------------ written bits
+  // One per pixel and bank, by x: bank b's pixel x is written_q[b * MaxWidth + x] (no bank-base
+  // adder on their paths; only the RAM addresses add it). The writer's bank is wsel_q's, the
+  // reader's the other. Decoded in two levels, a 32-pixel word and a bit in it.
   localparam int unsigned WordBits = 32;
   localparam int unsigned WIB      = $clog2(WordBits);
   localparam int unsigned Words    = (MaxWidth + WordBits - 1) / WordBits;
   localparam int unsigned WAB      = (Words > 1) ? $clog2(Words) : 1;
-  logic [MaxWidth-1:0]         rbits;
-  logic [Words*WordBits-1:0]   rpad;
-  logic [Words-1:0]            occ;       // word w holds a written x >= rx_q
-  logic [WordBits-1:0]         wcand [Words];
-  logic [WAB-1:0]              fw;        // first such word
-  logic [WordBits-1:0]         fword;     // its candidates
-  logic [WIB-1:0]              lb;        // lowest candidate in it
+  localparam int unsigned PB       = $clog2(Words * WordBits);  // an x in the padded words
+  logic [MaxWidth-1:0]       rbits, wbits;  // the read bank's and the write bank's
+  logic [Words*WordBits-1:0] rpad, wpad;
+  assign rbits = wsel_q ? written_q[MaxWidth-1:0] : written_q[2*MaxWidth-1:MaxWidth];
+  assign wbits = wsel_q ? written_q[2*MaxWidth-1:MaxWidth] : written_q[MaxWidth-1:0];
+  assign rpad  = (Words * WordBits)'(rbits);
+  assign wpad  = (Words * WordBits)'(wbits);
+
+  // ------------------------------------------------------------ read-side search (sparse)
+  // The lowest written bit of the read bank is the next covered pixel. No compare with rx_q is
+  // needed: the reader clears each pixel it takes and takes them lowest first, and the writer
+  // never touches the read bank after the swap (its last fragment lands on the swap clock, when
+  // rx_q is 0), so every written bit below rx_q is already clear (a_sparse_below_clear).
+  // Hierarchical (a MaxWidth-bit priority encoder's borrow chain was the clock's limit): per
+  // 32-pixel word, in parallel, whether it holds a written bit, its lowest one (as an index and as
+  // a one-hot mask) and whether it holds two; then the first occupied word, one-hot, selects them.
+  // The one-hot mask clears the pixel taken without decoding its x.
+  logic [Words-1:0]            occ;       // word w holds a written bit (sparse mode only)
+  logic [Words-1:0]            first;     // one-hot: the first such word
+  logic [Words-1:0]            multi;     // word w holds two or more (sparse mode only)
+  logic [WordBits-1:0]         wlow [Words];  // word w's lowest written bit, one-hot
+  logic [WIB-1:0]              wlb  [Words];  // and its index
+  logic [WAB-1:0]              fw;        // first occupied word
+  logic [WIB-1:0]              lb;        // its lowest written bit
   logic [LB-1:0]               nx;
   logic                        found, more;
-  /* verilator lint_off UNUSEDSIGNAL */
-  logic [LB-1:0]               cw;        // rx_q's word (rx_q <= MaxWidth: its top bits are zero)
-  /* verilator lint_on UNUSEDSIGNAL */
-
-  assign rbits = wsel_q ? written_q[MaxWidth-1:0] : written_q[2*MaxWidth-1:MaxWidth];
-  assign rpad  = (Words * WordBits)'(rbits);
-  assign cw    = rx_q >> WIB;
 
   for (genvar w = 0; w < Words; w++) begin : g_word
     logic [WordBits-1:0] bits;
-    assign bits = rpad[w*WordBits +: WordBits];
+    assign bits     = rpad[w*WordBits +: WordBits];
     // Only sparse mode reads the search: full mode keeps it idle.
-    assign wcand[w] = !sparse_i ? '0
-                    : (LB'(w) == cw) ? bits & ({WordBits{1'b1}} << rx_q[WIB-1:0])
-                    : (cw <= LB'(w)) ? bits : '0;
-    assign occ[w] = |wcand[w];
+    assign occ[w]   = sparse_i && |bits;
+    assign multi[w] = sparse_i && |(bits & (bits - 1'b1));
+    assign wlow[w]  = bits & (~bits + 1'b1);
+    always_comb begin
+      wlb[w] = '0;
+      for (int i = WordBits - 1; i >= 0; i--) if (bits[i]) wlb[w] = WIB'(i);
+    end
   end
 
   always_comb begin
+    first = occ & ~(occ - 1'b1);
     fw = '0;
-    for (int w = Words - 1; w >= 0; w--) if (occ[w]) fw = WAB'(w);
-    fword = wcand[fw];
     lb = '0;
-    for (int i = WordBits - 1; i >= 0; i--) if (fword[i]) lb = WIB'(i);
+    for (int w = 0; w < Words; w++) begin
+      if (first[w]) fw = WAB'(w);
+      lb |= first[w] ? wlb[w] : '0;
+    end
     found = |occ;
-    // Another candidate after the found one: in the same word, or in a later word.
-    more  = |(fword & (fword - 1'b1)) || |(occ & (occ - 1'b1));
+    // Another written bit after the found one: two in one word, or two words with one.
+    more  = |multi || |(occ & (occ - 1'b1));
     nx    = LB'({fw, lb});
   end
 
   // ------------------------------------------------------------ write side
-  logic          frag_fire, rd_load, rd_step, rd_emit, rd_last, rd_lastline, eol_ok;
+  logic          frag_take, eol_take, rd_load, rd_step, rd_emit, rd_last, rd_lastline, eol_ok;
   logic [LB-1:0]       rd_x;
   logic [AddrBits-1:0] wa, ra;
 
@@ -142,13 +158,17 @@ module scanline_buffer #(
   // The marker may swap in the cycle the reader takes its last pixel (it reads the old bank).
   assign eol_ok       = !rd_busy_q || (rd_step && rd_last);
   assign frag_ready_o = !frag_eol_i || eol_ok;
-  assign frag_fire    = frag_valid_i && frag_ready_o;
+  // A fragment is always taken (not through frag_ready_o: that waits on the search's last).
+  assign frag_take    = frag_valid_i && !frag_eol_i;
+  assign eol_take     = frag_valid_i && frag_eol_i && eol_ok;
 
   // Step 1 (the accepting clock): read the depth word. Step 2: test against it -- or against the
   // word written the clock before at the same address, which the RAM read did not see yet --
   // and write. written_q already holds that previous write.
   logic                 t_valid_q, lw_valid_q;
   logic [AddrBits-1:0]  t_addr_q, lw_addr_q;
+  logic [LB-1:0]        t_x_q;     // t_addr_q's x (its bank is wsel_q's: a marker swaps only after)
+  logic                 t_written; // the pixel already has a fragment
   logic [DWB-1:0]       t_word_q, lw_word_q, mem_word_q, old_word;
   logic [DepthBits-1:0] t_depth, old_depth;
   logic [PolyIdBits-1:0] t_poly, old_poly;
@@ -156,9 +176,10 @@ module scanline_buffer #(
   logic                 wins, tie_wins;
 
   always_ff @(posedge clk_i) begin
-    if (frag_fire && !frag_eol_i) mem_word_q <= depth_mem[wa];
-    if (frag_fire && !frag_eol_i) begin
+    if (frag_take) mem_word_q <= depth_mem[wa];
+    if (frag_take) begin
       t_addr_q <= wa;
+      t_x_q    <= frag_x_i;
       t_word_q <= {frag_poly_i, frag_depth_i};
       t_rgb_q  <= frag_rgb_i;
     end
@@ -172,7 +193,8 @@ module scanline_buffer #(
   // A tie goes to a strictly smaller id only: equal ids (one polygon's own spans) keep the first
   // arrival, as the model does.
   assign tie_wins  = tie_submission_i && t_depth == old_depth && t_poly < old_poly;
-  assign wins      = t_valid_q && (!written_q[t_addr_q] || (t_depth < old_depth) || tie_wins);
+  assign t_written = wpad[t_x_q[PB-1:0]];
+  assign wins      = t_valid_q && (!t_written || (t_depth < old_depth) || tie_wins);
 
   always_ff @(posedge clk_i) begin
     if (wins) begin
@@ -180,6 +202,41 @@ module scanline_buffer #(
       rgb_mem[t_addr_q]   <= t_rgb_q;
     end
   end
+
+  // The written bits' update. Every fragment tested sets its pixel's bit, winner or not (a loser
+  // found the bit set already), so the depth test is not on this path. The pixel the reader
+  // takes is cleared: full mode x = rx_q; sparse, the search's one-hot. Both only when the
+  // reader takes a pixel: take is rd_load without the search (full mode emits every step; the
+  // search's one-hot is non-zero only when it found one, when rd_emit holds).
+  logic                      take;
+  logic [Words-1:0]          rx_word, t_word;  // one-hot words of rx_q and t_x_q
+  logic [WordBits-1:0]       rx_bit, t_bit;    // one-hot bits in them
+  /* verilator lint_off UNUSEDSIGNAL */
+  logic [Words*WordBits-1:0] set_pad, clr_pad;  // their padding is unused
+  /* verilator lint_on UNUSEDSIGNAL */
+  logic [2 * MaxWidth - 1:0] written_d;
+  logic                      covered;          // the pixel the reader takes is written
+  assign take = rd_busy_q && (!pixel_valid_o || pixel_ready_i);
+  for (genvar w = 0; w < Words; w++) begin : g_word_hot
+    assign rx_word[w] = (rx_q >> WIB) == LB'(w);
+    assign t_word[w]  = (t_x_q >> WIB) == LB'(w);
+  end
+  for (genvar i = 0; i < WordBits; i++) begin : g_bit_hot
+    assign rx_bit[i] = rx_q[WIB-1:0] == WIB'(i);
+    assign t_bit[i]  = t_x_q[WIB-1:0] == WIB'(i);
+  end
+  for (genvar w = 0; w < Words; w++) begin : g_word_upd
+    logic rx_take, first_take;
+    assign rx_take    = take && rx_word[w];
+    assign first_take = take && first[w];
+    assign set_pad[w*WordBits +: WordBits] = (t_valid_q && t_word[w]) ? t_bit : '0;
+    assign clr_pad[w*WordBits +: WordBits] = sparse_i ? (first_take ? wlow[w] : '0)
+                                                      : (rx_take ? rx_bit : '0);
+  end
+  // Sparse: the pixel found is written (none found: the terminating beat is not).
+  assign covered   = sparse_i ? found : rpad[rx_q[PB-1:0]];
+  assign written_d = wsel_q ? {wbits | set_pad[MaxWidth-1:0], rbits & ~clr_pad[MaxWidth-1:0]}
+                            : {rbits & ~clr_pad[MaxWidth-1:0], wbits | set_pad[MaxWidth-1:0]};
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
@@ -192,12 +249,11 @@ module scanline_buffer #(
       rline_q       <= '0;
       pixel_valid_o <= 1'b0;
     end else begin
-      t_valid_q  <= frag_fire && !frag_eol_i;
+      t_valid_q  <= frag_take;
       lw_valid_q <= wins;
       // Reader and writer always use different banks, so their updates never collide (a
       // fragment still being tested belongs to the bank the reader starts on only after it).
-      if (wins) written_q[t_addr_q] <= 1'b1;
-      if (rd_load) written_q[ra] <= 1'b0;
+      written_q  <= written_d;
       if (rd_step) begin
         rx_q <= rd_x + 1'b1;
         if (rd_last) begin
@@ -206,7 +262,7 @@ module scanline_buffer #(
         end
       end
       if (!pixel_valid_o || pixel_ready_i) pixel_valid_o <= rd_load;
-      if (frag_fire && frag_eol_i) begin
+      if (eol_take) begin
         wsel_q    <= !wsel_q;
         rd_busy_q <= 1'b1;
         rx_q      <= '0;
@@ -221,7 +277,7 @@ module scanline_buffer #(
     if (rd_load) begin
       rgb_rd_q        <= rgb_mem[ra];
       background_q    <= background_i;
-      pixel_covered_o <= written_q[ra];
+      pixel_covered_o <= covered;
       pixel_x_o       <= rd_x;
       pixel_y_o       <= rline_q;
       pixel_last_o    <= rd_last && rd_lastline;
@@ -234,13 +290,32 @@ module scanline_buffer #(
   `WATKINS_ASSERT_HOLD(a_out_hold, pixel_valid_o, pixel_ready_i, {pixel_rgb_o, pixel_covered_o,
     pixel_last_o, pixel_x_o, pixel_y_o})
   `WATKINS_ASSERT(a_sparse_covered, rd_load && sparse_i && !(rd_last && rd_lastline) |-> found)
+`ifndef SYNTHESIS
+  // One-bit probes: the properties sample them, not the whole written vector (Verilator 5.006
+  // emits an undeclared loop variable for a sampled vector this wide).
+  // Public, so that Verilator keeps them as variables instead of inlining the vector back in.
+  logic below_dirty /* verilator public_flat_rd */;
+  logic ra_written /* verilator public_flat_rd */;
+  logic t_written_p /* verilator public_flat_rd */;
+  logic t_addr_ok /* verilator public_flat_rd */;
+  assign below_dirty = |(rbits & ~({MaxWidth{1'b1}} << rx_q));
+  assign ra_written  = written_q[ra];
+  assign t_written_p = written_q[t_addr_q];
+  assign t_addr_ok   = t_addr_q == addr(wsel_q, t_x_q);
+`endif
+  // Why the sparse search needs no rx_q compare, and why covered needs no read at ra.
+  `WATKINS_ASSERT(a_sparse_below_clear, rd_busy_q && sparse_i |-> !below_dirty)
+  `WATKINS_ASSERT(a_covered_is_written, rd_load |-> covered == ra_written)
+  // Why the written bits need neither the bank-base adder nor the depth test.
+  `WATKINS_ASSERT(a_tested_in_write_bank, t_valid_q |-> t_addr_ok)
+  `WATKINS_ASSERT(a_loser_was_written, t_valid_q && !wins |-> t_written_p)
   `WATKINS_ASSERT(a_banks_apart, t_valid_q && rd_load |-> t_addr_q != ra)
   `WATKINS_COVER(c_sparse_empty_line, rd_step && !rd_emit)
   `WATKINS_ASSERT(a_x_in_line, frag_valid_i && !frag_eol_i |-> frag_x_i < width_i)
   `WATKINS_COVER(c_same_x_back_to_back,
-    frag_fire && !frag_eol_i && $past(frag_fire && !frag_eol_i) && frag_x_i == $past(frag_x_i))
+    frag_take && $past(frag_take) && frag_x_i == $past(frag_x_i))
   `WATKINS_COVER(c_forwarded, t_valid_q && lw_valid_q && lw_addr_q == t_addr_q)
   `WATKINS_COVER(c_eol_waits, frag_valid_i && !frag_ready_o)
-  `WATKINS_COVER(c_tie_won, t_valid_q && written_q[t_addr_q] && tie_wins)
+  `WATKINS_COVER(c_tie_won, t_valid_q && t_written_p && tie_wins)
   `WATKINS_COVER(c_tie_forwarded, t_valid_q && lw_valid_q && lw_addr_q == t_addr_q && tie_wins)
 endmodule

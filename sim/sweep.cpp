@@ -171,7 +171,8 @@ std::string read_text(const std::string& path) {
 }
 
 // The scene text with the first "u" and "v" (the first tessellated object's) scaled by f: u >= 3
-// (a closed ring), v >= 1. Returns the values used.
+// (a closed ring), v >= 1; a cross_vault's or portico's u rounded to the nearest even count, at
+// least 2 (the key of the vault is a vertex). Returns the values used.
 std::string retessellate(const std::string& text, const std::string& path, double f, int& u, int& v) {
   std::string out = text;
   for (int axis = 0; axis < 2; ++axis) {
@@ -180,7 +181,17 @@ std::string retessellate(const std::string& text, const std::string& path, doubl
     if (!std::regex_search(out, m, re))
       throw std::runtime_error(path + ": no tessellated object (\"u\", \"v\") to sweep");
     const int n0 = std::stoi(m[1].str());
-    const int n = std::max(axis == 0 ? 3 : 1, static_cast<int>(std::lround(n0 * f)));
+    int n = std::max(axis == 0 ? 3 : 1, static_cast<int>(std::lround(n0 * f)));
+    if (axis == 0) {
+      // The object holding this "u": scene objects are flat (no nested objects), so it spans the
+      // braces around the match.
+      const std::size_t at = std::size_t(m.position(0));
+      const std::size_t open = out.rfind('{', at), close = out.find('}', at);
+      const std::string object = out.substr(open == std::string::npos ? 0 : open,
+                                            close == std::string::npos ? std::string::npos : close - open);
+      if (std::regex_search(object, std::regex(R"re("type"\s*:\s*"(cross_vault|portico)")re")))
+        n = std::max(2, 2 * static_cast<int>(std::lround(n0 * f / 2)));
+    }
     (axis == 0 ? u : v) = n;
     out = m.prefix().str() + (axis == 0 ? "\"u\": " : "\"v\": ") + std::to_string(n) + m.suffix().str();
   }
@@ -426,7 +437,7 @@ CLI::App* add_sweep_command(CLI::App& app, SweepArgs& a) {
       ->delimiter(',')
       ->check(CLI::IsMember({"flat", "gouraud-eq1", "gouraud-eq2", "phong"}))
       ->capture_default_str();
-  s->add_option("--tess", a.tess, "factors on the first object's u and v (u >= 3, v >= 1)")
+  s->add_option("--tess", a.tess, "factors on the first object's u and v (u >= 3, v >= 1; a vault's u rounded to even)")
       ->delimiter(',')
       ->check(CLI::Range(0.01, 64.0))
       ->capture_default_str();

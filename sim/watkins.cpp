@@ -298,11 +298,11 @@ int render(const RenderArgs& a) {
   Config cfg = a.config.empty() ? Config{} : load_config(a.config);
   if (a.max_active_edges_given || a.config.empty()) cfg.max_active_edges = a.max_active_edges;
   const BuiltScene scene = load_scene_or_default(a.scene, opt);
-  if (scene.source)  // nor an OBJ file the scene reads
+  if (scene.source)  // nor a mesh file (OBJ or STL) the scene reads
     for (const auto& o : outputs)
       for (const SceneObject& obj : scene.source->objects)
         if (obj.type == ObjectType::Mesh && same_file(o.second, obj.file))
-          throw UsageError(o.first + " " + o.second + " is the OBJ file of " + obj.field + "; refusing to overwrite it");
+          throw UsageError(o.first + " " + o.second + " is the mesh file of " + obj.field + "; refusing to overwrite it");
   const PreparedScene prepared = prepare(scene, cfg);
   check_rtl_config(a.rtl, prepared, a.config);  // --rtl
   const double t_prep = seconds_since(t0);

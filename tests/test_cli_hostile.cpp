@@ -72,8 +72,16 @@ TEST_F(CliHostile, OutputOverAnInputIsRefused) {
   write("m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
   write("m.json", R"({"screen": {"width": 16, "height": 16}, "objects": [{"type": "mesh", "file": "m.obj",
       "normals": "average", "translate": [0, 0, 5]}]})");
-  expect("render m.json --out m.obj", 2, "--out m.obj is the OBJ file of objects[0]");
+  expect("render m.json --out m.obj", 2, "--out m.obj is the mesh file of objects[0]");
   EXPECT_EQ(contents("m.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  // Nor an STL file.
+  const std::string stl = "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+                          "endloop\nendfacet\nendsolid t\n";
+  write("m.stl", stl);
+  write("n.json", R"({"screen": {"width": 16, "height": 16}, "objects": [{"type": "mesh", "file": "m.stl",
+      "translate": [0, 0, 5]}]})");
+  expect("render n.json --out m.stl", 2, "--out m.stl is the mesh file of objects[0]");
+  EXPECT_EQ(contents("m.stl"), stl);
 }
 
 TEST_F(CliHostile, PngWriteErrorsAreReported) {
@@ -139,7 +147,7 @@ TEST_F(CliHostile, BadInputFilesGiveOneLineAndExitOne) {
   expect("render /dev/zero --out a.png", 1, "/dev/zero: scene file is larger than 16 MiB (the limit)");
   write("z.json", R"({"screen": {"width": 16, "height": 16}, "objects": [{"type": "mesh", "file": "/dev/zero",
       "normals": "average"}]})");
-  expect("render z.json --out a.png", 1, "z.json: objects[0].file: OBJ file \"/dev/zero\" is not a regular file");
+  expect("render z.json --out a.png", 1, "z.json: objects[0].file: mesh file \"/dev/zero\" is not a regular file");  // no .obj or .stl: told by content
   write("d.json", R"({"screen": {"width": 16, "height": 16, "height": 8}, "objects": []})");
   const CliRun r = expect("render d.json --out a.png", 1, "watkins: error: d.json: screen: duplicate key \"height\"");
   EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;

@@ -22,11 +22,14 @@
 #include "build_options.hpp"
 #include "cli_run.hpp"
 #include "float_reference.hpp"
+#include "mesh_polygons.hpp"
+#include "mesh_stl.hpp"
 #include "prepare.hpp"
 #include "scene.hpp"
 #include "scene_types.hpp"
 #include "stl_export.hpp"
 #include "surfaces.hpp"
+#include "test_support.hpp"
 #include "watkins_top.hpp"
 
 using namespace watkins;
@@ -356,4 +359,192 @@ TEST(StlExport, CommandLineWritesTheShippedFile) {
   const test::CliRun bad = test::run_cli("export-stl " + dir.path("missing.json") + " --out " + dir.path("x.stl"));
   EXPECT_EQ(bad.exit_code, 1) << bad.output;
   EXPECT_FALSE(dir.has("x.stl"));
+}
+
+// ---- crease-angle normals on the analytic surfaces --------------------------------------------
+
+namespace {
+
+// A corner of one bay seen from inside at eye height, so the groin rises from the springing corner
+// (the bottom of the picture) up the middle; u = 16, v = 1 as the portico. `crease` "" keeps the
+// exact normals.
+BuiltScene vault_corner(const std::string& crease, const char* mode) {
+  const std::string key = crease.empty() ? "" : R"(, "crease_angle_deg": )" + crease;
+  const std::string text = R"({"screen": {"width": 192, "height": 144},
+    "camera": {"type": "lookat", "eye": [-0.3, 0.2, 0.1], "target": [2, 0.9, 2], "up": [0, 1, 0], "fov_deg": 60,
+               "near": 0.5, "far": 100},
+    "light": {"type": "directional", "direction": [-0.5, -1, -0.3]},
+    "shading": {"mode": ")" + std::string(mode) + R"(", "rule": "phong"},
+    "materials": {"m": {"color": [0.8, 0.8, 0.8], "d": 0.2, "W": 0.25, "n": 10}},
+    "objects": [{"type": "cross_vault", "span": 4, "rise": 2, "u": 16, "v": 1, "material": "m")" + key + "}]}";
+  return load_scene_text(text, "corner.json", ".");
+}
+
+// The largest channel difference between pixel (x, y) and (x + 1, y); -1 when either is uncovered.
+int step_at(const Image& img, int x, int y) {
+  if (!img.is_covered(x, y) || !img.is_covered(x + 1, y)) return -1;
+  int s = 0;
+  for (int c = 0; c < 3; ++c) s = std::max(s, std::abs(int(img.at(x, y)[c]) - int(img.at(x + 1, y)[c])));
+  return s;
+}
+
+}  // namespace
+
+// The groin's two webs meet at an angle that grows from 0 at the key to 90 degrees at the
+// springing (cos = cos^2 of the arch angle for a semicircular bay): over 80 degrees in its lowest
+// ~40 % only. There, at 80 the crease rule keeps the shade jump the exact normals have; at 180 the
+// webs are smoothed into each other and the jump goes. Both pipelines. The groin is found on each
+// row as the largest step of the exact-normal image (a jump of 15+ levels; smooth elsewhere).
+TEST(CreaseSurface, GroinSharpAt80NearTheSpringingAndSmoothAt180) {
+  for (const char* mode : {"gouraud", "phong"}) {
+    const BuiltScene exact_s = vault_corner("", mode), s80 = vault_corner("80", mode), s180 = vault_corner("180", mode);
+    const Image exact = test::render_fixed(exact_s), i80 = test::render_fixed(s80), i180 = test::render_fixed(s180);
+    std::vector<std::pair<int, int>> groin;  // (x, y), top to bottom
+    for (int y = 0; y < exact_s.height; ++y) {
+      int best = -1, bx = -1;
+      for (int x = 0; x + 1 < exact_s.width; ++x)
+        if (step_at(exact, x, y) > best) best = step_at(exact, x, y), bx = x;
+      if (best > 15) groin.push_back({bx, y});
+    }
+    ASSERT_GT(groin.size(), 60u) << mode;
+    // The lowest rows: the groin's sharp part, a jump at 80 as with exact normals, none at 180.
+    const std::size_t low = 16;
+    int min80 = 255, max180 = 0, max_exact = 0;
+    for (std::size_t k = groin.size() - low; k < groin.size(); ++k) {
+      const auto [x, y] = groin[k];
+      min80 = std::min(min80, step_at(i80, x, y));
+      max180 = std::max(max180, step_at(i180, x, y));
+      max_exact = std::max(max_exact, step_at(exact, x, y));
+    }
+    EXPECT_GT(min80, 20) << mode;
+    EXPECT_LE(max180, 10) << mode;
+    // Near the key the webs are less than 80 degrees apart: smoothed at 80 too.
+    int max80_top = 0;
+    for (std::size_t k = 0; k < 20; ++k) max80_top = std::max(max80_top, step_at(i80, groin[k].first, groin[k].second));
+    EXPECT_LE(max80_top, 10) << mode;
+  }
+}
+
+// The crease rule replaces the normals only: the positions are the tessellation's (welded copies
+// become one vertex), the faces keep their order, and at 180 degrees a smooth surface's normals
+// are close to its exact ones (the sphere: the faces around a vertex average to within a few
+// degrees). The cone's rim stays sharp at 80 (its cap keeps the axis) and is smoothed at 180 (its
+// apex, one welded vertex, takes the axis at both); without the key the exact normals are kept.
+TEST(CreaseSurface, ReplacesOnlyTheNormalsAndApproachesTheExactOnes) {
+  for (const char* obj : {R"({"type": "sphere", "radius": 1.5, "u": 24, "v": 12)",
+                          R"({"type": "cone", "radius": 1, "height": 2, "u": 24, "v": 4)"}) {
+    const SceneObject exact_o = parse_one(std::string(obj) + "}");
+    const IndexedMesh exact = tessellate_surface(exact_o);
+    for (const char* a : {"80", "180"}) {
+      const SceneObject o = parse_one(std::string(obj) + R"(, "crease_angle_deg": )" + a + "}");
+      EXPECT_EQ(o.normals, MeshNormals::Crease);
+      const IndexedMesh plain = tessellate_surface(o);  // the crease is applied by the builder
+      ASSERT_EQ(plain.normal, exact.normal);
+      IndexedMesh m = plain;
+      crease_surface_normals(m, o);
+      ASSERT_EQ(m.faces.size(), exact.faces.size()) << obj;
+      std::set<Key> before, after;
+      for (const auto& p : exact.position) before.insert(key(p));
+      for (const auto& p : m.position) after.insert(key(p));
+      for (const Key& k : after) EXPECT_TRUE(before.count(k)) << obj;
+      double worst_side = 0;  // the sphere: the largest angle to the exact normal at the same position
+      int rim_sharp = 0;
+      for (std::size_t f = 0; f < m.faces.size(); ++f)
+        for (int k = 0; k < m.faces[f].n; ++k) {
+          const glm::dvec3 n = m.normal[std::size_t(m.faces[f].idx[k])];
+          const glm::dvec3 e = exact.normal[std::size_t(exact.faces[f].idx[k])];
+          EXPECT_NEAR(glm::length(n), 1, 1e-12);
+          if (exact_o.type == ObjectType::Cone) {
+            if (std::fabs(e.y + 1) < 1e-12) rim_sharp += glm::dot(n, e) > 1 - 1e-12;  // the cap
+            continue;
+          }
+          worst_side = std::max(worst_side, std::acos(std::min(1.0, glm::dot(n, e))) * 180 / 3.14159265358979);
+        }
+      if (exact_o.type == ObjectType::Cone) {
+        if (std::string(a) == "80") EXPECT_GE(rim_sharp, 2 * 24) << "the cap stays flat up to the rim";
+        else EXPECT_EQ(rim_sharp, 24) << "the rim is smoothed: only the cap fan's centre corners keep the axis";
+      } else {
+        EXPECT_LT(worst_side, 8.0) << a;
+      }
+    }
+  }
+}
+
+// At 180 degrees every copy of a groin vertex gets one normal (welded by position first), so the
+// portico has fewer vertices than with exact normals; at 0 every face is flat.
+TEST(CreaseSurface, GroinCopiesWeldAt180AndFacesAreFlatAt0) {
+  const char* portico = R"({"type": "portico", "bays": 2, "span": 4, "rise": 2, "pier": 0.5, "springing": 3, "u": 8, "v": 1)";
+  const IndexedMesh exact = tessellate_surface(parse_one(std::string(portico) + "}"));
+  std::map<Key, std::set<Key>> normals_at;
+  const SceneObject o180 = parse_one(std::string(portico) + R"(, "crease_angle_deg": 180})");
+  IndexedMesh m = tessellate_surface(o180);
+  crease_surface_normals(m, o180);
+  std::set<Key> positions;
+  for (const auto& p : exact.position) positions.insert(key(p));
+  EXPECT_EQ(m.position.size(), positions.size()) << "one vertex per position at 180";
+  const SceneObject o0 = parse_one(std::string(portico) + R"(, "crease_angle_deg": 0})");
+  IndexedMesh flat = tessellate_surface(o0);
+  crease_surface_normals(flat, o0);
+  for (const auto& f : flat.faces)
+    for (int k = 1; k < f.n; ++k)
+      EXPECT_NEAR(glm::length(flat.normal[std::size_t(f.idx[k])] - flat.normal[std::size_t(f.idx[0])]), 0, 1e-9);
+  EXPECT_GT(flat.position.size(), exact.position.size());  // every face's corners its own
+}
+
+// The shipped STL bay against the built-in bay it was exported from, same camera and light: at
+// crease 0 the images are identical in both pipelines (same positions, same flat normals); at 80
+// every vertex normal agrees to 1e-9 (the same rule on the same welded positions). The images at 80
+// then differ only where the built-in's planar quads are interpolated as quads and the STL's as
+// two triangles each (README, "STL against the built-in bay").
+TEST(CreaseSurface, StlBayAgreesWithTheBuiltInBay) {
+  std::ifstream in(WATKINS_SOURCE_DIR "/scenes/vault_bay.json");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string object = R"({"type": "portico", "bays": 1, "span": 4, "rise": 2, "pier": 0.6, "springing": 4, "max_edge_length": 1,
+     "material": "stone"})";
+  ASSERT_NE(text.find(object), std::string::npos);
+  auto with = [&](const std::string& replacement) {
+    std::string t = text;
+    t.replace(t.find(object), object.size(), replacement);
+    return t;
+  };
+  const test::PhongVsGouraud opt = test::phong_vs_gouraud();
+  for (const BuildOptions* b : {&opt.gouraud, &opt.phong}) {
+    const BuiltScene builtin = load_scene_text(with(R"({"type": "portico", "bays": 1, "span": 4, "rise": 2, "pier": 0.6,
+        "springing": 4, "max_edge_length": 1, "crease_angle_deg": 0, "material": "stone"})"),
+                                               "bay", WATKINS_SOURCE_DIR "/scenes", *b);
+    const BuiltScene stl = load_scene_text(with(R"({"type": "mesh", "file": "vault_bay.stl", "crease_angle_deg": 0,
+        "material": "stone"})"), "bay", WATKINS_SOURCE_DIR "/scenes", *b);
+    const Image a = test::render_fixed(builtin), c = test::render_fixed(stl);
+    int differ = 0, covered = 0;
+    for (int y = 0; y < a.height; ++y)
+      for (int x = 0; x < a.width; ++x) {
+        covered += a.is_covered(x, y);
+        bool same = a.is_covered(x, y) == c.is_covered(x, y);
+        for (int ch = 0; ch < 3; ++ch) same = same && a.at(x, y)[ch] == c.at(x, y)[ch];
+        differ += !same;
+      }
+    EXPECT_GT(covered, 10000);
+    EXPECT_EQ(differ, 0);
+  }
+  const Scene sc = parse_scene(with(R"({"type": "portico", "bays": 1, "span": 4, "rise": 2, "pier": 0.6, "springing": 4,
+      "max_edge_length": 1, "crease_angle_deg": 80}, {"type": "mesh", "file": "vault_bay.stl", "crease_angle_deg": 80})"),
+                               "bay", WATKINS_SOURCE_DIR "/scenes");
+  IndexedMesh builtin = tessellate_surface(sc.objects.at(0));
+  crease_surface_normals(builtin, sc.objects.at(0));
+  int degenerate = 0;
+  const IndexedMesh stl = load_mesh_file(sc.objects.at(1), "bay", std::size_t{1} << 20, false, degenerate);
+  ASSERT_EQ(builtin.position.size(), stl.position.size());
+  // Positions: the STL's are float32, so matched to 1e-6 (a bay of 4 m).
+  std::map<Key, std::vector<glm::dvec3>> by_position;
+  auto rounded = [](const glm::dvec3& p) {
+    return Key{std::round(p.x * 1e5), std::round(p.y * 1e5), std::round(p.z * 1e5)};
+  };
+  for (std::size_t k = 0; k < stl.position.size(); ++k) by_position[rounded(stl.position[k])].push_back(stl.normal[k]);
+  for (std::size_t k = 0; k < builtin.position.size(); ++k) {
+    const auto it = by_position.find(rounded(builtin.position[k]));
+    ASSERT_NE(it, by_position.end());
+    double best = 2;
+    for (const glm::dvec3& n : it->second) best = std::min(best, glm::length(n - builtin.normal[k]));
+    EXPECT_LT(best, 1e-6);
+  }
 }

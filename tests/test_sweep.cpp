@@ -218,6 +218,26 @@ TEST_F(SweepCli, TinySweepWritesTheColumnsAndPhongBeatsGouraudOnTheSphere) {
   EXPECT_NE(text.str().find("| sphere | phong | 16×8 |"), std::string::npos) << text.str();
 }
 
+// A vault's u must be even (the key is a vertex): the portico's u = 10 halved is 5, which the
+// scene would refuse; the sweep rounds it to 6 and the point renders.
+TEST_F(SweepCli, VaultTessellationStaysEven) {
+  const std::string csv = dir_ + "/v.csv";
+  int code = 0;
+  const std::string out = run("sweep " + std::string(WATKINS_SOURCE_DIR) +
+                                  "/scenes/portico.json --shadings phong --tess 0.5,0.3 --csv " + csv,
+                              &code);
+  ASSERT_EQ(code, 0) << out;
+  std::vector<std::string> header;
+  const auto rows = read_csv(csv, &header);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0].at("u"), "6");  // 5 rounded to even
+  EXPECT_EQ(rows[1].at("u"), "4");  // 3 rounded to even
+  for (const auto& r : rows) {
+    EXPECT_EQ(r.at("error"), "") << r.at("u");
+    EXPECT_GT(std::stoll(r.at("polygons")), 0);
+  }
+}
+
 // The fraction-bits axis: two attribute fractions and one the configuration refuses (shade
 // 60 + its 9 natural integer bits exceed the model's 62-bit words). Fewer fraction bits: a
 // smaller edge record, an error against the double reference that does not fall; the refused

@@ -4,24 +4,16 @@
 // became a wrong polygon), reads "nan" and garbage tokens as 0 and wraps indices past 2^63.
 #include "mesh_obj.hpp"
 
-#include <sys/stat.h>
+#include "mesh_polygons.hpp"
 
-#include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <cstring>
-#include <fstream>
-#include <map>
 #include <utility>
 
 #include <glm/geometric.hpp>
 
 namespace watkins {
 namespace {
-
-constexpr double kMaxMagnitude = 1e9;  // as scene numbers: products stay far from overflow
-
-glm::dvec3 mirror_z(const glm::dvec3& v) { return {v.x, v.y, -v.z}; }
 
 // The whitespace-separated tokens of one line, comment removed.
 std::vector<std::string_view> tokens(std::string_view line) {
@@ -48,14 +40,8 @@ class ObjReader {
   }
 
   double number(std::string_view t, const char* what) const {
-    std::string_view s = t;
-    if (!s.empty() && s[0] == '+') s.remove_prefix(1);
     double x = 0;
-    const auto r = std::from_chars(s.data(), s.data() + s.size(), x);
-    if (s.empty() || r.ec != std::errc() || r.ptr != s.data() + s.size() || !std::isfinite(x))
-      fail(std::string(what) + ": expected a finite number, got " + quote_input(std::string(t)));
-    if (std::fabs(x) > kMaxMagnitude)
-      fail(std::string(what) + ": expected a number of magnitude at most 1e9, got " + quote_input(std::string(t)));
+    if (const std::string e = mesh_number(t, x); !e.empty()) fail(std::string(what) + ": " + e);
     return x;
   }
 
@@ -183,66 +169,30 @@ IndexedMesh obj_mesh_from_text(const std::string& text, const SceneObject& o, co
   }
   r.at_line(0);
 
-  // Averaged normals: sum of Newell normals (length = twice the face area), i.e. area-weighted,
-  // computed in the file's own right-handed frame where counter-clockwise faces point outward.
-  std::vector<glm::dvec3> avg;
-  if (o.normals == MeshNormals::Average) {
-    avg.assign(pos.size(), glm::dvec3(0.0));
-    for (const auto& f : r.faces) {
-      glm::dvec3 nw(0.0);
-      for (size_t k = 0; k < f.v.size(); ++k) nw += glm::cross(pos[f.v[k].first], pos[f.v[(k + 1) % f.v.size()].first]);
-      for (const auto& pv : f.v) avg[pv.first] += nw;
-    }
-  }
-
-  IndexedMesh m;
-  std::map<std::pair<long long, long long>, int> index;  // (position, normal) -> vertex: shared vertices stay shared
-  auto vertex = [&](const ObjReader::Face& f, const std::pair<long long, long long>& pv) {
-    auto it = index.find(pv);
-    if (it != index.end()) return it->second;
-    const glm::dvec3 n = o.normals == MeshNormals::File ? r.normal[pv.second] : avg[pv.first];
-    const double len = glm::length(n);
-    if (!std::isfinite(len) || len < 1e-300) {
-      r.at_line(f.line);
-      r.fail("f: zero or invalid vertex normal");
-    }
-    m.position.push_back(mirror_z(pos[pv.first]));
-    m.normal.push_back(mirror_z(n / len));
-    const int id = static_cast<int>(m.position.size()) - 1;
-    index.emplace(pv, id);
-    return id;
-  };
-  // Faces keep the file's order: mirroring z both reverses the handedness and the apparent
-  // winding, so a face counter-clockwise from outside in the file stays front-facing here.
-  // Polygons of more than 4 vertices become a fan of triangles (right for convex faces).
+  PolygonMesh pm;
+  pm.position = std::move(r.position);
+  pm.normal = std::move(r.normal);
+  pm.faces.reserve(r.faces.size());
   for (const auto& f : r.faces) {
-    std::vector<int> id;
-    id.reserve(f.v.size());
-    for (const auto& pv : f.v) id.push_back(vertex(f, pv));
-    if (id.size() == 4 && !o.triangles) {
-      m.faces.push_back({4, {id[0], id[1], id[2], id[3]}});
-    } else {
-      for (size_t k = 1; k + 1 < id.size(); ++k) m.faces.push_back({3, {id[0], id[k], id[k + 1], 0}});
+    PolygonMesh::Face pf;
+    pf.origin = f.line;
+    for (const auto& pv : f.v) {
+      pf.position.push_back(static_cast<int>(pv.first));  // < 2^31: the file is at most 64 MiB
+      pf.normal.push_back(static_cast<int>(pv.second));
     }
+    pm.faces.push_back(std::move(pf));
   }
-  return m;
+  const MeshFail fail = [&r](long line, const std::string& what) {
+    r.at_line(line);
+    r.fail(line ? "f: " + what : what);
+  };
+  resolve_normals(pm, o, fail);
+  if (o.max_edge_length > 0) split_long_edges(pm, o.max_edge_length, o.transform.scale, max_faces, fail);
+  return indexed_mesh_from_polygons(pm, o, fail);
 }
 
 IndexedMesh load_obj_mesh(const SceneObject& o, const std::string& where, std::size_t max_faces) {
-  struct stat st {};
-  if (::stat(o.file.c_str(), &st) != 0)
-    throw SceneError(where + ": cannot open OBJ file " + quote_input(o.file) + ": " + std::strerror(errno));
-  if (!S_ISREG(st.st_mode)) throw SceneError(where + ": OBJ file " + quote_input(o.file) + " is not a regular file");
-  if (st.st_size > kMaxObjBytes)
-    throw SceneError(where + ": OBJ file " + quote_input(o.file) + " is " + std::to_string(st.st_size) +
-                     " bytes, over the limit of " + std::to_string(kMaxObjBytes));
-  std::ifstream in(o.file, std::ios::binary);
-  if (!in) throw SceneError(where + ": cannot open OBJ file " + quote_input(o.file) + ": " + std::strerror(errno));
-  std::string text(static_cast<size_t>(st.st_size), '\0');
-  in.read(text.data(), st.st_size);
-  text.resize(static_cast<size_t>(in.gcount()));
-  if (in.bad()) throw SceneError(where + ": cannot read OBJ file " + quote_input(o.file));
-  return obj_mesh_from_text(text, o, where, max_faces);
+  return obj_mesh_from_text(read_mesh_file(o, where, "OBJ"), o, where, max_faces);
 }
 
 }  // namespace watkins

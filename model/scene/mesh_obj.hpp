@@ -8,8 +8,6 @@
 
 namespace watkins {
 
-// Largest OBJ file read (larger ones, and anything not a regular file, are refused unread).
-constexpr long long kMaxObjBytes = 64ll << 20;
 
 // Loads o.file into object space. OBJ is right-handed by convention, the Watkins world is
 // left-handed: z is negated on load so the model looks as authored and keeps its winding.

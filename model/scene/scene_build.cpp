@@ -16,7 +16,8 @@
 #include "camera.hpp"
 #include "formats.hpp"
 #include "illumination.hpp"
-#include "mesh_obj.hpp"
+#include "mesh_polygons.hpp"
+#include "mesh_stl.hpp"
 #include "scene.hpp"
 #include "scene_types.hpp"
 #include "surfaces.hpp"
@@ -136,10 +137,12 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
     co.src = &o;
     co.index = static_cast<int>(i);
     if (o.type == ObjectType::Mesh) {
-      co.mesh = load_obj_mesh(o, sc.name + ": " + o.field + ".file", opt.max_faces - std::min(faces, opt.max_faces));
+      co.mesh = load_mesh_file(o, sc.name + ": " + o.field + ".file", opt.max_faces - std::min(faces, opt.max_faces),
+                               opt.strict, out.degenerate);
       faces += co.mesh.faces.size();
     } else {
       co.mesh = tessellate_surface(o);
+      if (o.normals == MeshNormals::Crease) crease_surface_normals(co.mesh, o);
     }
     const glm::dmat3 rot = rotation(o.transform.rotate_deg);
     const glm::dvec3 s = o.transform.scale;

@@ -332,6 +332,9 @@ const Material& find_material(const Reader& r, const std::map<std::string, Mater
 // voxels of `spacing` (voxels.hpp). The surface is extracted here so that a bad volume is refused at
 // its field, before anything is built.
 void parse_voxels(const Reader& r, const json& j, const std::string& f, const std::string& base_dir, SceneObject& o) {
+  // Voxel faces meet at right angles only: a crease angle would be all or nothing, which "normals" says.
+  if (j.contains("crease_angle_deg"))
+    r.fail(f + ".crease_angle_deg", "voxel faces meet at 90 degrees: choose \"normals\": \"face\" or \"average\"");
   const bool has_file = j.contains("file"), has_phantom = j.contains("phantom");
   if (has_file == has_phantom) r.fail(f, "give exactly one of \"file\" (a raw density volume) or \"phantom\"");
   std::array<int, 3> dims{};
@@ -426,7 +429,9 @@ SceneObject parse_object(const Reader& r, const json& j, const std::string& f, i
   const std::string type = r.string(r.required(j, f, "type"), f + ".type");
   // Keys every camera-space object accepts.
   auto common = [&](std::initializer_list<const char*> extra) {
-    std::vector<const char*> keys = {"type", "material", "translate", "rotate_deg", "scale", "triangles"};
+    // crease_angle_deg: meshes and the tessellated analytic surfaces alike.
+    std::vector<const char*> keys = {"type", "material", "translate", "rotate_deg", "scale", "triangles",
+                                     "crease_angle_deg"};
     keys.insert(keys.end(), extra.begin(), extra.end());
     for (auto it = j.begin(); it != j.end(); ++it) {
       bool ok = false;
@@ -531,7 +536,7 @@ SceneObject parse_object(const Reader& r, const json& j, const std::string& f, i
     if (o.u % 2) r.fail(f + ".u", "must be even (the key of the vault is a vertex), got " + std::to_string(o.u));
   } else if (type == "mesh") {
     o.type = ObjectType::Mesh;
-    common({"file", "normals"});
+    common({"file", "normals", "crease_angle_deg", "max_edge_length", "weld_tolerance"});
     std::string file = r.string(r.required(j, f, "file"), f + ".file");
     if (file.empty()) r.fail(f + ".file", "must not be empty");
     std::filesystem::path p(file);
@@ -541,6 +546,19 @@ SceneObject parse_object(const Reader& r, const json& j, const std::string& f, i
       if (n == "file") o.normals = MeshNormals::File;
       else if (n == "average") o.normals = MeshNormals::Average;
       else r.fail(ff, "expected \"file\" or \"average\", got " + show(v));
+    });
+    o.normals_given = j.contains("normals");
+    opt(j, f, "crease_angle_deg", [&](const json& v, const std::string& ff) {
+      if (o.normals_given)
+        r.fail(ff, "crease_angle_deg chooses the normals (smoothed across edges sharper than it): leave out \"normals\"");
+      o.crease_angle_deg = r.number_in(v, ff, 0, 180);
+      o.normals = MeshNormals::Crease;
+    });
+    opt(j, f, "max_edge_length", [&](const json& v, const std::string& ff) { o.max_edge_length = r.positive(v, ff); });
+    opt(j, f, "weld_tolerance", [&](const json& v, const std::string& ff) {
+      o.weld_tolerance = r.number_in(v, ff, 0, kMaxMagnitude);
+      if (o.weld_tolerance > 0 && o.weld_tolerance < kMinPositive)
+        r.fail(ff, "expected 0 (exact) or at least " + number_text(kMinPositive) + ", got " + show(v));
     });
   } else if (type == "voxels") {
     o.type = ObjectType::Voxels;
@@ -563,6 +581,12 @@ SceneObject parse_object(const Reader& r, const json& j, const std::string& f, i
                " (expected sphere, cone, quarter_torus, hyperbolic_paraboloid, bezier_patch, cross_vault, pier, portico, "
                "mesh, voxels or polygons)");
   }
+  if (o.type != ObjectType::Mesh && o.type != ObjectType::Polygons && o.type != ObjectType::Voxels)
+    // The tessellation's faces give the normals (crease rule) instead of the exact ones.
+    opt(j, f, "crease_angle_deg", [&](const json& v, const std::string& ff) {
+      o.crease_angle_deg = r.number_in(v, ff, 0, 180);
+      o.normals = MeshNormals::Crease;
+    });
   if (const std::string e = choose_tessellation(o); !e.empty()) r.fail(f + ".max_edge_length", e);
   return o;
 }

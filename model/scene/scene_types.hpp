@@ -58,8 +58,9 @@ struct Shading {
 enum class ObjectType { Sphere, Cone, QuarterTorus, HyperbolicParaboloid, BezierPatch, CrossVault, Pier, Portico, Mesh,
                         Polygons, Voxels };
 
-// File: the OBJ file's normals; Average: averaged over the faces at a vertex; Face: each face its own (voxels).
-enum class MeshNormals { File, Average, Face };
+// File: the OBJ file's normals; Average: averaged over the faces at a vertex; Crease: averaged over
+// faces within the crease angle; Face: each face its own (voxels).
+enum class MeshNormals { File, Average, Crease, Face };
 
 struct SceneObject {
   ObjectType type = ObjectType::Sphere;
@@ -85,9 +86,12 @@ struct SceneObject {
   double pier_x = 0.5, pier_z = 0.5, pier_height = 4.0;
   int bays = 1;                   // portico: bays in a row along +X
   std::array<int, 3> box_segments{1, 1, 1};  // pier faces: segments along x, y, z
-  double max_edge_length = 0;     // > 0: u, v (and the above) were chosen from it, world units
-  std::string file;               // mesh: OBJ path already resolved against the scene's folder
-  MeshNormals normals = MeshNormals::File;
+  std::string file;               // mesh: OBJ or STL path already resolved against the scene's folder
+  MeshNormals normals = MeshNormals::File;  // analytic surfaces: File = exact normals, or Crease
+  bool normals_given = false;     // mesh: "normals" was in the scene (an STL file has no normals)
+  double crease_angle_deg = 0;    // MeshNormals::Crease: faces further apart are not smoothed
+  double max_edge_length = 0;     // split edges longer than this (world units, after scale); 0: never
+  double weld_tolerance = -1;     // STL: weld corners this close (file units); < 0: 1e-6 x bbox diagonal
   // Voxels: the thresholded volume or the sampled phantom (voxels.hpp), made by the parser, and the
   // phantom itself when there is one (the analytic truth ray-casts it).
   std::shared_ptr<const VoxelGrid> voxels;
