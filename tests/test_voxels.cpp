@@ -231,6 +231,8 @@ TEST(Voxels, BadInputNamesTheField) {
             "t: objects[0].phantom: expected \"ellipsoid\", \"beaded_sphere\" or \"two_lobed\", got \"cube\"");
   EXPECT_EQ(with(R"("phantom": "ellipsoid", "dims": [5, 1, 1], "threshold": 3)"),
             "t: objects[0].threshold: applies to a raw \"file\" only, not to a phantom");
+  EXPECT_EQ(with(R"("phantom": "ellipsoid", "dims": [4, 4, 4], "crease_angle_deg": 45)"),
+            "t: objects[0].crease_angle_deg: voxel faces meet at 90 degrees: choose \"normals\": \"face\" or \"average\"");
   EXPECT_EQ(with(R"("phantom": "ellipsoid", "dims": [5, 0, 1])"),
             "t: objects[0].dims[1]: expected an integer in [1, 1024], got 0");
   EXPECT_EQ(with(R"("phantom": "ellipsoid", "dims": [5, 1])"),

@@ -332,6 +332,9 @@ const Material& find_material(const Reader& r, const std::map<std::string, Mater
 // voxels of `spacing` (voxels.hpp). The surface is extracted here so that a bad volume is refused at
 // its field, before anything is built.
 void parse_voxels(const Reader& r, const json& j, const std::string& f, const std::string& base_dir, SceneObject& o) {
+  // Voxel faces meet at right angles only: a crease angle would be all or nothing, which "normals" says.
+  if (j.contains("crease_angle_deg"))
+    r.fail(f + ".crease_angle_deg", "voxel faces meet at 90 degrees: choose \"normals\": \"face\" or \"average\"");
   const bool has_file = j.contains("file"), has_phantom = j.contains("phantom");
   if (has_file == has_phantom) r.fail(f, "give exactly one of \"file\" (a raw density volume) or \"phantom\"");
   std::array<int, 3> dims{};
