@@ -225,12 +225,31 @@ module smoother #(
   end
 
   // ------------------------------------------------------------ stage 4: dividend and divisor
-  logic [2*WB-1:0]    w2;
+  // The denominator's products by n in 0..4 and W² by shifts and adds: multiplier blocks (the
+  // UP5K has 8) go to the six products by the sums. W² is registered: w_i is stable for the
+  // frame, and a frame's first pixel reaches this stage width + 5 clocks after its start.
+  function automatic logic [DenBits-1:0] times_count(logic [DenBits-1:0] v, logic [NB-1:0] n);
+    case (n)
+      3'd0:    times_count = '0;
+      3'd1:    times_count = v;
+      3'd2:    times_count = v << 1;
+      3'd3:    times_count = v + (v << 1);
+      default: times_count = v << 2;  // 4, the most neighbours of a kind
+    endcase
+  endfunction
+  function automatic logic [2*WB-1:0] square(logic [WB-1:0] v);
+    square = '0;
+    for (int i = 0; i < WB; i++) if (v[i]) square = square + ((2*WB)'(v) << i);
+  endfunction
+
+  logic [2*WB-1:0]    w2_q;
   logic [DenBits-1:0] den;
   logic [3*DvdBits-1:0] dvd;
-  assign w2  = (2*WB)'(w_i) * (2*WB)'(w_i);
-  assign den = (DenBits'(1) << (2*F)) + (DenBits'(w_i) * DenBits'(n_edge_q) << F)
-             + DenBits'(w2) * DenBits'(n_corner_q);
+  always_ff @(posedge clk_i) w2_q <= square(w_i);
+  logic [2*WB-1:0]    w2;
+  assign w2  = w2_q;
+  assign den = (DenBits'(1) << (2*F)) + (times_count(DenBits'(w_i), n_edge_q) << F)
+             + times_count(DenBits'(w2), n_corner_q);
   always_comb begin
     for (int c = 0; c < 3; c++) begin
       // 2n + d, n = 2^2F·G1 + 2^F·w·S_edge + w²·S_corner.
