@@ -19,6 +19,10 @@
 // the last line has one, otherwise a terminating beat with pixel_covered_o = 0 (background rgb)
 // at (width-1, height-1) -- so a frame covering no pixel is exactly that one beat. The consumer
 // keeps the background elsewhere (e.g. a framebuffer cleared once). sparse_i = 0: every pixel.
+// Smoothing (smooth_w_i != 0 for the frame): Herman & Liu's 3x3 smoother (rtl/smoother.sv) after
+// the scanline buffer. It needs the whole raster, so a smoothed frame is emitted in full whatever
+// sparse_i says; its last pixel leaves width + 13 clocks after the buffer's last (the flush of the
+// last line and the smoother's 12 stages). smooth_w_i = 0: the smoother is bypassed, no latency.
 // Equal depth (tie_submission_i for the frame): 0 keeps the fragment that reached the depth test
 // first (segments in closing order); 1 keeps the smaller polygon id, i.e. the first polygon
 // submitted when ids follow submission order, as GL's GL_LESS depth test does. Each fragment
@@ -56,6 +60,7 @@ module watkins_top #(
   input  watkins_pkg::rgb_t                  background_i,    // shade of pixels no polygon covers
   input  logic                               sparse_i,        // frame configuration: covered pixels only
   input  logic                               tie_submission_i, // frame configuration: a depth tie goes to the smaller polygon id
+  input  logic [watkins_pkg::SmoothWBits-1:0] smooth_w_i,     // frame configuration: smoothing weight W (0: off)
   input  logic [EdgeBits-1:0]                edge_i,          // edge records, sorted by y0 (ties in stream order)
   input  logic                               edge_eof_i,      // with valid: this beat ends the frame's stream, carries no edge
   input  logic                               edge_valid_i,
@@ -90,6 +95,9 @@ module watkins_top #(
   logic [LB-1:0] width_q, height_q;
   watkins_pkg::rgb_t background_q;
   logic          sparse_q, tie_submission_q;
+  logic [watkins_pkg::SmoothWBits-1:0] smooth_w_q;
+  logic          smooth_on;
+  assign smooth_on = smooth_w_q != '0;
 
   assign start = edge_valid_i && !frame_busy_q && !ael_busy;
 
@@ -110,6 +118,7 @@ module watkins_top #(
       background_q <= background_i;
       sparse_q     <= sparse_i;
       tie_submission_q <= tie_submission_i;
+      smooth_w_q   <= smooth_w_i;
     end
   end
 
@@ -314,6 +323,10 @@ module watkins_top #(
   end
 
   // ------------------------------------------------------------ visibility and pixels
+  watkins_pkg::rgb_t sb_rgb;
+  logic              sb_covered, sb_last, sb_valid, sb_ready;
+  logic [LB-1:0]     sb_x, sb_y;
+
   scanline_buffer #(
     .MaxWidth  (MaxWidth),
     .DepthBits (DepthBits),
@@ -323,7 +336,7 @@ module watkins_top #(
     .width_i        (width_q),
     .height_i       (height_q),
     .background_i   (background_q),
-    .sparse_i       (sparse_q),
+    .sparse_i       (sparse_q && !smooth_on),
     .tie_submission_i(tie_submission_q),
     .frag_x_i       (sh_x),
     .frag_depth_i   (sh_depth),
@@ -332,14 +345,48 @@ module watkins_top #(
     .frag_eol_i     (sh_eol),
     .frag_valid_i   (sh_valid),
     .frag_ready_o   (sh_ready),
-    .pixel_rgb_o,
-    .pixel_covered_o,
-    .pixel_x_o,
-    .pixel_y_o,
-    .pixel_last_o,
-    .pixel_valid_o,
-    .pixel_ready_i
+    .pixel_rgb_o    (sb_rgb),
+    .pixel_covered_o(sb_covered),
+    .pixel_x_o      (sb_x),
+    .pixel_y_o      (sb_y),
+    .pixel_last_o   (sb_last),
+    .pixel_valid_o  (sb_valid),
+    .pixel_ready_i  (sb_ready)
   );
+
+  // ------------------------------------------------------------ smoothing (per frame)
+  watkins_pkg::rgb_t sm_rgb;
+  logic              sm_covered, sm_last, sm_valid, sm_ready;
+  logic [LB-1:0]     sm_x, sm_y;
+
+  smoother #(
+    .MaxWidth(MaxWidth)
+  ) u_smoother (
+    .clk_i, .rst_ni,
+    .width_i  (width_q),
+    .height_i (height_q),
+    .w_i      (smooth_w_q),
+    .rgb_i    (sb_rgb),
+    .covered_i(sb_covered),
+    .last_i   (sb_last),
+    .valid_i  (sb_valid && smooth_on),
+    .ready_o  (sm_ready),
+    .rgb_o    (sm_rgb),
+    .covered_o(sm_covered),
+    .x_o      (sm_x),
+    .y_o      (sm_y),
+    .last_o   (sm_last),
+    .valid_o  (sm_valid),
+    .ready_i  (pixel_ready_i)
+  );
+
+  assign sb_ready        = smooth_on ? sm_ready : pixel_ready_i;
+  assign pixel_rgb_o     = smooth_on ? sm_rgb : sb_rgb;
+  assign pixel_covered_o = smooth_on ? sm_covered : sb_covered;
+  assign pixel_x_o       = smooth_on ? sm_x : sb_x;
+  assign pixel_y_o       = smooth_on ? sm_y : sb_y;
+  assign pixel_last_o    = smooth_on ? sm_last : sb_last;
+  assign pixel_valid_o   = smooth_on ? sm_valid : sb_valid;
 
   `WATKINS_ASSERT_HOLD(a_edge_hold, edge_valid_i, edge_ready_o, {edge_i, edge_eof_i})
   `WATKINS_ASSERT_HOLD(a_pixel_hold, pixel_valid_o, pixel_ready_i, {pixel_rgb_o, pixel_covered_o,
@@ -349,4 +396,7 @@ module watkins_top #(
   `WATKINS_ASSERT(a_overflow_sticky, overflow_o |=> overflow_o)
   `WATKINS_ASSERT(a_material_between_frames, material_we_i |-> !frame_busy_q)
   `WATKINS_COVER(c_frame_done, pixel_valid_o && pixel_ready_i && pixel_last_o)
+  // The smoother is empty between frames: a frame without smoothing never sees its output.
+  `WATKINS_ASSERT(a_smooth_idle, !smooth_on |-> !sm_valid)
+  `WATKINS_COVER(c_smoothed_frame, smooth_on && pixel_valid_o && pixel_ready_i && pixel_last_o)
 endmodule

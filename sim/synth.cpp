@@ -77,6 +77,7 @@ const Design kDesigns[] = {
     {"normalizer", "normalizer", ShadingMode::Phong, false},
     {"phong_shader", "phong_shader", ShadingMode::Phong, false},
     {"scanline_buffer", "scanline_buffer", ShadingMode::Gouraud, false},
+    {"smoother", "smoother", ShadingMode::Gouraud, false},
     {"top-gouraud", "watkins_top", ShadingMode::Gouraud, true},
     {"top-phong", "watkins_top", ShadingMode::Phong, true},
 };
@@ -666,7 +667,7 @@ CLI::App* add_synth_command(CLI::App& app, SynthArgs& a) {
                                        "'default' = the default configuration")->capture_default_str();
   s->add_option("--designs", a.designs, "comma-separated: edge_incrementer, active_edge_list, segment_former, "
                                         "span_reciprocal, segment_interpolator, normalizer, phong_shader, "
-                                        "scanline_buffer, top-gouraud, top-phong (default: all)");
+                                        "scanline_buffer, smoother, top-gouraud, top-phong (default: all)");
   s->add_option("--targets", a.targets, "comma-separated: ice40-up5k, ice40-hx8k, ecp5-85")->capture_default_str();
   s->add_option("--work", a.work, "directory for wrappers, netlists, logs and reports")->capture_default_str();
   s->add_option("--md", a.md, "markdown table to write");

@@ -212,6 +212,7 @@ struct RenderArgs {
   std::string shading, rule, depth, diff, truth, truth_diff;
   std::string depth_tie;  // equal-depth rule: arrival or submission
   bool depth_tie_given = false;  // else the scene's shading.depth_tie
+  double smooth = -1;            // --smooth W (else the scene's shading.smooth)
   bool cull = false, no_cull = false;
   int max_active_edges = watkins::fmt::MaxActiveEdges;
   bool max_active_edges_given = false;  // --max-active-edges overrides the configuration's
@@ -285,6 +286,7 @@ int render(const RenderArgs& a) {
     if (!opt.depth_tie)
       throw UsageError("--depth-tie: unknown rule " + quote_input(a.depth_tie) + " (arrival, submission)");
   }
+  if (a.smooth >= 0) opt.smooth = a.smooth;
   if (a.cull) opt.cull_backfaces = true;
   if (a.no_cull) opt.cull_backfaces = false;
   opt.strict = a.strict;
@@ -446,6 +448,9 @@ int main(int argc, char** argv) {
   CLI::Option* depth_tie = r->add_option("--depth-tie", ra.depth_tie, "equal depth at a pixel: arrival (the segment that closes first, "
                                              "the default) or submission (the polygon submitted first, as GL's "
                                              "GL_LESS; tie_submission_i = 1); overrides shading.depth_tie");
+  r->add_option("--smooth", ra.smooth, "Herman & Liu's 3x3 image smoothing with weight W (0: off; W in 1/128 "
+                                       "steps); overrides shading.smooth")
+      ->check(CLI::Range(0.0, 255.0 / 128));
   r->add_option("--diff", ra.diff, "PNG of |model - double reference| x16 (magenta: coverage differs)");
   r->add_flag("--cull", ra.cull, "cull back faces");
   r->add_flag("--no-cull", ra.no_cull, "keep back faces");

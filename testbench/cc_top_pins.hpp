@@ -27,12 +27,14 @@ class CcTopPins final : public TopPins {
   void bind_stage_taps(const StageTaps& taps) { taps_ = taps; }
 
   void reset_pin(bool v) override { dut_.rst_ni = v; }
-  void frame_pins(std::uint32_t w, std::uint32_t h, std::uint32_t bg, bool sparse, bool tie_submission) override {
+  void frame_pins(std::uint32_t w, std::uint32_t h, std::uint32_t bg, bool sparse, bool tie_submission,
+                  std::uint32_t smooth_w) override {
     dut_.width_i = w;
     dut_.height_i = h;
     dut_.background_i = bg;
     dut_.sparse_i = sparse;
     dut_.tie_submission_i = tie_submission;
+    dut_.smooth_w_i = smooth_w;
   }
   void phong_pins(std::uint64_t light, std::uint64_t eye) override {
     dut_.light_i = light;

@@ -39,7 +39,7 @@ bool FrameConfig::operator==(const FrameConfig& o) const {
     return a.cp == b.cp && a.d == b.d && a.w == b.w && a.shininess == b.shininess;
   };
   return width == o.width && height == o.height && background == o.background && sparse == o.sparse &&
-         tie_submission == o.tie_submission &&
+         tie_submission == o.tie_submission && smooth_w == o.smooth_w &&
          light == o.light && eye == o.eye && materials.size() == o.materials.size() &&
          std::equal(materials.begin(), materials.end(), o.materials.begin(), same_material);
 }
@@ -63,6 +63,7 @@ FrameConfig EdgeSource::needs(int f) const {
   k.background = pack_rgb(s.background);
   k.sparse = sparse_frame(opt_, f);
   k.tie_submission = s.depth_tie == DepthTie::Submission;
+  k.smooth_w = std::uint32_t(s.smooth_w);
   if (s.shading == ShadingMode::Phong) {
     k.light = pack_unit(s.light);
     k.eye = pack_unit(s.eye);
@@ -78,7 +79,8 @@ void EdgeSource::drive(long long cycle, int frames_done, std::vector<RtlFrame>& 
   const bool may_start = !starts || same || frames_done >= frame_;  // else wait for the previous frames to drain
   if (may_start && starts && !same && loading_ == 0) {
     config_ = needs(frame_);
-    pins_.frame_pins(config_.width, config_.height, config_.background, config_.sparse, config_.tie_submission);
+    pins_.frame_pins(config_.width, config_.height, config_.background, config_.sparse, config_.tie_submission,
+                     config_.smooth_w);
     pins_.phong_pins(config_.light, config_.eye);
     configured_ = true;
     loading_ = config_.materials.size() + 1;  // the writes, then write enable low again

@@ -27,6 +27,7 @@ struct FrameConfig {
   std::uint32_t width = 0, height = 0, background = 0;
   bool sparse = false;
   bool tie_submission = false;  // the frame's depth_tie is Submission
+  std::uint32_t smooth_w = 0;   // the frame's smoothing weight (smooth_w_i)
   std::uint64_t light = 0, eye = 0;
   std::vector<QuantizedMaterial> materials;
   bool operator==(const FrameConfig& o) const;

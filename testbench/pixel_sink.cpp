@@ -35,7 +35,8 @@ PixelSink::PixelSink(const std::vector<const PreparedScene*>& scenes, const std:
     fr.image = Image(s.width, s.height);
     for (std::size_t i = 0; i < fr.image.rgb.size(); i += 3)
       for (int c = 0; c < 3; ++c) fr.image.rgb[i + c] = s.background[c];
-    fr.sparse = sparse_frame(opt, static_cast<int>(f));
+    // A smoothed frame is emitted in full whatever sparse_i says (rtl/watkins_top.sv).
+    fr.sparse = sparse_frame(opt, static_cast<int>(f)) && s.smooth_w == 0;
     if (fr.sparse && f < expected.size() && expected[f]) {
       sparse_want_[f] = sparse_stream(*expected[f]);
       fr.expected_beats = static_cast<long long>(sparse_want_[f].size());

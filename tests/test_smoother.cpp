@@ -3,7 +3,11 @@
 
 #include <random>
 
+#include "cycle_model.hpp"
+#include "prepare.hpp"
+#include "scene.hpp"
 #include "smoother.hpp"
+#include "watkins_top.hpp"
 
 namespace watkins {
 namespace {
@@ -96,6 +100,27 @@ TEST(Smoother, WithinHalfALevelOfTheRealMean) {
         }
       }
   }
+}
+
+// shading.smooth / --smooth reach the frame rounded to 1/128, and the top smooths its image.
+TEST(Smoother, SceneWeightReachesTheTop) {
+  BuildOptions opt;
+  opt.smooth = 0.8;
+  const PreparedScene p = prepare(load_scene(WATKINS_SOURCE_DIR "/scenes/sphere.json", opt));
+  EXPECT_EQ(p.smooth_w, 102);  // 0.8 · 128 = 102.4
+  PreparedScene plain = p;
+  plain.smooth_w = 0;
+  const Image flat = WatkinsTop().render(plain);
+  const Image smoothed = WatkinsTop().render(p);
+  EXPECT_EQ(smoothed.rgb, Smoother(102).apply(flat).rgb);
+  EXPECT_NE(smoothed.rgb, flat.rgb);
+  EXPECT_EQ(smoothed.covered, flat.covered);
+  // A smoothed frame is read out in full: sparse output changes nothing, and the smoother adds
+  // the flush of its last line and its 12 stages.
+  const CyclePrediction full = predict_cycles(p, PixelOutput::FullFrame);
+  EXPECT_EQ(predict_cycles(p, PixelOutput::Sparse).cycles, full.cycles);
+  EXPECT_EQ(full.cycles, predict_cycles(plain, PixelOutput::FullFrame).cycles + p.width + 13);
+  EXPECT_EQ(full.pixels, static_cast<long long>(p.width) * p.height);
 }
 
 }  // namespace

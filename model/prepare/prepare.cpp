@@ -234,6 +234,8 @@ static PreparedScene prepare_unnamed(const BuiltScene& scene, const Config& cfg)
   out.polygons = static_cast<int>(scene.polygons.size());
   out.shading = scene.shading;
   out.depth_tie = scene.depth_tie;
+  out.smooth_w = static_cast<int>(std::clamp<long>(std::lround(scene.smooth * (1 << fmt::SmoothWFracBits)), 0,
+                                                   (1 << fmt::SmoothWBits) - 1));
   const bool phong = scene.shading == ShadingMode::Phong;
   if (phong) prepare_phong_constants(scene, cfg, out);
   const ChannelFormats formats = cfg.channels(scene.shading);

@@ -40,6 +40,7 @@ struct BuildOptions {
   std::optional<ShadingMode> shading;
   std::optional<bool> flat;  // flat shading (see BuiltScene::flat)
   std::optional<DepthTie> depth_tie;
+  std::optional<double> smooth;  // Herman & Liu's W (BuiltScene::smooth)
   // Zero-area polygons are skipped and counted (BuiltScene::degenerate), as GL skips them; with
   // strict, a zero-area polygon of a "polygons" command list is an error naming it.
   bool strict = false;
@@ -69,6 +70,9 @@ struct BuiltScene {
   // than 4 vertices as consecutive triangles) -- with culled, near-clipped and zero-area ones left
   // out (the others keep their relative order).
   DepthTie depth_tie = DepthTie::Arrival;
+  // Herman & Liu's 3x3 image smoothing after the scan-line buffer with weight W (0: off);
+  // preparation rounds it to the smoother's format (Frame::smooth_w).
+  double smooth = 0.0;
   // Flat shading (Gouraud pipeline only): every polygon gets one shade, the vertex rule evaluated
   // at its centroid with its plane's normal, given to all its vertices — the faceted picture of
   // Warnock and Romney that Gouraud's interpolation removes (the depth still varies per vertex).

@@ -100,6 +100,7 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
   out.shading = opt.shading.value_or(sc.shading.mode);
   out.flat = opt.flat.value_or(sc.shading.flat);
   out.depth_tie = opt.depth_tie.value_or(sc.shading.depth_tie);
+  out.smooth = opt.smooth.value_or(sc.shading.smooth);
   if (out.flat && out.shading == ShadingMode::Phong)
     throw SceneError(sc.name + ": shading.flat: flat shading gives one shade per polygon to the gouraud pipeline; "
                      "the phong pipeline shades every pixel");

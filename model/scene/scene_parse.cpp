@@ -212,7 +212,7 @@ void parse_light(const Reader& r, const json& j, Light& l) {
 void parse_shading(const Reader& r, const json& j, Shading& s) {
   const std::string f = "shading";
   r.expect_object(j, f);
-  r.check_keys(j, f, {"mode", "rule", "depth", "depth_tie", "cull_backfaces", "specular_m", "flat"});
+  r.check_keys(j, f, {"mode", "rule", "depth", "depth_tie", "cull_backfaces", "specular_m", "flat", "smooth"});
   opt(j, f, "mode", [&](const json& v, const std::string& ff) {
     auto mode = parse_shading_mode(r.string(v, ff));
     if (!mode) r.fail(ff, "expected \"gouraud\" or \"phong\", got " + show(v));
@@ -236,6 +236,8 @@ void parse_shading(const Reader& r, const json& j, Shading& s) {
   });
   opt(j, f, "cull_backfaces", [&](const json& v, const std::string& ff) { s.cull_backfaces = r.boolean(v, ff); });
   opt(j, f, "flat", [&](const json& v, const std::string& ff) { s.flat = r.boolean(v, ff); });
+  // W of the smoother's SmoothWBits word: 0 .. (2^8 - 1) / 2^7.
+  opt(j, f, "smooth", [&](const json& v, const std::string& ff) { s.smooth = r.number_in(v, ff, 0, 255.0 / 128); });
   opt(j, f, "specular_m", [&](const json& v, const std::string& ff) { s.specular_m = r.number_in(v, ff, 1, 1000); });
 }
 

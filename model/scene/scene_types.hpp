@@ -53,6 +53,7 @@ struct Shading {
   ShadingMode mode = ShadingMode::Gouraud;  // "mode": which pipeline shades
   bool flat = false;                         // "flat": one shade per polygon (BuiltScene::flat)
   DepthTie depth_tie = DepthTie::Arrival;    // "depth_tie": equal-depth rule (BuiltScene::depth_tie)
+  double smooth = 0.0;                       // "smooth": Herman & Liu's W (BuiltScene::smooth)
 };
 
 enum class ObjectType { Sphere, Cone, QuarterTorus, HyperbolicParaboloid, BezierPatch, CrossVault, Pier, Portico, Mesh,

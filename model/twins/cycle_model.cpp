@@ -99,7 +99,12 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
   if (frame.width < 1 || frame.height < 1)  // the top asserts a_frame_size: no frame to time
     throw std::invalid_argument("cycle model: frame size " + std::to_string(frame.width) + "x" +
                                 std::to_string(frame.height));
-  const bool sparse = output == PixelOutput::Sparse;
+  const bool smooth = frame.smooth_w != 0;
+  const bool sparse = output == PixelOutput::Sparse && !smooth;
+  // Smoothing: the smoother's pixel i comes from its column i + width + 1 (the buffer's pixel of
+  // that raster index, or a flush step after the buffer's last): the cycle that pixel is loaded.
+  const long long smooth_lead = static_cast<long long>(frame.width) + 1;
+  long long lead_load = -1;
   const bool phong = frame.shading == ShadingMode::Phong;
   const Streams st = front_half(frame, sparse, max_active_edges, cfg);
   const int height = frame.height;
@@ -214,6 +219,7 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
     // scanline_buffer reader (pixel_ready_i high: it steps every cycle it is busy)
     if (rd_busy_q) {
       if (st.read_emits[std::size_t(rline_q)] || rline_q == height - 1) {  // rd_load
+        if (out.pixels == smooth_lead) lead_load = t;
         if (out.pixels++ == 0) out.first_pixel = t + 1;
       }
       if (rd_last) {
@@ -316,7 +322,12 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
         t += n;
         if (rd_counts) {
           rd_left -= static_cast<int>(n);
-          if (st.read_emits[std::size_t(rline_q)] || rline_q == height - 1) out.pixels += n;
+          if (st.read_emits[std::size_t(rline_q)] || rline_q == height - 1) {
+            // Loads at the skipped cycles t - n + 1 .. t: pixels out.pixels .. out.pixels + n - 1.
+            if (smooth_lead >= out.pixels && smooth_lead < out.pixels + n)
+              lead_load = t - n + 1 + (smooth_lead - out.pixels);
+            out.pixels += n;
+          }
         }
         if (step_counts) step_left -= static_cast<int>(n);
         last_progress = t;
@@ -324,6 +335,15 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
     }
     if (t - last_progress > 10'000'000)
       throw std::logic_error("cycle model: no progress for 10^7 cycles at cycle " + std::to_string(t));
+  }
+  if (smooth) {
+    // The buffer's last pixel is taken at cycles - 1; the width + 1 flush steps follow one per
+    // clock, and each column's pixel leaves SmootherStages clocks after it entered.
+    const long long n = out.pixels;
+    const long long last_taken = out.cycles - 1;
+    out.first_pixel = lead_load >= 0 ? lead_load + 1 + SmootherStages
+                                     : last_taken + (smooth_lead - n + 1) + SmootherStages;
+    out.cycles = last_taken + smooth_lead + SmootherStages + 1;
   }
   return out;
 }

@@ -27,6 +27,7 @@ constexpr int RecipStages = fmt::RecipBits + 2;  // span_reciprocal: normalize +
 constexpr int InterpFifoDepth = 4;               // segment_interpolator's FifoDepth
 constexpr int NormalizerStages = 8;              // normalizer: squares, rsqrt_unit (5), product, round
 constexpr int ShaderStages = 13;                 // phong_shader: dots, round, cos(s), 8 powers, 2 out
+constexpr int SmootherStages = 12;               // smoother: line read, window, sums, dividend, 8 divider
 }  // namespace rtl_timing
 
 enum class PixelOutput { FullFrame, Sparse };  // watkins_top's sparse_i = 0 / 1
@@ -38,7 +39,7 @@ struct CyclePrediction {
 };
 
 // Predicts the frame's cycles on watkins_top with Phong = (frame.shading == Phong), sparse_i as
-// `output`, starting idle (after reset or a finished frame), no input gaps and no output stalls.
+// `output` (ignored when frame.smooth_w != 0: a smoothed frame is emitted in full), starting idle (after reset or a finished frame), no input gaps and no output stalls.
 // Throws CapacityError when the frame overflows an active-edge list of `max_active_edges`, and
 // std::invalid_argument for an empty frame size. `cfg`: the configuration the frame was prepared
 // for (its channel widths step the edges; its X fraction bits place the spans' pixel centres).

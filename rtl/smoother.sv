@@ -1,0 +1,332 @@
+// smoother: Herman & Liu's image-space smoothing (model/twins/smoother.hpp): every covered pixel
+// of the raster-order frame becomes the 3x3 weighted mean (G1 + W·Σ edges + W²·Σ corners) /
+// (1 + W·n_edge + W²·n_corner) per channel, neighbours counted only when on the screen and
+// covered (f_i); uncovered pixels keep their shade. W = w_i / 2^SmoothWFracBits; w_i = 0 is the
+// identity. Latency: pixel (x, y) leaves 12 clocks after the input beat at (x+1, y+1) (raster
+// index + width + 1) was taken; the last width + 1 pixels of a frame come from flush steps, one
+// per clock after its last input beat (ready_o low meanwhile). One pixel per clock; every stage
+// registered, stalled together: ready_o = (ready_i || !valid_o) && !flushing (combinational).
+// Storage: the two previous lines side by side in one RAM of MaxWidth words of 2 x 25 bits
+// ({covered, rgb} of lines y-1 and y-2 at x), synchronous read (block RAM), read when a column
+// enters and rewritten the clock after; the word written that clock is forwarded when the next
+// read hits the same x (width 1). The division: a pipelined restoring divider, 8 quotient bits
+// per channel (the mean is <= 255), exact: round half up of the exact quotient.
+`include "watkins_assert.svh"
+
+module smoother #(
+  parameter int unsigned MaxWidth = watkins_pkg::DefaultMaxWidth  // line-buffer depth in pixels
+) (
+  input  logic                                  clk_i,
+  input  logic                                  rst_ni,
+  input  logic [watkins_pkg::LineBits-1:0]      width_i,    // 1..MaxWidth, stable per frame
+  input  logic [watkins_pkg::LineBits-1:0]      height_i,   // lines per frame, stable per frame
+  input  logic [watkins_pkg::SmoothWBits-1:0]   w_i,        // W, SmoothWFracBits fraction bits; stable per frame
+  input  watkins_pkg::rgb_t                     rgb_i,      // every pixel of the frame, raster order
+  input  logic                                  covered_i,  // some polygon won the pixel (f = 1)
+  input  logic                                  last_i,     // the frame's last pixel
+  input  logic                                  valid_i,
+  output logic                                  ready_o,
+  output watkins_pkg::rgb_t                     rgb_o,      // smoothed, raster order
+  output logic                                  covered_o,
+  output logic [watkins_pkg::LineBits-1:0]      x_o,
+  output logic [watkins_pkg::LineBits-1:0]      y_o,
+  output logic                                  last_o,     // the frame's last pixel
+  output logic                                  valid_o,
+  input  logic                                  ready_i
+);
+  localparam int unsigned LB  = watkins_pkg::LineBits;
+  localparam int unsigned SB  = watkins_pkg::ShadeBits;
+  localparam int unsigned F   = watkins_pkg::SmoothWFracBits;
+  localparam int unsigned WB  = watkins_pkg::SmoothWBits;
+  localparam int unsigned PB  = watkins_pkg::RgbBits + 1;           // {covered, rgb}
+  localparam int unsigned AB  = (MaxWidth > 1) ? $clog2(MaxWidth) : 1;
+  localparam int unsigned SumBits = SB + 2;                          // four levels
+  localparam int unsigned NB  = 3;                                   // 0..4 neighbours
+  localparam int unsigned MB  = (WB > F) ? WB : F;
+  // d = 2^2F + 2^F·w·n_edge + w²·n_corner < 3·4·2^2MB: the divisor 2d and the dividend 2n + d
+  // (n <= 255·d, so 2n + d < 2^8 · 2d).
+  localparam int unsigned DenBits = 2 * MB + 4;                      // holds 2d
+  localparam int unsigned DvdBits = DenBits + SB;                    // holds 2n + d
+  localparam int unsigned DivStages = SB;                            // one quotient bit each
+  localparam int unsigned PayBits = 1 + 2 * LB + 1;                  // {covered, x, y, last}
+
+  // ------------------------------------------------------------ stage 0: a column enters
+  logic          en, adv, in_fire, emit0, flush_q, ox_end, oy_end;
+  logic [AB-1:0] cx_q;              // x of the entering column
+  logic [LB:0]   lead_q;            // columns entered, up to width + 1 (then each one emits)
+  logic [LB-1:0] ox_q, oy_q;        // the pixel the next emitting column completes
+
+  assign en      = !valid_o || ready_i;
+  assign ready_o = en && !flush_q;
+  assign in_fire = valid_i && ready_o;
+  // Flush steps enter uncovered columns after the frame's last input (the lines below the last).
+  assign adv     = en && (flush_q || valid_i);
+  assign emit0   = lead_q == {1'b0, width_i} + 1'b1;
+  assign ox_end  = ox_q == width_i - 1'b1;
+  assign oy_end  = oy_q == height_i - 1'b1;
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      cx_q    <= '0;
+      lead_q  <= '0;
+      ox_q    <= '0;
+      oy_q    <= '0;
+      flush_q <= 1'b0;
+    end else if (adv) begin
+      cx_q <= (LB'(cx_q) == width_i - 1'b1) ? '0 : cx_q + 1'b1;
+      if (!emit0) lead_q <= lead_q + 1'b1;
+      if (emit0) begin
+        ox_q <= ox_end ? '0 : ox_q + 1'b1;
+        if (ox_end) oy_q <= oy_q + 1'b1;
+      end
+      if (in_fire && last_i) flush_q <= 1'b1;
+      if (emit0 && ox_end && oy_end) begin  // the frame's last pixel: ready for the next frame
+        cx_q    <= '0;
+        lead_q  <= '0;
+        ox_q    <= '0;
+        oy_q    <= '0;
+        flush_q <= 1'b0;
+      end
+    end
+  end
+
+  // ------------------------------------------------------------ stage 1: line-buffer read
+  logic [2*PB-1:0] line_mem [MaxWidth];  // {line y-1, line y-2} at x
+  logic [2*PB-1:0] rd_q, fw_q, word1;
+  logic            v1_q, e1_q, fwd1_q, last1_q;
+  logic [3:0]      m1_q;                // on the screen: {left, right, up, down}
+  logic [LB-1:0]   ox1_q, oy1_q;
+  logic [AB-1:0]   a1_q;
+  logic [PB-1:0]   p1_q, mid1, up1;
+
+  assign word1      = fwd1_q ? fw_q : rd_q;
+  assign {mid1, up1} = word1;
+
+  always_ff @(posedge clk_i) begin
+    if (adv) rd_q <= line_mem[cx_q];
+  end
+  always_ff @(posedge clk_i) begin
+    if (en && v1_q) line_mem[a1_q] <= {p1_q, mid1};
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      v1_q <= 1'b0;
+    end else if (en) begin
+      v1_q <= adv;
+    end
+  end
+  always_ff @(posedge clk_i) begin
+    if (adv) begin
+      p1_q    <= in_fire ? {covered_i, rgb_i} : '0;
+      a1_q    <= cx_q;
+      // The RAM read misses the word written this same clock: forward it.
+      fwd1_q  <= v1_q && a1_q == cx_q;
+      fw_q    <= {p1_q, mid1};
+      e1_q    <= emit0;
+      m1_q    <= {ox_q != '0, !ox_end, oy_q != '0, !oy_end};
+      ox1_q   <= ox_q;
+      oy1_q   <= oy_q;
+      last1_q <= ox_end && oy_end;
+    end
+  end
+
+  // ------------------------------------------------------------ stage 2: the 3x3 window
+  // Column c = {line y-2, y-1, y} (top, middle, bottom); column 1's middle is the centre.
+  logic [3*PB-1:0] win_q [3];  // (separate registers: yosys maps a shifted array to flops)
+  logic            v2_q, last2_q;
+  logic [3:0]      m2_q;
+  logic [LB-1:0]   ox2_q, oy2_q;
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      v2_q <= 1'b0;
+    end else if (en) begin
+      v2_q <= v1_q && e1_q;
+    end
+  end
+  always_ff @(posedge clk_i) begin
+    if (en && v1_q) begin
+      win_q[0] <= win_q[1];
+      win_q[1] <= win_q[2];
+      win_q[2] <= {up1, mid1, p1_q};
+      m2_q     <= m1_q;
+      ox2_q    <= ox1_q;
+      oy2_q    <= oy1_q;
+      last2_q  <= last1_q;
+    end
+  end
+
+  // ------------------------------------------------------------ stage 3: f_i and the sums
+  logic [PB-1:0] centre;
+  // Edges: up, left, right, down; corners: up-left, up-right, down-left, down-right.
+  logic [8*PB-1:0] nb;
+  logic [7:0]    f;
+  logic [3*SumBits-1:0] s_edge, s_corner;
+  logic [NB-1:0] n_edge, n_corner;
+  logic          m_left, m_right, m_up, m_down;
+
+  assign {m_left, m_right, m_up, m_down} = m2_q;
+  assign centre = win_q[1][PB +: PB];
+  assign nb = {win_q[2][0 +: PB], win_q[0][0 +: PB], win_q[2][2*PB +: PB], win_q[0][2*PB +: PB],
+                win_q[1][0 +: PB], win_q[2][PB +: PB], win_q[0][PB +: PB], win_q[1][2*PB +: PB]};
+
+  always_comb begin
+    // An uncovered centre keeps its shade: no neighbour counts (d = 2^2F, n = 2^2F·G1).
+    f[0] = m_up;
+    f[1] = m_left;
+    f[2] = m_right;
+    f[3] = m_down;
+    f[4] = m_up && m_left;
+    f[5] = m_up && m_right;
+    f[6] = m_down && m_left;
+    f[7] = m_down && m_right;
+    for (int i = 0; i < 8; i++) f[i] = f[i] && nb[i*PB + PB-1] && centre[PB-1];
+    s_edge   = '0;
+    s_corner = '0;
+    n_edge   = '0;
+    n_corner = '0;
+    for (int c = 0; c < 3; c++) begin
+      for (int i = 0; i < 4; i++) begin
+        if (f[i])     s_edge[c*SumBits +: SumBits]   = s_edge[c*SumBits +: SumBits]
+                                                     + SumBits'(nb[i*PB + c*SB +: SB]);
+        if (f[i + 4]) s_corner[c*SumBits +: SumBits] = s_corner[c*SumBits +: SumBits]
+                                                     + SumBits'(nb[(i+4)*PB + c*SB +: SB]);
+      end
+    end
+    for (int i = 0; i < 4; i++) begin
+      n_edge   = n_edge + NB'(f[i]);
+      n_corner = n_corner + NB'(f[i + 4]);
+    end
+  end
+
+  logic                 v3_q;
+  logic [3*SumBits-1:0] s_edge_q, s_corner_q;
+  logic [3*SB-1:0]      g1_q;
+  logic [NB-1:0]        n_edge_q, n_corner_q;
+  logic [PayBits-1:0]   pay3_q;
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      v3_q <= 1'b0;
+    end else if (en) begin
+      v3_q <= v2_q;
+    end
+  end
+  always_ff @(posedge clk_i) begin
+    if (en) begin
+      s_edge_q   <= s_edge;
+      s_corner_q <= s_corner;
+      g1_q       <= centre[3*SB-1:0];
+      n_edge_q   <= n_edge;
+      n_corner_q <= n_corner;
+      pay3_q     <= {centre[PB-1], ox2_q, oy2_q, last2_q};
+    end
+  end
+
+  // ------------------------------------------------------------ stage 4: dividend and divisor
+  // The denominator's products by n in 0..4 and W² by shifts and adds: multiplier blocks (the
+  // UP5K has 8) go to the six products by the sums. W² is registered: w_i is stable for the
+  // frame, and a frame's first pixel reaches this stage width + 5 clocks after its start.
+  function automatic logic [DenBits-1:0] times_count(logic [DenBits-1:0] v, logic [NB-1:0] n);
+    case (n)
+      3'd0:    times_count = '0;
+      3'd1:    times_count = v;
+      3'd2:    times_count = v << 1;
+      3'd3:    times_count = v + (v << 1);
+      default: times_count = v << 2;  // 4, the most neighbours of a kind
+    endcase
+  endfunction
+  function automatic logic [2*WB-1:0] square(logic [WB-1:0] v);
+    square = '0;
+    for (int i = 0; i < WB; i++) if (v[i]) square = square + ((2*WB)'(v) << i);
+  endfunction
+
+  logic [2*WB-1:0]    w2_q;
+  logic [DenBits-1:0] den;
+  logic [3*DvdBits-1:0] dvd;
+  always_ff @(posedge clk_i) w2_q <= square(w_i);
+  logic [2*WB-1:0]    w2;
+  assign w2  = w2_q;
+  assign den = (DenBits'(1) << (2*F)) + (times_count(DenBits'(w_i), n_edge_q) << F)
+             + times_count(DenBits'(w2), n_corner_q);
+  always_comb begin
+    for (int c = 0; c < 3; c++) begin
+      // 2n + d, n = 2^2F·G1 + 2^F·w·S_edge + w²·S_corner.
+      dvd[c*DvdBits +: DvdBits] =
+          ((DvdBits'(g1_q[c*SB +: SB]) << (2*F)) + (DvdBits'(w_i) * DvdBits'(s_edge_q[c*SumBits +: SumBits]) << F)
+           + DvdBits'(w2) * DvdBits'(s_corner_q[c*SumBits +: SumBits])) * DvdBits'(2) + DvdBits'(den);
+    end
+  end
+
+  // ------------------------------------------------------------ stages 5..12: restoring division
+  // Stage k takes quotient bit SB-1-k: the remainder is below 2d·2^(SB-k) before it.
+  logic [DivStages:0]   dv_q;
+  logic [3*DvdBits-1:0] rem_q [DivStages+1];
+  logic [3*SB-1:0]      quo_q [DivStages+1];
+  logic [DenBits-1:0]   dsr_q [DivStages+1];
+  logic [PayBits-1:0]   pay_q [DivStages+1];
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      dv_q[0] <= 1'b0;
+    end else if (en) begin
+      dv_q[0] <= v3_q;
+    end
+  end
+  always_ff @(posedge clk_i) begin
+    if (en) begin
+      rem_q[0] <= dvd;
+      quo_q[0] <= '0;
+      dsr_q[0] <= den << 1;
+      pay_q[0] <= pay3_q;
+    end
+  end
+
+  for (genvar k = 0; k < DivStages; k++) begin : g_div
+    localparam int unsigned Shift = DivStages - 1 - k;
+    logic [3*DvdBits-1:0] rem_d;
+    logic [3*SB-1:0]      quo_d;
+    logic [DvdBits-1:0]   t;
+    assign t = DvdBits'(dsr_q[k]) << Shift;
+    for (genvar c = 0; c < 3; c++) begin : g_channel
+      logic [DvdBits-1:0] r;
+      logic               ge;
+      assign r  = rem_q[k][c*DvdBits +: DvdBits];
+      assign ge = r >= t;
+      assign rem_d[c*DvdBits +: DvdBits] = ge ? r - t : r;
+      assign quo_d[c*SB +: SB] = quo_q[k][c*SB +: SB] | (SB'(ge) << Shift);
+    end
+    always_ff @(posedge clk_i) begin
+      if (!rst_ni) begin
+        dv_q[k+1] <= 1'b0;
+      end else if (en) begin
+        dv_q[k+1] <= dv_q[k];
+      end
+    end
+    always_ff @(posedge clk_i) begin
+      if (en) begin
+        rem_q[k+1] <= rem_d;
+        quo_q[k+1] <= quo_d;
+        dsr_q[k+1] <= dsr_q[k];
+        pay_q[k+1] <= pay_q[k];
+      end
+    end
+  end
+
+  assign valid_o = dv_q[DivStages];
+  assign rgb_o   = quo_q[DivStages];
+  assign {covered_o, x_o, y_o, last_o} = pay_q[DivStages];
+
+  // The remainder left over is below the divisor; only the quotient leaves.
+  logic unused_rem;
+  assign unused_rem = ^rem_q[DivStages];
+
+  `WATKINS_ASSERT_HOLD(a_in_hold, valid_i, ready_o, {rgb_i, covered_i, last_i})
+  `WATKINS_ASSERT_HOLD(a_out_hold, valid_o, ready_i, {rgb_o, covered_o, x_o, y_o, last_o})
+  `WATKINS_ASSERT(a_last_ends_line, in_fire && last_i |-> LB'(cx_q) == width_i - 1'b1)
+  `WATKINS_ASSERT(a_width, valid_i |-> width_i != '0 && width_i <= LB'(MaxWidth))
+  `WATKINS_COVER(c_flush, adv && flush_q)
+  `WATKINS_COVER(c_forwarded, v1_q && fwd1_q)
+  `WATKINS_COVER(c_stall, valid_o && !ready_i)
+endmodule
