@@ -57,6 +57,10 @@ TEST(CosimSmoother, SphereGouraud) { check_smoothed("sphere.json", ShadingMode::
 TEST(CosimSmoother, SpherePhong) { check_smoothed("sphere.json", ShadingMode::Phong, PaperW); }
 TEST(CosimSmoother, ScreenPolygonsGouraud) { check_smoothed("screen_polygons.json", ShadingMode::Gouraud, 1.5); }
 TEST(CosimSmoother, OverdrawPhong) { check_smoothed("overdraw.json", ShadingMode::Phong, 0.25); }
+// The paper's own case: a voxel phantom with one normal per face, smoothed at W = 0.8 (the scene's
+// shading.smooth), and a heavier W on the Phong pipeline.
+TEST(CosimSmoother, VoxelPhantomGouraud) { check_smoothed("voxel_smoothed.json", ShadingMode::Gouraud, PaperW); }
+TEST(CosimSmoother, VoxelPhantomPhong) { check_smoothed("voxel_smoothed.json", ShadingMode::Phong, 1.0); }
 
 // Smoothing off, on, another W and off again in one simulation, under gaps and stalls, with
 // sparse_i requested throughout: the unsmoothed frames stay sparse.
