@@ -4,7 +4,8 @@
 // (BuiltScene::depth_tie: first arrival, segments in closing-X order, or the smaller polygon id).
 // Phong shading (BuiltScene::shading): the vertex normal is interpolated the same way, normalized
 // in double and shaded with phong_levels (eq. 3). The fixed-point model's difference from it is
-// the cost of quantization alone.
+// the cost of quantization alone. With BuiltScene::smooth > 0 the levels are then smoothed by
+// Herman & Liu's 3x3 weighted mean in double (W unrounded; the smoother twin's rule for f_i).
 #pragma once
 
 #include "image_io.hpp"
