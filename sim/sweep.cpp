@@ -162,14 +162,6 @@ struct Result {
   std::string error;  // the point could not be rendered (the message); the row keeps its axes
 };
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot open scene file");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // The scene text with the first "u" and "v" (the first tessellated object's) scaled by f: u >= 3
 // (a closed ring), v >= 1; a cross_vault's or portico's u rounded to the nearest even count, at
 // least 2 (the key of the vault is a vertex). Returns the values used.
@@ -228,7 +220,7 @@ Result evaluate(const SweepArgs& a, const std::vector<Axis>& axes, long long k) 
     opt.depth = shading == "gouraud-eq2" ? DepthMode::Z : DepthMode::InverseZ;
     opt.shading = shading == "phong" ? ShadingMode::Phong : ShadingMode::Gouraud;
     opt.flat = shading == "flat";
-    const std::string text = retessellate(read_text(path), path, f, r.u, r.v);
+    const std::string text = retessellate(read_scene_text(path), path, f, r.u, r.v);
     const BuiltScene scene =
         load_scene_text(text, path, std::filesystem::path(path).parent_path().string(), opt);
     PreparedScene prepared;

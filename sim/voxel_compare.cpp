@@ -34,14 +34,6 @@
 namespace watkins::voxel_compare {
 namespace {
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot open scene file");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // The scene text with every voxel object's averaged normals replaced by face normals.
 std::string face_normals(std::string text) {
   const std::string from = "\"normals\": \"average\"", to = "\"normals\": \"face\"";
@@ -162,7 +154,7 @@ int run_voxel_compare(const VoxelCompareArgs& a) {
       scenes.push_back(std::string(WATKINS_SOURCE_DIR) + "/scenes/" + s + ".json");
   std::vector<Row> rows;
   for (const std::string& path : scenes) {
-    const std::string stem = std::filesystem::path(path).stem().string(), text = read_text(path);
+    const std::string stem = std::filesystem::path(path).stem().string(), text = read_scene_text(path);
     BuildOptions gouraud, phong, flat;
     gouraud.shading = flat.shading = ShadingMode::Gouraud;
     gouraud.rule = flat.rule = phong.rule = ShadingRule::Phong;

@@ -94,6 +94,8 @@ struct BuiltScene {
 };
 
 // Load and validate a scene file (JSON). Relative OBJ paths are resolved against its folder.
+// A scene file's text (at most 16 MiB; SceneError naming the file when it cannot be read).
+std::string read_scene_text(const std::string& path);
 BuiltScene load_scene(const std::string& path, const BuildOptions& opt = {});
 // Same, from text; `name` is used in messages and `base_dir` for OBJ paths.
 BuiltScene load_scene_text(const std::string& text, const std::string& name,

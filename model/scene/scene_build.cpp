@@ -324,7 +324,7 @@ BuiltScene load_scene_text(const std::string& text, const std::string& name, con
   return build(parse_scene(text, name, base_dir), opt);
 }
 
-BuiltScene load_scene(const std::string& path, const BuildOptions& opt) {
+std::string read_scene_text(const std::string& path) {
   if (path.empty()) throw SceneError("scene file name is empty");
   std::FILE* f = std::fopen(path.c_str(), "rb");
   if (!f) throw SceneError(path + ": cannot open scene file: " + std::strerror(errno));
@@ -341,7 +341,11 @@ BuiltScene load_scene(const std::string& path, const BuildOptions& opt) {
   if (bad) throw SceneError(path + ": cannot read scene file: " + std::strerror(err));
   if (text.size() > kMaxSceneBytes)
     throw SceneError(path + ": scene file is larger than " + std::to_string(kMaxSceneBytes >> 20) + " MiB (the limit)");
-  return load_scene_text(text, path, std::filesystem::path(path).parent_path().string(), opt);
+  return text;
+}
+
+BuiltScene load_scene(const std::string& path, const BuildOptions& opt) {
+  return load_scene_text(read_scene_text(path), path, std::filesystem::path(path).parent_path().string(), opt);
 }
 
 }  // namespace watkins
