@@ -142,6 +142,12 @@ TEST(NarrowConfig, ShadeErrorGrowsWithinTheDerivedBound) {
     const Image ref = render_float_reference(scene);
     const ImageError ew = compare_images(iw, ref);
     const int L = pw.needs.max_edge_lines, W = pw.needs.max_segment_pixels;
+    // A scene whose every polygon has one shade at all its vertices (voxel faces with face
+    // normals) interpolates constants: the fraction bits cannot change it, so it cannot grow.
+    bool shades_vary = false;
+    for (const ScreenPolygon& q : scene.polygons)
+      for (const ScreenVertex& v : q.v)
+        for (int c = 0; c < 3; ++c) shades_vary = shades_vary || std::fabs(v.rgb[c] - q.v[0].rgb[c]) > 1e-9;
     double previous_mean = ew.mean_abs;
     for (int f : {12, 8, 5, 3, 1}) {
       SCOPED_TRACE("shade.frac_bits " + std::to_string(f));
@@ -167,7 +173,7 @@ TEST(NarrowConfig, ShadeErrorGrowsWithinTheDerivedBound) {
       // The mean error against the double reference grows as the fraction shrinks (up to noise
       // of a thousandth of a level where the extra error is far below a level).
       EXPECT_GE(en.mean_abs, previous_mean - 1e-3);
-      if (f <= 3) EXPECT_GT(en.mean_abs, ew.mean_abs);
+      if (f <= 3 && shades_vary) EXPECT_GT(en.mean_abs, ew.mean_abs);
       previous_mean = en.mean_abs;
     }
   }
