@@ -72,7 +72,7 @@ module segment_former #(
       used_q      <= '0;
       seg_valid_o <= 1'b0;
     end else begin
-      // seg_valid_o <= fire && (edge_eol_i || hit) whenever edge_ready_o.
+      // seg_valid_o <= fire && (edge_eol_i || open_match(edge_poly_i) != '0) whenever edge_ready_o.
       if (edge_ready_o) seg_valid_o <= 1'b0;
       if (fire) begin
         if (edge_eol_i) begin

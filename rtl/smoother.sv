@@ -43,8 +43,9 @@ module smoother #(
   localparam int unsigned SumBits = SB + 2;                          // four levels
   localparam int unsigned NB  = 3;                                   // 0..4 neighbours
   localparam int unsigned MB  = (WB > F) ? WB : F;
-  // d = 2^2F + 2^F·w·n_edge + w²·n_corner < 3·4·2^2MB: the divisor 2d and the dividend 2n + d
-  // (n <= 255·d, so 2n + d < 2^8 · 2d).
+  // d = 2^2F + 2^F·w·n_edge + w²·n_corner with n_edge, n_corner <= 4 and F < WB (W < 2:
+  // formats.hpp asserts it) is below 2^2F + 4·2^(F+WB) + 4·2^2WB <= 6.25·2^2MB, so the divisor
+  // 2d fits 2MB + 4 bits; the dividend 2n + d < 2^8 · 2d (n <= 255·d).
   localparam int unsigned DenBits = 2 * MB + 4;                      // holds 2d
   localparam int unsigned DvdBits = DenBits + SB;                    // holds 2n + d
   localparam int unsigned DivStages = SB;                            // one quotient bit each
@@ -246,16 +247,14 @@ module smoother #(
   logic [DenBits-1:0] den;
   logic [3*DvdBits-1:0] dvd;
   always_ff @(posedge clk_i) w2_q <= square(w_i);
-  logic [2*WB-1:0]    w2;
-  assign w2  = w2_q;
   assign den = (DenBits'(1) << (2*F)) + (times_count(DenBits'(w_i), n_edge_q) << F)
-             + times_count(DenBits'(w2), n_corner_q);
+             + times_count(DenBits'(w2_q), n_corner_q);
   always_comb begin
     for (int c = 0; c < 3; c++) begin
       // 2n + d, n = 2^2F·G1 + 2^F·w·S_edge + w²·S_corner.
       dvd[c*DvdBits +: DvdBits] =
           ((DvdBits'(g1_q[c*SB +: SB]) << (2*F)) + (DvdBits'(w_i) * DvdBits'(s_edge_q[c*SumBits +: SumBits]) << F)
-           + DvdBits'(w2) * DvdBits'(s_corner_q[c*SumBits +: SumBits])) * DvdBits'(2) + DvdBits'(den);
+           + DvdBits'(w2_q) * DvdBits'(s_corner_q[c*SumBits +: SumBits])) * DvdBits'(2) + DvdBits'(den);
     end
   end
 

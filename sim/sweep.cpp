@@ -190,14 +190,6 @@ std::string retessellate(const std::string& text, const std::string& path, doubl
   return out;
 }
 
-// The render with each pixel's owner turned from polygon id into scene object index (the truth's).
-Image by_object(const BuiltScene& scene, const Image& img) {
-  Image out = img;
-  for (int& o : out.owner)
-    if (o >= 0) o = scene.polygons.at(std::size_t(o)).object;
-  return out;
-}
-
 std::mutex rtl_mutex;  // the SystemC bench is one per process
 
 Result evaluate(const SweepArgs& a, const std::vector<Axis>& axes, long long k) {

@@ -52,14 +52,6 @@ struct Row {
   double mach_max = 0, mach_mean = 0;
 };
 
-// The render of `scene` with owners turned into scene object indices, as the truth has them.
-Image by_object(const BuiltScene& scene, const Image& img) {
-  Image out = img;
-  for (int& o : out.owner)
-    if (o >= 0) o = scene.polygons.at(std::size_t(o)).object;
-  return out;
-}
-
 struct Rendered {
   BuiltScene scene;
   PreparedScene frame;
@@ -100,7 +92,7 @@ Row measure(const std::string& stem, const std::string& shading, const Rendered&
   row.cycles_full = predict_cycles(r.frame, PixelOutput::FullFrame, r.config.max_active_edges, r.config).cycles;
   row.cycles_sparse = predict_cycles(r.frame, PixelOutput::Sparse, r.config.max_active_edges, r.config).cycles;
   const Image mine = by_object(r.scene, img);
-  row.truth = compare_images(mine, truth.image);
+  row.truth = compare_with_truth(r.scene, img, truth);
   row.mach_max = mach_band(mine, img.owner, &truth.image);
   row.mach_mean = mach_band_mean(mine, img.owner, &truth.image);
   return row;
@@ -140,7 +132,7 @@ CLI::App* add_voxel_compare_command(CLI::App& app, VoxelCompareArgs& a) {
                                                 "(averaged normals), Phong, flat + smoothing; error against the "
                                                 "analytic truth and cost");
   c->add_option("scenes", a.scenes, "scene files (default: scenes/voxel_{ellipsoid,beaded,two_lobed}.json)");
-  c->add_option("--weights", a.weights, "W of the smoother sweep")->delimiter(',')->check(CLI::Range(0.0, 1.99));
+  c->add_option("--weights", a.weights, "W of the smoother sweep")->delimiter(',')->check(CLI::Range(0.0, fmt::SmoothWMax));
   c->add_option("--md", a.md, "write the table (markdown) here");
   c->add_option("--images", a.images, "folder for <scene>_{flat,gouraud,phong,smooth,truth}.png");
   c->add_option("--repeat", a.repeat, "front-end timing: best of N builds")->check(CLI::Range(1, 1000));
@@ -170,7 +162,7 @@ int run_voxel_compare(const VoxelCompareArgs& a) {
     rows.push_back(measure(stem, "Phong, averaged normals", p, p.image, truth));
     Image smoothed08;
     for (double W : a.weights) {
-      const int w = static_cast<int>(std::lround(W * (1 << fmt::SmoothWFracBits)));
+      const int w = quantize_smooth_weight(W);
       const Image s = Smoother(w).apply(f.image);
       Row row = measure(stem, "flat + smoothing W = " + number(W, 2) + (std::fabs(W - 0.8) < 1e-9 ? " (Fig. 4)" : ""),
                         f, s, truth);

@@ -44,20 +44,7 @@ std::string rtl_systemc_unavailable() {
 #endif
 }
 
-std::string rtl_description() {
-  std::string s = "plain C++ harness (Verilated --cc watkins_top built for speed at the default configuration, "
-                  "Phong = 0 and 1)";
-#if WATKINS_HAVE_SYSTEMC_BENCH
-  s += ", " + detail::systemc_description();
-#endif
-  return s + " and " + std::to_string(other_tops()) + " per-configuration --cc top(s)";
-}
-
 namespace {
-
-bool is_default_top(const std::vector<RtlParameter>& params, ShadingMode shading) {
-  return params == rtl_parameters(Config{}, shading);
-}
 
 // The --cc model built with `params` (the default configuration's speed tops included), or null.
 const detail::CcModelEntry* find_cc_model(const std::vector<RtlParameter>& params) {
@@ -121,7 +108,7 @@ RtlResult run_rtl_frames(const std::vector<const PreparedScene*>& scenes, const 
     return r;
   }
   // The default configuration's waveforms come from the SystemC bench: its tops are the traced ones.
-  if (is_default_top(params, shading) && (opt.harness == RtlHarness::SystemC || !opt.trace_path.empty())) {
+  if (m->default_config && (opt.harness == RtlHarness::SystemC || !opt.trace_path.empty())) {
 #if WATKINS_HAVE_SYSTEMC_BENCH
     detail::run_systemc(scenes, opt, expected, r);
 #else

@@ -163,8 +163,6 @@ struct RtlResult {
   }
 };
 
-// The Verilated tops and benches this library has, in one line.
-std::string rtl_description();
 // "" when this build has the SystemC bench (RtlHarness::SystemC, --trace), else why not.
 std::string rtl_systemc_unavailable();
 // Power-up state of the SystemC bench's two tops (Verilated with --x-initial unique): seed 0

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "mesh_obj.hpp"
+#include "mesh_stl.hpp"
 #include "scene.hpp"
 #include "scene_types.hpp"
 
@@ -232,10 +233,11 @@ TEST(HostileObj, BinaryAndDevicesAreRefusedUnread) {
   watkins::SceneObject o = mesh_object();
   o.file = "/dev/zero";
   try {
-    watkins::load_obj_mesh(o, "h.json: objects[0].file", 1000);
+    int degenerate = 0;
+    watkins::load_mesh_file(o, "h.json: objects[0].file", 1000, false, degenerate);
     FAIL() << "/dev/zero loaded";
   } catch (const SceneError& e) {
-    EXPECT_STREQ(e.what(), "h.json: objects[0].file: OBJ file \"/dev/zero\" is not a regular file");
+    EXPECT_STREQ(e.what(), "h.json: objects[0].file: mesh file \"/dev/zero\" is not a regular file");
   }
 }
 

@@ -299,6 +299,15 @@ TEST(Portico, ShippedSceneFitsTheDefaultHardwareAndStaysNearTheTruth) {
   }
 }
 
+// A scene of STL meshes exports through the same mesh reader the builder uses (it was read as
+// OBJ once): scenes/stl.json's cube (12 facets) and cylinder (96) come back as 108 triangles.
+TEST(StlExport, MeshFilesAreReadAsTheBuilderReadsThem) {
+  const BuiltScene s = load_scene(WATKINS_SOURCE_DIR "/scenes/stl.json");
+  const StlExport e = export_stl(*s.source, std::size_t{1} << 22);
+  EXPECT_EQ(e.facets.size(), 108u);
+  EXPECT_EQ(e.degenerate, 0);
+}
+
 // scenes/vault_bay.stl is `watkins export-stl scenes/vault_bay.json` byte for byte, and its facets
 // are the bay's: every vertex (z negated back) on a barrel of the vault or on a face of a pier, every
 // normal the unit cross product of its facet, pointing to the front (below the vault: down).

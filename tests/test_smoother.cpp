@@ -70,9 +70,9 @@ TEST(Smoother, HandComputedWindow) {
 }
 
 TEST(Smoother, RoundsHalfUp) {
-  EXPECT_EQ(Smoother::round_divide(5, 2), 3);
-  EXPECT_EQ(Smoother::round_divide(4, 3), 1);
-  EXPECT_EQ(Smoother::round_divide(5, 3), 2);
+  EXPECT_EQ(round_div(5, 2), 3);
+  EXPECT_EQ(round_div(4, 3), 1);
+  EXPECT_EQ(round_div(5, 3), 2);
 }
 
 // Against the real-valued formula: within half a level everywhere (exact rounding).

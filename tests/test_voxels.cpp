@@ -325,18 +325,15 @@ TEST(Voxels, SmoothingTheFlatPhantomWeakensItsBandsButNotItsError) {
   const PreparedScene p = prepare(s);
   WatkinsTop top(Config{});
   const Image flat = top.render(p);
-  const Image smooth = Smoother(static_cast<int>(std::lround(0.8 * (1 << fmt::SmoothWFracBits)))).apply(flat);
+  const Image smooth = Smoother(quantize_smooth_weight(0.8)).apply(flat);
   const AnalyticTruth t = render_analytic_truth(s);
   ASSERT_TRUE(t.unavailable.empty());
-  Image flat_obj = flat, smooth_obj = smooth;  // owners as scene objects, as the truth has them
-  for (Image* im : {&flat_obj, &smooth_obj})
-    for (int& o : im->owner)
-      if (o >= 0) o = s.polygons.at(std::size_t(o)).object;
+  const Image flat_obj = by_object(s, flat), smooth_obj = by_object(s, smooth);  // owners as the truth's
   const double band_flat = mach_band_mean(flat_obj, flat.owner, &t.image);
   const double band_smooth = mach_band_mean(smooth_obj, flat.owner, &t.image);
   EXPECT_GT(band_flat, 40);
   EXPECT_LT(band_smooth * 8, band_flat);
-  const ImageError ef = compare_images(flat_obj, t.image), es = compare_images(smooth_obj, t.image);
+  const ImageError ef = compare_with_truth(s, flat, t), es = compare_with_truth(s, smooth, t);
   EXPECT_LT(es.mean_abs, ef.mean_abs);
   EXPECT_GT(es.mean_abs, 0.85 * ef.mean_abs);  // measured: 51.57 against 57.14
 }

@@ -86,7 +86,16 @@ OutputFiles::~OutputFiles() {
     if (!f.temp.empty()) std::remove(f.temp.c_str());
 }
 
-ImageError compare_images(const Image& a, const Image& b) {
+namespace {
+bool near_geometry_difference(const Image& a, const Image& b, int x, int y, int guard) {
+  for (int ny = std::max(0, y - guard); ny <= std::min(a.height - 1, y + guard); ++ny)
+    for (int nx = std::max(0, x - guard); nx <= std::min(a.width - 1, x + guard); ++nx)
+      if (geometry_differs(a, b, std::size_t(ny) * a.width + nx)) return true;
+  return false;
+}
+}  // namespace
+
+ImageError compare_images(const Image& a, const Image& b, int guard) {
   if (a.width != b.width || a.height != b.height)
     throw std::invalid_argument("compare_images: images differ in size");
   ImageError e;
@@ -103,6 +112,10 @@ ImageError compare_images(const Image& a, const Image& b) {
       const std::size_t i = std::size_t(y) * a.width + x;
       if (a.owner[i] != b.owner[i]) {
         ++e.visibility_differs;
+        continue;
+      }
+      if (guard > 0 && near_geometry_difference(a, b, x, y, guard)) {
+        ++e.guarded;
         continue;
       }
       ++e.compared;

@@ -51,8 +51,11 @@ struct ImageError {
   double mean_abs = 0;       // mean |Δ| over compared pixels and channels
   int over_one = 0;          // compared pixels with some channel off by more than 1 level
   int differing = 0;         // pixels (any) whose RGB differs at all
+  int guarded = 0;           // same-polygon pixels left out: within `guard` of a geometry difference
 };
-ImageError compare_images(const Image& a, const Image& b);
+// guard > 0 leaves out the pixels within `guard` pixels (a (2·guard+1)² window) of one whose
+// coverage or polygon differs: a smoothed frame spreads such a pixel into its neighbours.
+ImageError compare_images(const Image& a, const Image& b, int guard = 0);
 
 // Pixel i (row-major) as compare_images judges it: geometry differs when it is covered in one
 // image only or by different polygons; otherwise its error is the largest |Δ| over R, G, B.

@@ -74,6 +74,10 @@ QuantizedVertex quantize_vertex(const ScreenVertex& v, ShadingMode shading, cons
   return q;
 }
 
+int quantize_smooth_weight(double W) {
+  return static_cast<int>(std::clamp<long>(std::lround(W * (1 << fmt::SmoothWFracBits)), 0, (1 << fmt::SmoothWBits) - 1));
+}
+
 QuantizedMaterial quantize_material(const PhongMaterial& m) {
   auto in = [](double x, double lo, double hi) { return std::isfinite(x) && x >= lo && x <= hi; };
   const double w_max = double((1 << fmt::MaterialBits) - 1) / (1 << fmt::MaterialFracBits);
@@ -234,8 +238,7 @@ static PreparedScene prepare_unnamed(const BuiltScene& scene, const Config& cfg)
   out.polygons = static_cast<int>(scene.polygons.size());
   out.shading = scene.shading;
   out.depth_tie = scene.depth_tie;
-  out.smooth_w = static_cast<int>(std::clamp<long>(std::lround(scene.smooth * (1 << fmt::SmoothWFracBits)), 0,
-                                                   (1 << fmt::SmoothWBits) - 1));
+  out.smooth_w = quantize_smooth_weight(scene.smooth);
   const bool phong = scene.shading == ShadingMode::Phong;
   if (phong) prepare_phong_constants(scene, cfg, out);
   const ChannelFormats formats = cfg.channels(scene.shading);

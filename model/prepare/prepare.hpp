@@ -39,6 +39,9 @@ QuantizedVertex quantize_vertex(const ScreenVertex& v, ShadingMode shading = Sha
                                 const Config& config = Config{});
 // A material in the phong_shader's formats; throws SceneError when a value does not fit.
 QuantizedMaterial quantize_material(const PhongMaterial& m);
+// Herman & Liu's weight W in the smoother's format (Frame::smooth_w): W · 2^SmoothWFracBits
+// rounded, clamped to the SmoothWBits word.
+int quantize_smooth_weight(double W);
 
 // Edge record of the edge from a to b for a screen of `height` lines; false when it crosses no
 // pixel centre on screen (horizontal, between two centres, or above/below the screen).

@@ -418,17 +418,12 @@ AnalyticTruth render_analytic_truth(const BuiltScene& scene) {
   return out;
 }
 
-namespace {
-
-// The render with each pixel's owner turned from polygon id into scene object index.
 Image by_object(const BuiltScene& scene, const Image& img) {
   Image out = img;
   for (int& o : out.owner)
     if (o >= 0) o = scene.polygons.at(std::size_t(o)).object;
   return out;
 }
-
-}  // namespace
 
 ImageError compare_with_truth(const BuiltScene& scene, const Image& img, const AnalyticTruth& truth) {
   return compare_images(by_object(scene, img), truth.image);

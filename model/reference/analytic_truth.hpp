@@ -31,6 +31,9 @@ AnalyticTruth render_analytic_truth(const BuiltScene& scene);
 
 // Error of `img` (a render of `scene`, owners = polygon ids) against the truth, over pixels where
 // both show the same scene object; silhouette pixels covered by one of them only are counted apart.
+// The render with each pixel's owner turned from polygon id into scene object index, as the
+// truth's owners are (what compare_with_truth compares; the Mach-band measures take it too).
+Image by_object(const BuiltScene& scene, const Image& img);
 ImageError compare_with_truth(const BuiltScene& scene, const Image& img, const AnalyticTruth& truth);
 // |img - truth| x16 per pixel; magenta where coverage or the scene object differs.
 Image truth_diff_image(const BuiltScene& scene, const Image& img, const AnalyticTruth& truth);

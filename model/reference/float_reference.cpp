@@ -44,31 +44,29 @@ std::array<double, 3> pixel_levels(const BuiltScene& scene, int poly, const Attr
   return phong_levels(m, {u.x, u.y, u.z}, scene.light, scene.eye);
 }
 
-}  // namespace
-
 // Herman & Liu's 3x3 weighted mean in double on the unrounded levels, with W as given (not
 // rounded to the smoother's 1/128 steps): the twin's difference from it is what the smoother's
 // integer arithmetic and W's format cost on top of the pipeline's quantization. f_i as in the
 // twin: a neighbour counts when it is on the screen and covered; uncovered pixels are not smoothed.
-namespace {
 void smooth_levels(Image& img, const std::vector<double>& levels, double w) {
-  const int W = img.width, H = img.height;
-  for (int y = 0; y < H; ++y)
-    for (int x = 0; x < W; ++x) {
-      if (!img.covered[std::size_t(y) * W + x]) continue;
+  const int width = img.width, height = img.height;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      if (!img.is_covered(x, y)) continue;
       double num[3] = {0, 0, 0}, den = 0;
       for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
           const int nx = x + dx, ny = y + dy;
-          if (nx < 0 || ny < 0 || nx >= W || ny >= H || !img.covered[std::size_t(ny) * W + nx]) continue;
+          if (nx < 0 || ny < 0 || nx >= width || ny >= height || !img.is_covered(nx, ny)) continue;
           const double f = (dx == 0 && dy == 0) ? 1.0 : (dx == 0 || dy == 0) ? w : w * w;
           den += f;
-          for (int c = 0; c < 3; ++c) num[c] += f * levels[(std::size_t(ny) * W + nx) * 3 + c];
+          for (int c = 0; c < 3; ++c) num[c] += f * levels[(std::size_t(ny) * width + nx) * 3 + c];
         }
       std::uint8_t* px = img.at(x, y);
       for (int c = 0; c < 3; ++c) px[c] = static_cast<std::uint8_t>(std::clamp(std::lround(num[c] / den), 0L, 255L));
     }
 }
+
 }  // namespace
 
 Image render_float_reference(const BuiltScene& scene, FloatReferenceStats* stats) {

@@ -7,10 +7,8 @@
 #include "mesh_polygons.hpp"
 
 #include <charconv>
-#include <cmath>
 #include <utility>
 
-#include <glm/geometric.hpp>
 
 namespace watkins {
 namespace {
@@ -189,10 +187,6 @@ IndexedMesh obj_mesh_from_text(const std::string& text, const SceneObject& o, co
   resolve_normals(pm, o, fail);
   if (o.max_edge_length > 0) split_long_edges(pm, o.max_edge_length, o.transform.scale, max_faces, fail);
   return indexed_mesh_from_polygons(pm, o, fail);
-}
-
-IndexedMesh load_obj_mesh(const SceneObject& o, const std::string& where, std::size_t max_faces) {
-  return obj_mesh_from_text(read_mesh_file(o, where, "OBJ"), o, where, max_faces);
 }
 
 }  // namespace watkins

@@ -93,11 +93,12 @@ struct BuiltScene {
   std::shared_ptr<const Scene> source;
 };
 
-// Load and validate a scene file (JSON). Relative OBJ paths are resolved against its folder.
 // A scene file's text (at most 16 MiB; SceneError naming the file when it cannot be read).
 std::string read_scene_text(const std::string& path);
+// Load and validate a scene file (JSON). Relative mesh and volume file paths (OBJ, STL, raw) are
+// resolved against its folder.
 BuiltScene load_scene(const std::string& path, const BuildOptions& opt = {});
-// Same, from text; `name` is used in messages and `base_dir` for OBJ paths.
+// Same, from text; `name` is used in messages and `base_dir` for mesh and volume file paths.
 BuiltScene load_scene_text(const std::string& text, const std::string& name,
                            const std::string& base_dir, const BuildOptions& opt = {});
 // The scene compiled into the binary, used when `watkins render` gets no file.

@@ -137,14 +137,9 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
     CamObject co;
     co.src = &o;
     co.index = static_cast<int>(i);
-    if (o.type == ObjectType::Mesh) {
-      co.mesh = load_mesh_file(o, sc.name + ": " + o.field + ".file", opt.max_faces - std::min(faces, opt.max_faces),
-                               opt.strict, out.degenerate);
-      faces += co.mesh.faces.size();
-    } else {
-      co.mesh = tessellate_surface(o);
-      if (o.normals == MeshNormals::Crease) crease_surface_normals(co.mesh, o);
-    }
+    co.mesh = object_mesh(o, sc.name + ": " + o.field + ".file", opt.max_faces - std::min(faces, opt.max_faces),
+                          opt.strict, out.degenerate);
+    if (o.type == ObjectType::Mesh) faces += co.mesh.faces.size();  // files are counted as read
     const glm::dmat3 rot = rotation(o.transform.rotate_deg);
     const glm::dvec3 s = o.transform.scale;
     for (size_t k = 0; k < co.mesh.position.size(); ++k) {

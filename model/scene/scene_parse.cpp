@@ -236,8 +236,8 @@ void parse_shading(const Reader& r, const json& j, Shading& s) {
   });
   opt(j, f, "cull_backfaces", [&](const json& v, const std::string& ff) { s.cull_backfaces = r.boolean(v, ff); });
   opt(j, f, "flat", [&](const json& v, const std::string& ff) { s.flat = r.boolean(v, ff); });
-  // W of the smoother's SmoothWBits word: 0 .. (2^8 - 1) / 2^7.
-  opt(j, f, "smooth", [&](const json& v, const std::string& ff) { s.smooth = r.number_in(v, ff, 0, 255.0 / 128); });
+  // W of the smoother's word: 0 .. fmt::SmoothWMax.
+  opt(j, f, "smooth", [&](const json& v, const std::string& ff) { s.smooth = r.number_in(v, ff, 0, fmt::SmoothWMax); });
   opt(j, f, "specular_m", [&](const json& v, const std::string& ff) { s.specular_m = r.number_in(v, ff, 1, 1000); });
 }
 
@@ -538,7 +538,7 @@ SceneObject parse_object(const Reader& r, const json& j, const std::string& f, i
     if (o.u % 2) r.fail(f + ".u", "must be even (the key of the vault is a vertex), got " + std::to_string(o.u));
   } else if (type == "mesh") {
     o.type = ObjectType::Mesh;
-    common({"file", "normals", "crease_angle_deg", "max_edge_length", "weld_tolerance"});
+    common({"file", "normals", "max_edge_length", "weld_tolerance"});
     std::string file = r.string(r.required(j, f, "file"), f + ".file");
     if (file.empty()) r.fail(f + ".file", "must not be empty");
     std::filesystem::path p(file);
@@ -550,12 +550,6 @@ SceneObject parse_object(const Reader& r, const json& j, const std::string& f, i
       else r.fail(ff, "expected \"file\" or \"average\", got " + show(v));
     });
     o.normals_given = j.contains("normals");
-    opt(j, f, "crease_angle_deg", [&](const json& v, const std::string& ff) {
-      if (o.normals_given)
-        r.fail(ff, "crease_angle_deg chooses the normals (smoothed across edges sharper than it): leave out \"normals\"");
-      o.crease_angle_deg = r.number_in(v, ff, 0, 180);
-      o.normals = MeshNormals::Crease;
-    });
     opt(j, f, "max_edge_length", [&](const json& v, const std::string& ff) { o.max_edge_length = r.positive(v, ff); });
     opt(j, f, "weld_tolerance", [&](const json& v, const std::string& ff) {
       o.weld_tolerance = r.number_in(v, ff, 0, kMaxMagnitude);
@@ -583,9 +577,12 @@ SceneObject parse_object(const Reader& r, const json& j, const std::string& f, i
                " (expected sphere, cone, quarter_torus, hyperbolic_paraboloid, bezier_patch, cross_vault, pier, portico, "
                "mesh, voxels or polygons)");
   }
-  if (o.type != ObjectType::Mesh && o.type != ObjectType::Polygons && o.type != ObjectType::Voxels)
-    // The tessellation's faces give the normals (crease rule) instead of the exact ones.
+  // A mesh's or a tessellated surface's normals from its faces by the crease rule (instead of
+  // the file's or the exact ones). Voxels refuse the key in parse_voxels.
+  if (o.type != ObjectType::Polygons && o.type != ObjectType::Voxels)
     opt(j, f, "crease_angle_deg", [&](const json& v, const std::string& ff) {
+      if (o.normals_given)
+        r.fail(ff, "crease_angle_deg chooses the normals (smoothed across edges sharper than it): leave out \"normals\"");
       o.crease_angle_deg = r.number_in(v, ff, 0, 180);
       o.normals = MeshNormals::Crease;
     });

@@ -11,7 +11,6 @@
 #include <glm/mat3x3.hpp>
 
 #include "camera.hpp"
-#include "mesh_obj.hpp"
 #include "scene_error.hpp"
 #include "surfaces.hpp"
 
@@ -29,8 +28,7 @@ StlExport export_stl(const Scene& sc, std::size_t max_faces) {
       ++out.screen_polygons;
       continue;
     }
-    const IndexedMesh m = o.type == ObjectType::Mesh ? load_obj_mesh(o, sc.name + ": " + o.field + ".file", max_faces)
-                                                     : tessellate_surface(o);
+    const IndexedMesh m = object_mesh(o, sc.name + ": " + o.field + ".file", max_faces, false, out.degenerate);
     const glm::dmat3 rot = rotation(o.transform.rotate_deg);
     std::vector<glm::dvec3> world(m.position.size());
     // World -> STL: z negated (right-handed); with the vertex order kept, the mirror turns the

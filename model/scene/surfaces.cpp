@@ -9,6 +9,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "mesh_polygons.hpp"
+#include "mesh_stl.hpp"
 #include "voxels.hpp"
 
 namespace watkins {
@@ -540,6 +542,14 @@ IndexedMesh tessellate_surface(const SceneObject& o) {
     case ObjectType::Voxels: return voxel_surface(*o.voxels, o.normals == MeshNormals::Average, o.triangles);
     default: return {};
   }
+}
+
+IndexedMesh object_mesh(const SceneObject& o, const std::string& where, std::size_t max_faces, bool strict,
+                        int& degenerate) {
+  if (o.type == ObjectType::Mesh) return load_mesh_file(o, where, max_faces, strict, degenerate);
+  IndexedMesh m = tessellate_surface(o);
+  if (o.normals == MeshNormals::Crease) crease_surface_normals(m, o);
+  return m;
 }
 
 }  // namespace watkins

@@ -37,6 +37,12 @@ IndexedMesh tessellate_surface(const SceneObject& o);
 // Faces tessellate_surface makes for `o` at most (before culling), for the builder's budget.
 std::size_t estimated_faces(const SceneObject& o);
 
+// Any object but "polygons" as an object-space mesh: a mesh file read (OBJ or STL, load_mesh_file:
+// at most `max_faces` faces, `strict` and `degenerate` as there) or a surface tessellated, with
+// its crease-angle normals when it asks for them. What the builder and the STL export both draw.
+IndexedMesh object_mesh(const SceneObject& o, const std::string& where, std::size_t max_faces, bool strict,
+                        int& degenerate);
+
 // o.max_edge_length > 0: sets o.u, o.v (cone: o.cap_rings; pier, portico: o.box_segments) to the
 // fewest segments for which no edge of the tessellation, measured in world units (after the
 // object's scale), is longer than it. Returns an error message (no counts fit in 1024), else "".

@@ -99,7 +99,7 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
   if (frame.width < 1 || frame.height < 1)  // the top asserts a_frame_size: no frame to time
     throw std::invalid_argument("cycle model: frame size " + std::to_string(frame.width) + "x" +
                                 std::to_string(frame.height));
-  const bool smooth = frame.smooth_w != 0;
+  const bool smooth = frame.smoothed();
   const bool sparse = output == PixelOutput::Sparse && !smooth;
   // Smoothing: the smoother's pixel i comes from its column i + width + 1 (the buffer's pixel of
   // that raster index, or a flush step after the buffer's last): the cycle that pixel is loaded.

@@ -69,9 +69,14 @@ constexpr int MaxMaterials = 1 << MaterialIdBits;        // Phong materials per 
 constexpr int MaxEdges = 1 << EdgeIdBits;                // edge records per frame (edge ids)
 // $bits(watkins_pkg::edge_t): y0, n, poly, material, then value and slope of every channel.
 constexpr int EdgeRecordBits = 2 * LineBits + PolyIdBits + MaterialIdBits + 2 * NumChannels * ChannelBits;
+// The smoother's largest W (the scene's and the command line's range; C++ only).
+constexpr double SmoothWMax = double((1 << SmoothWBits) - 1) / (1 << SmoothWFracBits);
 
 static_assert(FracBits >= SubPixelBits, "X channel must hold the vertex sub-pixel bits");
 static_assert(DepthBits + FracBits + 2 <= ChannelBits, "depth (plus sign and guard) must fit");
 static_assert(VertexIntBits + FracBits + 1 <= ChannelBits, "X must fit a channel word");
 static_assert(ChannelBits + RecipBits + 1 <= 127, "span products must fit 128-bit model math");
+// W < 2 keeps the smoother's denominator d = 2^2F + 2^F·w·n_edge + w²·n_corner below
+// 6.25·2^(2·SmoothWBits), so 2d fits rtl/smoother.sv's DenBits = 2·SmoothWBits + 4.
+static_assert(SmoothWFracBits < SmoothWBits, "smoother: W must stay below 2 (its divider's width)");
 }  // namespace watkins::fmt

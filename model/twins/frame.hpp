@@ -10,6 +10,7 @@
 #include "depth_tie.hpp"
 #include "edge_record.hpp"
 #include "fixed_point.hpp"
+#include "formats.hpp"
 #include "shading_mode.hpp"
 
 namespace watkins {
@@ -33,6 +34,8 @@ struct Frame {
   // Herman & Liu's 3x3 smoothing of the finished image (model/twins/smoother.hpp, the top's
   // smooth_w_i): W with SmoothWFracBits fraction bits; 0 = off (the smoother is bypassed).
   int smooth_w = 0;
+  // Whether the frame is smoothed: the pin's SmoothWBits word is not zero (as the RTL tests it).
+  bool smoothed() const { return (smooth_w & ((1 << fmt::SmoothWBits) - 1)) != 0; }
   std::vector<EdgeRecord> edges;  // sorted by (y0, id)
 };
 

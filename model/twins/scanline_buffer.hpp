@@ -61,8 +61,8 @@ class ScanlineBuffer {
   // The finished line's pixel at x (background where nothing was written).
   std::array<std::uint8_t, 3> pixel(int x) const { return written_[x] ? rgb_[x] : background_; }
   bool covered(int x) const { return written_[x] != 0; }
-  // Sparse read-out (the RTL's find-next-written search): the first covered x >= x, or width()
-  // when there is none.
+  // Sparse read-out: the first covered x >= x, or width() when there is none. The RTL takes the
+  // lowest written bit of its read bank, the same pixel: every bit below x is already cleared.
   int next_covered(int x) const {
     while (x < width() && !written_[x]) ++x;
     return x;

@@ -100,7 +100,7 @@ Image WatkinsTop::render(const Frame& frame, const PipelineObserver& observe) {
     }
   });
   // The smoother after the line buffer, when the frame enables it (it sees the full raster).
-  if (frame.smooth_w != 0) return Smoother(frame.smooth_w).apply(img);
+  if (frame.smoothed()) return Smoother(frame.smooth_w).apply(img);
   return img;
 }
 

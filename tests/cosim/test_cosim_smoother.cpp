@@ -27,7 +27,7 @@ void check_smoothed(const std::string& name, ShadingMode shading, double w) {
     GTEST_SKIP() << "the scene does not load or fit in this mode: " << e.what();
   }
   if (p.width > rtl_max_width()) GTEST_SKIP() << "wider than the RTL line buffer";
-  ASSERT_EQ(p.smooth_w, static_cast<int>(std::lround(w * 128)));
+  ASSERT_EQ(p.smooth_w, quantize_smooth_weight(w));
   const Image model = WatkinsTop().render(p);
   PreparedScene plain = p;
   plain.smooth_w = 0;
