@@ -11,6 +11,7 @@
 
 #include "depth_tie.hpp"
 #include "scene_error.hpp"
+#include "screen_curve.hpp"
 #include "screen_polygon.hpp"
 #include "shading_mode.hpp"
 
@@ -83,6 +84,10 @@ struct BuiltScene {
   double eye[3] = {0, 0, -1};
   std::vector<PhongMaterial> materials;
   std::vector<ScreenPolygon> polygons;
+  // Curved surfaces drawn by Whitted's method (screen_curve.hpp): their edges, and how many
+  // regions they pair in (preparation gives region r the polygon id polygons.size() + r).
+  std::vector<ScreenCurve> curves;
+  int curve_regions = 0;
   bool cull_backfaces = true;  // the setting the polygons were built with (the truth hides back sides too)
   int culled_backfaces = 0;   // dropped by back-face culling
   int near_clipped = 0;       // dropped: a vertex behind the camera's near plane
