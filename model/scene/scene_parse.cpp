@@ -503,7 +503,26 @@ SceneObject parse_object(const Reader& r, const json& j, const std::string& f, i
     uv(2, 12, 2, 12);
   } else if (type == "bezier_patch") {
     o.type = ObjectType::BezierPatch;
-    common({"control_points", "u", "v", "max_edge_length"});
+    common({"control_points", "u", "v", "max_edge_length", "draw", "k_u", "k_v"});
+    opt(j, f, "draw", [&](const json& v, const std::string& ff) {
+      const std::string d = r.string(v, ff);
+      if (d != "curves" && d != "polygons") r.fail(ff, "expected \"curves\" or \"polygons\", got " + show(v));
+      o.draw_curves = d == "curves";
+    });
+    // Whitted's interior edges: parameters strictly inside (0, 1), increasing.
+    for (const char* key : {"k_u", "k_v"})
+      opt(j, f, key, [&](const json& v, const std::string& ff) {
+        const json& a = r.array(v, ff);
+        std::vector<double>& k = std::string(key) == "k_u" ? o.k_u : o.k_v;
+        if (a.size() > 64) r.fail(ff, "at most 64 interior edges, got " + std::to_string(a.size()));
+        for (std::size_t n = 0; n < a.size(); ++n) {
+          const std::string kf = ff + "[" + std::to_string(n) + "]";
+          const double x = r.number_in(a[n], kf, 0, 1);
+          if (x <= 0 || x >= 1 || (!k.empty() && x <= k.back()))
+            r.fail(kf, "interior edges need increasing parameters strictly between 0 and 1, got " + show(a[n]));
+          k.push_back(x);
+        }
+      });
     const std::string cf = f + ".control_points";
     const json& cp = r.array(r.required(j, f, "control_points"), cf);
     if (cp.size() != 16) r.fail(cf, "expected 16 points (4 rows of 4), got " + std::to_string(cp.size()));

@@ -80,6 +80,11 @@ struct SceneObject {
   double minor_radius = 0.5;
   double c = 1.0, size = 1.0;     // hyperbolic paraboloid z = (x^2 - y^2)/c, |x|,|y| <= size
   std::vector<glm::dvec3> control_points;  // Bezier patch: 16, row by row
+  // Bezier patch: "draw": "curves" draws it by Whitted's edge description (model/curves) instead of
+  // polygons; "k_u", "k_v": his interior edges u = k_u[i], v = k_v[j] (each in (0, 1)), cutting it
+  // into subpatches.
+  bool draw_curves = false;
+  std::vector<double> k_u, k_v;
   int cap_rings = 1;              // cone: rings of the base cap (more only under max_edge_length)
   // Cross vault / portico bay: plan size (x, z) of a bay, crown height above the springing line;
   // the two barrels are half ellipses of that rise (surfaces.hpp, cross_vault).
