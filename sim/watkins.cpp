@@ -340,9 +340,11 @@ int render(const RenderArgs& a) {
                 scene.max_curve_line, c.silhouettes, c.default_one, c.default_many, c.default_side_twice,
                 c.default_inside);
     std::printf("newton        %lld crossings: %.3f iterations each (%lld in one, %lld in none, max %d), %lld by "
-                "brute force (%lld left the piece, %lld did not converge)\n",
+                "brute force (%lld left the piece, %lld did not converge); |E_y - y| at most %.2g px after the estimate, "
+                "%.2g px after one iteration (%lld of %lld stepped crossings within 1/1024 px)\n",
                 c.newton.crossings, c.newton.mean_iterations(), c.newton.one_iteration, c.newton.zero_iterations,
-                c.newton.max_iterations, c.newton.brute_force(), c.newton.left_piece, c.newton.no_convergence);
+                c.newton.max_iterations, c.newton.brute_force(), c.newton.left_piece, c.newton.no_convergence, c.newton.max_estimate_residual,
+                c.newton.max_one_iteration_residual, c.newton.one_iteration_close, c.newton.stepped);
   }
   std::printf("edge records  %zu (%d bits each)\n", prepared.edges.size(), cfg.edge_record_bits(prepared.shading));
   if (!a.config.empty())

@@ -14,6 +14,10 @@ void NewtonStats::add(const NewtonStats& o) {
   left_piece += o.left_piece;
   no_convergence += o.no_convergence;
   max_iterations = std::max(max_iterations, o.max_iterations);
+  stepped += o.stepped;
+  one_iteration_close += o.one_iteration_close;
+  max_estimate_residual = std::max(max_estimate_residual, o.max_estimate_residual);
+  max_one_iteration_residual = std::max(max_one_iteration_residual, o.max_one_iteration_residual);
 }
 
 namespace {
@@ -60,6 +64,14 @@ std::vector<double> scan_line_crossings(const EdgeY& ey, double t_top, double t_
         break;
       }
       ey(tn, y, dy);
+      if (it <= 1 && n > n0) {  // stepping from line to line (the first line starts at the end point)
+        double& worst = it == 0 ? stats.max_estimate_residual : stats.max_one_iteration_residual;
+        worst = std::max(worst, std::fabs(y - target));
+        if (it == 0) ++stats.stepped;
+        // Within 1/1024 px after at most one iteration: as good as any fixed-point X word needs.
+        if (std::fabs(y - target) < 1.0 / 1024 && (it == 1 || std::fabs(y - target) < opt.tolerance))
+          ++stats.one_iteration_close;
+      }
       if (std::fabs(y - target) < opt.tolerance) {
         converged = true;
         break;

@@ -19,6 +19,12 @@ struct NewtonStats {
   long long left_piece = 0;       // brute force because an iterate left the piece (or was not finite)
   long long no_convergence = 0;   // brute force because the iteration limit was reached
   int max_iterations = 0;
+  // |E_y(t) - y_n| in pixels, largest over the crossings after a piece's first (those step from
+  // the previous line; the first starts from the end point): of the first-order estimate alone,
+  // and after exactly one Newton iteration (what hardware doing one iteration per line would leave).
+  double max_estimate_residual = 0, max_one_iteration_residual = 0;
+  long long stepped = 0;              // crossings after a piece's first, where Newton ran
+  long long one_iteration_close = 0;  // of which within 1/1024 px after one iteration (or none)
   long long brute_force() const { return crossings - by_newton; }
   double mean_iterations() const { return by_newton ? double(iterations) / double(by_newton) : 0.0; }
   void add(const NewtonStats& o);

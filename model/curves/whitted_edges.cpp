@@ -110,7 +110,69 @@ std::vector<double> sign_changes(const std::function<double(double)>& g, int sam
 
 }  // namespace
 
+// A polynomial sum c[k] t^k.
+using Poly = std::vector<double>;
+
+double eval(const Poly& p, double t) {
+  double v = 0;
+  for (std::size_t k = p.size(); k-- > 0;) v = v * t + p[k];
+  return v;
+}
+
+Poly derivative(const Poly& p) {
+  Poly d;
+  for (std::size_t k = 1; k < p.size(); ++k) d.push_back(double(k) * p[k]);
+  return d;
+}
+
+// The roots of p in (0, 1) where it changes sign, exactly isolated: between consecutive zeros of
+// p' (found the same way) p is monotonic, so each interval holds at most one, found by bisection.
+// A root of even multiplicity (p touches zero) is no sign change and is left out.
+std::vector<double> poly_roots(const Poly& p) {
+  std::vector<double> cuts = {0};
+  if (p.size() > 2)
+    for (double t : poly_roots(derivative(p))) cuts.push_back(t);
+  cuts.push_back(1);
+  std::vector<double> out;
+  for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+    double a = cuts[k], b = cuts[k + 1], pa = eval(p, a);
+    if ((pa < 0) == (eval(p, b) < 0)) continue;
+    for (int it = 0; it < 200; ++it) {
+      const double m = 0.5 * (a + b);
+      if (m == a || m == b) break;
+      const double pm = eval(p, m);
+      if ((pm < 0) == (pa < 0)) a = m, pa = pm;
+      else b = m;
+    }
+    const double z = 0.5 * (a + b);
+    if (z > 1e-12 && z < 1 - 1e-12) out.push_back(z);
+  }
+  return out;
+}
+
 std::vector<double> ScreenEdge::y_extrema(int samples) const {
+  if (!c_.hermite) {
+    // An iso-parameter line of a bicubic patch is a cubic in t, and so are its camera-space Y and
+    // Z (a linear map): their Hermite form from the end points and end tangents is exact. Then
+    // Y' Z - Y Z' is a quartic (the t^5 terms cancel) whose sign changes are the extrema of y_s.
+    glm::dvec3 p0, p1, u0, v0, u1, v1;
+    f_(c_.a.x, c_.a.y, p0, u0, v0);
+    f_(c_.b.x, c_.b.y, p1, u1, v1);
+    const glm::dvec2 d = c_.b - c_.a;
+    const glm::dvec3 d0 = u0 * d.x + v0 * d.y, d1 = u1 * d.x + v1 * d.y;
+    auto cubic = [&](int axis) {
+      return Poly{p0[axis], d0[axis], 3 * (p1[axis] - p0[axis]) - 2 * d0[axis] - d1[axis],
+                  2 * (p0[axis] - p1[axis]) + d0[axis] + d1[axis]};
+    };
+    const Poly Y = cubic(1), Z = cubic(2), dY = derivative(Y), dZ = derivative(Z);
+    Poly n(5, 0.0);
+    for (std::size_t i = 0; i < dY.size(); ++i)
+      for (std::size_t j = 0; j < Z.size(); ++j)
+        if (i + j < 5) n[i + j] += dY[i] * Z[j] - Y[j] * dZ[i];
+    return poly_roots(n);
+  }
+  // The silhouette's Hermite in (u, v) mapped through the patch is of degree 18 in t: its extrema
+  // are bracketed on a grid instead.
   return sign_changes(
       [this](double t) {
         const glm::dvec2 uv = c_.at(t), d = c_.derivative(t);
@@ -285,6 +347,7 @@ PatchEdges describe_patch(const PatchPoint& f, const Projection& proj, const Whi
       auto point = [&](const Hit& h) { return sides[std::size_t(loop[h.k])].at(h.t); };
       const ParamCurve sil = whitted_silhouette(point(hits[0]), point(hits[1]));
       ++stats.silhouettes;
+      out.silhouettes.push_back(sil);
       const std::vector<EdgePiece> sil_pieces = scan_edge(f, proj, sil, 0, 1, opt, stats);
       // The boundary from hit `from` to hit `to` along the loop (they are on different sides), as
       // side ranges, and the facing in the middle of its longest range.

@@ -67,8 +67,9 @@ class ScreenEdge {
   ScreenEdge(const PatchPoint& f, const Projection& proj, const ParamCurve& c) : f_(f), proj_(proj), c_(c) {}
   // E_y(t) and dE_y/dt: y_s = H/2 - k Y/Z gives dy_s/dt = -k (Y' Z - Y Z') / Z^2, exact.
   void y(double t, double& y, double& dy) const;
-  // The t in (0, 1) where dE_y/dt = 0: zeros of Y' Z - Y Z' (a quartic for an iso-parameter line:
-  // cubic Y, Z), bracketed on a grid of `samples` and refined by bisection. Sorted.
+  // The t in (0, 1) where dE_y/dt changes sign: zeros of Y' Z - Y Z'. For an iso-parameter line
+  // (cubic Y, Z) that is a quartic, solved exactly (roots isolated between those of its
+  // derivatives); for a silhouette (degree 18) bracketed on a grid of `samples` and bisected. Sorted.
   std::vector<double> y_extrema(int samples = 128) const;
   const ParamCurve& curve() const { return c_; }
 
@@ -101,6 +102,7 @@ struct PatchRegion {
 struct PatchEdges {
   std::vector<EdgePiece> pieces;
   std::vector<PatchRegion> regions;
+  std::vector<ParamCurve> silhouettes;  // Whitted's Hermite segments built (one per split subpatch)
 };
 
 struct EdgeStats {

@@ -249,10 +249,18 @@ std::map<std::string, Material> parse_materials(const Reader& r, const json& j) 
     const std::string mf = f + "." + field_key(it.key());
     const json& m = it.value();
     r.expect_object(m, mf);
-    r.check_keys(m, mf, {"color", "d", "W", "n"});
+    r.check_keys(m, mf, {"color", "d", "W", "n", "rule"});
     Material mat;
     mat.name = it.key();
     mat.color = r.vec3_in(r.required(m, mf, "color"), mf + ".color", 0, 1);
+    // Whitted's S = hue (.25 + .75 N.I) + glossiness (R.I)^60 is eq. (3) with d = 0.25, n = 60,
+    // Cp = hue and W = glossiness (docs/whitted.md): the rule fixes d and n.
+    opt(m, mf, "rule", [&](const json& v, const std::string& ff) {
+      if (r.string(v, ff) != "whitted") r.fail(ff, "expected \"whitted\", got " + show(v));
+      for (const char* k : {"d", "n"})
+        if (m.contains(k)) r.fail(mf + "." + k, "\"rule\": \"whitted\" fixes d = 0.25 and n = 60; leave it out");
+      mat.d = 0.25, mat.n = 60;
+    });
     opt(m, mf, "d", [&](const json& v, const std::string& ff) { mat.d = r.number_in(v, ff, 0, 1); });
     // W up to 511/256: the phong_shader's MaterialBits word (specular may saturate the level).
     opt(m, mf, "W", [&](const json& v, const std::string& ff) { mat.W = r.number_in(v, ff, 0, 511.0 / 256); });
