@@ -201,6 +201,8 @@ std::vector<EdgePiece> scan_edge(const PatchPoint& f, const Projection& proj, co
     if (y0 > y1) std::swap(t_top, t_end);
     EdgePiece piece;
     piece.kind = c.kind;
+    piece.curve = c;
+    piece.t_top = t_top, piece.t_end = t_end;
     const std::vector<double> ts =
         scan_line_crossings(ey, t_top, t_end, opt.line_lo, opt.line_hi, piece.y0, stats.newton, opt.newton);
     if (ts.empty()) continue;

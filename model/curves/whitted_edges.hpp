@@ -92,6 +92,8 @@ struct EdgePiece {
   EdgeKind kind = EdgeKind::Boundary;
   int y0 = 0;      // scan line of lines[0]
   std::vector<EdgeCrossing> lines;
+  ParamCurve curve;               // the edge it is a piece of
+  double t_top = 0, t_end = 0;    // its range on curve, top (smaller y) first
 };
 
 struct PatchRegion {
