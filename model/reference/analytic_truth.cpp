@@ -108,7 +108,10 @@ Implicit box_face(const glm::dvec3& lo, const glm::dvec3& hi, int axis, bool upp
 struct Surface {
   int object = 0;
   std::vector<Implicit> pieces;
-  std::vector<glm::dvec3> patch;  // 16 control points of a Bezier patch (else empty)
+  // Bicubic patches (bezier_patch, patches), each with the bounding sphere of its control points
+  // (the convex hull holds the patch).
+  std::vector<BicubicPatch> patches;
+  std::vector<std::pair<glm::dvec3, double>> patch_bounds;
   glm::dvec3 centre{0.0};  // bounding sphere, object space
   double radius = 0;
   glm::dmat3 to_object{1.0}, normal_to_camera{1.0};
@@ -228,7 +231,7 @@ std::vector<Implicit> pieces_of(const SceneObject& o, glm::dvec3& centre, double
 
 // Nearest root t in [t0, t1] of P(s, t) = o + t e with s, t in [0, 1], by Newton from a 3 x 3 grid of
 // (s, t) starts (a bicubic sheet seen by one ray rarely has more roots than that); the object-space normal dP/ds x dP/dt comes with it. `accept` filters by depth.
-std::optional<std::pair<double, glm::dvec3>> patch_hit(const std::vector<glm::dvec3>& cp, const glm::dvec3& o,
+std::optional<std::pair<double, glm::dvec3>> patch_hit(const BicubicPatch& cp, const glm::dvec3& o,
                                                        const glm::dvec3& e, double t0, double t1,
                                                        const std::function<bool(double)>& accept) {
   std::optional<std::pair<double, glm::dvec3>> best;
@@ -256,8 +259,9 @@ std::optional<std::pair<double, glm::dvec3>> patch_hit(const std::vector<glm::dv
       const double tol = 1e-9;
       if (!converged || u < -tol || u > 1 + tol || v < -tol || v > 1 + tol || t < t0 || t > t1 || !accept(t))
         continue;
-      const glm::dvec3 n = glm::cross(ds, dt);
-      if (glm::length(n) == 0) continue;  // a degenerate corner has no normal
+      // dP/ds x dP/dt, or its limit from inside at a collapsed boundary (a pole).
+      const glm::dvec3 n = patch_normal(cp, u, v);
+      if (glm::length(n) == 0) continue;  // no tangent plane near here
       if (!best || t < best->first) best = std::make_pair(t, n);
     }
   return best;
@@ -335,9 +339,19 @@ std::optional<Hit> cast(const Surface& s, const glm::dvec3& d, double near, doub
       ta = tb, fa = fb;
     }
   }
-  if (!s.patch.empty()) {
-    const auto accept = [&](double t) { return t * d.z >= near && t * d.z < far; };
-    if (const auto h = patch_hit(s.patch, o, e, t0, t1, accept); h && (!best || h->first < best->t)) {
+  const auto accept = [&](double t) { return t * d.z >= near && t * d.z < far; };
+  for (std::size_t i = 0; i < s.patches.size(); ++i) {
+    // The ray's stretch inside this patch's bounding sphere (none: the patch is missed).
+    const glm::dvec3 pc = o - s.patch_bounds[i].first;
+    const double pr = s.patch_bounds[i].second * 1.01 + 1e-9, pb = glm::dot(pc, e);
+    const double pdisc = pb * pb - a * (glm::dot(pc, pc) - pr * pr);
+    if (pdisc <= 0) continue;
+    const double pq = std::sqrt(pdisc), pt0 = std::max((-pb - pq) / a, t0), pt1 = std::min((-pb + pq) / a, t1);
+    if (pt1 < pt0 || (best && pt0 >= best->t)) continue;
+    // A single patch keeps the object's range (its truth as it always was).
+    const bool one = s.patches.size() == 1;
+    if (const auto h = patch_hit(s.patches[i], o, e, one ? t0 : pt0, one ? t1 : pt1, accept);
+        h && (!best || h->first < best->t)) {
       Hit hit;
       hit.t = h->first;
       hit.normal = glm::normalize(s.normal_to_camera * h->second);
@@ -367,12 +381,23 @@ AnalyticTruth render_analytic_truth(const BuiltScene& scene) {
     Surface s;
     s.object = static_cast<int>(i);
     s.pieces = pieces_of(o, s.centre, s.radius);
-    if (o.type == ObjectType::BezierPatch) {
-      s.patch = o.control_points;  // bounding sphere of the control points (the convex hull holds the patch)
-      for (const glm::dvec3& c : s.patch) s.centre += c / 16.0;
-      for (const glm::dvec3& c : s.patch) s.radius = std::max(s.radius, glm::length(c - s.centre));
+    if (o.type == ObjectType::BezierPatch || o.type == ObjectType::Patches) {
+      s.patches = o.patches;
+      glm::dvec3 lo(INFINITY), hi(-INFINITY);
+      for (const BicubicPatch& cp : s.patches) {
+        glm::dvec3 c(0.0);
+        double r = 0;
+        for (const glm::dvec3& q : cp) c += q / 16.0, lo = glm::min(lo, q), hi = glm::max(hi, q);
+        for (const glm::dvec3& q : cp) r = std::max(r, glm::length(q - c));
+        s.patch_bounds.emplace_back(c, r);
+      }
+      if (s.patches.size() == 1) {
+        s.centre = s.patch_bounds[0].first, s.radius = s.patch_bounds[0].second;
+      } else {
+        s.centre = 0.5 * (lo + hi), s.radius = 0.5 * glm::length(hi - lo);
+      }
     }
-    if (s.pieces.empty() && s.patch.empty()) {
+    if (s.pieces.empty() && s.patches.empty()) {
       ++out.without_truth;
       continue;
     }
