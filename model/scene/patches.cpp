@@ -68,15 +68,27 @@ glm::dvec3 patch_normal(const BicubicPatch& cp, double s, double t) {
   bezier_point(cp, s, t, p, ds, dt);
   glm::dvec3 n = glm::cross(ds, dt);
   const double tiny = 1e-12 * (1 + glm::dot(p, p));
-  if (glm::length(n) >= tiny) return n;
-  // A collapsed boundary: along t = 0 (or 1) dP/ds vanishes and near it dP/ds ~ t d2P/dsdt (or
-  // -(1 - t) d2P/dsdt); likewise dP/dt along s = 0 or 1. The cross product with the twist in its
-  // place is the normal's limit from inside.
   double size = 0;
   for (const glm::dvec3& c : cp) size = std::max(size, glm::length(c - cp[0]));
+  // A boundary whose 4 control points lie within 1 % of the patch's size of each other is drawn as
+  // a pole: Newell's lid knob (in freeglut's data) has its top row at 0.002 from the axis, folded
+  // on itself, and the exact normal of that fold at the pole's grid vertices points anywhere.
+  const auto pole = [&](std::size_t first, std::size_t step) {
+    double extent = 0;
+    for (std::size_t k = 1; k < 4; ++k) extent = std::max(extent, glm::length(cp[first + k * step] - cp[first]));
+    return extent <= 1e-2 * size;
+  };
+  const bool pole_s = (t == 0 && pole(0, 1)) || (t == 1 && pole(12, 1));  // dP/ds vanishes along it
+  const bool pole_t = (s == 0 && pole(0, 4)) || (s == 1 && pole(3, 4));  // dP/dt vanishes along it
+  if (!pole_s && !pole_t && glm::length(n) >= tiny) return n;
+  // At a pole (or where the normal vanishes along a collapsed boundary): along t = 0 (or 1)
+  // dP/ds ~ t d2P/dsdt (or -(1 - t) d2P/dsdt) near the boundary; likewise dP/dt along s = 0 or 1.
+  // The cross product with the twist in its place is the normal's limit from inside.
   const double zero = 1e-9 * size;
-  if (glm::length(ds) <= zero && glm::length(dt) > zero) n = (t < 0.5 ? 1.0 : -1.0) * glm::cross(twist(cp, s, t), dt);
-  else if (glm::length(dt) <= zero && glm::length(ds) > zero) n = (s < 0.5 ? 1.0 : -1.0) * glm::cross(ds, twist(cp, s, t));
+  const bool flat_s = pole_s || (glm::length(ds) <= zero && glm::length(dt) > zero);
+  const bool flat_t = pole_t || (glm::length(dt) <= zero && glm::length(ds) > zero);
+  if (flat_s && !flat_t) n = (t < 0.5 ? 1.0 : -1.0) * glm::cross(twist(cp, s, t), dt);
+  else if (flat_t && !flat_s) n = (s < 0.5 ? 1.0 : -1.0) * glm::cross(ds, twist(cp, s, t));
   // Otherwise (both partials vanish at a corner, or they are parallel), or if that too vanishes:
   // the cross product a little way inside the patch.
   for (double e = 1e-6; glm::length(n) < tiny && e < 0.1; e *= 10) {
