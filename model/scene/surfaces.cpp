@@ -175,7 +175,9 @@ IndexedMesh hypar(const SceneObject& o) {
 // not (a crease) each side keeps its own normal on the common position.
 class BoundaryWeld {
  public:
-  BoundaryWeld(IndexedMesh& m, double tol) : m_(m), tol_(tol), cell_(tol * 1024) {}
+  // `size`: the largest coordinate magnitude; the cells stay at least 1e-12 of it, so a cell
+  // index (coordinate / cell) stays far inside a long long even for a patch of zero extent.
+  BoundaryWeld(IndexedMesh& m, double tol, double size) : m_(m), tol_(tol), cell_(std::max(tol * 1024, 1e-12 * (size + 1))) {}
   int vertex(const glm::dvec3& p, const glm::dvec3& n) {
     const glm::dvec3 u = glm::normalize(n);
     const std::array<long long, 3> key = cell(p);
@@ -233,7 +235,8 @@ IndexedMesh bezier_patches(const SceneObject& o) {
   glm::dvec3 lo(INFINITY), hi(-INFINITY);
   for (const BicubicPatch& cp : o.patches)
     for (const glm::dvec3& c : cp) lo = glm::min(lo, c), hi = glm::max(hi, c);
-  BoundaryWeld weld(m, 1e-9 * (glm::length(hi - lo) + 1e-300));
+  const double size = std::max(glm::length(lo), glm::length(hi));
+  BoundaryWeld weld(m, 1e-9 * glm::length(hi - lo), size);
   std::vector<int> id(cu * cv);
   for (const BicubicPatch& cp : o.patches) {
     for (std::size_t j = 0; j < cv; ++j)
@@ -427,6 +430,7 @@ Longest longest_edges(const std::vector<PatchFn>& patches, int nu, int nv, const
 }
 
 constexpr int kMaxSegments = 1024;
+constexpr double kMaxSamples = 1 << 24;  // grid points fit_grid measures at once
 
 // Grows nu and nv from their minimums until no edge is longer than L. A chord shrinks about as
 // 1/n, so n * (longest / L) segments is the next guess; ok once every edge fits.
@@ -441,7 +445,12 @@ std::string fit_grid(const std::function<std::vector<PatchFn>(int)>& patches, do
     return std::max(n + 1, static_cast<int>(std::min(std::ceil(n * ratio), 2.0 * kMaxSegments)));
   };
   for (;;) {
-    const Longest e = longest_edges(patches(nu), nu, nv, scale);
+    const std::vector<PatchFn> pieces = patches(nu);
+    // Many patches (a "patches" object) at a fine grid: refused before millions of samples.
+    if (double(pieces.size()) * (nu + 1) * (nv + 1) > kMaxSamples)
+      return number_text(L) + " needs more than " + number_text(kMaxSamples) +
+             " grid points over the object's patches (the tessellation's limit)";
+    const Longest e = longest_edges(pieces, nu, nv, scale);
     const bool ok_u = e.u <= L, ok_v = e.v <= L, ok_d = !split || e.diagonal <= L;
     if (ok_u && ok_v && ok_d) return "";
     if (!ok_u) nu = grow(nu, e.u);
