@@ -330,6 +330,13 @@ TEST(Patches, BadInputNamesTheField) {
     const std::string e = error_of(object);
     EXPECT_NE(e.find("t.json: " + message), std::string::npos) << object << "\n  gave: " << e;
   }
+  // A grid too fine for many patches is refused before it is sampled: 20 flat 3 x 3 patches at
+  // 3/950 need 950 segments each way, 20 x 951^2 grid points (over 2^24).
+  std::string twenty;
+  for (int k = 0; k < 20; ++k) twenty += std::string(k ? ", " : "") + cps;
+  EXPECT_NE(error_of(R"({"type": "patches", "basis": "bezier", "max_edge_length": 0.0031579, "patches": [)" + twenty + "]}")
+                .find("objects[0].max_edge_length: 0.0031579 needs more than 16777216 grid points over the object's patches"),
+            std::string::npos);
   // A closed direction needs 3 points: a 3 x 3 net closed both ways is 9 patches.
   const Scene s = parse(R"({"type": "patches", "basis": "bspline", "closed_u": true, "closed_v": true, "control_net":
       [[[1,0,0],[0,1,0],[-1,0,0]], [[1,0,1],[0,1,1],[-1,0,1]], [[1,0,2],[0,1,2],[-1,0,2]]]})");

@@ -430,7 +430,7 @@ Longest longest_edges(const std::vector<PatchFn>& patches, int nu, int nv, const
 }
 
 constexpr int kMaxSegments = 1024;
-constexpr double kMaxSamples = 1 << 24;  // grid points fit_grid measures at once
+constexpr long long kMaxSamples = 1 << 24;  // grid points fit_grid measures at once
 
 // Grows nu and nv from their minimums until no edge is longer than L. A chord shrinks about as
 // 1/n, so n * (longest / L) segments is the next guess; ok once every edge fits.
@@ -447,8 +447,8 @@ std::string fit_grid(const std::function<std::vector<PatchFn>(int)>& patches, do
   for (;;) {
     const std::vector<PatchFn> pieces = patches(nu);
     // Many patches (a "patches" object) at a fine grid: refused before millions of samples.
-    if (double(pieces.size()) * (nu + 1) * (nv + 1) > kMaxSamples)
-      return number_text(L) + " needs more than " + number_text(kMaxSamples) +
+    if (static_cast<long long>(pieces.size()) * (nu + 1) * (nv + 1) > kMaxSamples)
+      return number_text(L) + " needs more than " + std::to_string(kMaxSamples) +
              " grid points over the object's patches (the tessellation's limit)";
     const Longest e = longest_edges(pieces, nu, nv, scale);
     const bool ok_u = e.u <= L, ok_v = e.v <= L, ok_d = !split || e.diagonal <= L;
