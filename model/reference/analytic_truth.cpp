@@ -11,6 +11,7 @@
 #include <functional>
 #include <limits>
 #include <optional>
+#include <tuple>
 #include <utility>
 
 #include <glm/common.hpp>
@@ -141,6 +142,7 @@ int patch_pieces(std::size_t patches) { return patches == 1 ? 3 : 6; }
 
 struct PatchStart {
   std::size_t patch = 0;
+  bool first_of_patch = false;
   double u = 0, v = 0;
   glm::dvec3 centre{0.0};
   double radius = 0;
@@ -153,6 +155,7 @@ std::vector<PatchStart> patch_starts(const std::vector<BicubicPatch>& patches, i
       for (int b = 0; b < n; ++b) {
         PatchStart st;
         st.patch = i;
+        st.first_of_patch = a == 0 && b == 0;
         st.u = (1 + 2 * a) / (2.0 * n), st.v = (1 + 2 * b) / (2.0 * n);
         const BicubicPatch piece = sub_patch(patches[i], double(a) / n, double(a + 1) / n, double(b) / n, double(b + 1) / n);
         for (const glm::dvec3& q : piece) st.centre += q / 16.0;
@@ -199,7 +202,8 @@ struct Surface {
   int object = 0;
   std::vector<Implicit> pieces;
   std::vector<BicubicPatch> patches;  // bezier_patch, patches
-  std::vector<PatchStart> starts;     // of Newton's method on them
+  std::vector<PatchStart> starts;     // of Newton's method on them, patch by patch
+  std::vector<std::pair<glm::dvec3, double>> patch_bounds;  // each patch's bounding sphere
   glm::dvec3 centre{0.0};  // bounding sphere, object space
   double radius = 0;
   glm::dmat3 to_object{1.0}, normal_to_camera{1.0};
@@ -390,10 +394,19 @@ std::optional<Hit> cast(const Surface& s, const glm::dvec3& d, double near, doub
     }
   }
   const auto accept = [&](double t) { return t * d.z >= near && t * d.z < far; };
-  for (const PatchStart& st : s.starts) {
-    const glm::dvec3 pc = o - st.centre;
-    const double pr = st.radius * 1.01 + 1e-9, pb = glm::dot(pc, e);
-    if (pb * pb - a * (glm::dot(pc, pc) - pr * pr) <= 0) continue;  // the ray misses this piece
+  // The ray against each patch's bounding sphere first, then against its pieces'.
+  const auto misses = [&](const glm::dvec3& centre, double radius) {
+    const glm::dvec3 pc = o - centre;
+    const double pr = radius * 1.01 + 1e-9, pb = glm::dot(pc, e);
+    return pb * pb - a * (glm::dot(pc, pc) - pr * pr) <= 0;
+  };
+  for (std::size_t k = 0; k < s.starts.size(); ++k) {
+    const PatchStart& st = s.starts[k];
+    if (st.first_of_patch && misses(s.patch_bounds[st.patch].first, s.patch_bounds[st.patch].second)) {
+      while (k + 1 < s.starts.size() && s.starts[k + 1].patch == st.patch) ++k;
+      continue;
+    }
+    if (misses(st.centre, st.radius)) continue;
     if (const auto h = patch_hit(s.patches[st.patch], st.u, st.v, o, e, t0, t1, accept); h && (!best || h->first < best->t)) {
       Hit hit;
       hit.t = h->first;
@@ -430,14 +443,15 @@ AnalyticTruth render_analytic_truth(const BuiltScene& scene) {
       // The bounding sphere: of the control points of one patch (its convex hull holds it), of
       // their box for several.
       glm::dvec3 lo(INFINITY), hi(-INFINITY);
-      for (const BicubicPatch& cp : s.patches)
-        for (const glm::dvec3& q : cp) lo = glm::min(lo, q), hi = glm::max(hi, q);
-      if (s.patches.size() == 1) {
-        for (const glm::dvec3& q : s.patches[0]) s.centre += q / 16.0;
-        for (const glm::dvec3& q : s.patches[0]) s.radius = std::max(s.radius, glm::length(q - s.centre));
-      } else {
-        s.centre = 0.5 * (lo + hi), s.radius = 0.5 * glm::length(hi - lo);
+      for (const BicubicPatch& cp : s.patches) {
+        glm::dvec3 c(0.0);
+        double r = 0;
+        for (const glm::dvec3& q : cp) c += q / 16.0, lo = glm::min(lo, q), hi = glm::max(hi, q);
+        for (const glm::dvec3& q : cp) r = std::max(r, glm::length(q - c));
+        s.patch_bounds.emplace_back(c, r);
       }
+      if (s.patches.size() == 1) std::tie(s.centre, s.radius) = s.patch_bounds[0];
+      else s.centre = 0.5 * (lo + hi), s.radius = 0.5 * glm::length(hi - lo);
     }
     if (s.pieces.empty() && s.patches.empty()) {
       ++out.without_truth;
