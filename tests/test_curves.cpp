@@ -17,6 +17,7 @@
 #include "newton_fixed.hpp"
 #include "newton_scan.hpp"
 #include "scene_types.hpp"
+#include "patches.hpp"
 #include "surfaces.hpp"
 #include "test_support.hpp"
 #include "whitted_edges.hpp"
@@ -46,10 +47,10 @@ BuiltScene patch_scene(int n, bool curves, bool cull = false) {
 
 // The builder's camera-space patch function for a scene's bezier_patch object.
 struct CameraPatch {
-  std::vector<glm::dvec3> cp;
+  BicubicPatch cp;
   ObjectToCamera xf;
   CameraPatch(const Scene& sc, const SceneObject& o)
-      : cp(o.control_points), xf(make_view(sc.camera), o.transform) {}
+      : cp(o.patches.at(0)), xf(make_view(sc.camera), o.transform) {}
   PatchPoint fn() const {
     return [this](double u, double v, glm::dvec3& p, glm::dvec3& pu, glm::dvec3& pv) {
       bezier_point(cp, u, v, p, pu, pv);
@@ -60,11 +61,10 @@ struct CameraPatch {
 
 // A half cylinder along Y (a cubic Bezier half circle of radius 1 in X-Z, bulging towards the eye)
 // at Z = 5: its silhouettes are the rulings where the line of sight grazes it, u = const.
-PatchPoint half_cylinder(std::vector<glm::dvec3>& cp) {
+PatchPoint half_cylinder(BicubicPatch& cp) {
   const double xz[4][2] = {{-1, 0}, {-1, -4.0 / 3}, {1, -4.0 / 3}, {1, 0}};
-  cp.clear();
   for (int row = 0; row < 4; ++row)
-    for (int col = 0; col < 4; ++col) cp.push_back({xz[col][0], 1.5 - row, 5 + xz[col][1]});
+    for (int col = 0; col < 4; ++col) cp[std::size_t(4 * row + col)] = {xz[col][0], 1.5 - row, 5 + xz[col][1]};
   return [&cp](double u, double v, glm::dvec3& p, glm::dvec3& pu, glm::dvec3& pv) { bezier_point(cp, u, v, p, pu, pv); };
 }
 
@@ -157,7 +157,7 @@ TEST(Curves, EdgeSplitAtItsExtremumInY) {
 // silhouette ruling; Whitted's Hermite ends on N.(P - eye) = 0 and, the surface being ruled, lies on
 // the silhouette everywhere (the uv-space chord is the ruling itself).
 TEST(Curves, HalfCylinderSilhouette) {
-  std::vector<glm::dvec3> cp;
+  BicubicPatch cp;
   const PatchPoint f = half_cylinder(cp);
   WhittedOptions wo;
   wo.k_u = {0.5};

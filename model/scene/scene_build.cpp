@@ -221,45 +221,46 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
         throw SceneError(sc.name + ": " + o.field + ".draw: the patch reaches outside the camera's [near, far); "
                          "curves are not clipped (draw it as polygons, or move it)");
     const ObjectToCamera xf(view, o.transform);
-    const std::vector<glm::dvec3>& cp = o.control_points;
-    const PatchPoint f = [&](double u, double v, glm::dvec3& p, glm::dvec3& pu, glm::dvec3& pv) {
-      bezier_point(cp, u, v, p, pu, pv);
-      p = xf.linear * p + xf.offset;  // a proper linear map: dP/du x dP/dv keeps its side
-      pu = xf.linear * pu;
-      pv = xf.linear * pv;
-    };
     const Projection proj{half_w, half_h, cam.focal};
     WhittedOptions wo;
     wo.k_u = o.k_u, wo.k_v = o.k_v, wo.cull = cull;
     wo.line_lo = 0, wo.line_hi = sc.height;
-    const PatchEdges edges = describe_patch(f, proj, wo, out.curve_stats);
     const int material = materials.index(o.material);
-    for (const EdgePiece& piece : edges.pieces) {
-      const bool front = edges.regions[std::size_t(piece.region)].front;
-      ScreenCurve c;
-      c.region = out.curve_regions + piece.region;
-      c.object = index;
-      c.material = material;
-      c.y0 = piece.y0;
-      for (std::size_t k = 0; k < piece.lines.size(); ++k) {
-        const EdgeCrossing& e = piece.lines[k];
-        if (!(e.x >= -kCoordLimit && e.x < kCoordLimit))
-          throw SceneError(sc.name + ": " + o.field + ": an edge of the patch projects to x=" + number_text(e.x) +
-                           ", outside the representable range [" + number_text(-kCoordLimit) + ", " +
-                           number_text(kCoordLimit) + ") pixels; move the camera or reduce focal");
-        ScreenVertex v;
-        v.x = e.x;
-        v.y = piece.y0 + int(k) + 0.5;  // the scan line's centre (E_y(t) within the Newton tolerance)
-        v.depth = depth_of(e.p.z);
-        v.eye_z = e.p.z;
-        // Phong: the side the region shows, turned as a whole (as a back polygon's normals are).
-        for (int a = 0; a < 3; ++a) v.normal[a] = front ? e.normal[a] : -e.normal[a];
-        shade(e.p, facing(e.p, e.normal), o.material, v.rgb);
-        c.lines.push_back(v);
+    for (const BicubicPatch& cp : o.patches) {
+      const PatchPoint f = [&](double u, double v, glm::dvec3& p, glm::dvec3& pu, glm::dvec3& pv) {
+        bezier_point(cp, u, v, p, pu, pv);
+        p = xf.linear * p + xf.offset;  // a proper linear map: dP/du x dP/dv keeps its side
+        pu = xf.linear * pu;
+        pv = xf.linear * pv;
+      };
+      const PatchEdges edges = describe_patch(f, proj, wo, out.curve_stats);
+      for (const EdgePiece& piece : edges.pieces) {
+        const bool front = edges.regions[std::size_t(piece.region)].front;
+        ScreenCurve c;
+        c.region = out.curve_regions + piece.region;
+        c.object = index;
+        c.material = material;
+        c.y0 = piece.y0;
+        for (std::size_t k = 0; k < piece.lines.size(); ++k) {
+          const EdgeCrossing& e = piece.lines[k];
+          if (!(e.x >= -kCoordLimit && e.x < kCoordLimit))
+            throw SceneError(sc.name + ": " + o.field + ": an edge of the patch projects to x=" + number_text(e.x) +
+                             ", outside the representable range [" + number_text(-kCoordLimit) + ", " +
+                             number_text(kCoordLimit) + ") pixels; move the camera or reduce focal");
+          ScreenVertex v;
+          v.x = e.x;
+          v.y = piece.y0 + int(k) + 0.5;  // the scan line's centre (E_y(t) within the Newton tolerance)
+          v.depth = depth_of(e.p.z);
+          v.eye_z = e.p.z;
+          // Phong: the side the region shows, turned as a whole (as a back polygon's normals are).
+          for (int a = 0; a < 3; ++a) v.normal[a] = front ? e.normal[a] : -e.normal[a];
+          shade(e.p, facing(e.p, e.normal), o.material, v.rgb);
+          c.lines.push_back(v);
+        }
+        out.curves.push_back(std::move(c));
       }
-      out.curves.push_back(std::move(c));
+      out.curve_regions += int(edges.regions.size());
     }
-    out.curve_regions += int(edges.regions.size());
   };
 
   size_t next_obj = 0;
@@ -293,7 +294,8 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
       continue;
     }
     const CamObject& co = objs[next_obj++];
-    if (o.type == ObjectType::BezierPatch && opt.patches_as_curves.value_or(o.draw_curves)) {
+    if ((o.type == ObjectType::BezierPatch || o.type == ObjectType::Patches) &&
+        opt.patches_as_curves.value_or(o.draw_curves)) {
       add_curves(o, int(i), co);
       continue;
     }
