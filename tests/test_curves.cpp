@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
@@ -12,6 +13,7 @@
 #include <glm/geometric.hpp>
 
 #include "analytic_truth.hpp"
+#include "cli_run.hpp"
 #include "camera.hpp"
 #include "float_reference.hpp"
 #include "newton_fixed.hpp"
@@ -346,4 +348,50 @@ TEST(Curves, FixedPointNewtonAgainstTheDouble) {
   EXPECT_GT(by_bits[1].max_x_step, 0.25);  // the exceptions are real: one iteration is not enough there
   EXPECT_LT(by_bits[1].max_x_cubic, 1.0);
   EXPECT_EQ(FixedNewtonError::multipliers, 21);
+}
+
+// A patches object (Newell's teapot, 32 Bezier patches, culling on) drawn by curves with 4 x 4
+// subpatches per patch against its 4 x 4 tessellation, Phong. Measured: curves mean 2.24 levels,
+// 9 pixels of changed coverage; polygons 4.83, 377. Every region still pairs on every line.
+TEST(Curves, TeapotByCurves) {
+  std::string text = read_scene_text(std::string(WATKINS_SOURCE_DIR) + "/scenes/teapot.json");
+  const std::string uv = "\"u\": 4, \"v\": 4,";
+  const std::size_t at = text.find(uv);
+  ASSERT_NE(at, std::string::npos);
+  text.insert(at + uv.size(), " \"k_u\": 4, \"k_v\": 4,");
+  BuildOptions o;
+  o.shading = ShadingMode::Phong;
+  o.patches_as_curves = true;
+  const BuiltScene curves = load_scene_text(text, "teapot.json", ".", o);
+  o.patches_as_curves = false;
+  const BuiltScene polys = load_scene_text(text, "teapot.json", ".", o);
+  EXPECT_EQ(curves.curve_stats.cells, 32 * 16);
+  EXPECT_GT(curves.curve_stats.culled_regions, 100);
+  std::map<std::pair<int, int>, int> count;
+  for (const ScreenCurve& c : curves.curves)
+    for (std::size_t k = 0; k < c.lines.size(); ++k) ++count[{c.region, c.y0 + int(k)}];
+  for (const auto& rc : count) ASSERT_EQ(rc.second % 2, 0) << "region " << rc.first.first << " line " << rc.first.second;
+  const AnalyticTruth truth = render_analytic_truth(curves);
+  ASSERT_TRUE(truth.unavailable.empty()) << truth.unavailable;
+  const ImageError ec = compare_with_truth(curves, render_float_reference(curves), truth);
+  const ImageError ep = compare_with_truth(polys, render_float_reference(polys), truth);
+  EXPECT_LT(ec.mean_abs, 0.6 * ep.mean_abs) << "curves " << ec.mean_abs << ", polygons " << ep.mean_abs;
+  EXPECT_LT(ec.coverage_differs, ep.coverage_differs / 10)
+      << "curves " << ec.coverage_differs << ", polygons " << ep.coverage_differs;
+}
+
+// `watkins render --patches curves` draws the patch by curves (no polygons) and reports them;
+// a bad value is refused.
+TEST(Curves, CliPatchesOption) {
+  watkins::test::ScratchDir dir;
+  const std::string folder = std::filesystem::path(dir.write("placeholder", "")).parent_path().string();
+  const std::string scene = std::string(WATKINS_SOURCE_DIR) + "/scenes/patch.json";
+  const auto r = watkins::test::run_cli("render " + scene + " --model float --patches curves --out " +
+                                        folder + "/c.png");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(dir.has("c.png"));
+  EXPECT_NE(r.output.find("polygons      0 "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("curves        "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("newton        "), std::string::npos) << r.output;
+  EXPECT_NE(watkins::test::run_cli("render " + scene + " --patches lines --out " + folder + "/d.png").exit_code, 0);
 }
