@@ -51,7 +51,12 @@ ParamCurve whitted_silhouette(const glm::dvec2& a, const glm::dvec2& b) {
   return c;
 }
 
-glm::dvec3 patch_normal(const PatchPoint& f, double u, double v) {
+glm::dvec3 unit_normal(const PatchPoint& f, double u, double v, const PatchNormal& given) {
+  if (given) {
+    const glm::dvec3 n = given(u, v);
+    const double len = glm::length(n);
+    if (len > 0) return n / len;
+  }
   glm::dvec3 p, pu, pv;
   f(u, v, p, pu, pv);
   glm::dvec3 n = glm::cross(pu, pv);
@@ -66,10 +71,10 @@ glm::dvec3 patch_normal(const PatchPoint& f, double u, double v) {
   return len > 0 ? n / len : glm::dvec3(0, 0, -1);
 }
 
-double silhouette_cosine(const PatchPoint& f, double u, double v) {
+double silhouette_cosine(const PatchPoint& f, double u, double v, const PatchNormal& n) {
   glm::dvec3 p, pu, pv;
   f(u, v, p, pu, pv);
-  return glm::dot(patch_normal(f, u, v), p / glm::length(p));
+  return glm::dot(unit_normal(f, u, v, n), p / glm::length(p));
 }
 
 void ScreenEdge::y(double t, double& y, double& dy) const {
@@ -214,7 +219,7 @@ std::vector<EdgePiece> scan_edge(const PatchPoint& f, const Projection& proj, co
       f(uv.x, uv.y, x.p, pu, pv);
       x.x = proj.x(x.p);
       x.y = proj.y(x.p);
-      x.normal = patch_normal(f, uv.x, uv.y);
+      x.normal = unit_normal(f, uv.x, uv.y, opt.normal);
       piece.lines.push_back(x);
     }
     ++stats.pieces;
@@ -265,7 +270,7 @@ PatchEdges describe_patch(const PatchPoint& f, const Projection& proj, const Whi
     zeros[s] = sign_changes(
         [&](double t) {
           const glm::dvec2 uv = sides[s].at(t);
-          return silhouette_cosine(f, uv.x, uv.y);
+          return silhouette_cosine(f, uv.x, uv.y, opt.normal);
         },
         opt.silhouette_samples);
   // Crossings per (side, range): a side shared by two regions is stepped once, so both get the
@@ -332,7 +337,7 @@ PatchEdges describe_patch(const PatchPoint& f, const Projection& proj, const Whi
             for (int b = 0; b <= 6; ++b) {
               const double u = U[std::size_t(i)] + (U[std::size_t(i) + 1] - U[std::size_t(i)]) * a / 6.0;
               const double v = V[std::size_t(j)] + (V[std::size_t(j) + 1] - V[std::size_t(j)]) * b / 6.0;
-              (silhouette_cosine(f, u, v) < 0 ? neg : pos) = true;
+              (silhouette_cosine(f, u, v, opt.normal) < 0 ? neg : pos) = true;
             }
           stats.default_inside += neg && pos;
         } else if (hits.size() % 2) {
@@ -342,7 +347,7 @@ PatchEdges describe_patch(const PatchPoint& f, const Projection& proj, const Whi
         } else {
           ++stats.default_side_twice;
         }
-        add_region(cell, silhouette_cosine(f, centre.x, centre.y) < 0, whole, nullptr);
+        add_region(cell, silhouette_cosine(f, centre.x, centre.y, opt.normal) < 0, whole, nullptr);
         continue;
       }
       // Two points on two sides: Whitted's Hermite silhouette between them splits the subpatch.
@@ -363,7 +368,7 @@ PatchEdges describe_patch(const PatchPoint& f, const Projection& proj, const Whi
         for (const SideRange& p : parts)
           if (p.b - p.a > longest->b - longest->a) longest = &p;
         const glm::dvec2 uv = sides[std::size_t(longest->side)].at(0.5 * (longest->a + longest->b));
-        front = silhouette_cosine(f, uv.x, uv.y) < 0;
+        front = silhouette_cosine(f, uv.x, uv.y, opt.normal) < 0;
         return parts;
       };
       bool front1 = true, front2 = true;

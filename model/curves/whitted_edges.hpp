@@ -53,13 +53,17 @@ struct ParamCurve {
 // is the parameter-space vector (alpha_u, alpha_v) mapped by the patch's Jacobian.
 ParamCurve whitted_silhouette(const glm::dvec2& a, const glm::dvec2& b);
 
+// A patch's camera-space normal at (u, v) as its owner defines it (any length; zero where it has
+// none): the scene's patches give theirs with their own limit at a pole (patches.hpp).
+using PatchNormal = std::function<glm::dvec3(double u, double v)>;
+
+// The exact unit normal: `n` when given and not zero, else dP/du x dP/dv, at a degenerate point
+// (a collapsed boundary, a zero partial) its limit from a step inside the patch.
+glm::dvec3 unit_normal(const PatchPoint& f, double u, double v, const PatchNormal& n = {});
+
 // N.(P - eye) with both unit (eye at the origin): the cosine between the normal and the line of
 // sight; zero on the silhouette, negative where the patch faces the eye (N = dP/du x dP/dv).
-double silhouette_cosine(const PatchPoint& f, double u, double v);
-
-// The exact unit normal dP/du x dP/dv at (u, v); at a degenerate point (a collapsed boundary, a
-// zero partial) its limit from inside the patch.
-glm::dvec3 patch_normal(const PatchPoint& f, double u, double v);
+double silhouette_cosine(const PatchPoint& f, double u, double v, const PatchNormal& n = {});
 
 // An edge curve as the screen sees it.
 class ScreenEdge {
@@ -84,7 +88,7 @@ struct EdgeCrossing {
   double t = 0;                 // on the edge's ParamCurve
   double x = 0, y = 0;          // screen; y = the scan line's centre up to the Newton tolerance
   glm::dvec3 p{0.0};            // camera space
-  glm::dvec3 normal{0, 0, -1};  // exact unit normal dP/du x dP/dv (not turned to the eye)
+  glm::dvec3 normal{0, 0, -1};  // exact unit normal (unit_normal; not turned to the eye)
 };
 
 struct EdgePiece {
@@ -128,6 +132,7 @@ struct WhittedOptions {
   bool cull = false;             // drop back-facing regions
   int line_lo = 0, line_hi = 0;  // scan lines to cross: line_lo <= n < line_hi
   int silhouette_samples = 16;   // per side, where N.P changes sign
+  PatchNormal normal;            // the patch's own normal (empty: the cross product)
   NewtonOptions newton;
 };
 

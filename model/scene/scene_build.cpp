@@ -12,12 +12,14 @@
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
 
 #include "camera.hpp"
 #include "formats.hpp"
 #include "illumination.hpp"
 #include "mesh_polygons.hpp"
 #include "mesh_stl.hpp"
+#include "patches.hpp"
 #include "scene.hpp"
 #include "scene_types.hpp"
 #include "surfaces.hpp"
@@ -226,6 +228,7 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
     wo.k_u = o.k_u, wo.k_v = o.k_v, wo.cull = cull;
     wo.line_lo = 0, wo.line_hi = sc.height;
     const int material = materials.index(o.material);
+    const glm::dmat3 normal_to_camera = glm::transpose(glm::inverse(xf.linear));
     for (const BicubicPatch& cp : o.patches) {
       const PatchPoint f = [&](double u, double v, glm::dvec3& p, glm::dvec3& pu, glm::dvec3& pv) {
         bezier_point(cp, u, v, p, pu, pv);
@@ -233,6 +236,8 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
         pu = xf.linear * pu;
         pv = xf.linear * pv;
       };
+      // The patch's own normal (its limit at a pole, as the tessellation and the truth take it).
+      wo.normal = [&](double u, double v) { return normal_to_camera * patch_normal(cp, u, v); };
       const PatchEdges edges = describe_patch(f, proj, wo, out.curve_stats);
       for (const EdgePiece& piece : edges.pieces) {
         const bool front = edges.regions[std::size_t(piece.region)].front;
