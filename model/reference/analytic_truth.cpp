@@ -11,6 +11,7 @@
 #include <functional>
 #include <limits>
 #include <optional>
+#include <tuple>
 #include <utility>
 
 #include <glm/common.hpp>
@@ -105,10 +106,104 @@ Implicit box_face(const glm::dvec3& lo, const glm::dvec3& hi, int axis, bool upp
   return b;
 }
 
+// The blossom f(x1, x2, x3) of a cubic Bezier curve (de Casteljau with one parameter per level):
+// f(a, a, a), f(a, a, b), f(a, b, b), f(b, b, b) are the control points of its piece over [a, b].
+glm::dvec3 blossom(const glm::dvec3 q[4], double x1, double x2, double x3) {
+  glm::dvec3 r[3];
+  for (int i = 0; i < 3; ++i) r[i] = (1 - x1) * q[i] + x1 * q[i + 1];
+  for (int i = 0; i < 2; ++i) r[i] = (1 - x2) * r[i] + x2 * r[i + 1];
+  return (1 - x3) * r[0] + x3 * r[1];
+}
+
+// The control points of the piece of a patch over [s0, s1] x [t0, t1]: along every row, then
+// along every column of the result.
+BicubicPatch sub_patch(const BicubicPatch& cp, double s0, double s1, double t0, double t1) {
+  BicubicPatch rows, out;
+  for (int r = 0; r < 4; ++r) {
+    const glm::dvec3 q[4] = {cp[std::size_t(4 * r)], cp[std::size_t(4 * r + 1)], cp[std::size_t(4 * r + 2)],
+                             cp[std::size_t(4 * r + 3)]};
+    for (int k = 0; k < 4; ++k) rows[std::size_t(4 * r + k)] = blossom(q, k < 3 ? s0 : s1, k < 2 ? s0 : s1, k < 1 ? s0 : s1);
+  }
+  for (int c = 0; c < 4; ++c) {
+    const glm::dvec3 q[4] = {rows[std::size_t(c)], rows[std::size_t(4 + c)], rows[std::size_t(8 + c)],
+                             rows[std::size_t(12 + c)]};
+    for (int k = 0; k < 4; ++k) out[std::size_t(4 * k + c)] = blossom(q, k < 3 ? t0 : t1, k < 2 ? t0 : t1, k < 1 ? t0 : t1);
+  }
+  return out;
+}
+
+// Where Newton's method on a patch starts: the middle of one of n x n pieces of the patch, and the
+// bounding sphere of that piece's control points (its convex hull holds the piece): a ray that
+// misses the sphere does not start there.
+// Pieces per patch along s and along t: 3 for a lone bezier_patch (the 3 x 3 starts its truth has
+// always had); 6 for the patches of a "patches" object (3 leave rays through the teapot's knob,
+// folded near its pole, without a root).
+int patch_pieces(std::size_t patches) { return patches == 1 ? 3 : 6; }
+
+struct PatchStart {
+  std::size_t patch = 0;
+  bool first_of_patch = false;
+  double u = 0, v = 0;
+  glm::dvec3 centre{0.0};
+  double radius = 0;
+};
+
+std::vector<PatchStart> patch_starts(const std::vector<BicubicPatch>& patches, int n) {
+  std::vector<PatchStart> out;
+  for (std::size_t i = 0; i < patches.size(); ++i)
+    for (int a = 0; a < n; ++a)
+      for (int b = 0; b < n; ++b) {
+        PatchStart st;
+        st.patch = i;
+        st.first_of_patch = a == 0 && b == 0;
+        st.u = (1 + 2 * a) / (2.0 * n), st.v = (1 + 2 * b) / (2.0 * n);
+        const BicubicPatch piece = sub_patch(patches[i], double(a) / n, double(a + 1) / n, double(b) / n, double(b + 1) / n);
+        for (const glm::dvec3& q : piece) st.centre += q / 16.0;
+        for (const glm::dvec3& q : piece) st.radius = std::max(st.radius, glm::length(q - st.centre));
+        out.push_back(st);
+      }
+  return out;
+}
+
+// A root of P(s, t) = o + t e with s, t in [0, 1] and t in [t0, t1] by Newton's method from (u, v)
+// (the start's own piece of the patch or any other), with the object-space normal dP/ds x dP/dt
+// (patch_normal). `accept` filters by depth.
+std::optional<std::pair<double, glm::dvec3>> patch_hit(const BicubicPatch& cp, double u, double v, const glm::dvec3& o,
+                                                       const glm::dvec3& e, double t0, double t1,
+                                                       const std::function<bool(double)>& accept) {
+  const double scale = glm::length(e) * (t1 - t0);
+  glm::dvec3 p, ds, dt;
+  bezier_point(cp, u, v, p, ds, dt);
+  double t = glm::dot(p - o, e) / glm::dot(e, e);
+  bool converged = false;
+  for (int it = 0; it < 30 && !converged; ++it) {
+    bezier_point(cp, u, v, p, ds, dt);
+    const glm::dvec3 f = p - (o + t * e);
+    if (glm::length(f) < 1e-12 * scale) {
+      converged = true;
+      break;
+    }
+    const glm::dmat3 jac(ds, dt, -e);  // columns: d/ds, d/dt, d/dt(ray)
+    if (std::fabs(glm::determinant(jac)) < 1e-300) break;
+    const glm::dvec3 step = glm::inverse(jac) * f;
+    u -= step.x, v -= step.y, t -= step.z;
+    if (!(std::fabs(u) < 4 && std::fabs(v) < 4)) break;  // diverging
+  }
+  const double tol = 1e-9;
+  if (!converged || u < -tol || u > 1 + tol || v < -tol || v > 1 + tol || t < t0 || t > t1 || !accept(t))
+    return std::nullopt;
+  // dP/ds x dP/dt, or its limit from inside at a collapsed boundary (a pole).
+  const glm::dvec3 n = patch_normal(cp, u, v);
+  if (glm::length(n) == 0) return std::nullopt;  // no tangent plane near here
+  return std::make_pair(t, n);
+}
+
 struct Surface {
   int object = 0;
   std::vector<Implicit> pieces;
-  std::vector<glm::dvec3> patch;  // 16 control points of a Bezier patch (else empty)
+  std::vector<BicubicPatch> patches;  // bezier_patch, patches
+  std::vector<PatchStart> starts;     // of Newton's method on them, patch by patch
+  std::vector<std::pair<glm::dvec3, double>> patch_bounds;  // each patch's bounding sphere
   glm::dvec3 centre{0.0};  // bounding sphere, object space
   double radius = 0;
   glm::dmat3 to_object{1.0}, normal_to_camera{1.0};
@@ -226,43 +321,6 @@ std::vector<Implicit> pieces_of(const SceneObject& o, glm::dvec3& centre, double
   return v;
 }
 
-// Nearest root t in [t0, t1] of P(s, t) = o + t e with s, t in [0, 1], by Newton from a 3 x 3 grid of
-// (s, t) starts (a bicubic sheet seen by one ray rarely has more roots than that); the object-space normal dP/ds x dP/dt comes with it. `accept` filters by depth.
-std::optional<std::pair<double, glm::dvec3>> patch_hit(const std::vector<glm::dvec3>& cp, const glm::dvec3& o,
-                                                       const glm::dvec3& e, double t0, double t1,
-                                                       const std::function<bool(double)>& accept) {
-  std::optional<std::pair<double, glm::dvec3>> best;
-  const double scale = glm::length(e) * (t1 - t0);
-  for (int a = 0; a < 3; ++a)
-    for (int b = 0; b < 3; ++b) {
-      double u = (1 + 2 * a) / 6.0, v = (1 + 2 * b) / 6.0, t = 0;
-      glm::dvec3 p, ds, dt;
-      bezier_point(cp, u, v, p, ds, dt);
-      t = glm::dot(p - o, e) / glm::dot(e, e);
-      bool converged = false;
-      for (int it = 0; it < 30 && !converged; ++it) {
-        bezier_point(cp, u, v, p, ds, dt);
-        const glm::dvec3 f = p - (o + t * e);
-        if (glm::length(f) < 1e-12 * scale) {
-          converged = true;
-          break;
-        }
-        const glm::dmat3 jac(ds, dt, -e);  // columns: d/ds, d/dt, d/dt(ray)
-        if (std::fabs(glm::determinant(jac)) < 1e-300) break;
-        const glm::dvec3 step = glm::inverse(jac) * f;
-        u -= step.x, v -= step.y, t -= step.z;
-        if (!(std::fabs(u) < 4 && std::fabs(v) < 4)) break;  // diverging
-      }
-      const double tol = 1e-9;
-      if (!converged || u < -tol || u > 1 + tol || v < -tol || v > 1 + tol || t < t0 || t > t1 || !accept(t))
-        continue;
-      const glm::dvec3 n = glm::cross(ds, dt);
-      if (glm::length(n) == 0) continue;  // a degenerate corner has no normal
-      if (!best || t < best->first) best = std::make_pair(t, n);
-    }
-  return best;
-}
-
 // First hit of the camera ray t*d (t > 0) on the surface, in camera-space distance along d.
 struct Hit {
   double t = std::numeric_limits<double>::infinity();
@@ -335,9 +393,21 @@ std::optional<Hit> cast(const Surface& s, const glm::dvec3& d, double near, doub
       ta = tb, fa = fb;
     }
   }
-  if (!s.patch.empty()) {
-    const auto accept = [&](double t) { return t * d.z >= near && t * d.z < far; };
-    if (const auto h = patch_hit(s.patch, o, e, t0, t1, accept); h && (!best || h->first < best->t)) {
+  const auto accept = [&](double t) { return t * d.z >= near && t * d.z < far; };
+  // The ray against each patch's bounding sphere first, then against its pieces'.
+  const auto misses = [&](const glm::dvec3& centre, double radius) {
+    const glm::dvec3 pc = o - centre;
+    const double pr = radius * 1.01 + 1e-9, pb = glm::dot(pc, e);
+    return pb * pb - a * (glm::dot(pc, pc) - pr * pr) <= 0;
+  };
+  for (std::size_t k = 0; k < s.starts.size(); ++k) {
+    const PatchStart& st = s.starts[k];
+    if (st.first_of_patch && misses(s.patch_bounds[st.patch].first, s.patch_bounds[st.patch].second)) {
+      while (k + 1 < s.starts.size() && s.starts[k + 1].patch == st.patch) ++k;
+      continue;
+    }
+    if (misses(st.centre, st.radius)) continue;
+    if (const auto h = patch_hit(s.patches[st.patch], st.u, st.v, o, e, t0, t1, accept); h && (!best || h->first < best->t)) {
       Hit hit;
       hit.t = h->first;
       hit.normal = glm::normalize(s.normal_to_camera * h->second);
@@ -367,12 +437,23 @@ AnalyticTruth render_analytic_truth(const BuiltScene& scene) {
     Surface s;
     s.object = static_cast<int>(i);
     s.pieces = pieces_of(o, s.centre, s.radius);
-    if (o.type == ObjectType::BezierPatch) {
-      s.patch = o.control_points;  // bounding sphere of the control points (the convex hull holds the patch)
-      for (const glm::dvec3& c : s.patch) s.centre += c / 16.0;
-      for (const glm::dvec3& c : s.patch) s.radius = std::max(s.radius, glm::length(c - s.centre));
+    if (o.type == ObjectType::BezierPatch || o.type == ObjectType::Patches) {
+      s.patches = o.patches;
+      s.starts = patch_starts(s.patches, patch_pieces(s.patches.size()));
+      // The bounding sphere: of the control points of one patch (its convex hull holds it), of
+      // their box for several.
+      glm::dvec3 lo(INFINITY), hi(-INFINITY);
+      for (const BicubicPatch& cp : s.patches) {
+        glm::dvec3 c(0.0);
+        double r = 0;
+        for (const glm::dvec3& q : cp) c += q / 16.0, lo = glm::min(lo, q), hi = glm::max(hi, q);
+        for (const glm::dvec3& q : cp) r = std::max(r, glm::length(q - c));
+        s.patch_bounds.emplace_back(c, r);
+      }
+      if (s.patches.size() == 1) std::tie(s.centre, s.radius) = s.patch_bounds[0];
+      else s.centre = 0.5 * (lo + hi), s.radius = 0.5 * glm::length(hi - lo);
     }
-    if (s.pieces.empty() && s.patch.empty()) {
+    if (s.pieces.empty() && s.patches.empty()) {
       ++out.without_truth;
       continue;
     }

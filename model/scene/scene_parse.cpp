@@ -16,6 +16,7 @@
 #include "formats.hpp"
 #include "strict_json.hpp"
 #include "scene_types.hpp"
+#include "patches.hpp"
 #include "surfaces.hpp"
 
 namespace watkins {
@@ -30,6 +31,8 @@ constexpr double kCoordLimit = fmt::VertexLimit;  // screen-space vertices: [-81
 constexpr double kMaxMagnitude = 1e9;
 // Smallest positive number a positive field takes (its reciprocal stays bounded as well).
 constexpr double kMinPositive = 1e-9;
+// A patch object's limits: patches, points of an indexed list, interior edges per direction.
+constexpr int kMaxPatches = 4096, kMaxControlPoints = 65536, kMaxInteriorEdges = 64;
 
 std::string show(const json& j) { return show_json(j); }
 
@@ -423,6 +426,96 @@ void parse_voxels(const Reader& r, const json& j, const std::string& f, const st
                             ", over the pipeline's " + std::to_string(fmt::MaxPolygons) + " polygons");
 }
 
+// Whitted's interior edges "k_u", "k_v": a count of equal parts (n: edges at i/n, i = 1..n-1) or a
+// list of parameters, ascending, in (0, 1).
+void parse_interior_edges(const Reader& r, const json& j, const std::string& f, SceneObject& o) {
+  for (const char* key : {"k_u", "k_v"})
+    opt(j, f, key, [&](const json& v, const std::string& ff) {
+      std::vector<double>& k = key[2] == 'u' ? o.k_u : o.k_v;
+      if (v.is_number()) {
+        const int n = r.integer_in(v, ff, 1, kMaxInteriorEdges + 1);
+        for (int i = 1; i < n; ++i) k.push_back(static_cast<double>(i) / n);
+        return;
+      }
+      if (!v.is_array()) r.fail(ff, "expected a count of equal parts or an array of parameters in (0, 1), got " + show(v));
+      if (v.size() > std::size_t(kMaxInteriorEdges))
+        r.fail(ff, "at most " + std::to_string(kMaxInteriorEdges) + " interior edges, got " + std::to_string(v.size()));
+      for (std::size_t i = 0; i < v.size(); ++i) {
+        const std::string kf = ff + "[" + std::to_string(i) + "]";
+        const double x = r.number(v[i], kf);
+        if (!(x > 0 && x < 1)) r.fail(kf, "expected a parameter in (0, 1), got " + show(v[i]));
+        if (!k.empty() && !(x > k.back())) r.fail(kf, "must be greater than the one before (" + number_text(k.back()) + ")");
+        k.push_back(x);
+      }
+    });
+}
+
+// A "patches" object: Bezier patches (16 indices into "control_points" each, or 16 points each) or
+// a uniform B-spline "control_net" of rows of points, every patch resolved into Bezier form.
+void parse_patches(const Reader& r, const json& j, const std::string& f, SceneObject& o) {
+  const std::string bf = f + ".basis", basis = r.string(r.required(j, f, "basis"), bf);
+  if (basis == "bezier") {
+    for (const char* k : {"control_net", "closed_u", "closed_v"})
+      if (j.contains(k)) r.fail(Reader::sub(f, k), "applies to \"basis\": \"bspline\" only");
+    std::vector<glm::dvec3> points;
+    opt(j, f, "control_points", [&](const json& v, const std::string& ff) {
+      r.array(v, ff);
+      if (v.empty() || v.size() > std::size_t(kMaxControlPoints))
+        r.fail(ff, "expected 1 to " + std::to_string(kMaxControlPoints) + " points, got " + std::to_string(v.size()));
+      for (std::size_t k = 0; k < v.size(); ++k) points.push_back(r.vec3(v[k], ff + "[" + std::to_string(k) + "]"));
+    });
+    const std::string pf = f + ".patches";
+    const json& ps = r.array(r.required(j, f, "patches"), pf);
+    if (ps.empty() || ps.size() > std::size_t(kMaxPatches))
+      r.fail(pf, "expected 1 to " + std::to_string(kMaxPatches) + " patches, got " + std::to_string(ps.size()));
+    for (std::size_t i = 0; i < ps.size(); ++i) {
+      const std::string ef = pf + "[" + std::to_string(i) + "]";
+      const json& e = ps[i];
+      if (!e.is_array() || e.size() != 16)
+        r.fail(ef, "expected 16 control point indices or 16 points (4 rows of 4), got " + show(e));
+      BicubicPatch patch;
+      const bool indexed = e[0].is_number();
+      if (indexed && points.empty()) r.fail(ef, "indices need \"control_points\"");
+      for (std::size_t k = 0; k < 16; ++k) {
+        const std::string kf = ef + "[" + std::to_string(k) + "]";
+        if (indexed) patch[k] = points[std::size_t(r.integer_in(e[k], kf, 0, int(points.size()) - 1))];
+        else patch[k] = r.vec3(e[k], kf);
+      }
+      o.patches.push_back(patch);
+    }
+  } else if (basis == "bspline") {
+    for (const char* k : {"control_points", "patches"})
+      if (j.contains(k)) r.fail(Reader::sub(f, k), "applies to \"basis\": \"bezier\" only (a B-spline object has a \"control_net\")");
+    bool closed_u = false, closed_v = false;
+    opt(j, f, "closed_u", [&](const json& v, const std::string& ff) { closed_u = r.boolean(v, ff); });
+    opt(j, f, "closed_v", [&](const json& v, const std::string& ff) { closed_v = r.boolean(v, ff); });
+    const std::string nf = f + ".control_net";
+    const json& net = r.array(r.required(j, f, "control_net"), nf);
+    // A patch spans 4 x 4 points; a closed direction needs 3 (the net wraps around).
+    const int min_rows = closed_v ? 3 : 4, min_cols = closed_u ? 3 : 4;
+    if (net.size() < std::size_t(min_rows) || net.size() > 1024)
+      r.fail(nf, "expected " + std::to_string(min_rows) + " to 1024 rows, got " + std::to_string(net.size()));
+    std::vector<glm::dvec3> points;
+    std::size_t cols = 0;
+    for (std::size_t row = 0; row < net.size(); ++row) {
+      const std::string rf = nf + "[" + std::to_string(row) + "]";
+      const json& pts = r.array(net[row], rf);
+      if (row == 0) cols = pts.size();
+      if (pts.size() != cols)
+        r.fail(rf, "every row has as many points as the first (" + std::to_string(cols) + "), got " + std::to_string(pts.size()));
+      if (cols < std::size_t(min_cols) || cols > 1024)
+        r.fail(rf, "expected " + std::to_string(min_cols) + " to 1024 points in a row, got " + std::to_string(cols));
+      for (std::size_t k = 0; k < cols; ++k) points.push_back(r.vec3(pts[k], rf + "[" + std::to_string(k) + "]"));
+    }
+    const std::size_t count = (closed_v ? net.size() : net.size() - 3) * (closed_u ? cols : cols - 3);
+    if (count > std::size_t(kMaxPatches))
+      r.fail(nf, "makes " + std::to_string(count) + " patches, over the limit of " + std::to_string(kMaxPatches));
+    o.patches = bspline_patches(points, int(net.size()), int(cols), closed_u, closed_v);
+  } else {
+    r.fail(bf, "expected \"bezier\" or \"bspline\", got " + show(j["basis"]));
+  }
+}
+
 SceneObject parse_object(const Reader& r, const json& j, const std::string& f, int index,
                          const std::map<std::string, Material>& mats, const std::string& base_dir) {
   r.expect_object(j, f);
@@ -503,12 +596,22 @@ SceneObject parse_object(const Reader& r, const json& j, const std::string& f, i
     uv(2, 12, 2, 12);
   } else if (type == "bezier_patch") {
     o.type = ObjectType::BezierPatch;
-    common({"control_points", "u", "v", "max_edge_length"});
+    common({"control_points", "k_u", "k_v", "u", "v", "max_edge_length"});
     const std::string cf = f + ".control_points";
     const json& cp = r.array(r.required(j, f, "control_points"), cf);
     if (cp.size() != 16) r.fail(cf, "expected 16 points (4 rows of 4), got " + std::to_string(cp.size()));
-    for (size_t k = 0; k < 16; ++k) o.control_points.push_back(r.vec3(cp[k], cf + "[" + std::to_string(k) + "]"));
+    BicubicPatch patch;
+    for (size_t k = 0; k < 16; ++k) patch[k] = r.vec3(cp[k], cf + "[" + std::to_string(k) + "]");
+    o.patches.push_back(patch);
+    parse_interior_edges(r, j, f, o);
     uv(2, 12, 2, 12);
+  } else if (type == "patches") {
+    o.type = ObjectType::Patches;
+    common({"basis", "control_points", "patches", "control_net", "closed_u", "closed_v", "k_u", "k_v", "u", "v",
+            "max_edge_length"});
+    parse_patches(r, j, f, o);
+    parse_interior_edges(r, j, f, o);
+    uv(2, 8, 2, 8);
   } else if (type == "cross_vault") {
     o.type = ObjectType::CrossVault;
     common({"span", "rise", "u", "v", "max_edge_length"});
@@ -574,7 +677,8 @@ SceneObject parse_object(const Reader& r, const json& j, const std::string& f, i
   } else {
     r.fail(f + ".type",
            "unknown object type " + show(j["type"]) +
-               " (expected sphere, cone, quarter_torus, hyperbolic_paraboloid, bezier_patch, cross_vault, pier, portico, "
+               " (expected sphere, cone, quarter_torus, hyperbolic_paraboloid, bezier_patch, patches, cross_vault, pier, "
+               "portico, "
                "mesh, voxels or polygons)");
   }
   // A mesh's or a tessellated surface's normals from its faces by the crease rule (instead of

@@ -57,7 +57,11 @@ struct Shading {
 };
 
 enum class ObjectType { Sphere, Cone, QuarterTorus, HyperbolicParaboloid, BezierPatch, CrossVault, Pier, Portico, Mesh,
-                        Polygons, Voxels };
+                        Polygons, Voxels, Patches };
+
+// One bicubic Bezier patch: control point [4*row + col], object space; s runs along a row, t from
+// row to row, and dP/ds x dP/dt is the front side's normal (patches.hpp evaluates it).
+using BicubicPatch = std::array<glm::dvec3, 16>;
 
 // File: the OBJ file's normals (analytic surfaces: the exact ones); Average: averaged over the
 // faces at a vertex; Crease: averaged over the faces within crease_angle_deg; Face: each face its
@@ -79,7 +83,12 @@ struct SceneObject {
   double major_radius = 2.0;      // quarter torus
   double minor_radius = 0.5;
   double c = 1.0, size = 1.0;     // hyperbolic paraboloid z = (x^2 - y^2)/c, |x|,|y| <= size
-  std::vector<glm::dvec3> control_points;  // Bezier patch: 16, row by row
+  // "bezier_patch" (one) and "patches" (B-spline nets converted by the basis change): every patch
+  // of the object in Bezier form, object space, before the object's transform.
+  std::vector<BicubicPatch> patches;
+  // Whitted's interior edges of every patch: f(k, t) for k in k_u, f(s, k) for k in k_v; ascending,
+  // in (0, 1). The tessellation makes them grid lines too.
+  std::vector<double> k_u, k_v;
   int cap_rings = 1;              // cone: rings of the base cap (more only under max_edge_length)
   // Cross vault / portico bay: plan size (x, z) of a bay, crown height above the springing line;
   // the two barrels are half ellipses of that rise (surfaces.hpp, cross_vault).

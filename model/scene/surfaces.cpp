@@ -2,11 +2,14 @@
 #include "surfaces.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "mesh_polygons.hpp"
@@ -164,52 +167,98 @@ IndexedMesh hypar(const SceneObject& o) {
   return m;
 }
 
-void bernstein(double t, double b[4], double db[4]) {
-  double u = 1 - t;
-  b[0] = u * u * u; b[1] = 3 * t * u * u; b[2] = 3 * t * t * u; b[3] = t * t * t;
-  db[0] = -3 * u * u; db[1] = 3 * u * u - 6 * t * u; db[2] = 6 * t * u - 3 * t * t; db[3] = 3 * t * t;
-}
+// Welds the boundary vertices of an object's patches: a vertex within `tol` of one already made
+// on a boundary (of this patch or another) takes that vertex's doubles, so a shared boundary
+// projects to bit-identical screen coordinates whatever the two patches' directions. Where the
+// normals agree too (within kSmoothJoin: a smooth join, a pole) the two are one vertex whose
+// normal is the mean of the patches' exact normals, bit-identical on both sides; where they do
+// not (a crease) each side keeps its own normal on the common position.
+class BoundaryWeld {
+ public:
+  // `size`: the largest coordinate magnitude; the cells stay at least 1e-12 of it, so a cell
+  // index (coordinate / cell) stays far inside a long long even for a patch of zero extent.
+  BoundaryWeld(IndexedMesh& m, double tol, double size) : m_(m), tol_(tol), cell_(std::max(tol * 1024, 1e-12 * (size + 1))) {}
+  int vertex(const glm::dvec3& p, const glm::dvec3& n) {
+    const glm::dvec3 u = glm::normalize(n);
+    const std::array<long long, 3> key = cell(p);
+    int same_place = -1;
+    for (long long dx = -1; dx <= 1; ++dx)
+      for (long long dy = -1; dy <= 1; ++dy)
+        for (long long dz = -1; dz <= 1; ++dz) {
+          const auto it = cells_.find({key[0] + dx, key[1] + dy, key[2] + dz});
+          if (it == cells_.end()) continue;
+          for (int id : it->second) {
+            if (glm::length(m_.position[std::size_t(id)] - p) > tol_) continue;
+            if (glm::dot(first_[std::size_t(id)], u) >= kSmoothJoin) {
+              sum_[std::size_t(id)] += u;
+              ++count_[std::size_t(id)];
+              return id;
+            }
+            same_place = id;
+          }
+        }
+    const int id = m_.add_vertex(same_place < 0 ? p : m_.position[std::size_t(same_place)], n);
+    first_.resize(std::size_t(id) + 1), sum_.resize(std::size_t(id) + 1), count_.resize(std::size_t(id) + 1);
+    first_[std::size_t(id)] = sum_[std::size_t(id)] = u;
+    count_[std::size_t(id)] = 1;
+    cells_[cell(m_.position[std::size_t(id)])].push_back(id);
+    return id;
+  }
+  // The mean normal of every vertex that patches share (the others keep add_vertex's).
+  void finish() {
+    for (std::size_t id = 0; id < count_.size(); ++id)
+      if (count_[id] > 1) m_.normal[id] = glm::normalize(sum_[id]);
+  }
 
-}  // namespace
+ private:
+  static constexpr double kSmoothJoin = 0.9998476951563913;  // cos 1 degree
+  std::array<long long, 3> cell(const glm::dvec3& p) const {
+    return {static_cast<long long>(std::floor(p.x / cell_)), static_cast<long long>(std::floor(p.y / cell_)),
+            static_cast<long long>(std::floor(p.z / cell_))};
+  }
+  IndexedMesh& m_;
+  double tol_, cell_;
+  std::map<std::array<long long, 3>, std::vector<int>> cells_;
+  std::vector<glm::dvec3> first_, sum_;
+  std::vector<int> count_;
+};
 
-void bezier_point(const std::vector<glm::dvec3>& cp, double s, double t, glm::dvec3& p, glm::dvec3& ds,
-                  glm::dvec3& dt) {
-  double bs[4], dbs[4], bt[4], dbt[4];
-  bernstein(s, bs, dbs);
-  bernstein(t, bt, dbt);
-  p = ds = dt = glm::dvec3(0.0);
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) {
-      const glm::dvec3& c = cp[std::size_t(4 * i + j)];
-      p += bt[i] * bs[j] * c;
-      ds += bt[i] * dbs[j] * c;
-      dt += dbt[i] * bs[j] * c;
-    }
-}
-
-namespace {
-
-// Bicubic Bezier: control_points[4*row + col]; s runs along a row, t from row to row. The
-// normal is dP/ds x dP/dt: rows listed top first, left to right, as seen from the front,
-// give a patch facing the viewer (left-handed world).
-IndexedMesh bezier(const SceneObject& o) {
+// Bicubic patches ("bezier_patch", "patches"): each a grid over s, t in [0, 1] of o.u x o.v
+// segments with the interior edges k_u, k_v as grid lines too, exact normals (patch_normal: the
+// limit from inside at a collapsed boundary). Rows top first, left to right as seen from the
+// front, give a patch facing the viewer (left-handed world). A grid element with a collapsed
+// side (at a pole) becomes a triangle.
+IndexedMesh bezier_patches(const SceneObject& o) {
   IndexedMesh m;
-  const auto& cp = o.control_points;
-  auto eval = [&](double s, double t, glm::dvec3& p, glm::dvec3& ds, glm::dvec3& dt) {
-    bezier_point(cp, s, t, p, ds, dt);
-  };
-  grid(m, o.u, o.v, false, false, o.triangles, [&](double s, double t, glm::dvec3& p, glm::dvec3& n) {
-    glm::dvec3 ds, dt, q;
-    eval(s, t, p, ds, dt);
-    n = glm::cross(ds, dt);
-    // A degenerate corner (coincident control points) has no tangent plane there; take the
-    // limit from just inside the patch.
-    for (double e = 1e-6; glm::length(n) < 1e-12 * (1 + glm::dot(p, p)) && e < 0.1; e *= 10) {
-      eval(s + (s < 0.5 ? e : -e), t + (t < 0.5 ? e : -e), q, ds, dt);
-      n = glm::cross(ds, dt);
-    }
-    if (glm::length(n) == 0) n = glm::dvec3(0, 0, -1);
-  });
+  const std::vector<double> su = patch_grid_lines(o.u, o.k_u), tv = patch_grid_lines(o.v, o.k_v);
+  const std::size_t cu = su.size(), cv = tv.size();
+  glm::dvec3 lo(INFINITY), hi(-INFINITY);
+  for (const BicubicPatch& cp : o.patches)
+    for (const glm::dvec3& c : cp) lo = glm::min(lo, c), hi = glm::max(hi, c);
+  const double size = std::max(glm::length(lo), glm::length(hi));
+  BoundaryWeld weld(m, 1e-9 * glm::length(hi - lo), size);
+  std::vector<int> id(cu * cv);
+  for (const BicubicPatch& cp : o.patches) {
+    for (std::size_t j = 0; j < cv; ++j)
+      for (std::size_t i = 0; i < cu; ++i) {
+        glm::dvec3 p, ds, dt;
+        bezier_point(cp, su[i], tv[j], p, ds, dt);
+        glm::dvec3 n = patch_normal(cp, su[i], tv[j]);
+        if (glm::length(n) == 0) n = glm::dvec3(0, 0, -1);
+        const bool boundary = i == 0 || j == 0 || i + 1 == cu || j + 1 == cv;
+        id[j * cu + i] = boundary ? weld.vertex(p, n) : m.add_vertex(p, n);
+      }
+    for (std::size_t j = 0; j + 1 < cv; ++j)
+      for (std::size_t i = 0; i + 1 < cu; ++i) {
+        const int q[4] = {id[j * cu + i], id[j * cu + i + 1], id[(j + 1) * cu + i + 1], id[(j + 1) * cu + i]};
+        int kept[4], n = 0;
+        for (int k = 0; k < 4; ++k)  // drop a corner where the side to the next one has length 0
+          if (m.position[std::size_t(q[k])] != m.position[std::size_t(q[(k + 1) % 4])]) kept[n++] = q[k];
+        if (n == 4) m.add_face({kept[0], kept[1], kept[2], kept[3]}, o.triangles);
+        else if (n == 3) m.add_face({kept[0], kept[1], kept[2]}, false);
+      }
+  }
+  weld.finish();
   return m;
 }
 
@@ -381,6 +430,7 @@ Longest longest_edges(const std::vector<PatchFn>& patches, int nu, int nv, const
 }
 
 constexpr int kMaxSegments = 1024;
+constexpr long long kMaxSamples = 1 << 24;  // grid points fit_grid measures at once
 
 // Grows nu and nv from their minimums until no edge is longer than L. A chord shrinks about as
 // 1/n, so n * (longest / L) segments is the next guess; ok once every edge fits.
@@ -395,7 +445,12 @@ std::string fit_grid(const std::function<std::vector<PatchFn>(int)>& patches, do
     return std::max(n + 1, static_cast<int>(std::min(std::ceil(n * ratio), 2.0 * kMaxSegments)));
   };
   for (;;) {
-    const Longest e = longest_edges(patches(nu), nu, nv, scale);
+    const std::vector<PatchFn> pieces = patches(nu);
+    // Many patches (a "patches" object) at a fine grid: refused before millions of samples.
+    if (static_cast<long long>(pieces.size()) * (nu + 1) * (nv + 1) > kMaxSamples)
+      return number_text(L) + " needs more than " + std::to_string(kMaxSamples) +
+             " grid points over the object's patches (the tessellation's limit)";
+    const Longest e = longest_edges(pieces, nu, nv, scale);
     const bool ok_u = e.u <= L, ok_v = e.v <= L, ok_d = !split || e.diagonal <= L;
     if (ok_u && ok_v && ok_d) return "";
     if (!ok_u) nu = grow(nu, e.u);
@@ -486,11 +541,13 @@ std::string choose_tessellation(SceneObject& o) {
       });
       return fit_grid(fixed, L, sc, split, 2, 2, false, o.u, o.v);
     case ObjectType::BezierPatch:
-      p.push_back([&o](double s, double t) {
-        glm::dvec3 q, ds, dt;
-        bezier_point(o.control_points, s, t, q, ds, dt);
-        return q;
-      });
+    case ObjectType::Patches:
+      for (const BicubicPatch& cp : o.patches)
+        p.push_back([&cp](double s, double t) {
+          glm::dvec3 q, ds, dt;
+          bezier_point(cp, s, t, q, ds, dt);
+          return q;
+        });
       return fit_grid(fixed, L, sc, split, 2, 2, false, o.u, o.v);
     case ObjectType::CrossVault:
     case ObjectType::Portico:
@@ -525,6 +582,8 @@ std::size_t estimated_faces(const SceneObject& o) {
     case ObjectType::Pier: return box_faces;
     case ObjectType::Portico: return std::size_t(o.bays) * bay + 2 * std::size_t(o.bays + 1) * box_faces;
     case ObjectType::Cone: return u * (v + std::size_t(o.cap_rings)) * split;
+    case ObjectType::BezierPatch:
+    case ObjectType::Patches: return o.patches.size() * (u + o.k_u.size()) * (v + o.k_v.size()) * split;
     default: return u * (v + 1) * split;  // a u x v grid (a sphere's poles, a torus' ring)
   }
 }
@@ -535,7 +594,8 @@ IndexedMesh tessellate_surface(const SceneObject& o) {
     case ObjectType::Cone: return cone(o);
     case ObjectType::QuarterTorus: return quarter_torus(o);
     case ObjectType::HyperbolicParaboloid: return hypar(o);
-    case ObjectType::BezierPatch: return bezier(o);
+    case ObjectType::BezierPatch:
+    case ObjectType::Patches: return bezier_patches(o);
     case ObjectType::CrossVault:
     case ObjectType::Pier:
     case ObjectType::Portico: return vaulted(o);

@@ -9,6 +9,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "patches.hpp"  // bezier_point, patch_normal
 #include "scene_types.hpp"
 
 namespace watkins {
@@ -30,7 +31,7 @@ struct IndexedMesh {
   void add_face(std::initializer_list<int> idx, bool split);
 };
 
-// Sphere, cone, quarter_torus, hyperbolic_paraboloid, bezier_patch, cross_vault, pier, portico, voxels.
+// Sphere, cone, quarter_torus, hyperbolic_paraboloid, bezier_patch, patches, cross_vault, pier, portico, voxels.
 // Object space, untransformed.
 IndexedMesh tessellate_surface(const SceneObject& o);
 
@@ -54,10 +55,5 @@ struct VaultLayout {
   std::vector<glm::dvec3> bays, piers;
 };
 VaultLayout vault_layout(const SceneObject& o);
-
-// Bicubic Bezier patch (control_points[4*row + col]; s along a row, t from row to row): the point
-// and its partial derivatives dP/ds, dP/dt at (s, t). Shared by the tessellation and the analytic truth.
-void bezier_point(const std::vector<glm::dvec3>& cp, double s, double t, glm::dvec3& p, glm::dvec3& ds,
-                  glm::dvec3& dt);
 
 }  // namespace watkins
