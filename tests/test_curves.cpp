@@ -366,6 +366,13 @@ TEST(Curves, TeapotByCurves) {
   o.patches_as_curves = false;
   const BuiltScene polys = load_scene_text(text, "teapot.json", ".", o);
   EXPECT_EQ(curves.curve_stats.cells, 32 * 16);
+  // 32 patches x 65 x 65 subpatches is over the 2^15 the builder allows an object drawn as curves.
+  std::string many = text;
+  const std::string k4 = "\"k_u\": 4, \"k_v\": 4";
+  many.replace(many.find(k4), k4.size(), "\"k_u\": 65, \"k_v\": 65");
+  o.patches_as_curves = true;
+  EXPECT_THROW(load_scene_text(many, "teapot.json", ".", o), SceneError);
+  o.patches_as_curves = false;
   EXPECT_GT(curves.curve_stats.culled_regions, 100);
   std::map<std::pair<int, int>, int> count;
   for (const ScreenCurve& c : curves.curves)

@@ -43,6 +43,7 @@ namespace {
 
 constexpr double kCoordLimit = fmt::VertexLimit;
 constexpr size_t kMaxPolygons = fmt::MaxPolygons;  // the pipeline's polygon id is PolyIdBits
+constexpr size_t kMaxCurveCells = size_t{1} << 15;  // subpatches of one object drawn as curves
 
 // An object in camera space, ready to project and shade.
 struct CamObject {
@@ -222,6 +223,12 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
       if (!k)
         throw SceneError(sc.name + ": " + o.field + ".draw: the patch reaches outside the camera's [near, far); "
                          "curves are not clipped (draw it as polygons, or move it)");
+    // Each subpatch is a few hundred point evaluations before any scan line: bounded like faces.
+    const std::size_t cells = o.patches.size() * (o.k_u.size() + 1) * (o.k_v.size() + 1);
+    if (cells > kMaxCurveCells)
+      throw SceneError(sc.name + ": " + o.field + ".k_u: drawn as curves the object has " + std::to_string(cells) +
+                       " subpatches (patches x (k_u + 1) x (k_v + 1)), over the limit of " +
+                       std::to_string(kMaxCurveCells));
     const ObjectToCamera xf(view, o.transform);
     const Projection proj{half_w, half_h, cam.focal};
     WhittedOptions wo;
