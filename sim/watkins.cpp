@@ -214,6 +214,7 @@ struct RenderArgs {
   bool depth_tie_given = false;  // else the scene's shading.depth_tie
   double smooth = -1;            // --smooth W (else the scene's shading.smooth)
   bool cull = false, no_cull = false;
+  std::string patches;  // --patches curves|polygons
   int max_active_edges = watkins::fmt::MaxActiveEdges;
   bool max_active_edges_given = false;  // --max-active-edges overrides the configuration's
   std::string config;                   // --config F (docs/config-format.md)
@@ -289,6 +290,7 @@ int render(const RenderArgs& a) {
   if (a.smooth >= 0) opt.smooth = a.smooth;
   if (a.cull) opt.cull_backfaces = true;
   if (a.no_cull) opt.cull_backfaces = false;
+  if (!a.patches.empty()) opt.patches_as_curves = a.patches == "curves";
   opt.strict = a.strict;
   if (a.scene_given && a.scene.empty()) throw UsageError("the scene file name is empty (omit it for the built-in scene)");
   check_rtl_args(a.rtl, a.model);  // --rtl
@@ -329,6 +331,21 @@ int render(const RenderArgs& a) {
                 scene.eye[2]);
   std::printf("polygons      %zu (culled %d back faces, %d clipped, %d degenerate: zero area, skipped)\n",
               scene.polygons.size(), scene.culled_backfaces, scene.near_clipped, scene.degenerate);
+  if (scene.curve_regions) {
+    const EdgeStats& c = scene.curve_stats;
+    std::printf("curves        %zu y-monotonic pieces in %d regions (%d subpatches, %d culled), most %d crossings on "
+                "one scan line (line %d); %d silhouettes, defaults: %d one crossing, %d more than two, %d twice on a "
+                "side, %d inside\n",
+                scene.curves.size(), scene.curve_regions, c.cells, c.culled_regions, scene.max_curve_crossings,
+                scene.max_curve_line, c.silhouettes, c.default_one, c.default_many, c.default_side_twice,
+                c.default_inside);
+    std::printf("newton        %lld crossings: %.3f iterations each (%lld in one, %lld in none, max %d), %lld by "
+                "brute force (%lld left the piece, %lld did not converge); |E_y - y| at most %.2g px after the estimate, "
+                "%.2g px after one iteration (%lld of %lld stepped crossings within 1/1024 px)\n",
+                c.newton.crossings, c.newton.mean_iterations(), c.newton.one_iteration, c.newton.zero_iterations,
+                c.newton.max_iterations, c.newton.brute_force(), c.newton.left_piece, c.newton.no_convergence, c.newton.max_estimate_residual,
+                c.newton.max_one_iteration_residual, c.newton.one_iteration_close, c.newton.stepped);
+  }
   std::printf("edge records  %zu (%d bits each)\n", prepared.edges.size(), cfg.edge_record_bits(prepared.shading));
   if (!a.config.empty())
     std::printf("config        %s: x %d.%d, depth %d.%d (depth_bits %d), shade %d.%d, normal %d.%d\n",
@@ -455,6 +472,9 @@ int main(int argc, char** argv) {
                                        "steps); overrides shading.smooth")
       ->check(CLI::Range(0.0, watkins::fmt::SmoothWMax));
   r->add_option("--diff", ra.diff, "PNG of |model - double reference| x16 (magenta: coverage differs)");
+  r->add_option("--patches", ra.patches, "patch objects drawn as curves (Whitted's edges, Newton per scan line) or "
+                                       "polygons (tessellated); overrides each object's \"draw\"")
+      ->check(CLI::IsMember({"curves", "polygons"}));
   r->add_flag("--cull", ra.cull, "cull back faces");
   r->add_flag("--no-cull", ra.no_cull, "keep back faces");
   CLI::Option* mae = r->add_option("--max-active-edges", ra.max_active_edges, "active-edge list capacity "

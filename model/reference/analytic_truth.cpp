@@ -501,8 +501,12 @@ AnalyticTruth render_analytic_truth(const BuiltScene& scene) {
 
 Image by_object(const BuiltScene& scene, const Image& img) {
   Image out = img;
+  // Curve regions (ids after the polygons) name their object through their curves.
+  std::vector<int> region_object(std::size_t(scene.curve_regions), -1);
+  for (const ScreenCurve& c : scene.curves) region_object.at(std::size_t(c.region)) = c.object;
+  const int n_poly = int(scene.polygons.size());
   for (int& o : out.owner)
-    if (o >= 0) o = scene.polygons.at(std::size_t(o)).object;
+    if (o >= 0) o = o < n_poly ? scene.polygons[std::size_t(o)].object : region_object.at(std::size_t(o - n_poly));
   return out;
 }
 

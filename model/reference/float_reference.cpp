@@ -35,13 +35,22 @@ double exact_lerp(double a, double b, double t) { return a + t * (b - a); }
 
 // The shade of a visible pixel from its interpolated attributes: the Gouraud shade itself, or
 // Phong's eq. (3) on the normalized normal (a null normal stays null, as in the normalizer).
-std::array<double, 3> pixel_levels(const BuiltScene& scene, int poly, const Attr& a) {
+std::array<double, 3> pixel_levels(const BuiltScene& scene, int material, const Attr& a) {
   if (scene.shading == ShadingMode::Gouraud) return {a[1], a[2], a[3]};
   const glm::dvec3 n(a[1], a[2], a[3]);
   const double len = glm::length(n);
   const glm::dvec3 u = len > 0 ? n / len : n;
-  const PhongMaterial& m = scene.materials.at(std::size_t(scene.polygons[std::size_t(poly)].material));
+  const PhongMaterial& m = scene.materials.at(std::size_t(material));
   return phong_levels(m, {u.x, u.y, u.z}, scene.light, scene.eye);
+}
+
+// One polygon's or curve region's crossings of a scan line, sorted by X and paired into segments
+// (the first opens, the next closes), as the segment former pairs them.
+void pair_crossings(int id, std::vector<Crossing>& xs, std::vector<FloatSegment>& segs) {
+  std::sort(xs.begin(), xs.end(), [](const Crossing& l, const Crossing& r) {
+    return l.x != r.x ? l.x < r.x : l.edge < r.edge;
+  });
+  for (std::size_t i = 0; i + 1 < xs.size(); i += 2) segs.push_back({id, xs[i].x, xs[i + 1].x, xs[i].a, xs[i + 1].a});
 }
 
 // Herman & Liu's 3x3 weighted mean in double on the unrounded levels, with W as given (not
@@ -84,6 +93,19 @@ Image render_float_reference(const BuiltScene& scene, FloatReferenceStats* stats
     const int y1 = std::min(H, int(std::ceil(hi - 0.5)));
     for (int y = y0; y < y1; ++y) bucket[y].push_back(int(p));
   }
+  // Curves (Whitted's edges): region r is id polygons.size() + r, as preparation numbers it.
+  const int n_poly = int(scene.polygons.size());
+  std::vector<int> material(std::size_t(n_poly + scene.curve_regions), 0);
+  for (int p = 0; p < n_poly; ++p) material[std::size_t(p)] = scene.polygons[std::size_t(p)].material;
+  std::vector<std::vector<int>> curve_bucket(H);
+  for (std::size_t c = 0; c < scene.curves.size(); ++c) {
+    const ScreenCurve& sc = scene.curves[c];
+    material[std::size_t(n_poly + sc.region)] = sc.material;
+    for (std::size_t k = 0; k < sc.lines.size(); ++k)
+      if (sc.y0 + int(k) < H) curve_bucket[std::size_t(sc.y0) + k].push_back(int(c));
+  }
+  std::vector<std::vector<Crossing>> region_xs(std::size_t(scene.curve_regions));
+  std::vector<int> regions_on_line;
   std::vector<double> depth(W);
   std::vector<Attr> colour(W);
   std::vector<char> written(W);
@@ -108,11 +130,20 @@ Image render_float_reference(const BuiltScene& scene, FloatReferenceStats* stats
         at.x = exact_lerp(a->depth, b->depth, t);
         xs.push_back({glm::mix(a->x, b->x, t), at, int(i)});
       }
-      std::sort(xs.begin(), xs.end(), [](const Crossing& l, const Crossing& r) {
-        return l.x != r.x ? l.x < r.x : l.edge < r.edge;
-      });
-      for (std::size_t i = 0; i + 1 < xs.size(); i += 2)
-        segs.push_back({p, xs[i].x, xs[i + 1].x, xs[i].a, xs[i + 1].a});
+      pair_crossings(p, xs, segs);
+    }
+    // Whitted: each curve's crossing of this line (found by Newton), paired per region.
+    regions_on_line.clear();
+    for (int c : curve_bucket[std::size_t(y)]) {
+      const ScreenCurve& sc = scene.curves[std::size_t(c)];
+      const ScreenVertex& v = sc.lines[std::size_t(y - sc.y0)];
+      auto& rx = region_xs[std::size_t(sc.region)];
+      if (rx.empty()) regions_on_line.push_back(sc.region);
+      rx.push_back({v.x, attributes(v, scene.shading), c});
+    }
+    for (int r : regions_on_line) {
+      pair_crossings(n_poly + r, region_xs[std::size_t(r)], segs);
+      region_xs[std::size_t(r)].clear();
     }
     // Same arrival order as the segment former: by closing X.
     std::stable_sort(segs.begin(), segs.end(),
@@ -139,7 +170,7 @@ Image render_float_reference(const BuiltScene& scene, FloatReferenceStats* stats
       img.covered[std::size_t(y) * W + x] = written[x];
       img.owner[std::size_t(y) * W + x] = written[x] ? owner[x] : -1;
       const std::array<double, 3> level =
-          written[x] ? pixel_levels(scene, owner[x], colour[x])
+          written[x] ? pixel_levels(scene, material[std::size_t(owner[x])], colour[x])
                      : std::array<double, 3>{scene.background[0], scene.background[1], scene.background[2]};
       for (int c = 0; c < 3; ++c) {
         const double v = level[c];

@@ -6,6 +6,10 @@
 // in double and shaded with phong_levels (eq. 3). The fixed-point model's difference from it is
 // the cost of quantization alone. With BuiltScene::smooth > 0 the levels are then smoothed by
 // Herman & Liu's 3x3 weighted mean in double (W unrounded; the smoother twin's rule for f_i).
+// Curved surfaces (BuiltScene::curves) as Whitted draws them: on each scan line the crossings of
+// each region's edges (found by Newton in model/curves) sorted by X and paired into segments,
+// depth linear along a segment, the normal interpolated and shaded as Phong (or the Gouraud shade
+// interpolated), depth-tested per pixel with the polygons; region r is id polygons.size() + r.
 #pragma once
 
 #include "image_io.hpp"

@@ -14,6 +14,7 @@
 #include "screen_curve.hpp"
 #include "screen_polygon.hpp"
 #include "shading_mode.hpp"
+#include "whitted_edges.hpp"
 
 namespace watkins {
 
@@ -42,6 +43,7 @@ struct BuildOptions {
   std::optional<bool> flat;  // flat shading (see BuiltScene::flat)
   std::optional<DepthTie> depth_tie;
   std::optional<double> smooth;  // Herman & Liu's W (BuiltScene::smooth)
+  std::optional<bool> patches_as_curves;  // patch objects: Whitted's curves (true) or polygons (false)
   // Zero-area polygons are skipped and counted (BuiltScene::degenerate), as GL skips them; with
   // strict, a zero-area polygon of a "polygons" command list is an error naming it.
   bool strict = false;
@@ -88,6 +90,10 @@ struct BuiltScene {
   // regions they pair in (preparation gives region r the polygon id polygons.size() + r).
   std::vector<ScreenCurve> curves;
   int curve_regions = 0;
+  // How the curves were made (Newton iterations, silhouettes, Whitted's defaults), and the most
+  // curve crossings on one scan line (the curved edges active at once; line max_curve_line).
+  EdgeStats curve_stats;
+  int max_curve_crossings = 0, max_curve_line = 0;
   bool cull_backfaces = true;  // the setting the polygons were built with (the truth hides back sides too)
   int culled_backfaces = 0;   // dropped by back-face culling
   int near_clipped = 0;       // dropped: a vertex behind the camera's near plane

@@ -12,15 +12,18 @@
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
 
 #include "camera.hpp"
 #include "formats.hpp"
 #include "illumination.hpp"
 #include "mesh_polygons.hpp"
 #include "mesh_stl.hpp"
+#include "patches.hpp"
 #include "scene.hpp"
 #include "scene_types.hpp"
 #include "surfaces.hpp"
+#include "whitted_edges.hpp"
 
 namespace watkins {
 
@@ -40,6 +43,7 @@ namespace {
 
 constexpr double kCoordLimit = fmt::VertexLimit;
 constexpr size_t kMaxPolygons = fmt::MaxPolygons;  // the pipeline's polygon id is PolyIdBits
+constexpr size_t kMaxCurveCells = size_t{1} << 15;  // subpatches of one object drawn as curves
 
 // An object in camera space, ready to project and shade.
 struct CamObject {
@@ -202,6 +206,75 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
     for (int c = 0; c < 3; ++c) rgb[c] = std::clamp(255.0 * (mat.color[c] * diff + spec), 0.0, 255.0);
   };
 
+  // The depth a vertex or a curve crossing carries at camera-space Z (eq. (1) or (2)).
+  auto depth_of = [&](double z) {
+    const double d = out.depth == DepthMode::InverseZ ? 1.0 - cam.near / z : (z - cam.near) / (cam.far - cam.near);
+    return std::min(d, std::nextafter(1.0, 0.0));  // rounding only; Z < far already holds
+  };
+
+  // A patch object drawn by Whitted's method: its edge curves crossed with every scan line
+  // (model/curves), one region per subpatch or per side of a silhouette.
+  auto add_curves = [&](const SceneObject& o, int index, const CamObject& co) {
+    if (out.flat)
+      throw SceneError(sc.name + ": " + o.field + ".draw: flat shading gives one shade per polygon; a patch drawn as "
+                       "curves has no polygons (draw it as polygons)");
+    // The tessellation's vertices lie on the surface: one outside [near, far) means the patch is cut.
+    for (char k : co.kept)
+      if (!k)
+        throw SceneError(sc.name + ": " + o.field + ".draw: the patch reaches outside the camera's [near, far); "
+                         "curves are not clipped (draw it as polygons, or move it)");
+    // Each subpatch is a few hundred point evaluations before any scan line: bounded like faces.
+    const std::size_t cells = o.patches.size() * (o.k_u.size() + 1) * (o.k_v.size() + 1);
+    if (cells > kMaxCurveCells)
+      throw SceneError(sc.name + ": " + o.field + ".k_u: drawn as curves the object has " + std::to_string(cells) +
+                       " subpatches (patches x (k_u + 1) x (k_v + 1)), over the limit of " +
+                       std::to_string(kMaxCurveCells));
+    const ObjectToCamera xf(view, o.transform);
+    const Projection proj{half_w, half_h, cam.focal};
+    WhittedOptions wo;
+    wo.k_u = o.k_u, wo.k_v = o.k_v, wo.cull = cull;
+    wo.line_lo = 0, wo.line_hi = sc.height;
+    const int material = materials.index(o.material);
+    const glm::dmat3 normal_to_camera = glm::transpose(glm::inverse(xf.linear));
+    for (const BicubicPatch& cp : o.patches) {
+      const PatchPoint f = [&](double u, double v, glm::dvec3& p, glm::dvec3& pu, glm::dvec3& pv) {
+        bezier_point(cp, u, v, p, pu, pv);
+        p = xf.linear * p + xf.offset;  // a proper linear map: dP/du x dP/dv keeps its side
+        pu = xf.linear * pu;
+        pv = xf.linear * pv;
+      };
+      // The patch's own normal (its limit at a pole, as the tessellation and the truth take it).
+      wo.normal = [&](double u, double v) { return normal_to_camera * patch_normal(cp, u, v); };
+      const PatchEdges edges = describe_patch(f, proj, wo, out.curve_stats);
+      for (const EdgePiece& piece : edges.pieces) {
+        const bool front = edges.regions[std::size_t(piece.region)].front;
+        ScreenCurve c;
+        c.region = out.curve_regions + piece.region;
+        c.object = index;
+        c.material = material;
+        c.y0 = piece.y0;
+        for (std::size_t k = 0; k < piece.lines.size(); ++k) {
+          const EdgeCrossing& e = piece.lines[k];
+          if (!(e.x >= -kCoordLimit && e.x < kCoordLimit))
+            throw SceneError(sc.name + ": " + o.field + ": an edge of the patch projects to x=" + number_text(e.x) +
+                             ", outside the representable range [" + number_text(-kCoordLimit) + ", " +
+                             number_text(kCoordLimit) + ") pixels; move the camera or reduce focal");
+          ScreenVertex v;
+          v.x = e.x;
+          v.y = piece.y0 + int(k) + 0.5;  // the scan line's centre (E_y(t) within the Newton tolerance)
+          v.depth = depth_of(e.p.z);
+          v.eye_z = e.p.z;
+          // Phong: the side the region shows, turned as a whole (as a back polygon's normals are).
+          for (int a = 0; a < 3; ++a) v.normal[a] = front ? e.normal[a] : -e.normal[a];
+          shade(e.p, facing(e.p, e.normal), o.material, v.rgb);
+          c.lines.push_back(v);
+        }
+        out.curves.push_back(std::move(c));
+      }
+      out.curve_regions += int(edges.regions.size());
+    }
+  };
+
   size_t next_obj = 0;
   std::string crossed;  // the object at which the polygon count passed kMaxPolygons
   for (size_t i = 0; i < sc.objects.size(); ++i) {
@@ -233,6 +306,11 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
       continue;
     }
     const CamObject& co = objs[next_obj++];
+    if ((o.type == ObjectType::BezierPatch || o.type == ObjectType::Patches) &&
+        opt.patches_as_curves.value_or(o.draw_curves)) {
+      add_curves(o, int(i), co);
+      continue;
+    }
     const IndexedMesh& m = co.mesh;
     std::vector<ScreenVertex> sv(m.position.size());
     std::vector<char> done(m.position.size(), 0);
@@ -249,8 +327,7 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
                            ", outside the representable range [" + number_text(-kCoordLimit) + ", " +
                            number_text(kCoordLimit) + ") pixels; move the camera or reduce focal");
       }
-      v.depth = out.depth == DepthMode::InverseZ ? 1.0 - cam.near / p.z : (p.z - cam.near) / (cam.far - cam.near);
-      v.depth = std::min(v.depth, std::nextafter(1.0, 0.0));  // rounding only; Z < far already holds
+      v.depth = depth_of(p.z);
       v.eye_z = p.z;
       // Phong gets the surface normal as it is: the side seen is decided per polygon below, since
       // near a silhouette a front face's vertex normals may point slightly away from the eye and
@@ -304,6 +381,15 @@ BuiltScene build(const Scene& sc, const BuildOptions& opt) {
       crossed = o.field;
       break;
     }
+  }
+  // Curve crossings per scan line: the curved edges active at once.
+  if (!out.curves.empty()) {
+    std::vector<int> per_line(std::size_t(std::max(sc.height, 1)), 0);
+    for (const ScreenCurve& c : out.curves)
+      for (std::size_t k = 0; k < c.lines.size(); ++k) ++per_line[std::size_t(c.y0) + k];
+    const auto most = std::max_element(per_line.begin(), per_line.end());
+    out.max_curve_crossings = *most;
+    out.max_curve_line = int(most - per_line.begin());
   }
   if (out.polygons.size() > kMaxPolygons)
     throw SceneError(sc.name + ": " + crossed + ": the scene has more than " + std::to_string(kMaxPolygons) +

@@ -252,10 +252,18 @@ std::map<std::string, Material> parse_materials(const Reader& r, const json& j) 
     const std::string mf = f + "." + field_key(it.key());
     const json& m = it.value();
     r.expect_object(m, mf);
-    r.check_keys(m, mf, {"color", "d", "W", "n"});
+    r.check_keys(m, mf, {"color", "d", "W", "n", "rule"});
     Material mat;
     mat.name = it.key();
     mat.color = r.vec3_in(r.required(m, mf, "color"), mf + ".color", 0, 1);
+    // Whitted's S = hue (.25 + .75 N.I) + glossiness (R.I)^60 is eq. (3) with d = 0.25, n = 60,
+    // Cp = hue and W = glossiness (docs/whitted.md): the rule fixes d and n.
+    opt(m, mf, "rule", [&](const json& v, const std::string& ff) {
+      if (r.string(v, ff) != "whitted") r.fail(ff, "expected \"whitted\", got " + show(v));
+      for (const char* k : {"d", "n"})
+        if (m.contains(k)) r.fail(mf + "." + k, "\"rule\": \"whitted\" fixes d = 0.25 and n = 60; leave it out");
+      mat.d = 0.25, mat.n = 60;
+    });
     opt(m, mf, "d", [&](const json& v, const std::string& ff) { mat.d = r.number_in(v, ff, 0, 1); });
     // W up to 511/256: the phong_shader's MaterialBits word (specular may saturate the level).
     opt(m, mf, "W", [&](const json& v, const std::string& ff) { mat.W = r.number_in(v, ff, 0, 511.0 / 256); });
@@ -450,6 +458,16 @@ void parse_interior_edges(const Reader& r, const json& j, const std::string& f, 
     });
 }
 
+// "draw": how a patch object is drawn, "polygons" (tessellated, the default) or "curves" (Whitted's
+// edge description, model/curves).
+void parse_draw(const Reader& r, const json& j, const std::string& f, SceneObject& o) {
+  opt(j, f, "draw", [&](const json& v, const std::string& ff) {
+    const std::string d = r.string(v, ff);
+    if (d != "curves" && d != "polygons") r.fail(ff, "expected \"curves\" or \"polygons\", got " + show(v));
+    o.draw_curves = d == "curves";
+  });
+}
+
 // A "patches" object: Bezier patches (16 indices into "control_points" each, or 16 points each) or
 // a uniform B-spline "control_net" of rows of points, every patch resolved into Bezier form.
 void parse_patches(const Reader& r, const json& j, const std::string& f, SceneObject& o) {
@@ -596,7 +614,7 @@ SceneObject parse_object(const Reader& r, const json& j, const std::string& f, i
     uv(2, 12, 2, 12);
   } else if (type == "bezier_patch") {
     o.type = ObjectType::BezierPatch;
-    common({"control_points", "k_u", "k_v", "u", "v", "max_edge_length"});
+    common({"control_points", "k_u", "k_v", "u", "v", "max_edge_length", "draw"});
     const std::string cf = f + ".control_points";
     const json& cp = r.array(r.required(j, f, "control_points"), cf);
     if (cp.size() != 16) r.fail(cf, "expected 16 points (4 rows of 4), got " + std::to_string(cp.size()));
@@ -604,13 +622,15 @@ SceneObject parse_object(const Reader& r, const json& j, const std::string& f, i
     for (size_t k = 0; k < 16; ++k) patch[k] = r.vec3(cp[k], cf + "[" + std::to_string(k) + "]");
     o.patches.push_back(patch);
     parse_interior_edges(r, j, f, o);
+    parse_draw(r, j, f, o);
     uv(2, 12, 2, 12);
   } else if (type == "patches") {
     o.type = ObjectType::Patches;
     common({"basis", "control_points", "patches", "control_net", "closed_u", "closed_v", "k_u", "k_v", "u", "v",
-            "max_edge_length"});
+            "max_edge_length", "draw"});
     parse_patches(r, j, f, o);
     parse_interior_edges(r, j, f, o);
+    parse_draw(r, j, f, o);
     uv(2, 8, 2, 8);
   } else if (type == "cross_vault") {
     o.type = ObjectType::CrossVault;

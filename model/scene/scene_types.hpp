@@ -88,6 +88,9 @@ struct SceneObject {
   std::vector<BicubicPatch> patches;
   // Whitted's interior edges of every patch: f(k, t) for k in k_u, f(s, k) for k in k_v; ascending,
   // in (0, 1). The tessellation makes them grid lines too.
+  // "draw": "curves" draws the patches by Whitted's edge description (model/curves) instead of
+  // polygons, with k_u, k_v as his interior edges (subpatches).
+  bool draw_curves = false;
   std::vector<double> k_u, k_v;
   int cap_rings = 1;              // cone: rings of the base cap (more only under max_edge_length)
   // Cross vault / portico bay: plan size (x, z) of a bay, crown height above the springing line;
