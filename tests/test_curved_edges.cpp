@@ -151,14 +151,35 @@ TEST(CurvedEdges, FitHoldsTheBoundOnEveryLine) {
   }
 }
 
-// The pieces and run lengths at the default formats (and the narrow ones), printed for the
-// report; the steep curve needs shorter runs than the nearly straight one beside it.
+// The pieces and run lengths at the default formats (and the narrow ones), and the hardware's
+// error against the double crossings (X in pixels, Z in 2^-16 of the depth range, N in units of
+// 1.0), printed for the report; the steep curve needs shorter runs than the nearly straight one
+// beside it, and the errors stay inside the bounds.
 TEST(CurvedEdges, PiecesAndRunLengths) {
   for (const Config& cfg : {cubic(), narrow()}) {
     const BuiltScene scene = curve_scene(ShadingMode::Phong);
+    const ChannelFormats f = cfg.channels(ShadingMode::Phong);
     std::vector<int> pieces;
+    double max_err[3] = {0, 0, 0}, sum_err[3] = {0, 0, 0};
+    long samples = 0;
     for (std::size_t i = 0; i < scene.curves.size(); ++i) {
       const CurveEdges fit = fit_curve(scene.curves[i], scene.height, ShadingMode::Phong, cfg);
+      int line = 0;
+      for (const EdgeRecord& r : fit.records)
+        for (int k = 0; k < r.n; ++k, ++line) {
+          const ScreenVertex& v = scene.curves[i].lines[line];
+          auto at = [&](int c) {
+            return std::ldexp(static_cast<double>(forward_difference_value(r, c, k, f.bits[c])), -f.frac[c]);
+          };
+          double n_err = 0;
+          for (int c = fmt::ChanNx; c <= fmt::ChanNz; ++c)
+            n_err = std::max(n_err, std::fabs(at(c) - v.normal[c - fmt::ChanNx]));
+          const double e[3] = {std::fabs(at(fmt::ChanX) - v.x),
+                               std::fabs(std::ldexp(at(fmt::ChanZ), 16 - cfg.depth_bits) - std::ldexp(v.depth, 16)),
+                               n_err};
+          for (int j = 0; j < 3; ++j) max_err[j] = std::max(max_err[j], e[j]), sum_err[j] += e[j];
+          ++samples;
+        }
       std::string runs;
       for (const EdgeRecord& r : fit.records) runs += " " + std::to_string(r.n);
       const double x_err = std::ldexp(static_cast<double>(fit.max_error[fmt::ChanX]), -cfg.x.frac_bits);
@@ -167,7 +188,15 @@ TEST(CurvedEdges, PiecesAndRunLengths) {
                   runs.c_str());
       pieces.push_back(static_cast<int>(fit.records.size()));
     }
+    std::printf("%s vs double crossings over %ld lines: X max %.5f mean %.5f px; Z max %.4f mean %.4f (2^-16); "
+                "N max %.6f mean %.6f\n",
+                cfg == cubic() ? "default" : "narrow ", samples, max_err[0], sum_err[0] / samples, max_err[1],
+                sum_err[1] / samples, max_err[2], sum_err[2] / samples);
     EXPECT_GT(pieces[4], pieces[5]) << "the steep curve splits more";
+    const CurveFitBounds b;
+    EXPECT_LE(max_err[0], b.x + std::ldexp(1.0, -cfg.x.frac_bits - 1));
+    EXPECT_LE(max_err[1], 1.0 + std::ldexp(1.0, 16 - cfg.depth_bits - cfg.depth.frac_bits - 1));
+    EXPECT_LE(max_err[2], b.normal + std::ldexp(1.0, -cfg.normal.frac_bits - 1));
   }
 }
 
