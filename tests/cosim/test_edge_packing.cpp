@@ -157,7 +157,10 @@ TEST(EdgePacking, NarrowConfigurationLayoutRoundTrips) {
     EXPECT_EQ(l.value_lsb, order * vb);
     EXPECT_EQ(l.material_lsb, (1 + order) * vb);
     EXPECT_EQ(l.poly_lsb, (1 + order) * vb + id_bits(cfg.max_materials));
-    if (order == 3) EXPECT_EQ(l.d2_lsb, vb), EXPECT_EQ(l.d3_lsb, 2 * vb);
+    if (order == 3) {
+      EXPECT_EQ(l.d2_lsb, vb);
+      EXPECT_EQ(l.d3_lsb, 2 * vb);
+    }
     EXPECT_EQ(l.y0_lsb, l.bits - fmt::LineBits);
 
     std::mt19937_64 rng(11);
@@ -172,7 +175,10 @@ TEST(EdgePacking, NarrowConfigurationLayoutRoundTrips) {
         std::uniform_int_distribution<i64> ch(-lim, lim - 1);
         e.value[c] = k < 2 ? (k ? -lim : lim - 1) : ch(rng);
         e.slope[c] = k < 2 ? (k ? lim - 1 : -lim) : ch(rng);
-        if (order == 3) e.d2[c] = ch(rng), e.d3[c] = k < 2 ? (k ? -lim : lim - 1) : ch(rng);
+        if (order == 3) {
+          e.d2[c] = ch(rng);
+          e.d3[c] = k < 2 ? (k ? -lim : lim - 1) : ch(rng);
+        }
       }
       const EdgeWords w = pack_edge(l, e);
       ASSERT_EQ(get_bits(w, l.y0_lsb, fmt::LineBits), static_cast<std::uint64_t>(e.y0));
