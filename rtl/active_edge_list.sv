@@ -21,6 +21,9 @@
 // Widths from the configuration (model/twins/config.hpp): channel vectors of slot words XBits,
 // ZBits, AttrBits (watkins_pkg::slot_lo); polygon, material and edge ids of PolyIdBits,
 // MaterialIdBits and EdgeIdBits; the edge record laid out as watkins_pkg::edge_bits says.
+// EdgeOrder 3 (curved edges): each record and entry carries the forward differences {d3, d2, d1}
+// in place of the slope (three times its bits), stepped by the edge_incrementer; the order,
+// streaming and timing are the same.
 `include "watkins_assert.svh"
 
 module active_edge_list #(
@@ -31,8 +34,11 @@ module active_edge_list #(
   parameter int unsigned PolyIdBits     = watkins_pkg::PolyIdBits,
   parameter int unsigned MaterialIdBits = watkins_pkg::MaterialIdBits,
   parameter int unsigned EdgeIdBits     = watkins_pkg::EdgeIdBits,
+  parameter int unsigned EdgeOrder      = 1,  // forward differences per edge: 1 (slope) or 3 (cubic)
   localparam int unsigned VB = watkins_pkg::vector_bits(XBits, ZBits, AttrBits),
-  localparam int unsigned EdgeBits = watkins_pkg::edge_bits(XBits, ZBits, AttrBits, PolyIdBits, MaterialIdBits)
+  localparam int unsigned DB = EdgeOrder * VB,  // the slope field: {d3, d2, d1} at order 3
+  localparam int unsigned EdgeBits = watkins_pkg::edge_bits(XBits, ZBits, AttrBits, PolyIdBits, MaterialIdBits,
+                                                            EdgeOrder)
 ) (
   input  logic                                                              clk_i,
   input  logic                                                              rst_ni,
@@ -64,7 +70,7 @@ module active_edge_list #(
     logic [PolyIdBits-1:0]     poly;
     logic [MaterialIdBits-1:0] material;
     logic [VB-1:0]             value;
-    logic [VB-1:0]             slope;
+    logic [DB-1:0]             slope;
   } record_t;
   record_t rec;
   assign rec = edge_i;
@@ -75,7 +81,7 @@ module active_edge_list #(
     logic [PolyIdBits-1:0]     poly;
     logic [MaterialIdBits-1:0] material;
     logic [VB-1:0]             value;
-    logic [VB-1:0]             slope;
+    logic [DB-1:0]             slope;
   } entry_t;
 
   // The sort key: (X, id) order is the unsigned order of {X with its sign bit inverted, id}
@@ -86,7 +92,7 @@ module active_edge_list #(
   // Entry bodies: bank b's entry with index i at {b, i} (plain vectors: yosys 0.23 mishandles
   // arrays of structs).
   localparam int unsigned TB = EdgeIdBits + PolyIdBits + MaterialIdBits;  // id, polygon, material
-  localparam int unsigned EB = LB + TB + 2 * VB;
+  localparam int unsigned EB = LB + TB + VB + DB;
   localparam int unsigned AB = IB + 1;
   logic [EB-1:0]   body_mem [2 ** AB];
   // The filling bank's order: entry i's {sort key, body index} in one word (past the count:
@@ -124,7 +130,8 @@ module active_edge_list #(
 
   // ------------------------------------------------------------ step to the next line
   logic                  st_valid, st_retire;
-  logic [VB-1:0]         st_value, st_slope;
+  logic [VB-1:0]         st_value;
+  logic [DB-1:0]         st_slope;
   logic [LB-1:0]         st_remaining;
   logic [TB-1:0]         st_payload;
 
@@ -132,7 +139,8 @@ module active_edge_list #(
     .XBits      (XBits),
     .ZBits      (ZBits),
     .AttrBits   (AttrBits),
-    .PayloadBits(TB)
+    .PayloadBits(TB),
+    .EdgeOrder  (EdgeOrder)
   ) u_inc (
     .clk_i, .rst_ni,
     .value_i    (cur_q.value),

@@ -1,6 +1,9 @@
 // edge_incrementer: steps one active edge to the next scan line, value += slope in every
 // channel slot (each wrapping at its own word, as model/twins/edge_incrementer.hpp) and
 // remaining -= 1. Channel vectors as watkins_pkg::slot_lo/slot_bits lay them out.
+// EdgeOrder 3 (curved edges, Whitted 1978, by forward differences): slope is {d3, d2, d1} and
+// one line steps value += d1, d1 += d2, d2 += d3, all from this line's values: three adders per
+// slot instead of one, no multiplier, still one edge per clock.
 // Latency 1: valid and data registered; ready_o = ready_i || !valid_o (combinational).
 `include "watkins_assert.svh"
 
@@ -9,18 +12,20 @@ module edge_incrementer #(
   parameter int unsigned ZBits       = watkins_pkg::ChannelBits,  // depth,
   parameter int unsigned AttrBits    = watkins_pkg::ChannelBits,  // R G B or Nx Ny Nz
   parameter int unsigned PayloadBits = 1,  // carried unchanged (polygon id, edge id, ...)
-  localparam int unsigned VB = watkins_pkg::vector_bits(XBits, ZBits, AttrBits)
+  parameter int unsigned EdgeOrder   = 1,  // forward differences per edge: 1 (slope) or 3 (cubic)
+  localparam int unsigned VB = watkins_pkg::vector_bits(XBits, ZBits, AttrBits),
+  localparam int unsigned DB = EdgeOrder * VB  // {d3, d2, d1}, d1 at the bottom
 ) (
   input  logic                              clk_i,
   input  logic                              rst_ni,
   input  logic [VB-1:0]                     value_i,      // on this line
-  input  logic [VB-1:0]                     slope_i,      // per line
+  input  logic [DB-1:0]                     slope_i,      // per line (order 3: {d3, d2, d1})
   input  logic [watkins_pkg::LineBits-1:0]  remaining_i,  // lines left incl. this
   input  logic [PayloadBits-1:0]            payload_i,
   input  logic                              valid_i,
   output logic                              ready_o,
   output logic [VB-1:0]                     value_o,      // on the next line
-  output logic [VB-1:0]                     slope_o,
+  output logic [DB-1:0]                     slope_o,      // order 3: {d3, d2 + d3, d1 + d2}
   output logic [watkins_pkg::LineBits-1:0]  remaining_o,  // remaining_i - 1
   output logic                              retire_o,     // remaining_i <= 1: edge ends
   output logic [PayloadBits-1:0]            payload_o,
@@ -44,11 +49,26 @@ module edge_incrementer #(
     always_ff @(posedge clk_i) begin
       if (load) value_o[Lo +: W] <= value_i[Lo +: W] + slope_i[Lo +: W];
     end
+    if (EdgeOrder == 3) begin : g_cubic
+      // The differences step with the value, each in its slot's word: modulo 2^W the sums are
+      // the exact ones, so the value is right whenever it fits (scene preparation checks it on
+      // every line). d3 is constant.
+      always_ff @(posedge clk_i) begin
+        if (load) begin
+          slope_o[Lo +: W]          <= slope_i[Lo +: W] + slope_i[VB + Lo +: W];
+          slope_o[VB + Lo +: W]     <= slope_i[VB + Lo +: W] + slope_i[2 * VB + Lo +: W];
+          slope_o[2 * VB + Lo +: W] <= slope_i[2 * VB + Lo +: W];
+        end
+      end
+    end else begin : g_linear
+      always_ff @(posedge clk_i) begin
+        if (load) slope_o[Lo +: W] <= slope_i[Lo +: W];
+      end
+    end
   end
 
   always_ff @(posedge clk_i) begin
     if (load) begin
-      slope_o     <= slope_i;
       remaining_o <= remaining_i - 1'b1;
       // The model retires when the decremented count is <= 0; n = 0 (malformed) retires too.
       retire_o    <= (remaining_i <= watkins_pkg::LineBits'(1));

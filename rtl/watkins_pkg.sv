@@ -73,11 +73,13 @@ package watkins_pkg;
   // The edge record as scene preparation writes it (model/twins/edge_record.hpp), from the top:
   // {y0, n, poly, material, value, slope}: first scan line, scan lines crossed (LineBits each),
   // polygon id (pb bits), material id (mb bits), the channel vectors at y0 and per line.
+  // Edge order ord (EdgeOrder) 3: slope is {d3, d2, d1}, the forward differences of a cubic
+  // edge (d1 at the bottom, so order 1 is the same record with d1 alone).
   // The edge id is not carried: the active-edge list numbers records in arrival order.
   // Default configuration: EdgeRecordBits.
   function automatic int unsigned edge_bits(int unsigned xb, int unsigned zb, int unsigned ab,
-                                           int unsigned pb, int unsigned mb);
-    edge_bits = 2 * LineBits + pb + mb + 2 * vector_bits(xb, zb, ab);
+                                           int unsigned pb, int unsigned mb, int unsigned ord);
+    edge_bits = 2 * LineBits + pb + mb + (1 + ord) * vector_bits(xb, zb, ab);
   endfunction
 endpackage
 /* verilator lint_on UNUSEDPARAM */

@@ -32,6 +32,8 @@
 // X, depth, and the attribute slots 2..4 (the shade in a Gouraud top, the normal in a Phong
 // top) -- the fragment depth, the id widths and the capacities. The defaults are the default
 // configuration (rtl/watkins_pkg.sv); edge_i is laid out as watkins_pkg::edge_bits says.
+// EdgeOrder 3 (Config::edge_order): Whitted's curved edges, each a cubic in the scan line stepped
+// by forward differences in the active-edge list's incrementer; everything after it is the same.
 `include "watkins_assert.svh"
 
 module watkins_top #(
@@ -48,10 +50,12 @@ module watkins_top #(
   parameter int unsigned PolyIdBits     = watkins_pkg::PolyIdBits,
   parameter int unsigned MaterialIdBits = watkins_pkg::MaterialIdBits,
   parameter int unsigned EdgeIdBits     = watkins_pkg::EdgeIdBits,      // records per frame
+  parameter int unsigned EdgeOrder      = 1,  // 1: straight edges (slope); 3: cubic edges (d1, d2, d3)
   localparam int unsigned XBits    = XIntBits + XFracBits,
   localparam int unsigned ZBits    = DepthIntBits + DepthFracBits,
   localparam int unsigned AttrBits = AttrIntBits + AttrFracBits,
-  localparam int unsigned EdgeBits = watkins_pkg::edge_bits(XBits, ZBits, AttrBits, PolyIdBits, MaterialIdBits)
+  localparam int unsigned EdgeBits = watkins_pkg::edge_bits(XBits, ZBits, AttrBits, PolyIdBits, MaterialIdBits,
+                                                            EdgeOrder)
 ) (
   input  logic                               clk_i,
   input  logic                               rst_ni,          // active-low synchronous reset
@@ -139,7 +143,8 @@ module watkins_top #(
     .AttrBits      (AttrBits),
     .PolyIdBits    (PolyIdBits),
     .MaterialIdBits(MaterialIdBits),
-    .EdgeIdBits    (EdgeIdBits)
+    .EdgeIdBits    (EdgeIdBits),
+    .EdgeOrder     (EdgeOrder)
   ) u_active_edge_list (
     .clk_i, .rst_ni,
     .start_i     (start),

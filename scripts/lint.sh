@@ -28,9 +28,11 @@ verilator --lint-only -Wall "${INC[@]}" --top-module watkins_top -GPhong=1 "${VL
 # The top built for other configurations (as `watkins_gen_pkg --params` prints them): a sized
 # one (docs/size/default.*.json: depth without fraction bits, X narrower than the screen index)
 # and an odd one (X at the 1/16-pixel minimum, 3-bit depth word, normals finer than the
-# normalizer reads), each in both shading modes.
+# normalizer reads), each in both shading modes; and the curved-edge top (EdgeOrder 3,
+# tests/configs/curved.phong.json's formats).
 CONFIGS=("-GMaxActiveEdges=36 -GMaxWidth=320 -GXIntBits=9 -GXFracBits=15 -GDepthIntBits=6 -GDepthFracBits=0 -GAttrIntBits=9 -GAttrFracBits=6 -GDepthBits=5 -GPolyIdBits=7 -GMaterialIdBits=1 -GEdgeIdBits=9"
-         "-GMaxActiveEdges=5 -GMaxWidth=100 -GXIntBits=8 -GXFracBits=4 -GDepthIntBits=2 -GDepthFracBits=1 -GAttrIntBits=1 -GAttrFracBits=18 -GDepthBits=16 -GPolyIdBits=1 -GMaterialIdBits=3 -GEdgeIdBits=3")
+         "-GMaxActiveEdges=5 -GMaxWidth=100 -GXIntBits=8 -GXFracBits=4 -GDepthIntBits=2 -GDepthFracBits=1 -GAttrIntBits=1 -GAttrFracBits=18 -GDepthBits=16 -GPolyIdBits=1 -GMaterialIdBits=3 -GEdgeIdBits=3"
+         "-GMaxActiveEdges=16 -GMaxWidth=256 -GXIntBits=10 -GXFracBits=16 -GDepthIntBits=18 -GDepthFracBits=8 -GAttrIntBits=2 -GAttrFracBits=16 -GDepthBits=16 -GPolyIdBits=4 -GMaterialIdBits=3 -GEdgeIdBits=12 -GEdgeOrder=3")
 for cfg in "${CONFIGS[@]}"; do
   for phong in 0 1; do
     # shellcheck disable=SC2086
@@ -41,6 +43,10 @@ done
 for f in "${SRCS[@]}"; do
   m=$(basename "$f" .sv)
   verilator --lint-only -Wall "${INC[@]}" --top-module "$m" "${VLT[@]}" "$PKG" "${SRCS[@]}"
+done
+# The two blocks with an EdgeOrder of their own, at order 3.
+for m in edge_incrementer active_edge_list; do
+  verilator --lint-only -Wall "${INC[@]}" --top-module "$m" -GEdgeOrder=3 "${VLT[@]}" "$PKG" "${SRCS[@]}"
 done
 echo "   clean"
 
@@ -62,6 +68,8 @@ yosys_check elab "$READ; hierarchy -check -top watkins_top $SMALL -chparam Phong
 # The sized configuration above (yosys takes the same parameters through chparam).
 SIZED=$(echo "${CONFIGS[0]}" | sed -E 's/-G([A-Za-z]+)=([0-9]+)/-chparam \1 \2/g')
 yosys_check elab_sized "$READ; hierarchy -check -top watkins_top $SIZED -chparam Phong 1; proc; check -assert"
+# And the curved-edge top (EdgeOrder 3).
+yosys_check elab_cubic "$READ; hierarchy -check -top watkins_top $SMALL -chparam Phong 1 -chparam EdgeOrder 3; proc; check -assert"
 echo "   clean"
 
 synth() {  # $1: label, $2: top, $3: hierarchy -chparam options

@@ -225,6 +225,9 @@ void print_needs(const watkins::SceneNeeds& n, watkins::ShadingMode shading, con
   using namespace watkins;
   std::printf("needs         active edges %d (scan line %d), widest span %d px, longest edge %d lines\n",
               n.max_active_edges, n.max_active_line, n.max_segment_pixels, n.max_edge_lines);
+  if (n.curve_edges > 0)
+    std::printf("              curved edges %d records, at most %d active (scan line %d), edge order %d\n",
+                n.curve_edges, n.max_curve_edges, n.max_curve_line, cfg.edge_order);
   const ChannelFormats f = cfg.channels(shading);
   for (int c = 0; c < fmt::NumChannels; ++c)
     std::printf("  channel %s  value [%lld, %lld]  slope [%lld, %lld]  -> %d of %d bits\n", channel_name(c, shading),

@@ -8,7 +8,8 @@
 // parameters, rtl_parameters() in model/twins/config.hpp): slot 0 (X) at bit 0, slot 1 (Z) at XB,
 // slot c in 2..4 at XB + ZB + (c-2)*AB, each signed two's complement. So, from bit 0 up: slope,
 // value, material (MaterialIdBits), poly (PolyIdBits), n and y0 (LineBits each): EdgeRecordBits =
-// Config::edge_record_bits(shading). For the default configuration that is the 466-bit record of
+// Config::edge_record_bits(shading). At edge_order 3 the slope field is {d3, d2, d1}: d1 (the
+// record's slope) at bit 0, d2 and d3 above it, one channel vector each, then value and the rest. For the default configuration that is the 466-bit record of
 // rtl/watkins_pkg.sv (every slot 42 bits). Verilator stores a port or signal wider than 64 bits as
 // little-endian 32-bit words (VlWide<N>); the fields are cut with the benches' one bit packer
 // (bit_field.hpp).
@@ -53,7 +54,8 @@ struct ChannelLayout {
 struct EdgeLayout {
   ChannelLayout channels;
   int material_bits = 0, poly_bits = 0;
-  int slope_lsb = 0, value_lsb = 0, material_lsb = 0, poly_lsb = 0, n_lsb = 0, y0_lsb = 0;
+  int order = 1;  // Config::edge_order: forward differences carried (d1 = slope; d2, d3 at 3)
+  int slope_lsb = 0, d2_lsb = 0, d3_lsb = 0, value_lsb = 0, material_lsb = 0, poly_lsb = 0, n_lsb = 0, y0_lsb = 0;
   int bits = 0;   // $bits(edge_t) == Config::edge_record_bits(shading)
   int words = 0;  // 32-bit words of the port
 
@@ -62,7 +64,10 @@ struct EdgeLayout {
     l.channels = ChannelLayout::of(config.channels(shading));
     l.material_bits = id_bits(config.max_materials);
     l.poly_bits = id_bits(config.max_polygons);
-    l.value_lsb = l.slope_lsb + l.channels.vector_bits;
+    l.order = config.edge_order;
+    l.d2_lsb = l.slope_lsb + l.channels.vector_bits;
+    l.d3_lsb = l.d2_lsb + l.channels.vector_bits;
+    l.value_lsb = l.slope_lsb + l.order * l.channels.vector_bits;
     l.material_lsb = l.value_lsb + l.channels.vector_bits;
     l.poly_lsb = l.material_lsb + l.material_bits;
     l.n_lsb = l.poly_lsb + l.poly_bits;
@@ -74,9 +79,10 @@ struct EdgeLayout {
 };
 
 // The widest edge record any valid configuration gives (Config::check(): every slot at most
-// MaxWordBits, ids at most the default's widths): 2*13 + 16 + 4 + 2*5*62 = 666 bits, 21 words.
+// MaxWordBits, ids at most the default's widths, edge order 3): 2*13 + 16 + 4 + 4*5*62 = 1286
+// bits, 41 words.
 constexpr int MaxEdgeRecordBits =
-    2 * fmt::LineBits + fmt::PolyIdBits + fmt::MaterialIdBits + 2 * fmt::NumChannels * Config::MaxWordBits;
+    2 * fmt::LineBits + fmt::PolyIdBits + fmt::MaterialIdBits + 4 * fmt::NumChannels * Config::MaxWordBits;
 constexpr int MaxEdgeWords = (MaxEdgeRecordBits + 31) / 32;
 using EdgeWords = std::array<std::uint32_t, MaxEdgeWords>;  // words past layout.words stay 0
 
@@ -104,15 +110,30 @@ inline EdgeWords pack_edge(const EdgeLayout& layout, const EdgeRecord& e) {
   set_bits(w, layout.poly_lsb, layout.poly_bits, static_cast<std::uint64_t>(e.poly));
   set_bits(w, layout.material_lsb, layout.material_bits, static_cast<std::uint64_t>(e.material));
   const ChannelLayout& ch = layout.channels;
+  struct Field {
+    const char* name;
+    const ChannelVector& v;
+    int lsb;
+  };
+  const Field fields[] = {{"value", e.value, layout.value_lsb},
+                          {"slope", e.slope, layout.slope_lsb},
+                          {"d2", e.d2, layout.d2_lsb},
+                          {"d3", e.d3, layout.d3_lsb}};
   for (int c = 0; c < fmt::NumChannels; ++c) {
-    for (const bool is_slope : {false, true}) {
-      const i64 v = is_slope ? e.slope[c] : e.value[c];
-      if (!fits_signed(v, ch.bits[c]))
-        throw std::invalid_argument(std::string("pack_edge: ") + (is_slope ? "slope[" : "value[") +
-                                    std::to_string(c) + "] = " + std::to_string(v) + " does not fit " +
-                                    std::to_string(ch.bits[c]) + " signed bits");
-      set_bits(w, (is_slope ? layout.slope_lsb : layout.value_lsb) + ch.lsb[c], ch.bits[c],
-               wrap_unsigned(v, ch.bits[c]));
+    for (const Field& f : fields) {
+      const bool carried = &f.v == &e.value || &f.v == &e.slope || layout.order == 3;
+      if (!carried) {
+        // An order-1 record has no d2, d3: a curved edge cannot be sent to an order-1 top.
+        if (f.v[c] != 0)
+          throw std::invalid_argument(std::string("pack_edge: ") + f.name + "[" + std::to_string(c) + "] = " +
+                                      std::to_string(f.v[c]) + " on an edge-order-1 record");
+        continue;
+      }
+      if (!fits_signed(f.v[c], ch.bits[c]))
+        throw std::invalid_argument(std::string("pack_edge: ") + f.name + "[" + std::to_string(c) + "] = " +
+                                    std::to_string(f.v[c]) + " does not fit " + std::to_string(ch.bits[c]) +
+                                    " signed bits");
+      set_bits(w, f.lsb + ch.lsb[c], ch.bits[c], wrap_unsigned(f.v[c], ch.bits[c]));
     }
   }
   return w;
@@ -127,6 +148,10 @@ inline EdgeRecord unpack_edge(const EdgeLayout& layout, const EdgeWords& w) {
   e.material = static_cast<int>(get_bits(w, layout.material_lsb, layout.material_bits));
   e.value = layout.channels.read(w.data(), layout.value_lsb);
   e.slope = layout.channels.read(w.data(), layout.slope_lsb);
+  if (layout.order == 3) {
+    e.d2 = layout.channels.read(w.data(), layout.d2_lsb);
+    e.d3 = layout.channels.read(w.data(), layout.d3_lsb);
+  }
   return e;
 }
 

@@ -58,7 +58,7 @@ Config parse_config(const std::string& text, const std::string& name) {
   const json root = parse_strict_json(text, name, /*comments=*/false);
   const ConfigReader r(name);
   r.keys(root, "", {"x", "depth", "shade", "normal", "depth_bits", "max_active_edges", "max_width",
-                    "max_materials", "max_polygons", "max_edges"});
+                    "max_materials", "max_polygons", "max_edges", "edge_order"});
   Config c;
   r.group(root, "x", c.x);
   r.group(root, "depth", c.depth);
@@ -70,6 +70,7 @@ Config parse_config(const std::string& text, const std::string& name) {
   r.integer(root, "", "max_materials", c.max_materials);
   r.integer(root, "", "max_polygons", c.max_polygons);
   r.integer(root, "", "max_edges", c.max_edges);
+  r.integer(root, "", "edge_order", c.edge_order);
   if (const std::string e = c.check(); !e.empty()) throw SceneError(name + ": " + e);
   return c;
 }
@@ -102,8 +103,10 @@ std::string config_json(const Config& c) {
     << "  \"max_width\": " << c.max_width << ",\n"
     << "  \"max_materials\": " << c.max_materials << ",\n"
     << "  \"max_polygons\": " << c.max_polygons << ",\n"
-    << "  \"max_edges\": " << c.max_edges << "\n"
-    << "}\n";
+    << "  \"max_edges\": " << c.max_edges;
+  // Written only when not the default, so an order-1 file reads as it always did.
+  if (c.edge_order != 1) o << ",\n  \"edge_order\": " << c.edge_order;
+  o << "\n}\n";
   return o.str();
 }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "curved_edges.hpp"
 #include "signed_bits.hpp"
 
 namespace watkins {
@@ -215,6 +216,46 @@ static void check_channel_bits(const std::array<int, fmt::NumChannels>& need, co
     }
 }
 
+// Whitted's curved edges (curved_edges.hpp): each curve's forward-difference records, region r
+// paired as polygon polygons.size() + r, after the polygons' edges (the y-sort keeps them there
+// on equal first lines). They need the cubic incrementer: an order-1 configuration is refused.
+static void prepare_curves(const BuiltScene& scene, const Config& cfg, PreparedScene& out,
+                           std::array<int, fmt::NumChannels>& edge_bits) {
+  if (scene.curves.empty()) return;
+  if (cfg.edge_order != 3)
+    throw SceneError("edge_order: the scene has " + std::to_string(scene.curves.size()) +
+                     " curved edges, which need edge_order 3 (cubic forward differences); the configuration's is " +
+                     std::to_string(cfg.edge_order));
+  const std::size_t ids = scene.polygons.size() + static_cast<std::size_t>(std::max(0, scene.curve_regions));
+  if (ids > static_cast<std::size_t>(cfg.max_polygons))
+    throw SceneError("scene has " + std::to_string(scene.polygons.size()) + " polygons and " +
+                     std::to_string(scene.curve_regions) + " curved regions; the polygon id is " +
+                     std::to_string(id_bits(cfg.max_polygons)) + " bits (at most " + std::to_string(cfg.max_polygons) + ")");
+  const bool phong = scene.shading == ShadingMode::Phong;
+  for (std::size_t i = 0; i < scene.curves.size(); ++i) {
+    const ScreenCurve& curve = scene.curves[i];
+    const std::string name = "curve " + std::to_string(i);
+    if (curve.region < 0 || curve.region >= scene.curve_regions)
+      throw SceneError(name + ": region " + std::to_string(curve.region) + " is not one of the scene's " +
+                       std::to_string(scene.curve_regions));
+    if (phong && (curve.material < 0 || curve.material >= static_cast<int>(out.materials.size())))
+      throw SceneError(name + ": material " + std::to_string(curve.material) + " is not one of the scene's " +
+                       std::to_string(out.materials.size()) + " materials");
+    CurveEdges fit;
+    try {
+      fit = fit_curve(curve, scene.height, scene.shading, cfg);
+    } catch (const SceneError& e) {
+      throw SceneError(name + ": " + e.what());
+    }
+    for (EdgeRecord r : fit.records) {
+      r.poly = static_cast<int>(scene.polygons.size()) + curve.region;
+      r.material = phong ? curve.material : 0;
+      out.edges.push_back(r);
+    }
+    for (int c = 0; c < fmt::NumChannels; ++c) edge_bits[c] = std::max(edge_bits[c], fit.value_bits[c]);
+  }
+}
+
 static PreparedScene prepare_unnamed(const BuiltScene& scene, const Config& cfg) {
   if (scene.width < 1 || scene.width > cfg.max_width || scene.height < 1 ||
       scene.height > fmt::MaxScreen)
@@ -267,6 +308,7 @@ static PreparedScene prepare_unnamed(const BuiltScene& scene, const Config& cfg)
       }
     }
   }
+  prepare_curves(scene, cfg, out, edge_bits);
   // The hardware reads edges in order of their first scan line; polygon order breaks ties.
   std::stable_sort(out.edges.begin(), out.edges.end(),
                    [](const EdgeRecord& a, const EdgeRecord& b) { return a.y0 < b.y0; });

@@ -26,13 +26,25 @@ SceneNeeds measure_needs(const Frame& frame, int polygons, const ChannelFormats&
   }
   for (const auto& e : frame.edges) {
     needs.max_edge_lines = std::max(needs.max_edge_lines, e.n);
+    needs.curve_edges += e.poly >= polygons;
+    const bool cubic = formats.edge_order == 3 && (e.d2 != ChannelVector{} || e.d3 != ChannelVector{});
+    if (cubic) {
+      // A cubic edge: its extremes may lie inside the run; every line's value as the
+      // incrementer steps it (prepare() checks the exact values with the fit's own figures).
+      ActiveEdge a{e, e.n};
+      for (int k = 0; k < e.n; ++k) {
+        for (int c = 0; c < fmt::NumChannels; ++c)
+          needs.value_bits[c] = std::max(needs.value_bits[c], signed_bits(a.rec.value[c]));
+        EdgeIncrementer::step(a, formats);
+      }
+    }
     for (int c = 0; c < fmt::NumChannels; ++c) {
       // Edge values step linearly: the first and last scan line are the extremes. The slope may
       // be wrapped to its word; stepping modulo the word gives the true last value whenever it
       // fits (prepare() checks that with the exact figures of the edge setup).
       const i64 last = wrap_signed(static_cast<i128>(e.value[c]) + static_cast<i128>(e.n - 1) * e.slope[c],
                                    formats.bits[c]);
-      needs.value_bits[c] = std::max({needs.value_bits[c], signed_bits(e.value[c]), signed_bits(last)});
+      if (!cubic) needs.value_bits[c] = std::max({needs.value_bits[c], signed_bits(e.value[c]), signed_bits(last)});
       needs.value_min[c] = std::min(needs.value_min[c], e.value[c]);
       needs.value_max[c] = std::max(needs.value_max[c], e.value[c]);
       needs.slope_min[c] = std::min(needs.slope_min[c], e.slope[c]);
@@ -49,6 +61,12 @@ SceneNeeds measure_needs(const Frame& frame, int polygons, const ChannelFormats&
     if (line.active.size() > needs.max_active_edges) {
       needs.max_active_edges = line.active.size();
       needs.max_active_line = line.y;
+    }
+    int curved = 0;
+    for (const ActiveEdge& e : line.active.edges()) curved += e.rec.poly >= polygons;
+    if (curved > needs.max_curve_edges) {
+      needs.max_curve_edges = curved;
+      needs.max_curve_line = line.y;
     }
     for (const Segment& s : line.segments) {
       const SpanSetup span = SegmentInterpolator::setup(s, frame.width, formats);

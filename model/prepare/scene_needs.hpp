@@ -17,6 +17,9 @@ struct SceneNeeds {
   int edges = 0;              // edge records after dropping horizontal and off-screen edges
   int max_active_edges = 0;   // largest active-edge list on any scan line
   int max_active_line = -1;   // the scan line where it occurs
+  int curve_edges = 0;        // edge records of curved edges (polygon id >= polygons), among `edges`
+  int max_curve_edges = 0;    // most curved edges active on one scan line (counted in max_active_edges too)
+  int max_curve_line = -1;    // the scan line where it occurs
   int max_edge_lines = 0;     // largest n of an edge record
   int max_segment_pixels = 0; // widest span, in pixels (after clipping to the screen)
   ChannelVector value_min{}, value_max{};  // ranges of edge-record channel values
@@ -30,8 +33,8 @@ struct SceneNeeds {
   int int_bits_needed(int channel, int frac) const { return value_bits[channel] - frac; }
 };
 
-// Measures `frame`, made of `polygons` polygons, on the pipeline whose channel slots have
-// `formats`.
+// Measures `frame`, made of `polygons` polygons (edge records with a larger polygon id are
+// curved edges), on the pipeline whose channel slots have `formats`.
 SceneNeeds measure_needs(const Frame& frame, int polygons, const ChannelFormats& formats);
 
 }  // namespace watkins

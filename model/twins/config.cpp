@@ -26,7 +26,7 @@ int Config::edge_record_bits(ShadingMode shading) const {
   const ChannelFormats f = channels(shading);
   int words = 0;
   for (int c = 0; c < fmt::NumChannels; ++c) words += f.bits[c];
-  return 2 * fmt::LineBits + id_bits(max_polygons) + id_bits(max_materials) + 2 * words;
+  return 2 * fmt::LineBits + id_bits(max_polygons) + id_bits(max_materials) + (1 + edge_order) * words;
 }
 
 bool RtlParameter::operator==(const RtlParameter& o) const {
@@ -36,7 +36,7 @@ bool RtlParameter::operator==(const RtlParameter& o) const {
 std::vector<RtlParameter> rtl_parameters(const Config& c, ShadingMode shading) {
   const bool phong = shading == ShadingMode::Phong;
   const ChannelFormat& attr = phong ? c.normal : c.shade;
-  return {{"Phong", phong ? 1 : 0},
+  std::vector<RtlParameter> p{{"Phong", phong ? 1 : 0},
           {"MaxActiveEdges", c.max_active_edges},
           {"MaxWidth", c.max_width},
           {"XIntBits", c.x.int_bits},
@@ -49,6 +49,10 @@ std::vector<RtlParameter> rtl_parameters(const Config& c, ShadingMode shading) {
           {"PolyIdBits", id_bits(c.max_polygons)},
           {"MaterialIdBits", id_bits(c.max_materials)},
           {"EdgeIdBits", id_bits(c.max_edges)}};
+  // The RTL's default is 1; leaving it out then keeps every order-1 list (and the tops built
+  // for it, keyed by the list) exactly as before the parameter existed.
+  if (c.edge_order != 1) p.push_back({"EdgeOrder", c.edge_order});
+  return p;
 }
 
 std::string Config::check() const {
@@ -91,6 +95,8 @@ std::string Config::check() const {
   if (std::string e = range("max_materials", max_materials, 1, fmt::MaxMaterials); !e.empty()) return e;
   if (std::string e = range("max_polygons", max_polygons, 1, fmt::MaxPolygons); !e.empty()) return e;
   if (std::string e = range("max_edges", max_edges, 1, fmt::MaxEdges); !e.empty()) return e;
+  if (edge_order != 1 && edge_order != 3)
+    return "edge_order: " + std::to_string(edge_order) + " is neither 1 (straight edges) nor 3 (cubic forward differences)";
   return "";
 }
 

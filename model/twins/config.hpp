@@ -17,6 +17,9 @@
 //   max_active_edges MaxActiveEdges; max_width MaxWidth (line buffer);
 //   max_materials    MaterialIdBits = clog2(max_materials); max_polygons PolyIdBits = clog2(max_polygons)
 //   max_edges        EdgeIdBits = clog2(max_edges) (the active-edge list's record numbers)
+//   edge_order       EdgeOrder: 1 steps value += slope (straight edges), 3 steps a cubic by forward
+//                    differences (Whitted's curved edges, model/prepare/curved_edges.hpp); listed
+//                    only when not 1, so an order-1 configuration's list is what it always was
 // Each twin's header lists which of its registers takes which of these.
 #pragma once
 
@@ -46,6 +49,7 @@ struct ChannelFormats {
   std::array<int, fmt::NumChannels> bits{};
   std::array<int, fmt::NumChannels> frac{};
   int depth_bits = fmt::DepthBits;  // fragment depth: clamp(round(Z), 0, 2^depth_bits - 1)
+  int edge_order = 1;  // 1: value += slope; 3: value += d1, d1 += d2, d2 += d3 (edge_incrementer)
   int x_frac() const { return frac[fmt::ChanX]; }
 };
 
@@ -60,6 +64,10 @@ struct Config {
   int max_materials = fmt::MaxMaterials;         // Phong material table entries
   int max_polygons = fmt::MaxPolygons;           // polygons per frame (polygon ids)
   int max_edges = fmt::MaxEdges;                 // edge records per frame (edge ids: the X tie order)
+  // Forward differences per edge record: 1 (the slope: straight edges, today's hardware) or 3
+  // (d1, d2, d3: a cubic in the scan-line index, for Whitted's curved edges; the record carries
+  // three channel vectors of differences instead of one).
+  int edge_order = 1;
 
   // Limits a configuration must respect (validate() checks them).
   static constexpr int MaxWordBits = 62;      // the model keeps every word in 64 bits, products in 128
@@ -82,6 +90,7 @@ struct Config {
       f.frac[c] = slot[c].frac_bits;
     }
     f.depth_bits = depth_bits;
+    f.edge_order = edge_order;
     return f;
   }
   // Bits of one edge record ($bits(edge_t) of the RTL built for this configuration).
@@ -93,7 +102,7 @@ struct Config {
     return x == o.x && depth == o.depth && shade == o.shade && normal == o.normal &&
            depth_bits == o.depth_bits && max_active_edges == o.max_active_edges &&
            max_width == o.max_width && max_materials == o.max_materials && max_polygons == o.max_polygons &&
-           max_edges == o.max_edges;
+           max_edges == o.max_edges && edge_order == o.edge_order;
   }
   bool operator!=(const Config& o) const { return !(*this == o); }
 };

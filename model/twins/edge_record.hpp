@@ -8,6 +8,10 @@
 // are ChannelFormats::bits[c] wide in the RTL's edge_t (X, depth, then shade or normal by the
 // top's Phong parameter), poly clog2(max_polygons), material clog2(max_materials); y0 and n
 // LineBits. Here every channel is held in an i64, already wrapped to its slot's width.
+// Curved edges (Config::edge_order 3, Whitted 1978): the channel is a cubic in the scan-line
+// index, stepped by forward differences: slope is d1, and d2, d3 follow it in the record
+// (watkins_pkg::edge_bits, testbench/edge_packing.hpp); a straight edge has d2 = d3 = 0, and an
+// order-1 record carries neither.
 #pragma once
 
 #include <array>
@@ -27,7 +31,9 @@ struct EdgeRecord {
   int material = 0;    // material id (MaterialIdBits) of the polygon; Phong shades with it
   int id = 0;          // position in the y-sorted stream; breaks ties in X order deterministically
   ChannelVector value{};  // channel values at the centre of scan line y0 (prestepped)
-  ChannelVector slope{};  // per-scan-line increments, rounded to nearest
+  ChannelVector slope{};  // per-scan-line increments, rounded to nearest (d1 at order 3)
+  ChannelVector d2{};     // order 3: second and third forward differences (0 on straight edges)
+  ChannelVector d3{};
 };
 
 }  // namespace watkins

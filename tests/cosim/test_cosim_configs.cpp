@@ -15,6 +15,7 @@
 #include "cli_run.hpp"
 #include "config_file.hpp"
 #include "cosim_support.hpp"
+#include "curve_scenes.hpp"
 #include "cycle_model.hpp"
 #include "prepare.hpp"
 #include "random_scene.hpp"
@@ -165,6 +166,25 @@ INSTANTIATE_TEST_SUITE_P(Configs, RandomAtConfig,
                            return std::string(i.param.file).substr(0, std::string(i.param.file).find('.')) +
                                   (i.param.phong ? "_phong" : "_gouraud");
                          });
+
+// Whitted's curved edges on the forward-difference top (tests/configs/curved.phong.json, EdgeOrder
+// 3): the synthetic curve scene (a disc, a sine-like band, a steep curve over a triangle) and
+// random scenes of straight edges (d2 = d3 = 0) on the same top, back to back.
+TEST(CosimConfigs, CurvedEdgesOnTheCubicTop) {
+  const std::string file = "tests/configs/curved.phong.json";
+  const Config cfg = load_config(WATKINS_SOURCE_DIR "/" + file);
+  ASSERT_EQ(cfg.edge_order, 3);
+  const PreparedScene curves = prepare(curve_scene(ShadingMode::Phong), cfg);
+  ASSERT_GT(curves.needs.curve_edges, 6);
+  const std::vector<PreparedScene> random = random_frames(cfg, true, 7300, 3);
+  ASSERT_EQ(random.size(), 3u);
+  REQUIRE_TOP(cfg, ShadingMode::Phong, file);
+  std::vector<const PreparedScene*> ptrs{&curves};
+  for (const PreparedScene& p : random) ptrs.push_back(&p);
+  ptrs.push_back(&curves);
+  expect_clean_frames(file + " curve scene", ptrs);
+  expect_predicted(file + " curve scene", ptrs);
+}
 
 // Frames prepared for two configurations cannot share a run (the RTL is built for one).
 TEST(CosimConfigs, MixedConfigurationsAreRefused) {

@@ -36,6 +36,8 @@ void expect_same_fields(const EdgeRecord& d, const EdgeRecord& e, int k) {
   EXPECT_EQ(d.material, e.material) << "record " << k;
   EXPECT_EQ(d.value, e.value) << "record " << k;
   EXPECT_EQ(d.slope, e.slope) << "record " << k;
+  EXPECT_EQ(d.d2, e.d2) << "record " << k;
+  EXPECT_EQ(d.d3, e.d3) << "record " << k;
 }
 
 }  // namespace
@@ -125,8 +127,10 @@ TEST(EdgePacking, MatchesTheRecordInTheRtl) {
   }
   EXPECT_EQ(names, (std::vector<std::string>{"y0", "n", "poly", "material", "value", "slope"}));
   EXPECT_EQ(dims, (std::vector<std::string>{"[LB-1:0]", "[LB-1:0]", "[PolyIdBits-1:0]", "[MaterialIdBits-1:0]",
-                                            "[VB-1:0]", "[VB-1:0]"}));
-  EXPECT_NE(pkg.find("edge_bits = 2 * LineBits + pb + mb + 2 * vector_bits(xb, zb, ab);"), std::string::npos);
+                                            "[VB-1:0]", "[DB-1:0]"}));
+  EXPECT_NE(ael.find("localparam int unsigned DB = EdgeOrder * VB,"), std::string::npos)
+      << "the slope field holds EdgeOrder channel vectors (d1, d2, d3)";
+  EXPECT_NE(pkg.find("edge_bits = 2 * LineBits + pb + mb + (1 + ord) * vector_bits(xb, zb, ab);"), std::string::npos);
   EXPECT_NE(pkg.find("slot_lo = (c == 0) ? 0 : (c == 1) ? xb : xb + zb + (c - 2) * ab;"), std::string::npos);
   EXPECT_EQ(def.bits, fmt::EdgeRecordBits);
   EXPECT_EQ(def.bits, 2 * fmt::LineBits + fmt::PolyIdBits + fmt::MaterialIdBits + 2 * fmt::NumChannels * fmt::ChannelBits);
@@ -136,9 +140,12 @@ TEST(EdgePacking, MatchesTheRecordInTheRtl) {
 // A narrow configuration (tests/configs/narrow.json): every slot its own width, the ids narrower.
 // Fields sit where the RTL's layout puts them (slot 0 at bit 0, slot 1 at XB, slot c at
 // XB + ZB + (c-2)*AB; slope, value, material, poly, n, y0 from bit 0), and records round-trip.
+// At edge order 3 the slope field is three vectors, d1 (the slope) at bit 0, then d2 and d3.
 TEST(EdgePacking, NarrowConfigurationLayoutRoundTrips) {
-  const Config cfg = load_config(WATKINS_SOURCE_DIR "/tests/configs/narrow.json");
+  Config cfg = load_config(WATKINS_SOURCE_DIR "/tests/configs/narrow.json");
+  for (const int order : {1, 3})
   for (const ShadingMode shading : {ShadingMode::Gouraud, ShadingMode::Phong}) {
+    cfg.edge_order = order;
     const EdgeLayout l = EdgeLayout::of(cfg, shading);
     const ChannelFormats f = cfg.channels(shading);
     const int xb = cfg.x.bits(), zb = cfg.depth.bits(), ab = f.bits[fmt::ChanR];
@@ -147,9 +154,13 @@ TEST(EdgePacking, NarrowConfigurationLayoutRoundTrips) {
     ASSERT_LT(l.bits, fmt::EdgeRecordBits) << "the test configuration is meant to be narrow";
     EXPECT_EQ(l.channels.vector_bits, vb);
     EXPECT_EQ(l.channels.lsb, (std::array<int, 5>{0, xb, xb + zb, xb + zb + ab, xb + zb + 2 * ab}));
-    EXPECT_EQ(l.value_lsb, vb);
-    EXPECT_EQ(l.material_lsb, 2 * vb);
-    EXPECT_EQ(l.poly_lsb, 2 * vb + id_bits(cfg.max_materials));
+    EXPECT_EQ(l.value_lsb, order * vb);
+    EXPECT_EQ(l.material_lsb, (1 + order) * vb);
+    EXPECT_EQ(l.poly_lsb, (1 + order) * vb + id_bits(cfg.max_materials));
+    if (order == 3) {
+      EXPECT_EQ(l.d2_lsb, vb);
+      EXPECT_EQ(l.d3_lsb, 2 * vb);
+    }
     EXPECT_EQ(l.y0_lsb, l.bits - fmt::LineBits);
 
     std::mt19937_64 rng(11);
@@ -164,11 +175,16 @@ TEST(EdgePacking, NarrowConfigurationLayoutRoundTrips) {
         std::uniform_int_distribution<i64> ch(-lim, lim - 1);
         e.value[c] = k < 2 ? (k ? -lim : lim - 1) : ch(rng);
         e.slope[c] = k < 2 ? (k ? lim - 1 : -lim) : ch(rng);
+        if (order == 3) {
+          e.d2[c] = ch(rng);
+          e.d3[c] = k < 2 ? (k ? -lim : lim - 1) : ch(rng);
+        }
       }
       const EdgeWords w = pack_edge(l, e);
       ASSERT_EQ(get_bits(w, l.y0_lsb, fmt::LineBits), static_cast<std::uint64_t>(e.y0));
       ASSERT_EQ(get_signed(w, l.value_lsb + l.channels.lsb[fmt::ChanZ], zb), e.value[fmt::ChanZ]);
       ASSERT_EQ(get_signed(w, l.slope_lsb + l.channels.lsb[fmt::ChanB], ab), e.slope[fmt::ChanB]);
+      if (order == 3) ASSERT_EQ(get_signed(w, l.d3_lsb + l.channels.lsb[fmt::ChanX], xb), e.d3[fmt::ChanX]);
       for (int i = l.words; i < MaxEdgeWords; ++i) ASSERT_EQ(w[i], 0u) << "above the record, word " << i;
       expect_same_fields(unpack_edge(l, w), e, k);
       if (::testing::Test::HasFailure()) return;
@@ -180,6 +196,11 @@ TEST(EdgePacking, NarrowConfigurationLayoutRoundTrips) {
     e.value[fmt::ChanX] = 0;
     e.poly = 1 << l.poly_bits;
     EXPECT_THROW(pack_edge(l, e), std::invalid_argument);
+    // A curved edge's d2 has no place in an order-1 record.
+    e.poly = 0;
+    e.d2[fmt::ChanZ] = 1;
+    if (order == 1) EXPECT_THROW(pack_edge(l, e), std::invalid_argument);
+    else EXPECT_NO_THROW(pack_edge(l, e));
   }
 }
 
@@ -189,6 +210,7 @@ TEST(EdgePacking, EdgeWordsHoldTheWidestConfiguration) {
   c.x = {Config::MaxWordBits - Config::MaxXFrac, Config::MaxXFrac};
   c.depth = c.shade = c.normal = {Config::MaxWordBits - 30, 30};
   c.depth_bits = 24;
+  c.edge_order = 3;
   ASSERT_EQ(c.check(), "");
   for (const ShadingMode s : {ShadingMode::Gouraud, ShadingMode::Phong}) {
     EXPECT_EQ(EdgeLayout::of(c, s).bits, MaxEdgeRecordBits);

@@ -1,4 +1,6 @@
-// rtl/edge_incrementer.sv against EdgeIncrementer::step, with random valid gaps and back-pressure.
+// rtl/edge_incrementer.sv against EdgeIncrementer::step, with random valid gaps and back-pressure;
+// built again with EdgeOrder = 3 (test_rtl_edge_incrementer_cubic: the forward differences
+// {d3, d2, d1} in slope_i, stepped with the value).
 #include <gtest/gtest.h>
 
 #include <deque>
@@ -16,6 +18,18 @@ namespace {
 
 constexpr int CB = fmt::ChannelBits;
 constexpr int NC = fmt::NumChannels;
+#ifdef WATKINS_RTL_PARAM_EdgeOrder
+constexpr int Order = WATKINS_RTL_PARAM_EdgeOrder;
+#else
+constexpr int Order = 1;
+#endif
+constexpr int VB = NC * CB;  // one channel vector
+
+ChannelFormats formats() {
+  Config c;
+  c.edge_order = Order;
+  return c.channels(ShadingMode::Gouraud);
+}
 
 i64 random_channel(std::mt19937_64& rng) {
   switch (rng() % 4) {
@@ -49,6 +63,12 @@ void run(int gap_pct, int bp_pct, int count, std::uint64_t seed) {
           cur.rec.slope[c] = random_channel(rng);
           set_bits(h.dut.value_i, c * CB, CB, to_bits(cur.rec.value[c], CB));
           set_bits(h.dut.slope_i, c * CB, CB, to_bits(cur.rec.slope[c], CB));
+          if (Order == 3) {
+            cur.rec.d2[c] = random_channel(rng);
+            cur.rec.d3[c] = random_channel(rng);
+            set_bits(h.dut.slope_i, VB + c * CB, CB, to_bits(cur.rec.d2[c], CB));
+            set_bits(h.dut.slope_i, 2 * VB + c * CB, CB, to_bits(cur.rec.d3[c], CB));
+          }
         }
         cur.remaining = rng() % 3 == 0 ? static_cast<int>(rng() % 3) : static_cast<int>(rng() % 8192);
         h.dut.remaining_i = cur.remaining;
@@ -57,7 +77,7 @@ void run(int gap_pct, int bp_pct, int count, std::uint64_t seed) {
       },
       [&](std::deque<Expect>& expect) {
         ActiveEdge stepped = cur;
-        EdgeIncrementer::step(stepped);
+        EdgeIncrementer::step(stepped, formats());
         expect.push_back({stepped, stepped.remaining <= 0, static_cast<std::uint32_t>(sent)});
         ++sent;
       },
@@ -66,6 +86,8 @@ void run(int gap_pct, int bp_pct, int count, std::uint64_t seed) {
         for (int c = 0; c < NC; ++c) {
           if (get_signed(h.dut.value_o, c * CB, CB) != x.e.rec.value[c]) diff += " value ch " + std::to_string(c);
           if (get_signed(h.dut.slope_o, c * CB, CB) != x.e.rec.slope[c]) diff += " slope ch " + std::to_string(c);
+          if (Order == 3 && get_signed(h.dut.slope_o, VB + c * CB, CB) != x.e.rec.d2[c]) diff += " d2 ch " + std::to_string(c);
+          if (Order == 3 && get_signed(h.dut.slope_o, 2 * VB + c * CB, CB) != x.e.rec.d3[c]) diff += " d3 ch " + std::to_string(c);
         }
         if (h.dut.remaining_o != (static_cast<std::uint32_t>(x.e.remaining) & 0x1FFF)) diff += " remaining";
         if (h.dut.retire_o != x.retire) diff += " retire (remaining " + std::to_string(x.e.remaining) + ")";
