@@ -81,33 +81,27 @@ module scanline_buffer #(
 
   // ------------------------------------------------------------ written bits
   // Kept by role, not by bank: neither wsel_q (a mux with a fan-out of 2 * MaxWidth) nor the
-  // bank-base adder is on their paths; only the RAM addresses use them. Decoded in two levels, a
-  // 32-pixel word and a bit in it; a simulator updates the one word enabled, not the whole bank.
-  localparam int unsigned WordBits  = 32;
-  localparam int unsigned WIB       = $clog2(WordBits);
-  localparam int unsigned Words     = (MaxWidth + WordBits - 1) / WordBits;
-  localparam int unsigned FullWords = MaxWidth / WordBits;
-  // A full word's slice (a bank narrower than one word has none: then it only bounds the slice).
-  localparam int unsigned SliceBits = (MaxWidth < WordBits) ? MaxWidth : WordBits;
-  localparam int unsigned WAB       = (Words > 1) ? $clog2(Words) : 1;
-  localparam int unsigned PB        = $clog2(Words * WordBits);  // an x in the padded words
-  logic [MaxWidth-1:0]       rd_written_q, wr_written_q;  // the read bank's and the write bank's
-  logic [Words*WordBits-1:0] rpad, wpad;
-  assign rpad = (Words * WordBits)'(rd_written_q);
-  assign wpad = (Words * WordBits)'(wr_written_q);
+  // bank-base adder is on their paths; only the RAM addresses use them. Stored by 32-pixel word
+  // and written by {word, bit}: synthesis decodes the two levels apart (a word enable and a bit
+  // in it, as the sparse search's one-hot does) and a simulator touches one word per update
+  // instead of the whole bank. mem2reg: yosys makes the words flops at once, each word's
+  // writes a case on the word index (as a memory with a port per loop write it mapped them
+  // to 35 % more LUTs). Padding bits of the last word (MaxWidth not a multiple of 32) are
+  // never set: every x written or read is below width_i <= MaxWidth.
+  localparam int unsigned WordBits = 32;
+  localparam int unsigned WIB      = $clog2(WordBits);
+  localparam int unsigned Words    = (MaxWidth + WordBits - 1) / WordBits;
+  localparam int unsigned WAB      = (Words > 1) ? $clog2(Words) : 1;
+  (* mem2reg *) logic [WordBits-1:0] rd_written_q [Words];  // the read bank's
+  (* mem2reg *) logic [WordBits-1:0] wr_written_q [Words];  // the write bank's
 
-  // An x's word, and its bit in that word as a one-hot mask.
+  // An x's word and its bit in it (x < MaxWidth: its high bits are zero).
   /* verilator lint_off UNUSEDSIGNAL */
   function automatic logic [WAB-1:0] word_of(logic [LB-1:0] x);
     word_of = WAB'(x >> WIB);
   endfunction
-  function automatic logic [WordBits-1:0] bit_hot(logic [LB-1:0] x);
-    bit_hot = WordBits'(1) << x[WIB-1:0];
-  endfunction
-  function automatic logic [SliceBits-1:0] slice_hot(logic [LB-1:0] x);
-    logic [WordBits-1:0] h;
-    h = bit_hot(x);
-    slice_hot = h[SliceBits-1:0];
+  function automatic logic [WIB-1:0] bit_of(logic [LB-1:0] x);
+    bit_of = x[WIB-1:0];
   endfunction
   /* verilator lint_on UNUSEDSIGNAL */
 
@@ -149,13 +143,13 @@ module scanline_buffer #(
     clr_pad = '0;
     if (sparse_i) begin
       for (int w = 0; w < Words; w++) begin
-        bits     = rpad[w*WordBits +: WordBits];
+        bits     = rd_written_q[w];
         occ[w]   = |bits;
         multi[w] = |(bits & (bits - 1'b1));
       end
       first = occ & ~(occ - 1'b1);
       for (int w = 0; w < Words; w++) begin
-        bits = rpad[w*WordBits +: WordBits];
+        bits = rd_written_q[w];
         wlow = bits & (~bits + 1'b1);
         wlb  = '0;
         for (int i = WordBits - 1; i >= 0; i--) if (bits[i]) wlb = WIB'(i);
@@ -225,7 +219,7 @@ module scanline_buffer #(
   // A tie goes to a strictly smaller id only: equal ids (one polygon's own spans) keep the first
   // arrival, as the model does.
   assign tie_wins  = tie_submission_i && t_depth == old_depth && t_poly < old_poly;
-  assign t_written = wpad[t_x_q[PB-1:0]];
+  assign t_written = wr_written_q[word_of(t_x_q)][bit_of(t_x_q)];
   assign wins      = t_valid_q && (!t_written || (t_depth < old_depth) || tie_wins);
 
   always_ff @(posedge clk_i) begin
@@ -246,59 +240,31 @@ module scanline_buffer #(
   logic                      covered;          // the pixel the reader takes is written
   assign take = rd_busy_q && (!pixel_valid_o || pixel_ready_i);
   // Sparse: the pixel found is written (none found: the terminating beat is not).
-  assign covered   = sparse_i ? found : rpad[rx_q[PB-1:0]];
+  assign covered   = sparse_i ? found : rd_written_q[word_of(rx_q)][bit_of(rx_q)];
 
-  // The last word when MaxWidth is not a multiple of 32: its MaxWidth bits, with the one-hot
-  // mask m set or cleared (the full words are updated as slices). m's bits beyond MaxWidth are
-  // dropped.
-  /* verilator lint_off UNUSEDSIGNAL */
-  function automatic logic [MaxWidth-1:0] last_set(logic [MaxWidth-1:0] v, logic [WordBits-1:0] m);
-    last_set = v | (MaxWidth'(m) << (FullWords * WordBits));
-  endfunction
-  function automatic logic [MaxWidth-1:0] last_clear(logic [MaxWidth-1:0] v, logic [WordBits-1:0] m);
-    last_clear = v & ~(MaxWidth'(m) << (FullWords * WordBits));
-  endfunction
-  /* verilator lint_on UNUSEDSIGNAL */
-
-  logic t_set, rx_clear;  // the tested pixel's bit is set; full mode: the pixel taken is cleared
-  logic [WAB-1:0] t_w, rx_w;
-  assign t_set    = t_valid_q;
-  assign rx_clear = take && !sparse_i;
-  assign t_w      = word_of(t_x_q);
-  assign rx_w     = word_of(rx_q);
-
-  // (A bank narrower than one word has no full word: the loops are empty.)
-  /* verilator lint_off UNSIGNED */
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
-      rd_written_q <= '0;
-      wr_written_q <= '0;
+      for (int w = 0; w < Words; w++) begin
+        rd_written_q[w] <= '0;
+        wr_written_q[w] <= '0;
+      end
     end else if (eol_take) begin
       // The swap exchanges the roles: the line just written (with its last fragment, tested on
       // this clock) is read next; the line just read is empty by now (a_swap_read_clear).
-      rd_written_q <= wr_written_q;
-      for (int w = 0; w < FullWords; w++)
-        if (t_set && t_w == WAB'(w))
-          rd_written_q[w*WordBits +: SliceBits] <= wr_written_q[w*WordBits +: SliceBits] | slice_hot(t_x_q);
-      if (FullWords < Words && t_set && t_w == WAB'(FullWords))
-        rd_written_q <= last_set(wr_written_q, bit_hot(t_x_q));
-      wr_written_q <= '0;
+      for (int w = 0; w < Words; w++) begin
+        rd_written_q[w] <= wr_written_q[w];
+        wr_written_q[w] <= '0;
+      end
+      if (t_valid_q) rd_written_q[word_of(t_x_q)][bit_of(t_x_q)] <= 1'b1;
     end else begin
-      for (int w = 0; w < FullWords; w++)
-        if (t_set && t_w == WAB'(w))
-          wr_written_q[w*WordBits +: SliceBits] <= wr_written_q[w*WordBits +: SliceBits] | slice_hot(t_x_q);
-      if (FullWords < Words && t_set && t_w == WAB'(FullWords))
-        wr_written_q <= last_set(wr_written_q, bit_hot(t_x_q));
-      // Sparse: the search's one-hot (non-zero only in the first occupied word).
-      if (take && sparse_i) rd_written_q <= rd_written_q & ~clr_pad[MaxWidth-1:0];
-      for (int w = 0; w < FullWords; w++)
-        if (rx_clear && rx_w == WAB'(w))
-          rd_written_q[w*WordBits +: SliceBits] <= rd_written_q[w*WordBits +: SliceBits] & ~slice_hot(rx_q);
-      if (FullWords < Words && rx_clear && rx_w == WAB'(FullWords))
-        rd_written_q <= last_clear(rd_written_q, bit_hot(rx_q));
+      if (t_valid_q) wr_written_q[word_of(t_x_q)][bit_of(t_x_q)] <= 1'b1;
+      if (take && sparse_i) begin
+        for (int w = 0; w < Words; w++)
+          rd_written_q[w] <= rd_written_q[w] & ~clr_pad[w*WordBits +: WordBits];
+      end
+      if (take && !sparse_i) rd_written_q[word_of(rx_q)][bit_of(rx_q)] <= 1'b0;
     end
   end
-  /* verilator lint_on UNSIGNED */
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
@@ -359,10 +325,13 @@ module scanline_buffer #(
   logic rd_left /* verilator public_flat_rd */;
   logic t_written_p /* verilator public_flat_rd */;
   logic covered_p /* verilator public_flat_rd */;
+  localparam int unsigned PB = $clog2(Words * WordBits);  // an x in the padded words
+  logic [Words*WordBits-1:0] rpad;     // the read bank as one vector
   /* verilator lint_off UNUSEDSIGNAL */
   logic [Words*WordBits-1:0] rd_kept;  // and after this clock's take (padding unused)
   /* verilator lint_on UNUSEDSIGNAL */
   always_comb begin
+    for (int w = 0; w < Words; w++) rpad[w*WordBits +: WordBits] = rd_written_q[w];
     rd_kept = rpad;
     if (take) begin
       if (sparse_i) rd_kept = rpad & ~clr_pad;
