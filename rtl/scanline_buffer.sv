@@ -65,9 +65,8 @@ module scanline_buffer #(
   localparam int unsigned DWB = PolyIdBits + DepthBits;
   logic [DWB-1:0]            depth_mem [2 * MaxWidth];
   logic [RB-1:0]             rgb_mem   [2 * MaxWidth];
-  // Written bits, one per pixel, by x, in flops (cleared by reset and by reading): the read bank's
-  // and the write bank's, exchanged at the swap.
-  logic [MaxWidth-1:0] rd_written_q, wr_written_q;
+  // Written bits, one per pixel, in flops (cleared by reset and by reading): the read bank's and
+  // the write bank's, exchanged at the swap; declared below, by 32-pixel word.
 
   logic          wsel_q;           // bank being written; the reader uses the other one
   logic          rd_busy_q;
@@ -82,19 +81,29 @@ module scanline_buffer #(
 
   // ------------------------------------------------------------ written bits
   // Kept by role, not by bank: neither wsel_q (a mux with a fan-out of 2 * MaxWidth) nor the
-  // bank-base adder is on their paths; only the RAM addresses use them. Decoded in two levels, a
-  // 32-pixel word and a bit in it.
+  // bank-base adder is on their paths; only the RAM addresses use them. Stored by 32-pixel word
+  // and written by {word, bit}: synthesis decodes the two levels apart (a word enable and a bit
+  // in it, as the sparse search's one-hot does) and a simulator touches one word per update
+  // instead of the whole bank. mem2reg: yosys makes the words flops at once, each word's
+  // writes a case on the word index (as a memory with a port per loop write it mapped them
+  // to 35 % more LUTs). Padding bits of the last word (MaxWidth not a multiple of 32) are
+  // never set: every x written or read is below width_i <= MaxWidth.
   localparam int unsigned WordBits = 32;
   localparam int unsigned WIB      = $clog2(WordBits);
   localparam int unsigned Words    = (MaxWidth + WordBits - 1) / WordBits;
   localparam int unsigned WAB      = (Words > 1) ? $clog2(Words) : 1;
-  localparam int unsigned PB       = $clog2(Words * WordBits);  // an x in the padded words
-  logic [MaxWidth-1:0]       rbits, wbits;  // the read bank's and the write bank's
-  logic [Words*WordBits-1:0] rpad, wpad;
-  assign rbits = rd_written_q;
-  assign wbits = wr_written_q;
-  assign rpad  = (Words * WordBits)'(rbits);
-  assign wpad  = (Words * WordBits)'(wbits);
+  (* mem2reg *) logic [WordBits-1:0] rd_written_q [Words];  // the read bank's
+  (* mem2reg *) logic [WordBits-1:0] wr_written_q [Words];  // the write bank's
+
+  // An x's word and its bit in it (x < MaxWidth: its high bits are zero).
+  /* verilator lint_off UNUSEDSIGNAL */
+  function automatic logic [WAB-1:0] word_of(logic [LB-1:0] x);
+    word_of = WAB'(x >> WIB);
+  endfunction
+  function automatic logic [WIB-1:0] bit_of(logic [LB-1:0] x);
+    bit_of = x[WIB-1:0];
+  endfunction
+  /* verilator lint_on UNUSEDSIGNAL */
 
   // ------------------------------------------------------------ read-side search (sparse)
   // The lowest written bit of the read bank is the next covered pixel. No compare with rx_q is
@@ -104,42 +113,55 @@ module scanline_buffer #(
   // Hierarchical (a MaxWidth-bit priority encoder's borrow chain was the clock's limit): per
   // 32-pixel word, in parallel, whether it holds a written bit, its lowest one (as an index and as
   // a one-hot mask) and whether it holds two; then the first occupied word, one-hot, selects them.
-  // The one-hot mask clears the pixel taken without decoding its x.
-  logic [Words-1:0]            occ;       // word w holds a written bit (sparse mode only)
+  // The one-hot mask clears the pixel taken without decoding its x (clr_pad).
+  // Only sparse mode reads the search: it sits inside `if (sparse_i)`, so full mode keeps it idle
+  // (the same gates: every output is zero when sparse_i is low) and Verilator skips it.
+  logic [Words-1:0]            occ;       // word w holds a written bit
   logic [Words-1:0]            first;     // one-hot: the first such word
-  logic [Words-1:0]            multi;     // word w holds two or more (sparse mode only)
-  logic [WordBits-1:0]         wlow [Words];  // word w's lowest written bit, one-hot
-  logic [WIB-1:0]              wlb  [Words];  // and its index
+  logic [Words-1:0]            multi;     // word w holds two or more
   logic [WAB-1:0]              fw;        // first occupied word
   logic [WIB-1:0]              lb;        // its lowest written bit
   logic [LB-1:0]               nx;
   logic                        found, more;
-
-  for (genvar w = 0; w < Words; w++) begin : g_word
-    logic [WordBits-1:0] bits;
-    assign bits     = rpad[w*WordBits +: WordBits];
-    // Only sparse mode reads the search: full mode keeps it idle.
-    assign occ[w]   = sparse_i && |bits;
-    assign multi[w] = sparse_i && |(bits & (bits - 1'b1));
-    assign wlow[w]  = bits & (~bits + 1'b1);
-    always_comb begin
-      wlb[w] = '0;
-      for (int i = WordBits - 1; i >= 0; i--) if (bits[i]) wlb[w] = WIB'(i);
-    end
-  end
+  /* verilator lint_off UNUSEDSIGNAL */
+  logic [Words*WordBits-1:0]   clr_pad;   // the found pixel, one-hot (its padding is unused)
+  /* verilator lint_on UNUSEDSIGNAL */
 
   always_comb begin
-    first = occ & ~(occ - 1'b1);
-    fw = '0;
-    lb = '0;
-    for (int w = 0; w < Words; w++) begin
-      if (first[w]) fw = WAB'(w);
-      lb |= first[w] ? wlb[w] : '0;
+    logic [WordBits-1:0] bits, wlow;  // a word and its lowest written bit, one-hot
+    logic [WIB-1:0]      wlb;         // that bit's index
+    bits    = '0;
+    wlow    = '0;
+    wlb     = '0;
+    occ     = '0;
+    multi   = '0;
+    first   = '0;
+    fw      = '0;
+    lb      = '0;
+    found   = 1'b0;
+    more    = 1'b0;
+    clr_pad = '0;
+    if (sparse_i) begin
+      for (int w = 0; w < Words; w++) begin
+        bits     = rd_written_q[w];
+        occ[w]   = |bits;
+        multi[w] = |(bits & (bits - 1'b1));
+      end
+      first = occ & ~(occ - 1'b1);
+      for (int w = 0; w < Words; w++) begin
+        bits = rd_written_q[w];
+        wlow = bits & (~bits + 1'b1);
+        wlb  = '0;
+        for (int i = WordBits - 1; i >= 0; i--) if (bits[i]) wlb = WIB'(i);
+        if (first[w]) fw = WAB'(w);
+        lb |= first[w] ? wlb : '0;
+        clr_pad[w*WordBits +: WordBits] = first[w] ? wlow : '0;
+      end
+      found = |occ;
+      // Another written bit after the found one: two in one word, or two words with one.
+      more  = |multi || |(occ & (occ - 1'b1));
     end
-    found = |occ;
-    // Another written bit after the found one: two in one word, or two words with one.
-    more  = |multi || |(occ & (occ - 1'b1));
-    nx    = LB'({fw, lb});
+    nx = LB'({fw, lb});
   end
 
   // ------------------------------------------------------------ write side
@@ -169,7 +191,9 @@ module scanline_buffer #(
   // and write. wr_written_q already holds that previous write.
   logic                 t_valid_q, lw_valid_q;
   logic [AddrBits-1:0]  t_addr_q, lw_addr_q;
-  logic [LB-1:0]        t_x_q;     // t_addr_q's x (its bank is wsel_q's: a marker swaps only after)
+  /* verilator lint_off UNUSEDSIGNAL */
+  logic [LB-1:0]        t_x_q;     // t_addr_q's x (its bank is wsel_q's: a marker swaps only after); < MaxWidth
+  /* verilator lint_on UNUSEDSIGNAL */
   logic                 t_written; // the pixel already has a fragment
   logic [DWB-1:0]       t_word_q, lw_word_q, mem_word_q, old_word;
   logic [DepthBits-1:0] t_depth, old_depth;
@@ -195,7 +219,7 @@ module scanline_buffer #(
   // A tie goes to a strictly smaller id only: equal ids (one polygon's own spans) keep the first
   // arrival, as the model does.
   assign tie_wins  = tie_submission_i && t_depth == old_depth && t_poly < old_poly;
-  assign t_written = wpad[t_x_q[PB-1:0]];
+  assign t_written = wr_written_q[word_of(t_x_q)][bit_of(t_x_q)];
   assign wins      = t_valid_q && (!t_written || (t_depth < old_depth) || tie_wins);
 
   always_ff @(posedge clk_i) begin
@@ -209,43 +233,43 @@ module scanline_buffer #(
   // found the bit set already), so the depth test is not on this path. The pixel the reader
   // takes is cleared: full mode x = rx_q; sparse, the search's one-hot. Both only when the
   // reader takes a pixel: take is rd_load without the search (full mode emits every step; the
-  // search's one-hot is non-zero only when it found one, when rd_emit holds).
+  // search's one-hot is non-zero only when it found one, when rd_emit holds). Written as
+  // enabled single-bit updates, so a simulator touches one bit per fragment and per pixel
+  // instead of both MaxWidth-bit banks every clock.
   logic                      take;
-  logic [Words-1:0]          rx_word, t_word;  // one-hot words of rx_q and t_x_q
-  logic [WordBits-1:0]       rx_bit, t_bit;    // one-hot bits in them
-  /* verilator lint_off UNUSEDSIGNAL */
-  logic [Words*WordBits-1:0] set_pad, clr_pad;  // their padding is unused
-  /* verilator lint_on UNUSEDSIGNAL */
-  logic [MaxWidth-1:0]       rd_kept, wr_set;    // the read bank cleared, the write bank set
   logic                      covered;          // the pixel the reader takes is written
   assign take = rd_busy_q && (!pixel_valid_o || pixel_ready_i);
-  for (genvar w = 0; w < Words; w++) begin : g_word_hot
-    assign rx_word[w] = (rx_q >> WIB) == LB'(w);
-    assign t_word[w]  = (t_x_q >> WIB) == LB'(w);
-  end
-  for (genvar i = 0; i < WordBits; i++) begin : g_bit_hot
-    assign rx_bit[i] = rx_q[WIB-1:0] == WIB'(i);
-    assign t_bit[i]  = t_x_q[WIB-1:0] == WIB'(i);
-  end
-  for (genvar w = 0; w < Words; w++) begin : g_word_upd
-    logic rx_take, first_take;
-    assign rx_take    = take && rx_word[w];
-    assign first_take = take && first[w];
-    assign set_pad[w*WordBits +: WordBits] = (t_valid_q && t_word[w]) ? t_bit : '0;
-    assign clr_pad[w*WordBits +: WordBits] = sparse_i ? (first_take ? wlow[w] : '0)
-                                                      : (rx_take ? rx_bit : '0);
-  end
   // Sparse: the pixel found is written (none found: the terminating beat is not).
-  assign covered   = sparse_i ? found : rpad[rx_q[PB-1:0]];
-  assign rd_kept   = rbits & ~clr_pad[MaxWidth-1:0];
-  assign wr_set    = wbits | set_pad[MaxWidth-1:0];
+  assign covered   = sparse_i ? found : rd_written_q[word_of(rx_q)][bit_of(rx_q)];
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      for (int w = 0; w < Words; w++) begin
+        rd_written_q[w] <= '0;
+        wr_written_q[w] <= '0;
+      end
+    end else if (eol_take) begin
+      // The swap exchanges the roles: the line just written (with its last fragment, tested on
+      // this clock) is read next; the line just read is empty by now (a_swap_read_clear).
+      for (int w = 0; w < Words; w++) begin
+        rd_written_q[w] <= wr_written_q[w];
+        wr_written_q[w] <= '0;
+      end
+      if (t_valid_q) rd_written_q[word_of(t_x_q)][bit_of(t_x_q)] <= 1'b1;
+    end else begin
+      if (t_valid_q) wr_written_q[word_of(t_x_q)][bit_of(t_x_q)] <= 1'b1;
+      if (take && sparse_i) begin
+        for (int w = 0; w < Words; w++)
+          rd_written_q[w] <= rd_written_q[w] & ~clr_pad[w*WordBits +: WordBits];
+      end
+      if (take && !sparse_i) rd_written_q[word_of(rx_q)][bit_of(rx_q)] <= 1'b0;
+    end
+  end
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       t_valid_q     <= 1'b0;
       lw_valid_q    <= 1'b0;
-      rd_written_q  <= '0;
-      wr_written_q  <= '0;
       wsel_q        <= 1'b0;
       rd_busy_q     <= 1'b0;
       rx_q          <= '0;
@@ -254,10 +278,6 @@ module scanline_buffer #(
     end else begin
       t_valid_q  <= frag_take;
       lw_valid_q <= wins;
-      // The swap exchanges the roles: the line just written (with its last fragment, tested on
-      // this clock) is read next; the line just read is empty by now (a_swap_read_clear).
-      rd_written_q <= eol_take ? wr_set : rd_kept;
-      wr_written_q <= eol_take ? '0 : wr_set;
       if (rd_step) begin
         rx_q <= rd_x + 1'b1;
         if (rd_last) begin
@@ -294,22 +314,36 @@ module scanline_buffer #(
   `WATKINS_ASSERT_HOLD(a_out_hold, pixel_valid_o, pixel_ready_i, {pixel_rgb_o, pixel_covered_o,
     pixel_last_o, pixel_x_o, pixel_y_o})
   `WATKINS_ASSERT(a_sparse_covered, rd_load && sparse_i && !(rd_last && rd_lastline) |-> found)
-`ifndef SYNTHESIS
+`ifdef WATKINS_ASSERT_ON
   // One-bit probes: the properties sample them, not the whole written vector (Verilator 5.006
   // emits an undeclared loop variable for a sampled vector this wide).
   // Public, so that Verilator keeps them as variables instead of inlining the vector back in.
+  // Only where the assertions are compiled: the speed build would compute them every clock.
   logic below_dirty /* verilator public_flat_rd */;
   logic ra_written /* verilator public_flat_rd */;
   logic t_addr_ok /* verilator public_flat_rd */;
   logic rd_left /* verilator public_flat_rd */;
   logic t_written_p /* verilator public_flat_rd */;
   logic covered_p /* verilator public_flat_rd */;
+  localparam int unsigned PB = $clog2(Words * WordBits);  // an x in the padded words
+  logic [Words*WordBits-1:0] rpad;     // the read bank as one vector
+  /* verilator lint_off UNUSEDSIGNAL */
+  logic [Words*WordBits-1:0] rd_kept;  // and after this clock's take (padding unused)
+  /* verilator lint_on UNUSEDSIGNAL */
+  always_comb begin
+    for (int w = 0; w < Words; w++) rpad[w*WordBits +: WordBits] = rd_written_q[w];
+    rd_kept = rpad;
+    if (take) begin
+      if (sparse_i) rd_kept = rpad & ~clr_pad;
+      else          rd_kept[PB'(rx_q)] = 1'b0;
+    end
+  end
   assign t_written_p = t_written;
   assign covered_p   = covered;
-  assign below_dirty = |(rbits & ~({MaxWidth{1'b1}} << rx_q));
-  assign ra_written  = rpad[rd_x[PB-1:0]];
+  assign below_dirty = |(rpad[MaxWidth-1:0] & ~({MaxWidth{1'b1}} << rx_q));
+  assign ra_written  = rpad[PB'(rd_x)];
   assign t_addr_ok   = t_addr_q == addr(wsel_q, t_x_q);
-  assign rd_left     = |rd_kept;
+  assign rd_left     = |rd_kept[MaxWidth-1:0];
 `endif
   // Why the sparse search needs no rx_q compare, and why covered needs no read at ra.
   `WATKINS_ASSERT(a_sparse_below_clear, rd_busy_q && sparse_i |-> !below_dirty)

@@ -159,20 +159,23 @@ module smoother #(
   end
 
   // ------------------------------------------------------------ stage 3: f_i and the sums
-  logic [PB-1:0] centre;
+  // Stages 3..12 compute inside their registers' enables (functions called under `if`), each
+  // stage's registers loading only a valid pixel: the same gates, clock-enabled, and a
+  // simulator does no work for an empty stage (a frame with W = 0 leaves all of them empty).
+  localparam int unsigned SumsBits = 2 * 3 * SumBits + 2 * NB;  // {s_edge, s_corner, n_edge, n_corner}
   // Edges: up, left, right, down; corners: up-left, up-right, down-left, down-right.
-  logic [8*PB-1:0] nb;
-  logic [7:0]    f;
-  logic [3*SumBits-1:0] s_edge, s_corner;
-  logic [NB-1:0] n_edge, n_corner;
-  logic          m_left, m_right, m_up, m_down;
-
-  assign {m_left, m_right, m_up, m_down} = m2_q;
-  assign centre = win_q[1][PB +: PB];
-  assign nb = {win_q[2][0 +: PB], win_q[0][0 +: PB], win_q[2][2*PB +: PB], win_q[0][2*PB +: PB],
-                win_q[1][0 +: PB], win_q[2][PB +: PB], win_q[0][PB +: PB], win_q[1][2*PB +: PB]};
-
-  always_comb begin
+  function automatic logic [SumsBits-1:0] window_sums(logic [3*PB-1:0] w0, logic [3*PB-1:0] w1,
+                                                      logic [3*PB-1:0] w2, logic [3:0] m);
+    logic [PB-1:0]        centre;
+    logic [8*PB-1:0]      nb;
+    logic [7:0]           f;
+    logic [3*SumBits-1:0] s_edge, s_corner;
+    logic [NB-1:0]        n_edge, n_corner;
+    logic                 m_left, m_right, m_up, m_down;
+    {m_left, m_right, m_up, m_down} = m;
+    centre = w1[PB +: PB];
+    nb = {w2[0 +: PB], w0[0 +: PB], w2[2*PB +: PB], w0[2*PB +: PB],
+          w1[0 +: PB], w2[PB +: PB], w0[PB +: PB], w1[2*PB +: PB]};
     // An uncovered centre keeps its shade: no neighbour counts (d = 2^2F, n = 2^2F·G1).
     f[0] = m_up;
     f[1] = m_left;
@@ -199,14 +202,17 @@ module smoother #(
       n_edge   = n_edge + NB'(f[i]);
       n_corner = n_corner + NB'(f[i + 4]);
     end
-  end
+    window_sums = {s_edge, s_corner, n_edge, n_corner};
+  endfunction
 
+  logic [PB-1:0]        centre;
   logic                 v3_q;
   logic [3*SumBits-1:0] s_edge_q, s_corner_q;
   logic [3*SB-1:0]      g1_q;
   logic [NB-1:0]        n_edge_q, n_corner_q;
   logic [PayBits-1:0]   pay3_q;
 
+  assign centre = win_q[1][PB +: PB];
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       v3_q <= 1'b0;
@@ -215,12 +221,9 @@ module smoother #(
     end
   end
   always_ff @(posedge clk_i) begin
-    if (en) begin
-      s_edge_q   <= s_edge;
-      s_corner_q <= s_corner;
+    if (en && v2_q) begin
+      {s_edge_q, s_corner_q, n_edge_q, n_corner_q} <= window_sums(win_q[0], win_q[1], win_q[2], m2_q);
       g1_q       <= centre[3*SB-1:0];
-      n_edge_q   <= n_edge;
-      n_corner_q <= n_corner;
       pay3_q     <= {centre[PB-1], ox2_q, oy2_q, last2_q};
     end
   end
@@ -242,21 +245,25 @@ module smoother #(
     square = '0;
     for (int i = 0; i < WB; i++) if (v[i]) square = square + ((2*WB)'(v) << i);
   endfunction
+  // d = 2^2F + 2^F·w·n_edge + w²·n_corner.
+  function automatic logic [DenBits-1:0] divisor(logic [WB-1:0] w, logic [2*WB-1:0] w2,
+                                                 logic [NB-1:0] n_edge, logic [NB-1:0] n_corner);
+    divisor = (DenBits'(1) << (2*F)) + (times_count(DenBits'(w), n_edge) << F)
+            + times_count(DenBits'(w2), n_corner);
+  endfunction
+  // 2n + d per channel, n = 2^2F·G1 + 2^F·w·S_edge + w²·S_corner.
+  function automatic logic [3*DvdBits-1:0] dividend(logic [3*SB-1:0] g1, logic [3*SumBits-1:0] s_edge,
+                                                    logic [3*SumBits-1:0] s_corner, logic [WB-1:0] w,
+                                                    logic [2*WB-1:0] w2, logic [DenBits-1:0] d);
+    for (int c = 0; c < 3; c++) begin
+      dividend[c*DvdBits +: DvdBits] =
+          ((DvdBits'(g1[c*SB +: SB]) << (2*F)) + (DvdBits'(w) * DvdBits'(s_edge[c*SumBits +: SumBits]) << F)
+           + DvdBits'(w2) * DvdBits'(s_corner[c*SumBits +: SumBits])) * DvdBits'(2) + DvdBits'(d);
+    end
+  endfunction
 
   logic [2*WB-1:0]    w2_q;
-  logic [DenBits-1:0] den;
-  logic [3*DvdBits-1:0] dvd;
   always_ff @(posedge clk_i) w2_q <= square(w_i);
-  assign den = (DenBits'(1) << (2*F)) + (times_count(DenBits'(w_i), n_edge_q) << F)
-             + times_count(DenBits'(w2_q), n_corner_q);
-  always_comb begin
-    for (int c = 0; c < 3; c++) begin
-      // 2n + d, n = 2^2F·G1 + 2^F·w·S_edge + w²·S_corner.
-      dvd[c*DvdBits +: DvdBits] =
-          ((DvdBits'(g1_q[c*SB +: SB]) << (2*F)) + (DvdBits'(w_i) * DvdBits'(s_edge_q[c*SumBits +: SumBits]) << F)
-           + DvdBits'(w2_q) * DvdBits'(s_corner_q[c*SumBits +: SumBits])) * DvdBits'(2) + DvdBits'(den);
-    end
-  end
 
   // ------------------------------------------------------------ stages 5..12: restoring division
   // Stage k takes quotient bit SB-1-k: the remainder is below 2d·2^(SB-k) before it.
@@ -266,6 +273,21 @@ module smoother #(
   logic [DenBits-1:0]   dsr_q [DivStages+1];
   logic [PayBits-1:0]   pay_q [DivStages+1];
 
+  // One restoring step of the three channels against t = 2d·2^shift: the remainders and the
+  // quotients with bit `shift` set where t fitted.
+  function automatic logic [3*DvdBits-1:0] div_rem(logic [3*DvdBits-1:0] rem, logic [DvdBits-1:0] t);
+    logic [DvdBits-1:0] r;
+    for (int c = 0; c < 3; c++) begin
+      r = rem[c*DvdBits +: DvdBits];
+      div_rem[c*DvdBits +: DvdBits] = (r >= t) ? r - t : r;
+    end
+  endfunction
+  function automatic logic [3*SB-1:0] div_quo(logic [3*DvdBits-1:0] rem, logic [3*SB-1:0] quo,
+                                              logic [DvdBits-1:0] t, int unsigned shift);
+    for (int c = 0; c < 3; c++)
+      div_quo[c*SB +: SB] = quo[c*SB +: SB] | (SB'(rem[c*DvdBits +: DvdBits] >= t) << shift);
+  endfunction
+
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       dv_q[0] <= 1'b0;
@@ -274,28 +296,17 @@ module smoother #(
     end
   end
   always_ff @(posedge clk_i) begin
-    if (en) begin
-      rem_q[0] <= dvd;
+    if (en && v3_q) begin
+      rem_q[0] <= dividend(g1_q, s_edge_q, s_corner_q, w_i, w2_q,
+                           divisor(w_i, w2_q, n_edge_q, n_corner_q));
       quo_q[0] <= '0;
-      dsr_q[0] <= den << 1;
+      dsr_q[0] <= divisor(w_i, w2_q, n_edge_q, n_corner_q) << 1;
       pay_q[0] <= pay3_q;
     end
   end
 
   for (genvar k = 0; k < DivStages; k++) begin : g_div
     localparam int unsigned Shift = DivStages - 1 - k;
-    logic [3*DvdBits-1:0] rem_d;
-    logic [3*SB-1:0]      quo_d;
-    logic [DvdBits-1:0]   t;
-    assign t = DvdBits'(dsr_q[k]) << Shift;
-    for (genvar c = 0; c < 3; c++) begin : g_channel
-      logic [DvdBits-1:0] r;
-      logic               ge;
-      assign r  = rem_q[k][c*DvdBits +: DvdBits];
-      assign ge = r >= t;
-      assign rem_d[c*DvdBits +: DvdBits] = ge ? r - t : r;
-      assign quo_d[c*SB +: SB] = quo_q[k][c*SB +: SB] | (SB'(ge) << Shift);
-    end
     always_ff @(posedge clk_i) begin
       if (!rst_ni) begin
         dv_q[k+1] <= 1'b0;
@@ -304,9 +315,9 @@ module smoother #(
       end
     end
     always_ff @(posedge clk_i) begin
-      if (en) begin
-        rem_q[k+1] <= rem_d;
-        quo_q[k+1] <= quo_d;
+      if (en && dv_q[k]) begin
+        rem_q[k+1] <= div_rem(rem_q[k], DvdBits'(dsr_q[k]) << Shift);
+        quo_q[k+1] <= div_quo(rem_q[k], quo_q[k], DvdBits'(dsr_q[k]) << Shift, Shift);
         dsr_q[k+1] <= dsr_q[k];
         pay_q[k+1] <= pay_q[k];
       end
