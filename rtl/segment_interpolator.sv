@@ -256,15 +256,21 @@ module segment_interpolator #(
     localparam int unsigned Vl = ilo(c, ZPV, APV);
     localparam logic signed [PS-1:0] StepMax = $signed((PS'(1) << (W - 1)) - PS'(1));
     localparam logic signed [PS-1:0] StepMin = -$signed(PS'(1) << (W - 1));
+    // Shift first, round after, as alpha0: u = {x, 0} >>> s = floor(x / 2^(s-1)) (s > 0), and
+    // rs = floor((u + 1) / 2) = (u >>> 1) + u[0]. Saturate from u's high bits: when u >>> 1
+    // does not fit W bits, rs saturates to its sign (below the range, + u[0] reaches at most
+    // StepMin); when it fits, only StepMax + 1 leaves the range, so the increment is skipped
+    // there. The W-bit increment runs beside the tests, not before them.
+    logic signed [PS:0] u;
+    logic               fits, at_max;
+    assign u      = $signed({sa_ps_q[Pl +: PS], 1'b0}) >>> sa_shs_q;
+    assign fits   = &u[PS:W] || ~|u[PS:W];
+    assign at_max = !u[W] && &u[W-1:1];
     always_ff @(posedge clk_i) begin
       if (tail_en) begin
-        logic signed [PS-1:0] rs;
         sa_ps_q[Pl +: PS] <= PS'($signed(rc_span.delta[Dl +: W + 1]) * $signed({1'b0, rc_recip}));
-        rs = ($signed(sa_ps_q[Pl +: PS]) + $signed(PS'(1) << (sa_shs_q - 1'b1))) >>> sa_shs_q;
-        // Saturate: rs fits W bits when its bits from W - 1 up are all equal (cheaper than
-        // comparing with StepMax and StepMin, the same result).
-        if (!(&rs[PS-1:W-1] || ~|rs[PS-1:W-1])) sb_step_q[Lo +: W] <= rs[PS-1] ? W'(StepMin) : W'(StepMax);
-        else sb_step_q[Lo +: W] <= W'(rs);
+        if (!fits) sb_step_q[Lo +: W] <= u[PS] ? W'(StepMin) : W'(StepMax);
+        else sb_step_q[Lo +: W] <= u[W:1] + W'(u[0] && !at_max);
         sc_pv_q[Vl +: PV] <= PV'($signed(sb_span_q.delta[Dl +: W + 1]) * $signed({1'b0, sb_alpha_q}));
       end
     end
