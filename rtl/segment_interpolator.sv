@@ -218,19 +218,27 @@ module segment_interpolator #(
   logic [IVB-1:0]      sb_step_q, sc_step_q;
   logic [IPV-1:0]      sc_pv_q;      // delta * alpha0 per slot
 
+  // alpha0 shifts first and rounds after: round_shift(x, s) = (floor(2x / 2^s) + 1) / 2, so the
+  // shifter takes the product straight from its register (u = {x, 0} >> s, also exact for s = 0)
+  // and the rounding is one increment of the AlphaBits + 1 bits the clamp keeps. The clamp reads
+  // the high bits: ra > 2^AlphaBits exactly when u has a bit above ua's, or ua >= 2^AlphaBits
+  // with anything below that bit or the rounding bit set; it does not wait for the increment.
+  logic [APBits:0]    sb_u;
+  logic [AlphaBits:0] sb_ua;   // floor(x / 2^s), when it is below 2^(AlphaBits + 1)
+  logic               sb_over; // ra > 2^AlphaBits
+  assign sb_u    = {sa_pa_q, 1'b0} >> sa_sha_q;
+  assign sb_ua   = sb_u[AlphaBits+1:1];
+  assign sb_over = |sb_u[APBits:AlphaBits+2] || (sb_ua[AlphaBits] && (|sb_ua[AlphaBits-1:0] || sb_u[0]));
+
   always_ff @(posedge clk_i) begin
     if (tail_en) begin
-      logic [APBits-1:0] ra;
       sa_span_q <= rc_span;
       // Both shifts are known from p alone: computed here, beside the products.
       sa_sha_q  <= ShAB'(rc_p) + ShAB'(RecipBits) - ShAB'(AlphaBits);
       sa_shs_q  <= ShSB'(rc_p) + ShSB'(RecipBits) - ShSB'(FX);
       sa_pa_q   <= APBits'(rc_span.offset) * APBits'(rc_recip);
       sb_span_q <= sa_span_q;
-      ra = (sa_sha_q == '0) ? sa_pa_q
-                            : ((sa_pa_q + (APBits'(1) << (sa_sha_q - 1'b1))) >> sa_sha_q);
-      sb_alpha_q <= (ra > APBits'(1 << AlphaBits)) ? (AlphaBits + 1)'(1 << AlphaBits)
-                                                   : (AlphaBits + 1)'(ra);
+      sb_alpha_q <= sb_over ? (AlphaBits + 1)'(1 << AlphaBits) : sb_ua + (AlphaBits + 1)'(sb_u[0]);
       sc_span_q <= sb_span_q;
       sc_step_q <= sb_step_q;
     end
@@ -248,15 +256,21 @@ module segment_interpolator #(
     localparam int unsigned Vl = ilo(c, ZPV, APV);
     localparam logic signed [PS-1:0] StepMax = $signed((PS'(1) << (W - 1)) - PS'(1));
     localparam logic signed [PS-1:0] StepMin = -$signed(PS'(1) << (W - 1));
+    // Shift first, round after, as alpha0: u = {x, 0} >>> s = floor(x / 2^(s-1)) (s > 0), and
+    // rs = floor((u + 1) / 2) = (u >>> 1) + u[0]. Saturate from u's high bits: when u >>> 1
+    // does not fit W bits, rs saturates to its sign (below the range, + u[0] reaches at most
+    // StepMin); when it fits, only StepMax + 1 leaves the range, so the increment is skipped
+    // there. The W-bit increment runs beside the tests, not before them.
+    logic signed [PS:0] u;
+    logic               fits, at_max;
+    assign u      = $signed({sa_ps_q[Pl +: PS], 1'b0}) >>> sa_shs_q;
+    assign fits   = &u[PS:W] || ~|u[PS:W];
+    assign at_max = !u[W] && &u[W-1:1];
     always_ff @(posedge clk_i) begin
       if (tail_en) begin
-        logic signed [PS-1:0] rs;
         sa_ps_q[Pl +: PS] <= PS'($signed(rc_span.delta[Dl +: W + 1]) * $signed({1'b0, rc_recip}));
-        rs = ($signed(sa_ps_q[Pl +: PS]) + $signed(PS'(1) << (sa_shs_q - 1'b1))) >>> sa_shs_q;
-        // Saturate: rs fits W bits when its bits from W - 1 up are all equal (cheaper than
-        // comparing with StepMax and StepMin, the same result).
-        if (!(&rs[PS-1:W-1] || ~|rs[PS-1:W-1])) sb_step_q[Lo +: W] <= rs[PS-1] ? W'(StepMin) : W'(StepMax);
-        else sb_step_q[Lo +: W] <= W'(rs);
+        if (!fits) sb_step_q[Lo +: W] <= u[PS] ? W'(StepMin) : W'(StepMax);
+        else sb_step_q[Lo +: W] <= u[W:1] + W'(u[0] && !at_max);
         sc_pv_q[Vl +: PV] <= PV'($signed(sb_span_q.delta[Dl +: W + 1]) * $signed({1'b0, sb_alpha_q}));
       end
     end
