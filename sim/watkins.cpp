@@ -321,9 +321,9 @@ int render(const RenderArgs& a) {
       for (const SceneObject& obj : scene.source->objects)
         if (obj.type == ObjectType::Mesh && same_file(o.second, obj.file))
           throw UsageError(o.first + " " + o.second + " is the mesh file of " + obj.field + "; refusing to overwrite it");
-  // Without --config, a scene with curved edges gets the default configuration's curved variant
-  // (edge_order 3): what it needs, as the default fits a polygon scene; a --config is taken as given.
-  if (a.config.empty() && !scene.curves.empty()) cfg.edge_order = 3;
+  // Without --config, the default configuration with the edge order the scene needs; a --config
+  // is taken as given (prepare refuses curves at edge_order 1, naming the field).
+  if (a.config.empty()) cfg = with_scene_edge_order(scene, cfg);
   const PreparedScene prepared = prepare(scene, cfg);
   check_rtl_config(a.rtl, prepared, a.config);  // --rtl
   const double t_prep = seconds_since(t0);

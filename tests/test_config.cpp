@@ -22,20 +22,14 @@
 #include "prepare.hpp"
 #include "random_scene.hpp"
 #include "scene.hpp"
+#include "test_support.hpp"
 #include "watkins_top.hpp"
 
 namespace {
 
 using namespace watkins;
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::exception& e) {
-    return e.what();
-  }
-  return "";
-}
+using watkins::test::error_of;
 
 std::vector<std::string> shipped_scenes() { return watkins::test::shipped_scene_paths(); }
 

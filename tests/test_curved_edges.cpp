@@ -18,6 +18,7 @@
 #include "curved_edges.hpp"
 #include "prepare.hpp"
 #include "scan_lines.hpp"
+#include "test_support.hpp"
 #include "watkins_top.hpp"
 
 namespace {
@@ -25,14 +26,7 @@ namespace {
 using namespace watkins;
 using namespace watkins::test;
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::exception& e) {
-    return e.what();
-  }
-  return "";
-}
+using watkins::test::error_of;
 
 Config cubic(Config c = Config{}) {
   c.edge_order = 3;
@@ -66,6 +60,19 @@ TEST(CurvedEdges, EdgeOrderKey) {
 
 // The twin's step k times equals the closed form v0 + d1 C(k,1) + d2 C(k,2) + d3 C(k,3), wrapped
 // to the slot's word: also when the differences and the values wrap (narrow words).
+// A scene with curves needs edge_order 3: the default configuration gets it (watkins render without
+// --config) and so does the sized one; a polygon scene keeps the base's order.
+TEST(CurvedEdges, SceneEdgeOrderIsWhatTheSceneNeeds) {
+  const BuiltScene curves = curve_scene(ShadingMode::Phong);
+  EXPECT_EQ(with_scene_edge_order(curves, Config{}).edge_order, 3);
+  EXPECT_EQ(fit_int_bits(curves, Config{}).edge_order, 3);
+  BuiltScene polygons = curves;
+  polygons.curves.clear();
+  polygons.curve_regions = 0;
+  EXPECT_EQ(with_scene_edge_order(polygons, Config{}).edge_order, 1);
+  EXPECT_EQ(with_scene_edge_order(polygons, cubic()).edge_order, 3);
+}
+
 TEST(CurvedEdges, IncrementerStepsTheCubic) {
   std::mt19937_64 rng(5);
   for (const Config& cfg : {cubic(), narrow()}) {

@@ -72,6 +72,23 @@ PatchPoint half_cylinder(BicubicPatch& cp) {
 
 const Projection kProj{160, 120, 1.2};
 
+// patch.json with 8 x 8 subpatches drawn by curves, its camera-space patch and its edge description.
+struct DescribedPatch {
+  BuiltScene s = patch_scene(8, true);
+  CameraPatch cam{*s.source, s.source->objects.at(0)};
+  PatchPoint f = cam.fn();
+  EdgeStats st;
+  PatchEdges e = describe();
+
+ private:
+  PatchEdges describe() {
+    const SceneObject& o = s.source->objects.at(0);
+    WhittedOptions wo;
+    wo.k_u = o.k_u, wo.k_v = o.k_v, wo.line_hi = s.height;
+    return describe_patch(f, kProj, wo, st);
+  }
+};
+
 }  // namespace
 
 // Newton on E_y(t) = y_n: every crossing of the shipped patch (8 x 8 subpatches, and whole) within
@@ -196,14 +213,10 @@ TEST(Curves, HalfCylinderSilhouette) {
 // the silhouette and stays near it. Measured: the nearest true silhouette point along v = const is
 // at most 0.63 px away on screen (asserted < 1 px).
 TEST(Curves, PatchSilhouetteNearTheTrueOne) {
-  const BuiltScene s = patch_scene(8, true);
-  const SceneObject& o = s.source->objects.at(0);
-  const CameraPatch cam(*s.source, o);
-  const PatchPoint f = cam.fn();
-  WhittedOptions wo;
-  wo.k_u = o.k_u, wo.k_v = o.k_v, wo.line_hi = s.height;
-  EdgeStats st;
-  const PatchEdges e = describe_patch(f, kProj, wo, st);
+  const DescribedPatch d;
+  const BuiltScene& s = d.s;
+  const PatchPoint& f = d.f;
+  const PatchEdges& e = d.e;
   ASSERT_GE(e.silhouettes.size(), 4u);
   double worst = 0;
   for (const ParamCurve& sil : e.silhouettes) {
@@ -319,14 +332,10 @@ TEST(Curves, WhittedMaterialRule) {
 // total max 0.81, mean 0.0068; the cubic fit alone max 0.71; the one-iteration stepping alone max
 // 0.82, mean 0.0016, on 16 of 2864 lines over 1/16 px (a piece of a shared edge counts per region).
 TEST(Curves, FixedPointNewtonAgainstTheDouble) {
-  const BuiltScene s = patch_scene(8, true);
-  const SceneObject& o = s.source->objects.at(0);
-  const CameraPatch cam(*s.source, o);
-  const PatchPoint f = cam.fn();
-  WhittedOptions wo;
-  wo.k_u = o.k_u, wo.k_v = o.k_v, wo.line_hi = s.height;
-  EdgeStats st;
-  const PatchEdges e = describe_patch(f, kProj, wo, st);
+  const DescribedPatch d;
+  const BuiltScene& s = d.s;
+  const PatchPoint& f = d.f;
+  const PatchEdges& e = d.e;
   std::vector<FixedNewtonError> by_bits;
   for (int bits : {8, 12, 16, 20}) {
     FixedNewtonFormat fmt;

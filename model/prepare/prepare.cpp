@@ -173,7 +173,13 @@ PreparedScene prepare(const BuiltScene& scene, const PrepareOptions& opt) {
   return prepare(scene, cfg);
 }
 
-Config fit_int_bits(const BuiltScene& scene, const Config& base, PreparedScene* probe) {
+Config with_scene_edge_order(const BuiltScene& scene, Config base) {
+  if (!scene.curves.empty()) base.edge_order = 3;
+  return base;
+}
+
+Config fit_int_bits(const BuiltScene& scene, const Config& base_in, PreparedScene* probe) {
+  const Config base = with_scene_edge_order(scene, base_in);
   Config wide = base;
   ChannelFormat& attr = scene.shading == ShadingMode::Phong ? wide.normal : wide.shade;
   for (ChannelFormat* f : {&wide.x, &wide.depth, &attr})

@@ -69,6 +69,10 @@ PreparedScene prepare(const BuiltScene& scene, const PrepareOptions& opt = {});
 // integer bits: `watkins size` and `watkins sweep` both size their configurations with it.
 // Throws SceneError when base's fractions are no valid configuration or the scene cannot be
 // prepared at them; `probe` (optional) receives that widest preparation.
+// `base` with the edge order the scene needs: 3 (cubic forward differences) when it has curved
+// edges (BuiltScene::curves), else base's. `watkins render` without --config and fit_int_bits use it.
+Config with_scene_edge_order(const BuiltScene& scene, Config base);
+
 Config fit_int_bits(const BuiltScene& scene, const Config& base, PreparedScene* probe = nullptr);
 
 }  // namespace watkins

@@ -2,6 +2,9 @@
 // fixed-point model over one.
 #pragma once
 
+#include <exception>
+#include <functional>
+#include <string>
 #include <vector>
 
 #include "float_reference.hpp"
@@ -11,6 +14,16 @@
 #include "scene_builder.hpp"
 
 namespace watkins::test {
+
+// The message f throws, "" when it throws nothing.
+inline std::string error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "";
+}
 
 // Renders with the fixed-point model; counts fragments per pixel when `hits` is given.
 // The active-edge capacity is raised above the default so meshes are not limited by it here.
