@@ -37,7 +37,8 @@ def table(rows):
             "edge record bits (order) | active list kbit | line buffer kbit |\n"
             "|---|---|---|---|---|---|---|---|---|---|---|---|\n")
     lines = []
-    key = lambda r: (r["scene"], int(r["u"]), ORDER.index(r["shading"]) if r["shading"] in ORDER else 99)
+    scenes = list(dict.fromkeys(r["scene"] for r in rows))  # in the sweep's order
+    key = lambda r: (scenes.index(r["scene"]), int(r["u"]), ORDER.index(r["shading"]) if r["shading"] in ORDER else 99)
     for r in sorted(rows, key=key):
         n = r["u"] if r["u"] == r["v"] else f'{r["u"]}×{r["v"]}'
         if r["error"]:
@@ -72,27 +73,26 @@ def montage(images, scene, ns, shadings, out, rows):
     uv = {(stem(r["scene"]), r["shading"], int(r["u"])): r for r in rows}
     cols = ["truth"] + shadings
     h, w = y1 - y0, x1 - x0
-    dpi = 100
-    fig, axes = plt.subplots(len(ns), len(cols), figsize=(len(cols) * w / dpi * 1.02, len(ns) * (h + 34) / dpi),
-                             dpi=dpi, squeeze=False)
+    dpi, label, title, gap = 100, 16, 26, 4  # pixel layout: the images at 1:1, titles above them
+    W, H = label + len(cols) * (w + gap), len(ns) * (title + h + gap)
+    fig = plt.figure(figsize=(W / dpi, H / dpi), dpi=dpi)
     for i, n in enumerate(ns):
+        fig.text(label / 2 / W, 1 - (i * (title + h + gap) + title + h / 2) / H, f"n = {n}", rotation=90,
+                 ha="center", va="center", fontsize=8)
         for j, c in enumerate(cols):
-            ax = axes[i][j]
-            ax.set_xticks([]), ax.set_yticks([])
+            ax = fig.add_axes([(label + j * (w + gap)) / W, 1 - (i * (title + h + gap) + title + h) / H, w / W, h / H])
+            ax.set_axis_off()
             if c == "truth":
                 ax.imshow(crop(truth), interpolation="nearest")
-                ax.set_title("analytic truth" if i == 0 else "", fontsize=8)
-                ax.set_ylabel(f"n = {n}", fontsize=8)
+                ax.set_title("analytic truth", fontsize=7)
                 continue
             r = uv.get((scene, c, n))
             path = os.path.join(images, f"{scene}_{c}_{n}x{n}.png")
             if r is None or not os.path.exists(path):
-                ax.set_axis_off()
                 continue
             ax.imshow(crop(plt.imread(path)[:, :, :3]), interpolation="nearest")
-            ax.set_title(f'{NAMES.get(c, c)}: mean {float(r["truth_mean"]):.2f}, '
-                         f'cov {r["truth_coverage_differs"]} px', fontsize=7)
-    fig.subplots_adjust(left=0.02, right=0.995, top=0.93, bottom=0.01, wspace=0.03, hspace=0.22)
+            ax.set_title(f'{NAMES.get(c, c)}\nmean {float(r["truth_mean"]):.2f}, '
+                         f'{r["truth_coverage_differs"]} px cov.', fontsize=7, linespacing=1.1)
     fig.savefig(out, dpi=dpi)
     plt.close(fig)
 
