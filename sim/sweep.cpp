@@ -299,7 +299,9 @@ Result evaluate(const SweepArgs& a, const std::vector<Axis>& axes, long long k) 
                                      cfg.depth.frac_bits == def.depth.frac_bits &&
                                      cfg.shade.frac_bits == def.shade.frac_bits &&
                                      cfg.normal.frac_bits == def.normal.frac_bits;
-      if (r.active_edges <= fmt::MaxActiveEdges && default_fractions) {
+      // The Verilated top is the default configuration's, edge_order 1: a whitted point's curved
+      // edges need an order-3 top, so its cycles stay the cycle model's.
+      if (r.active_edges <= fmt::MaxActiveEdges && default_fractions && cfg.edge_order == 1) {
         tb::RtlOptions ro;
         ro.sparse = !a.full_frame;
         // Its frame is prepared for the default configuration: the point's words wrap slopes to
