@@ -11,10 +11,13 @@
 // cost is that configuration's edge-record and line-buffer bits; a configuration Config::check()
 // or prepare() refuses leaves its message in the point's `error` and the sweep goes on.
 //
-// Each point: the scene text with its first object's "u", "v" scaled, built with the point's
-// shading (flat: Gouraud pipeline with one shade per polygon; gouraud-eq1 / -eq2: the depth channel
-// interpolates 1/Z (Gouraud's eq. 1) or Z (eq. 2); phong: the Phong pipeline), prepared, rendered
-// by the fixed-point model (WatkinsTop), the double reference and the analytic truth, compared.
+// Each point: the scene text with its first object's "u", "v" scaled (or set, --uv), built with the
+// point's shading (flat: Gouraud pipeline with one shade per polygon; gouraud-eq1 / -eq2: the depth
+// channel interpolates 1/Z (Gouraud's eq. 1) or Z (eq. 2); phong: the Phong pipeline; whitted: the
+// Phong pipeline with the patch objects drawn by Whitted's curved edges, the first one's k_u = u
+// and k_v = v subpatches per patch, so its cells are the polygons' at the same point), prepared,
+// rendered by the fixed-point model (WatkinsTop), the double reference and the analytic truth,
+// compared.
 #include "sweep.hpp"
 
 #include <CLI/CLI.hpp>
@@ -29,6 +32,7 @@
 #include <fstream>
 #include <mutex>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -69,8 +73,11 @@ std::string number(double v) {
 
 std::vector<Axis> make_axes(const SweepArgs& a) {
   std::vector<Axis> axes;
-  Axis scene{"scene", a.scenes}, shading{"shading", a.shadings}, tess{"tess", {}};
-  for (double f : a.tess) tess.values.push_back(number(f));
+  Axis scene{"scene", a.scenes}, shading{"shading", a.shadings}, tess{a.uv.empty() ? "tess" : "uv", {}};
+  if (a.uv.empty())
+    for (double f : a.tess) tess.values.push_back(number(f));
+  else
+    for (int n : a.uv) tess.values.push_back(std::to_string(n));
   axes.push_back(scene);
   axes.push_back(shading);
   axes.push_back(tess);
@@ -145,12 +152,15 @@ struct Result {
   std::vector<std::string> axis_values;
   int u = 0, v = 0;
   long long polygons = 0, edge_records = 0, active_edges = 0, fragments = 0;
+  int edge_order = 0, regions = 0;                  // regions: Whitted's (polygon ids after the polygons')
+  long long curve_edge_records = 0, curve_active_edges = 0;  // curved edge records; most active on a line
   int attr_frac = 0, x_frac = 0, depth_frac = 0;   // the point's fractions (also its axes)
   int attr_int = 0, x_int = 0, depth_int = 0;      // integer bits the scene needs at them (0: unknown)
   std::string attr_group;                          // shade or normal
   ErrorStats truth, double_truth, vs_double;  // model vs truth, double reference vs truth, model vs double
   double truth_mach = 0, double_truth_mach = 0, vs_double_mach = 0, image_mach = 0;
-  int truth_coverage_differs = 0, vs_double_visibility_differs = 0, vs_double_coverage_differs = 0;
+  int truth_coverage_differs = 0, double_truth_coverage_differs = 0;
+  int vs_double_visibility_differs = 0, vs_double_coverage_differs = 0;
   bool has_truth = false;
   long long cycles = -1;
   std::string cycles_source = "none";
@@ -160,19 +170,22 @@ struct Result {
   HardwareBits bits;
   double seconds = 0;
   std::string error;  // the point could not be rendered (the message); the row keeps its axes
+  std::vector<unsigned char> png, truth_png;  // with --images: the fixed-point image, the truth
 };
 
-// The scene text with the first "u" and "v" (the first tessellated object's) scaled by f: u >= 3
-// (a closed ring), v >= 1; a cross_vault's or portico's u rounded to the nearest even count, at
-// least 2 (the key of the vault is a vertex). Returns the values used.
-std::string retessellate(const std::string& text, const std::string& path, double f, int& u, int& v) {
+// The scene text with the first "u" and "v" (the first tessellated object's) scaled by f (set to
+// f when `absolute`): u >= 3 (a closed ring), v >= 1; a cross_vault's or portico's u rounded to the
+// nearest even count, at least 2 (the key of the vault is a vertex); a patch object's u >= 2 (its
+// grid is open). Returns the values used.
+std::string retessellate(const std::string& text, const std::string& path, double f, bool absolute, int& u,
+                         int& v) {
   std::string out = text;
   for (int axis = 0; axis < 2; ++axis) {
     const std::regex re(axis == 0 ? R"re("u"\s*:\s*(\d+))re" : R"re("v"\s*:\s*(\d+))re");
     std::smatch m;
     if (!std::regex_search(out, m, re))
       throw std::runtime_error(path + ": no tessellated object (\"u\", \"v\") to sweep");
-    const int n0 = std::stoi(m[1].str());
+    const double n0 = absolute ? 1.0 : std::stod(m[1].str());
     int n = std::max(axis == 0 ? 3 : 1, static_cast<int>(std::lround(n0 * f)));
     if (axis == 0) {
       // The object holding this "u": scene objects are flat (no nested objects), so it spans the
@@ -183,11 +196,35 @@ std::string retessellate(const std::string& text, const std::string& path, doubl
                                             close == std::string::npos ? std::string::npos : close - open);
       if (std::regex_search(object, std::regex(R"re("type"\s*:\s*"(cross_vault|portico)")re")))
         n = std::max(2, 2 * static_cast<int>(std::lround(n0 * f / 2)));
+      else if (std::regex_search(object, std::regex(R"re("type"\s*:\s*"(bezier_patch|patches)")re")))
+        n = std::max(2, static_cast<int>(std::lround(n0 * f)));  // a patch's grid is open: 2 segments suffice
     }
     (axis == 0 ? u : v) = n;
     out = m.prefix().str() + (axis == 0 ? "\"u\": " : "\"v\": ") + std::to_string(n) + m.suffix().str();
   }
   return out;
+}
+
+// The scene text with Whitted's interior edges of the first tessellated object (the one holding
+// the first "u") set to k_u = u and k_v = v equal parts: its existing "k_u", "k_v" replaced, or
+// both added before its "u". The caller draws the patch objects as curves.
+std::string with_subpatches(const std::string& text, int u, int v) {
+  std::smatch m;
+  if (!std::regex_search(text, m, std::regex(R"re("u"\s*:\s*\d+)re"))) return text;
+  const std::size_t at = std::size_t(m.position(0));
+  const std::size_t open = text.rfind('{', at), close = text.find('}', at);
+  const std::size_t begin = open == std::string::npos ? 0 : open;  // the object: flat, as in retessellate
+  const std::size_t end = close == std::string::npos ? text.size() : close;
+  std::string object = text.substr(begin, end - begin);
+  for (const char* key : {"k_u", "k_v"}) {
+    const std::regex re(std::string("\"") + key + R"re("\s*:\s*(\d+|\[[^\]]*\]))re");
+    const std::string value = "\"" + std::string(key) + "\": " + std::to_string(key[2] == 'u' ? u : v);
+    if (std::regex_search(object, re))
+      object = std::regex_replace(object, re, value);
+    else
+      object.insert(object.find(m.str()), value + ", ");  // before the object's "u"
+  }
+  return text.substr(0, begin) + object + text.substr(end);
 }
 
 std::mutex rtl_mutex;  // the SystemC bench is one per process
@@ -201,18 +238,22 @@ Result evaluate(const SweepArgs& a, const std::vector<Axis>& axes, long long k) 
   for (std::size_t i = 0; i < axes.size(); ++i) r.axis_values.push_back(axes[i].values[idx[i]]);
   const std::string& path = axes[0].values[idx[0]];
   const std::string& shading = axes[1].values[idx[1]];
-  const double f = a.tess.at(idx[2]);
+  const bool absolute = !a.uv.empty();
+  const double f = absolute ? a.uv.at(idx[2]) : a.tess.at(idx[2]);
   r.attr_frac = a.attr_frac.at(idx[3]);
   r.x_frac = a.x_frac.at(idx[4]);
   r.depth_frac = a.depth_frac.at(idx[5]);
-  r.attr_group = shading == "phong" ? "normal" : "shade";
+  const bool curves = shading == "whitted";
+  r.attr_group = shading == "phong" || curves ? "normal" : "shade";
   try {
     BuildOptions opt;
     opt.rule = parse_shading_rule(a.rule);
     opt.depth = shading == "gouraud-eq2" ? DepthMode::Z : DepthMode::InverseZ;
-    opt.shading = shading == "phong" ? ShadingMode::Phong : ShadingMode::Gouraud;
+    opt.shading = shading == "phong" || curves ? ShadingMode::Phong : ShadingMode::Gouraud;
     opt.flat = shading == "flat";
-    const std::string text = retessellate(read_scene_text(path), path, f, r.u, r.v);
+    opt.patches_as_curves = curves;  // the polygon shadings tessellate a scene's "draw": "curves" too
+    std::string text = retessellate(read_scene_text(path), path, f, absolute, r.u, r.v);
+    if (curves) text = with_subpatches(text, r.u, r.v);
     const BuiltScene scene =
         load_scene_text(text, path, std::filesystem::path(path).parent_path().string(), opt);
     PreparedScene prepared;
@@ -222,8 +263,13 @@ Result evaluate(const SweepArgs& a, const std::vector<Axis>& axes, long long k) 
     r.depth_int = cfg.depth.int_bits;
     r.attr_int = (scene.shading == ShadingMode::Phong ? cfg.normal : cfg.shade).int_bits;
     r.polygons = static_cast<long long>(scene.polygons.size());
+    r.regions = scene.curve_regions;
+    if (curves && scene.curves.empty()) throw std::runtime_error("whitted: the scene has no patch object to draw as curves");
+    r.edge_order = cfg.edge_order;
     r.edge_records = static_cast<long long>(prepared.edges.size());
     r.active_edges = prepared.needs.max_active_edges;
+    r.curve_edge_records = prepared.needs.curve_edges;
+    r.curve_active_edges = prepared.needs.max_curve_edges;
 
     WatkinsTop pipe(cfg);
     Image image = pipe.render(prepared);
@@ -236,6 +282,7 @@ Result evaluate(const SweepArgs& a, const std::vector<Axis>& axes, long long k) 
     r.vs_double_visibility_differs = counts.visibility_differs;
     r.vs_double_coverage_differs = counts.coverage_differs;
     r.image_mach = mach_band(image, image.owner);
+    if (!a.images.empty()) r.png = encode_png(image);
 
     // Cycles from the cycle model (model/twins/cycle_model.hpp, equal to Verilator's without
     // stalls); --rtl replaces them with the Verilated run's where the RTL holds the scene.
@@ -252,7 +299,9 @@ Result evaluate(const SweepArgs& a, const std::vector<Axis>& axes, long long k) 
                                      cfg.depth.frac_bits == def.depth.frac_bits &&
                                      cfg.shade.frac_bits == def.shade.frac_bits &&
                                      cfg.normal.frac_bits == def.normal.frac_bits;
-      if (r.active_edges <= fmt::MaxActiveEdges && default_fractions) {
+      // The Verilated top is the default configuration's, edge_order 1: a whitted point's curved
+      // edges need an order-3 top, so its cycles stay the cycle model's.
+      if (r.active_edges <= fmt::MaxActiveEdges && default_fractions && cfg.edge_order == 1) {
         tb::RtlOptions ro;
         ro.sparse = !a.full_frame;
         // Its frame is prepared for the default configuration: the point's words wrap slopes to
@@ -279,6 +328,8 @@ Result evaluate(const SweepArgs& a, const std::vector<Axis>& axes, long long k) 
       r.truth_coverage_differs = compare_images(mine, truth.image).coverage_differs;
       r.double_truth = error_stats(ref, truth.image);
       r.double_truth_mach = mach_band(ref, reference.owner, &truth.image);
+      r.double_truth_coverage_differs = compare_images(ref, truth.image).coverage_differs;
+      if (!a.images.empty()) r.truth_png = encode_png(truth.image);
     }
   } catch (const std::exception& e) {
     r.error = e.what();
@@ -306,6 +357,7 @@ std::string csv_text(const std::vector<Axis>& axes, const std::vector<Result>& r
          ",double_truth_max,double_truth_mean,double_truth_rmse,double_truth_psnr,double_truth_mach"
          ",double_max,double_mean,double_rmse,double_psnr,double_mach,double_visibility_differs,double_coverage_differs"
          ",image_mach,cycles,cycles_source,rtl_mismatches,edge_record_bits,line_buffer_bits,active_list_bits"
+         ",edge_order,regions,curve_edge_records,curve_active_edges,double_truth_coverage_differs"
          ",seconds,error\n";
   for (const Result& r : rows) {
     out << r.point;
@@ -339,8 +391,13 @@ std::string csv_text(const std::vector<Axis>& axes, const std::vector<Result>& r
         << (r.rtl_mismatches >= 0 ? std::to_string(r.rtl_mismatches) : "") << ','
         << (r.bits.edge_record > 0 ? std::to_string(r.bits.edge_record) : "") << ','
         << (r.bits.line_buffer > 0 ? std::to_string(r.bits.line_buffer) : "") << ','
-        << (ok && r.bits.edge_record > 0 ? std::to_string(r.active_edges * r.bits.edge_record) : "") << ','
-        << fixed(r.seconds, 3) << ",\"";
+        << (ok && r.bits.edge_record > 0 ? std::to_string(r.active_edges * r.bits.edge_record) : "") << ',';
+    if (ok && r.edge_order > 0)
+      out << r.edge_order << ',' << r.regions << ',' << r.curve_edge_records << ',' << r.curve_active_edges << ',';
+    else
+      out << ",,,,";
+    out << (ok && r.has_truth ? std::to_string(r.double_truth_coverage_differs) : "") << ',' << fixed(r.seconds, 3)
+        << ",\"";
     for (char c : r.error) out << (c == '"' ? '\'' : c == '\n' ? ' ' : c);
     out << "\"\n";
   }
@@ -349,8 +406,8 @@ std::string csv_text(const std::vector<Axis>& axes, const std::vector<Result>& r
 
 std::string markdown_text(const std::vector<Result>& rows) {
   std::ostringstream out;
-  out << "| scene | shading | u×v | polygons | active edges | cycles | vs truth max / mean | RMSE | PSNR dB | "
-         "Mach | double vs truth max / mean | vs double max / mean | edge record / line buffer bits | "
+  out << "| scene | shading | u×v | polygons | active edges | cycles | vs truth max / mean / coverage px | RMSE | "
+         "PSNR dB | Mach | double vs truth max / mean | vs double max / mean | edge record / line buffer bits | "
          "frac x / depth / attr | int x / depth / attr |\n"
          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Result& r : rows) {
@@ -361,12 +418,16 @@ std::string markdown_text(const std::vector<Result>& rows) {
           << " | |\n";
       continue;
     }
-    out << r.polygons << " | " << r.active_edges << " | "
+    // Whitted's points: regions instead of polygons, and the curved ones among the active edges.
+    out << (r.regions > 0 ? std::to_string(r.regions) + " regions" : std::to_string(r.polygons)) << " | "
+        << r.active_edges << (r.curve_active_edges > 0 ? " (" + std::to_string(r.curve_active_edges) + " curved)" : "")
+        << " | "
         << (r.cycles < 0 ? std::string("—")
             : std::to_string(r.cycles) + (r.cycles_source.rfind("predicted", 0) == 0 ? " (predicted)" : ""))
         << " | ";
     if (r.has_truth)
-      out << r.truth.max_abs << " / " << fixed(r.truth.mean_abs, 2) << " | " << fixed(r.truth.rmse, 2) << " | "
+      out << r.truth.max_abs << " / " << fixed(r.truth.mean_abs, 2) << " / " << r.truth_coverage_differs << " | "
+          << fixed(r.truth.rmse, 2) << " | "
           << fixed(r.truth.psnr, 1) << " | " << fixed(r.truth_mach, 1) << " | " << r.double_truth.max_abs << " / "
           << fixed(r.double_truth.mean_abs, 2) << " | ";
     else
@@ -417,14 +478,19 @@ CLI::App* add_sweep_command(CLI::App& app, SweepArgs& a) {
   auto* s = app.add_subcommand(
       "sweep", "error against cost over scenes x shading x tessellation x fraction bits (CSV, markdown)");
   s->add_option("scenes", a.scenes, "scene files (JSON); default: scenes/sphere.json scenes/cone.json");
-  s->add_option("--shadings", a.shadings, "flat, gouraud-eq1 (depth 1/Z), gouraud-eq2 (depth Z), phong")
+  s->add_option("--shadings", a.shadings,
+                "flat, gouraud-eq1 (depth 1/Z), gouraud-eq2 (depth Z), phong, whitted (patches by curved edges, "
+                "k_u = u, k_v = v subpatches, Phong)")
       ->delimiter(',')
-      ->check(CLI::IsMember({"flat", "gouraud-eq1", "gouraud-eq2", "phong"}))
+      ->check(CLI::IsMember({"flat", "gouraud-eq1", "gouraud-eq2", "phong", "whitted"}))
       ->capture_default_str();
   s->add_option("--tess", a.tess, "factors on the first object's u and v (u >= 3, v >= 1; a vault's u rounded to even)")
       ->delimiter(',')
       ->check(CLI::Range(0.01, 64.0))
       ->capture_default_str();
+  s->add_option("--uv", a.uv, "instead of --tess: u = v = n on the first object (axis uv; a vault's u rounded to even)")
+      ->delimiter(',')
+      ->check(CLI::Range(1, 1024));
   s->add_option("--frac-bits", a.attr_frac,
                 "fraction bits of the shading's attribute group: shade (flat, Gouraud) or normal (Phong)")
       ->delimiter(',')
@@ -447,6 +513,8 @@ CLI::App* add_sweep_command(CLI::App& app, SweepArgs& a) {
   s->add_flag("--rtl", a.rtl, "cycles per frame from the Verilated RTL (points within its active-edge list)");
   s->add_flag("--full-frame", a.full_frame, "with --rtl: full-frame output instead of sparse");
   s->add_flag("--quiet,-q", a.quiet, "no progress bar");
+  s->add_option("--images", a.images,
+                "folder for PNGs: SCENE_SHADING_UxV.png (the fixed-point image) per point, SCENE_truth.png per scene");
   return s;
 }
 
@@ -485,6 +553,20 @@ int run_sweep(const SweepArgs& in) {
   OutputFiles files;  // both or neither, each complete (image_io.hpp)
   files.add(a.csv, csv_text(axes, rows));
   if (!a.md.empty()) files.add(a.md, markdown_text(rows));
+  if (!a.images.empty()) {
+    std::filesystem::create_directories(a.images);
+    const bool one_format = a.attr_frac.size() == 1 && a.x_frac.size() == 1 && a.depth_frac.size() == 1;
+    std::set<std::string> truths;
+    for (Result& r : rows) {
+      const std::string stem = std::filesystem::path(r.axis_values[0]).stem().string();
+      std::string name = stem + "_" + r.axis_values[1] + "_" + std::to_string(r.u) + "x" + std::to_string(r.v);
+      if (!one_format)
+        name += "_f" + std::to_string(r.attr_frac) + "-" + std::to_string(r.x_frac) + "-" + std::to_string(r.depth_frac);
+      if (!r.png.empty()) files.add(a.images + "/" + name + ".png", std::move(r.png));
+      if (!r.truth_png.empty() && truths.insert(stem).second)
+        files.add(a.images + "/" + stem + "_truth.png", std::move(r.truth_png));
+    }
+  }
   files.commit();
   int failed = 0, rtl_bad = 0;
   for (const Result& r : rows) {

@@ -15,8 +15,11 @@ namespace watkins::sweep {
 
 struct SweepArgs {
   std::vector<std::string> scenes;  // scene files; default: the sphere and the cone
+  // whitted: the patch objects drawn by Whitted's curved edges (Phong pipeline, edge_order 3).
   std::vector<std::string> shadings{"flat", "gouraud-eq1", "gouraud-eq2", "phong"};
   std::vector<double> tess{0.5, 1, 2, 4};  // factors on the first object's u and v
+  // Instead of factors: u = v = n on the first object (axis "uv"), the same cells in every scene.
+  std::vector<int> uv;
   // Fraction bits per channel group (axes attr_frac, x_frac, depth_frac). attr_frac is the
   // shading's attribute group: shade (R G B) for flat and Gouraud, normal (Nx Ny Nz) for Phong.
   // Integer bits are not an axis: each point gets exactly the ones its scene needs at its
@@ -30,6 +33,7 @@ struct SweepArgs {
   bool rtl = false;             // cycles from the Verilated RTL (sparse output unless full_frame)
   bool full_frame = false;
   bool quiet = false;           // no progress bar
+  std::string images;           // a folder: each point's fixed-point image and each scene's truth (PNG)
 };
 
 // Registers `watkins sweep` and its options on `app`; returns the subcommand.
