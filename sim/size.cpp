@@ -1,5 +1,5 @@
-// watkins size SCENE [--bound L] [--shading S] [--out F]: the smallest configuration whose
-// fixed-point image stays within L levels of the double reference (issue 9, part 2).
+// watkins size SCENE [--bound L] [--shading S] [--patches curves|polygons] [--out F]: the smallest
+// configuration whose fixed-point image stays within L levels of the double reference (issue 9, part 2).
 //
 // The criterion, per pixel, against the double reference of the same algorithm:
 //  * where the image and the reference show the same polygon, |Δ| ≤ max(L, Δ_default): the default
@@ -239,6 +239,9 @@ CLI::App* add_size_command(CLI::App& app, SizeArgs& a) {
       ->capture_default_str();
   s->add_option("--shading", a.shading, "gouraud or phong; overrides the scene's shading.mode");
   s->add_option("--out,-o", a.out, "configuration file to write (default: <scene>.config.json)");
+  s->add_option("--patches", a.patches, "patch objects drawn as curves (Whitted's edges; sized at edge_order 3) or "
+                                        "polygons; overrides each object's \"draw\"")
+      ->check(CLI::IsMember({"curves", "polygons"}));
   return s;
 }
 
@@ -249,6 +252,7 @@ int run_size(const SizeArgs& a) {
     opt.shading = parse_shading_mode(a.shading);
     if (!opt.shading) throw UsageError("--shading: unknown shading mode \"" + a.shading + "\" (gouraud, phong)");
   }
+  if (!a.patches.empty()) opt.patches_as_curves = a.patches == "curves";
   const auto t0 = std::chrono::steady_clock::now();
   const BuiltScene scene = load_scene_or_default(a.scene, opt);
   const ShadingMode shading = scene.shading;
