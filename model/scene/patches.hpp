@@ -40,5 +40,4 @@ glm::dvec3 patch_normal(const BicubicPatch& cp, double s, double t);
 std::vector<BicubicPatch> bspline_patches(const std::vector<glm::dvec3>& net, int rows, int cols, bool closed_u,
                                           bool closed_v);
 
-
 }  // namespace watkins

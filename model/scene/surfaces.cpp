@@ -225,10 +225,10 @@ class BoundaryWeld {
 
 // Bicubic patches ("bezier_patch", "patches"): each a grid over s, t in [0, 1] of o.u x o.v
 // segments (Whitted's interior edges k_u, k_v are the curves' only: a scene that sets them for
-// drawing by curves keeps its polygons, and `u`, `v` stay the polygon cells), exact normals (patch_normal: the
-// limit from inside at a collapsed boundary). Rows top first, left to right as seen from the
-// front, give a patch facing the viewer (left-handed world). A grid element with a collapsed
-// side (at a pole) becomes a triangle.
+// drawing by curves keeps its polygons, and u, v stay the polygon cells), exact normals
+// (patch_normal: the limit from inside at a collapsed boundary). Rows top first, left to right as
+// seen from the front, give a patch facing the viewer (left-handed world). A grid element with a
+// collapsed side (at a pole) becomes a triangle.
 IndexedMesh bezier_patches(const SceneObject& o) {
   IndexedMesh m;
   auto grid_lines = [](int segments) {
