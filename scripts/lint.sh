@@ -29,10 +29,11 @@ verilator --lint-only -Wall "${INC[@]}" --top-module watkins_top -GPhong=1 "${VL
 # one (docs/size/default.*.json: depth without fraction bits, X narrower than the screen index)
 # and an odd one (X at the 1/16-pixel minimum, 3-bit depth word, normals finer than the
 # normalizer reads), each in both shading modes; and the curved-edge top (EdgeOrder 3,
-# tests/configs/curved.phong.json's formats).
+# docs/size/patches.curves.phong.json's formats; 68 active edges: active_edge_list's insertion loop
+# must be unrolled (Verilator BLKLOOPINIT), which it does up to --unroll-count iterations, 64 by default).
 CONFIGS=("-GMaxActiveEdges=36 -GMaxWidth=320 -GXIntBits=9 -GXFracBits=15 -GDepthIntBits=6 -GDepthFracBits=0 -GAttrIntBits=9 -GAttrFracBits=6 -GDepthBits=5 -GPolyIdBits=7 -GMaterialIdBits=1 -GEdgeIdBits=9"
          "-GMaxActiveEdges=5 -GMaxWidth=100 -GXIntBits=8 -GXFracBits=4 -GDepthIntBits=2 -GDepthFracBits=1 -GAttrIntBits=1 -GAttrFracBits=18 -GDepthBits=16 -GPolyIdBits=1 -GMaterialIdBits=3 -GEdgeIdBits=3"
-         "-GMaxActiveEdges=16 -GMaxWidth=256 -GXIntBits=10 -GXFracBits=16 -GDepthIntBits=18 -GDepthFracBits=8 -GAttrIntBits=2 -GAttrFracBits=16 -GDepthBits=16 -GPolyIdBits=4 -GMaterialIdBits=3 -GEdgeIdBits=12 -GEdgeOrder=3")
+         "-GMaxActiveEdges=68 -GMaxWidth=320 -GXIntBits=10 -GXFracBits=16 -GDepthIntBits=23 -GDepthFracBits=8 -GAttrIntBits=2 -GAttrFracBits=16 -GDepthBits=22 -GPolyIdBits=9 -GMaterialIdBits=3 -GEdgeIdBits=12 -GEdgeOrder=3 --unroll-count 68")
 for cfg in "${CONFIGS[@]}"; do
   for phong in 0 1; do
     # shellcheck disable=SC2086

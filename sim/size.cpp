@@ -1,5 +1,5 @@
-// watkins size SCENE [--bound L] [--shading S] [--out F]: the smallest configuration whose
-// fixed-point image stays within L levels of the double reference (issue 9, part 2).
+// watkins size SCENE [--bound L] [--shading S] [--patches curves|polygons] [--out F]: the smallest
+// configuration whose fixed-point image stays within L levels of the double reference (issue 9, part 2).
 //
 // The criterion, per pixel, against the double reference of the same algorithm:
 //  * where the image and the reference show the same polygon, |Δ| ≤ max(L, Δ_default): the default
@@ -76,8 +76,10 @@ class Judge {
  public:
   Judge(const BuiltScene& scene, int bound) : scene_(scene), bound_(bound) {
     reference_ = render_float_reference(scene_);
-    Config def;
-    def.max_active_edges = 1 << 30;  // the default formats; the list need not limit the baseline
+    // The default formats (at edge_order 3 when the scene has curves); the list need not limit
+    // the baseline.
+    Config def = with_scene_edge_order(scene_, Config{});
+    def.max_active_edges = 1 << 30;
     const PreparedScene prepared = prepare(scene_, def);
     WatkinsTop top(def);
     const Image img = top.render(prepared);
@@ -163,7 +165,8 @@ class Judge {
     c.max_width = scene_.width;
     // Gouraud frames carry material id 0 on every edge: one table entry (the id's 1-bit minimum).
     c.max_materials = scene_.shading == ShadingMode::Phong ? std::max<int>(1, scene_.materials.size()) : 1;
-    c.max_polygons = std::max<int>(1, scene_.polygons.size());
+    // Polygon ids: the polygons', then one per region of Whitted's curves (prepare_curves).
+    c.max_polygons = std::max<int>(1, scene_.polygons.size() + std::max(0, scene_.curve_regions));
     c.max_edges = std::max<int>(1, probe.edges.size());
     if (const std::string e = c.check(); !e.empty()) throw SceneError(e);
     return c;
@@ -239,6 +242,9 @@ CLI::App* add_size_command(CLI::App& app, SizeArgs& a) {
       ->capture_default_str();
   s->add_option("--shading", a.shading, "gouraud or phong; overrides the scene's shading.mode");
   s->add_option("--out,-o", a.out, "configuration file to write (default: <scene>.config.json)");
+  s->add_option("--patches", a.patches, "patch objects drawn as curves (Whitted's edges; sized at edge_order 3) or "
+                                        "polygons; overrides each object's \"draw\"")
+      ->check(CLI::IsMember({"curves", "polygons"}));
   return s;
 }
 
@@ -249,6 +255,7 @@ int run_size(const SizeArgs& a) {
     opt.shading = parse_shading_mode(a.shading);
     if (!opt.shading) throw UsageError("--shading: unknown shading mode \"" + a.shading + "\" (gouraud, phong)");
   }
+  if (!a.patches.empty()) opt.patches_as_curves = a.patches == "curves";
   const auto t0 = std::chrono::steady_clock::now();
   const BuiltScene scene = load_scene_or_default(a.scene, opt);
   const ShadingMode shading = scene.shading;
@@ -305,7 +312,7 @@ int run_size(const SizeArgs& a) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   const Config& c = chosen.cfg;
-  const Config def;
+  const Config def = with_scene_edge_order(scene, Config{});
   const ImageError& b = judge.baseline();
   std::printf("scene         %s  %dx%d  shading %s, %zu polygons\n", scene.name.c_str(), scene.width, scene.height,
               to_string(shading), scene.polygons.size());

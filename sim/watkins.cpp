@@ -7,7 +7,7 @@
 //                  (sim/sweep.cpp)
 //   watkins synth [--config F ...] [--designs D,...] [--targets T,...] [--md F] [--csv F] [--jobs N]
 //                  (sim/synth.cpp)
-//   watkins size [SCENE] [--bound L] [--shading S] [--out F]   (sim/size.cpp)
+//   watkins size [SCENE] [--bound L] [--shading S] [--patches P] [--out F]   (sim/size.cpp)
 //   watkins export-stl SCENE --out F [--ascii]   (model/scene/stl_export.hpp)
 #include <CLI/CLI.hpp>
 

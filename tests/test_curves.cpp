@@ -35,7 +35,7 @@ BuiltScene patch_scene(int n, bool curves, bool cull = false) {
   std::string ks;
   for (int k = 1; k < n; ++k) ks += (k > 1 ? ", " : "") + std::to_string(double(k) / n);
   std::string text = patch_text();
-  const std::string uv = "\"u\": 16, \"v\": 16";
+  const std::string uv = "\"u\": 16, \"v\": 16, \"k_u\": 8, \"k_v\": 8";  // as shipped
   const std::size_t at = text.find(uv);
   EXPECT_NE(at, std::string::npos);
   text.replace(at, uv.size(), "\"u\": " + std::to_string(n) + ", \"v\": " + std::to_string(n) + ", \"k_u\": [" + ks +
@@ -291,8 +291,10 @@ TEST(Curves, SceneKeys) {
   const BuiltScene base = load_scene_text(text, "p", ".");
   EXPECT_TRUE(base.curves.empty());
   EXPECT_EQ(base.polygons.size(), 256u);
-  auto with = [&](const std::string& keys) {
+  auto with = [&](const std::string& keys) {  // in place of the shipped interior edges
     std::string t = text;
+    const std::string shipped = "\"k_u\": 8, \"k_v\": 8, ";
+    t.erase(t.find(shipped), shipped.size());
     const std::size_t at = t.find("\"u\": 16");
     t.insert(at, keys + ", ");
     return t;
@@ -359,15 +361,12 @@ TEST(Curves, FixedPointNewtonAgainstTheDouble) {
   EXPECT_EQ(FixedNewtonError::multipliers, 21);
 }
 
-// A patches object (Newell's teapot, 32 Bezier patches, culling on) drawn by curves with 4 x 4
-// subpatches per patch against its 4 x 4 tessellation, Phong. Measured: curves mean 2.23 levels,
-// 9 pixels of changed coverage; polygons 4.83, 377. Every region still pairs on every line.
+// A patches object (Newell's teapot as shipped: 32 Bezier patches, culling on) drawn by curves
+// with its 4 x 4 subpatches per patch (k_u, k_v) against its 4 x 4 tessellation, Phong. Measured:
+// curves mean 2.23 levels, 9 pixels of changed coverage; polygons 4.83, 377. Every region still
+// pairs on every line.
 TEST(Curves, TeapotByCurves) {
-  std::string text = read_scene_text(std::string(WATKINS_SOURCE_DIR) + "/scenes/teapot.json");
-  const std::string uv = "\"u\": 4, \"v\": 4,";
-  const std::size_t at = text.find(uv);
-  ASSERT_NE(at, std::string::npos);
-  text.insert(at + uv.size(), " \"k_u\": 4, \"k_v\": 4,");
+  const std::string text = read_scene_text(std::string(WATKINS_SOURCE_DIR) + "/scenes/teapot.json");
   BuildOptions o;
   o.shading = ShadingMode::Phong;
   o.patches_as_curves = true;
@@ -411,3 +410,28 @@ TEST(Curves, CliPatchesOption) {
   EXPECT_NE(r.output.find("newton        "), std::string::npos) << r.output;
   EXPECT_NE(watkins::test::run_cli("render " + scene + " --patches lines --out " + folder + "/d.png").exit_code, 0);
 }
+
+namespace {
+
+// Curves are not clipped: a patch drawn by curves that reaches in front of the near plane is
+// refused, the message naming the scene, the object and its field (drawn as polygons it is clipped).
+TEST(Curves, NearPlaneRefusalNamesTheObject) {
+  std::string text = patch_text();
+  const std::string at = "\"translate\": [0, 0, 4.5]";
+  ASSERT_NE(text.find(at), std::string::npos);
+  text.replace(text.find(at), at.size(), "\"translate\": [0, 0, 1.2]");
+  BuildOptions o;
+  o.patches_as_curves = true;
+  try {
+    load_scene_text(text, "near.json", ".", o);
+    FAIL() << "a patch through the near plane was drawn by curves";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("objects[0].draw: the patch reaches outside the camera's [near, far)"),
+              std::string::npos)
+        << e.what();
+  }
+  o.patches_as_curves = false;
+  EXPECT_GT(load_scene_text(text, "near.json", ".", o).near_clipped, 0);
+}
+
+}  // namespace

@@ -267,17 +267,16 @@ TEST(Patches, TruthAgreesWithAFineTessellation) {
   }
 }
 
-// k_u, k_v: a count of equal parts or a list of parameters; stored on the object, and grid lines
-// of the tessellation (a line already on the u x v grid is not doubled).
-TEST(Patches, InteriorEdgesParseAndBecomeGridLines) {
+// k_u, k_v: a count of equal parts or a list of parameters; stored on the object, and not grid
+// lines of the tessellation (they are Whitted's interior edges, for drawing by curves).
+TEST(Patches, InteriorEdgesParseAndLeaveTheTessellation) {
   const std::string cps = kFlat16;
   const Scene a = parse(R"({"type": "bezier_patch", "u": 4, "v": 2, "k_u": 3, "k_v": [0.25, 0.5], "control_points": )" + cps + "}");
   const SceneObject& o = a.objects[0];
   EXPECT_EQ(o.k_u, (std::vector<double>{1.0 / 3, 2.0 / 3}));
   EXPECT_EQ(o.k_v, (std::vector<double>{0.25, 0.5}));
-  // s lines {0, 1/4, 1/3, 1/2, 2/3, 3/4, 1}: 6 segments; t lines {0, 1/4, 1/2, 1}: 3 segments.
-  EXPECT_EQ(patch_grid_lines(o.u, o.k_u).size(), 7u);
-  EXPECT_EQ(tessellate_surface(o).faces.size(), std::size_t(6 * 3));
+  // Whitted's interior edges are the curves' only: the tessellation is the u x v grid.
+  EXPECT_EQ(tessellate_surface(o).faces.size(), std::size_t(4 * 2));
   const Scene b = parse(R"({"type": "patches", "basis": "bezier", "k_u": 1, "patches": [)" + cps + "]}");
   EXPECT_TRUE(b.objects[0].k_u.empty());
   EXPECT_TRUE(b.objects[0].k_v.empty());

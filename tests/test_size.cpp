@@ -186,6 +186,41 @@ TEST_F(Size, ShippedConfigurationsAreCurrent) {
     }
 }
 
+// docs/size/patches.curves.phong.json is one configuration for the shipped patch scenes drawn by
+// curves: every key at least what `watkins size --patches curves` finds for each (edge_order 3,
+// the curve regions counted as polygon ids), so each prepares at it.
+TEST_F(Size, CurvesConfigurationCoversTheShippedPatchScenes) {
+  const Config cover = load_config(WATKINS_SOURCE_DIR "/docs/size/patches.curves.phong.json");
+  ASSERT_EQ(cover.edge_order, 3);
+  for (const char* scene : {"patch", "bspline", "teapot"}) {
+    SCOPED_TRACE(scene);
+    const std::string out = dir_ + "/" + scene + ".curves.phong.json";
+    const CliRun r = run(std::string("size " WATKINS_SOURCE_DIR "/scenes/") + scene +
+                         ".json --shading phong --patches curves --out " + out);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const Config c = load_config(out);
+    EXPECT_EQ(c.edge_order, 3);
+    for (const auto& [have, need] : {std::pair{cover.x, c.x}, std::pair{cover.depth, c.depth},
+                                     std::pair{cover.normal, c.normal}}) {
+      EXPECT_GE(have.int_bits, need.int_bits);
+      EXPECT_GE(have.frac_bits, need.frac_bits);
+    }
+    for (const auto& [have, need] : {std::pair{cover.depth_bits, c.depth_bits},
+                                     std::pair{cover.max_active_edges, c.max_active_edges},
+                                     std::pair{cover.max_width, c.max_width},
+                                     std::pair{cover.max_materials, c.max_materials},
+                                     std::pair{cover.max_polygons, c.max_polygons},
+                                     std::pair{cover.max_edges, c.max_edges}})
+      EXPECT_GE(have, need);
+    BuildOptions opt;
+    opt.shading = ShadingMode::Phong;
+    opt.patches_as_curves = true;
+    const BuiltScene built = load_scene(WATKINS_SOURCE_DIR "/scenes/" + std::string(scene) + ".json", opt);
+    EXPECT_EQ(c.max_polygons, static_cast<int>(built.curve_regions));
+    EXPECT_NO_THROW(prepare(built, cover));
+  }
+}
+
 TEST_F(Size, BadInputIsOneLineAndWritesNothing) {
   const std::string out = dir_ + "/bad.json";
   struct Bad {

@@ -124,13 +124,4 @@ std::vector<BicubicPatch> bspline_patches(const std::vector<glm::dvec3>& net, in
   return out;
 }
 
-std::vector<double> patch_grid_lines(int segments, const std::vector<double>& k) {
-  std::vector<double> lines;
-  for (int i = 0; i <= segments; ++i) lines.push_back(static_cast<double>(i) / segments);
-  for (double x : k)
-    if (std::find(lines.begin(), lines.end(), x) == lines.end()) lines.push_back(x);
-  std::sort(lines.begin(), lines.end());
-  return lines;
-}
-
 }  // namespace watkins

@@ -40,8 +40,4 @@ glm::dvec3 patch_normal(const BicubicPatch& cp, double s, double t);
 std::vector<BicubicPatch> bspline_patches(const std::vector<glm::dvec3>& net, int rows, int cols, bool closed_u,
                                           bool closed_v);
 
-// The parameter lines of a patch along one direction: i / segments for i = 0..segments and the
-// interior edges `k` (ascending, in (0, 1)) merged in, each once.
-std::vector<double> patch_grid_lines(int segments, const std::vector<double>& k);
-
 }  // namespace watkins

@@ -87,7 +87,7 @@ struct SceneObject {
   // of the object in Bezier form, object space, before the object's transform.
   std::vector<BicubicPatch> patches;
   // Whitted's interior edges of every patch: f(k, t) for k in k_u, f(s, k) for k in k_v; ascending,
-  // in (0, 1). The tessellation makes them grid lines too.
+  // in (0, 1). Used only when drawn by curves: the tessellation is the u x v grid.
   // "draw": "curves" draws the patches by Whitted's edge description (model/curves) instead of
   // polygons, with k_u, k_v as his interior edges (subpatches).
   bool draw_curves = false;

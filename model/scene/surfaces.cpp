@@ -224,13 +224,19 @@ class BoundaryWeld {
 };
 
 // Bicubic patches ("bezier_patch", "patches"): each a grid over s, t in [0, 1] of o.u x o.v
-// segments with the interior edges k_u, k_v as grid lines too, exact normals (patch_normal: the
-// limit from inside at a collapsed boundary). Rows top first, left to right as seen from the
-// front, give a patch facing the viewer (left-handed world). A grid element with a collapsed
-// side (at a pole) becomes a triangle.
+// segments (Whitted's interior edges k_u, k_v are the curves' only: a scene that sets them for
+// drawing by curves keeps its polygons, and u, v stay the polygon cells), exact normals
+// (patch_normal: the limit from inside at a collapsed boundary). Rows top first, left to right as
+// seen from the front, give a patch facing the viewer (left-handed world). A grid element with a
+// collapsed side (at a pole) becomes a triangle.
 IndexedMesh bezier_patches(const SceneObject& o) {
   IndexedMesh m;
-  const std::vector<double> su = patch_grid_lines(o.u, o.k_u), tv = patch_grid_lines(o.v, o.k_v);
+  auto grid_lines = [](int segments) {
+    std::vector<double> lines;
+    for (int i = 0; i <= segments; ++i) lines.push_back(static_cast<double>(i) / segments);
+    return lines;
+  };
+  const std::vector<double> su = grid_lines(o.u), tv = grid_lines(o.v);
   const std::size_t cu = su.size(), cv = tv.size();
   glm::dvec3 lo(INFINITY), hi(-INFINITY);
   for (const BicubicPatch& cp : o.patches)
@@ -583,7 +589,7 @@ std::size_t estimated_faces(const SceneObject& o) {
     case ObjectType::Portico: return std::size_t(o.bays) * bay + 2 * std::size_t(o.bays + 1) * box_faces;
     case ObjectType::Cone: return u * (v + std::size_t(o.cap_rings)) * split;
     case ObjectType::BezierPatch:
-    case ObjectType::Patches: return o.patches.size() * (u + o.k_u.size()) * (v + o.k_v.size()) * split;
+    case ObjectType::Patches: return o.patches.size() * u * v * split;
     default: return u * (v + 1) * split;  // a u x v grid (a sphere's poles, a torus' ring)
   }
 }

@@ -17,6 +17,8 @@
 #include "cosim_support.hpp"
 #include "curve_scenes.hpp"
 #include "cycle_model.hpp"
+#include "float_reference.hpp"
+#include "image_io.hpp"
 #include "prepare.hpp"
 #include "random_scene.hpp"
 #include "rtl_bench.hpp"
@@ -86,11 +88,14 @@ void expect_clean_frames(const std::string& what, const std::vector<const Prepar
   }
 }
 
-// docs/size/*.json file names, sorted.
+// docs/size/<scene>.<shading>.json file names, sorted; the curves configuration (one for several
+// scenes, patches.curves.phong.json) has tests of its own below.
 std::vector<std::string> sized_configs() {
   std::vector<std::string> v;
-  for (const auto& e : std::filesystem::directory_iterator(WATKINS_SOURCE_DIR "/docs/size"))
-    if (e.path().extension() == ".json") v.push_back(e.path().filename().string());
+  for (const auto& e : std::filesystem::directory_iterator(WATKINS_SOURCE_DIR "/docs/size")) {
+    const std::string name = e.path().filename().string();
+    if (e.path().extension() == ".json" && name.find(".curves.") == std::string::npos) v.push_back(name);
+  }
   std::sort(v.begin(), v.end());
   if (v.empty()) v.push_back("<none>");
   return v;
@@ -167,11 +172,15 @@ INSTANTIATE_TEST_SUITE_P(Configs, RandomAtConfig,
                                   (i.param.phong ? "_phong" : "_gouraud");
                          });
 
-// Whitted's curved edges on the forward-difference top (tests/configs/curved.phong.json, EdgeOrder
-// 3): the synthetic curve scene (a disc, a sine-like band, a steep curve over a triangle) and
-// random scenes of straight edges (d2 = d3 = 0) on the same top, back to back.
+// The order-3 Phong configuration of Whitted's curves: the shipped patch scenes drawn by curves
+// and the synthetic curve scene, one Verilated top for all.
+constexpr const char* CurvesConfig = "docs/size/patches.curves.phong.json";
+
+// Whitted's curved edges on the forward-difference top (EdgeOrder 3): the synthetic curve scene
+// (a disc, a sine-like band, a steep curve over a triangle) and random scenes of straight edges
+// (d2 = d3 = 0) on the same top, back to back.
 TEST(CosimConfigs, CurvedEdgesOnTheCubicTop) {
-  const std::string file = "tests/configs/curved.phong.json";
+  const std::string file = CurvesConfig;
   const Config cfg = load_config(WATKINS_SOURCE_DIR "/" + file);
   ASSERT_EQ(cfg.edge_order, 3);
   const PreparedScene curves = prepare(curve_scene(ShadingMode::Phong), cfg);
@@ -184,6 +193,44 @@ TEST(CosimConfigs, CurvedEdgesOnTheCubicTop) {
   ptrs.push_back(&curves);
   expect_clean_frames(file + " curve scene", ptrs);
   expect_predicted(file + " curve scene", ptrs);
+}
+
+// The shipped patch scenes drawn by Whitted's curves (`watkins render --patches curves`, each with
+// its k_u, k_v interior edges), Phong, on the order-3 top: back to back under gaps and stalls,
+// every pixel and stage stream the model's, the cycle model's cycles the RTL's. Each frame also
+// covers what the double reference does, but for a few pixels at the curved silhouettes.
+TEST(CosimConfigs, ShippedPatchScenesByCurves) {
+  const std::string file = CurvesConfig;
+  const Config cfg = load_config(WATKINS_SOURCE_DIR "/" + file);
+  ASSERT_EQ(cfg.edge_order, 3);
+  BuildOptions opt = shading_options(ShadingMode::Phong);
+  opt.patches_as_curves = true;
+  struct Shipped {
+    const char* scene;
+    int most_curved_edges;  // on one scan line, at the scene's k_u, k_v
+  };
+  std::vector<PreparedScene> frames;
+  for (const Shipped& s : {Shipped{"patch", 28}, Shipped{"bspline", 54}, Shipped{"teapot", 68}}) {
+    const BuiltScene scene = load_scene(WATKINS_SOURCE_DIR "/scenes/" + std::string(s.scene) + ".json", opt);
+    ASSERT_TRUE(scene.polygons.empty()) << s.scene << ": every patch drawn by curves";
+    frames.push_back(prepare(scene, cfg));
+    const PreparedScene& p = frames.back();
+    EXPECT_EQ(p.needs.max_curve_edges, s.most_curved_edges) << s.scene;
+    EXPECT_EQ(p.needs.curve_edges, static_cast<int>(p.edges.size())) << s.scene << ": every edge a curve's";
+    const Image model = WatkinsTop(cfg).render(p);
+    const Image reference = render_float_reference(scene);
+    EXPECT_GT(std::count(model.covered.begin(), model.covered.end(), 1), 10000) << s.scene;
+    // Measured: coverage 0, 1, 1 pixels; another region visible at 1, 1, 6; max |d| 1, 1, 4 levels.
+    const ImageError e = compare_images(model, reference);
+    EXPECT_LE(e.coverage_differs, 2) << s.scene;
+    EXPECT_LE(e.visibility_differs, 10) << s.scene;
+    EXPECT_LE(e.max_abs, 6) << s.scene;
+    EXPECT_LT(e.mean_abs, 0.3) << s.scene;
+  }
+  REQUIRE_TOP(cfg, ShadingMode::Phong, file);
+  const std::vector<const PreparedScene*> ptrs{&frames[0], &frames[1], &frames[2]};
+  expect_clean_frames(file + " shipped patch scenes by curves", ptrs);
+  expect_predicted(file + " shipped patch scenes by curves", ptrs);
 }
 
 // Frames prepared for two configurations cannot share a run (the RTL is built for one).
