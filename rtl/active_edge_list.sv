@@ -99,8 +99,8 @@ module active_edge_list #(
   // don't care). One array written once per entry: a simulator keeps one pending-write flag per
   // written element, so this costs half what separate key and index arrays did.
   logic [KB+IB-1:0] order_q [N];
-  // The streaming bank's order from the entry at rd_q on: its body indices, IB bits each.
-  logic [N*IB-1:0] sidx_q, sidx_d;
+  // The streaming bank's order from the entry at rd_q on: g_sidx[i].q below.
+  logic [IB-1:0]   rd_head;      // the streaming bank's body index read next clock
   logic [CntB-1:0] cnt_stream_q, cnt_fill_q;
   logic            sel_q, sel_d; // bank (RAM half) streamed for line line_q - 1; the other fills
   logic            frame_q, drain_q;
@@ -160,7 +160,6 @@ module active_edge_list #(
 
   // ------------------------------------------------------------ insertion into the other bank
   logic   nsel, ins_step, take_new, drop_late, ins_valid, ins_write, src_done, swap, next_line;
-  entry_t ins;
   logic [KB-1:0] ins_key;
   logic   head_edge;
 
@@ -175,22 +174,12 @@ module active_edge_list #(
   assign ins_valid = ins_step || take_new;
   assign ins_write = ins_valid && (cnt_fill_q != CntB'(N));
 
-  always_comb begin
-    if (ins_step) begin
-      ins.remaining = st_remaining;
-      {ins.id, ins.poly, ins.material} = st_payload;
-      ins.value = st_value;
-      ins.slope = st_slope;
-    end else begin
-      ins.remaining = rec.n;
-      ins.id        = id_q;
-      ins.poly      = rec.poly;
-      ins.material  = rec.material;
-      ins.value     = rec.value;
-      ins.slope     = rec.slope;
-    end
-    ins_key = {ins.value[XLo +: XBits] ^ XSign, ins.id};
-  end
+  // The inserted entry (entry_t's layout: {remaining, id, poly, material, value, slope}): the
+  // stepped edge, else the new record. Assembled inside the RAM write below, only its key is a
+  // signal: the same multiplexer, but a simulator then builds the wide body only on the clocks
+  // that insert, not on every evaluation of the input-driven logic.
+  assign ins_key = ins_step ? {st_value[XLo +: XBits] ^ XSign, st_payload[TB-1 -: EdgeIdBits]}
+                            : {rec.value[XLo +: XBits] ^ XSign, id_q};
 
   // Whether the filling bank's entry i (below the count) sorts before the inserted key: one
   // comparator per entry. Called inside the insertion's `if (ins_write)` below, not kept as a
@@ -210,18 +199,26 @@ module active_edge_list #(
 
   // The stream's next position and bank: the RAM is read with them, so the entry the stream
   // presents next clock is in the read register then. (Reset and frame start need no case:
-  // nothing streams before the frame's first swap, which reads afresh.)
+  // nothing streams before the frame's first swap, which reads afresh.) Only the next head
+  // index is combinational; the index list itself is updated in its register's always_ff, so a
+  // simulator neither copies nor shifts the N-entry list on every evaluation.
+  logic [IB-1:0] second;  // the index after the head (none for a one-entry list: the shift's zero)
+  if (N > 1) begin : g_second
+    assign second = g_sidx[1].q;
+  end else begin : g_no_second
+    assign second = '0;
+  end
   always_comb begin
-    sel_d  = sel_q;
-    rd_d   = rd_q;
-    sidx_d = sidx_q;
+    sel_d   = sel_q;
+    rd_d    = rd_q;
+    rd_head = g_sidx[0].q;
     if (next_line) begin
-      sel_d = nsel;
-      rd_d  = '0;
-      for (int i = 0; i < N; i++) sidx_d[i * IB +: IB] = order_q[i][IB-1:0];
+      sel_d   = nsel;
+      rd_d    = '0;
+      rd_head = order_q[0][IB-1:0];
     end else if (advance) begin
-      rd_d   = rd_q + 1'b1;
-      sidx_d = sidx_q >> IB;
+      rd_d    = rd_q + 1'b1;
+      rd_head = second;
     end
   end
 
@@ -232,11 +229,12 @@ module active_edge_list #(
   // the clock before the swap is in the RAM when the swap's read happens. So the read port needs
   // neither read-first nor write-first behaviour, and no forwarding.
   logic [AB-1:0] rd_addr, wr_addr;
-  assign rd_addr = {sel_d, sidx_d[IB-1:0]};
+  assign rd_addr = {sel_d, rd_head};
   assign wr_addr = {nsel, IB'(cnt_fill_q)};
 
   always_ff @(posedge clk_i) begin
-    if (ins_write) body_mem[wr_addr] <= ins;
+    if (ins_write) body_mem[wr_addr] <= ins_step ? {st_remaining, st_payload, st_value, st_slope}
+                                                 : {rec.n, id_q, rec.poly, rec.material, rec.value, rec.slope};
   end
   always_ff @(posedge clk_i) begin
     cur_q <= body_mem[rd_addr];
@@ -293,12 +291,10 @@ module active_edge_list #(
     end
   end
 
-  always_ff @(posedge clk_i) begin
-    sidx_q <= sidx_d;
-  end
-
   // Sorted insertion of the key and the body's index: entries before the new one stay, the one
-  // at its place takes it, the tail moves up by one.
+  // at its place takes it, the tail moves up by one. (One array: each entry reads its
+  // neighbour's old value, which a simulator can only order for array elements, not for
+  // separate variables without copying each of them on every clock.)
   always_ff @(posedge clk_i) begin
     if (ins_write) begin
       for (int i = 0; i < N; i++) begin
@@ -308,6 +304,23 @@ module active_edge_list #(
                         ? {ins_key, IB'(cnt_fill_q)} : order_q[(i + N - 1) % N];
         end
       end
+    end
+  end
+
+  // The streaming bank's index list, one variable per entry (a simulator then neither copies nor
+  // shifts a packed N-entry list on every clock): entry i is the body index of the entry at
+  // rd_q + i; the swap loads the filling bank's order, each advance moves the list down by one.
+  for (genvar i = 0; i < N; i++) begin : g_sidx
+    logic [IB-1:0] q;
+    logic [IB-1:0] next;  // what it takes when the stream advances
+    if (i + 1 < N) begin : g_shift
+      assign next = g_sidx[i+1].q;
+    end else begin : g_last
+      assign next = '0;
+    end
+    always_ff @(posedge clk_i) begin
+      if (next_line) q <= order_q[i][IB-1:0];
+      else if (advance) q <= next;
     end
   end
 

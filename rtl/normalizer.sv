@@ -78,37 +78,42 @@ module normalizer #(
     .null_o (nul)
   );
 
-  // N waits alongside the rsqrt pipe (stage 0 .. stage 5).
-  logic [3*NB-1:0] n_q [RDelay+1];
-  always_ff @(posedge clk_i) if (en) begin
-    n_q[0] <= normal_i;
-    for (int s = 1; s <= RDelay; s++) n_q[s] <= n_q[s-1];
+  // N waits alongside the rsqrt pipe (stage 0 .. stage 5). The per-stage and per-component
+  // registers are plain variables of generate blocks, not array elements: a simulator
+  // (Verilator) keeps a pending-write flag and value per written array element and clears them
+  // on every evaluation. Same flops.
+  for (genvar s = 0; s <= RDelay; s++) begin : g_n
+    logic [3*NB-1:0] q;
+    if (s == 0) begin : g_in
+      always_ff @(posedge clk_i) if (en) q <= normal_i;
+    end else begin : g_shift
+      always_ff @(posedge clk_i) if (en) q <= g_n[s-1].q;
+    end
   end
 
   // ---- stage 6: p = N * y, exact (FracBits + F fraction bits) ----------------------------------
-  logic signed [ScaledBits-1:0] p_q [3];
-  logic        [4:0]       j6_q;
-  logic                    nul6_q;
-  always_ff @(posedge clk_i) if (en) begin
-    for (int c = 0; c < 3; c++)
-      p_q[c] <= signed'(n_q[RDelay][c*NB +: NB]) * signed'({1'b0, y});
-    j6_q   <= j;
-    nul6_q <= nul;
-  end
-
   // ---- stage 7: unit = saturate(round(p / 2^(F+4-j))): Q2.14 -----------------------------------
   // 1/sqrt(m) = y 2^(j-2) and N carries 16 fraction bits, so the shift to 14 is F + 4 - j, in
   // [F-13, F+4]: always a right shift. round = add half, arithmetic shift (round_shift).
-  logic [4:0]              sh;
-  logic signed [ScaledBits-1:0] r [3];
-  logic [3*UB-1:0]         unit;
-  always_comb begin
-    sh = 5'(RsqrtBits + 4) - j6_q;
-    for (int c = 0; c < 3; c++) begin
-      r[c] = (p_q[c] + (ScaledBits'(1) << (sh - 5'd1))) >>> sh;
-      if (r[c] > ScaledBits'((1 << (UB - 1)) - 1)) unit[c*UB +: UB] = UB'((1 << (UB - 1)) - 1);
-      else if (r[c] < -ScaledBits'(1 << (UB - 1))) unit[c*UB +: UB] = UB'(1 << (UB - 1));
-      else                                         unit[c*UB +: UB] = r[c][UB-1:0];
+  logic [4:0]      j6_q;
+  logic            nul6_q;
+  logic [4:0]      sh;
+  logic [3*UB-1:0] unit;
+  always_ff @(posedge clk_i) if (en) begin
+    j6_q   <= j;
+    nul6_q <= nul;
+  end
+  assign sh = 5'(RsqrtBits + 4) - j6_q;
+
+  for (genvar c = 0; c < 3; c++) begin : g_comp
+    logic signed [ScaledBits-1:0] p_q;
+    logic signed [ScaledBits-1:0] r;
+    always_ff @(posedge clk_i) if (en) p_q <= signed'(g_n[RDelay].q[c*NB +: NB]) * signed'({1'b0, y});
+    always_comb begin
+      r = (p_q + (ScaledBits'(1) << (sh - 5'd1))) >>> sh;
+      if (r > ScaledBits'((1 << (UB - 1)) - 1)) unit[c*UB +: UB] = UB'((1 << (UB - 1)) - 1);
+      else if (r < -ScaledBits'(1 << (UB - 1))) unit[c*UB +: UB] = UB'(1 << (UB - 1));
+      else                                      unit[c*UB +: UB] = r[UB-1:0];
     end
   end
 
@@ -122,8 +127,10 @@ module normalizer #(
   assign unit_o = unit_q;
   assign null_o = nul7_q;
 
-  `WATKINS_ASSERT_HOLD(a_in_hold, valid_i, ready_o, {normal_i, payload_i})
-  `WATKINS_ASSERT_HOLD(a_out_hold, valid_o, ready_i, {unit_o, null_o, payload_o})
+  // The payload's hold is checked once, by u_pipe (stall_pipe's a_in_hold and a_out_hold: the
+  // same valid and ready): a simulator keeps a sampled copy of every signal an assertion reads.
+  `WATKINS_ASSERT_HOLD(a_in_hold, valid_i, ready_o, normal_i)
+  `WATKINS_ASSERT_HOLD(a_out_hold, valid_o, ready_i, {unit_o, null_o})
   `WATKINS_COVER(c_stall, valid_o && !ready_i)
   `WATKINS_COVER(c_null, valid_o && null_o)
 endmodule

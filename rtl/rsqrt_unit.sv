@@ -74,11 +74,12 @@ module rsqrt_unit #(
     shifted = m_i << {j1, 1'b0};
   end
 
+  // The per-stage registers are plain variables (jN_q: stage N's), not arrays: a simulator
+  // (Verilator) keeps a pending-write flag and value per written array element and clears them
+  // on every evaluation. Same flops.
   logic [MantBits-1:0] mant_q;
-  logic [4:0]   j_q   [2:5];
-  logic         nul_q [2:5];  // stage-1 result travels as index 1 (mant_q) / j_q[2] onwards
-  logic [4:0]   j1_q;
-  logic         nul1_q;
+  logic [4:0]   j1_q, j2_q, j3_q, j4_q, j5_q;
+  logic         nul1_q, nul2_q, nul3_q, nul4_q, nul5_q;
   always_ff @(posedge clk_i) if (en_i) begin
     mant_q <= shifted[MBits-1 -: MantBits];  // 0 for m = 0: reads ROM default 0 below
     j1_q   <= j1;
@@ -87,24 +88,24 @@ module rsqrt_unit #(
 
   // ---- stage 2: seed y0 ---------------------------------------------------------------------
   logic [IndexBits-1:0] idx;
-  logic [SeedBits:0]    y0_q  [2:4];
-  logic [MantBits:0]    mc_q  [2:3];  // m'c = mant + half an ulp: {mant, 1}, W+1 fraction bits
+  logic [SeedBits:0]    y0_2_q, y0_3_q, y0_4_q;
+  logic [MantBits:0]    mc2_q, mc3_q;  // m'c = mant + half an ulp: {mant, 1}, W+1 fraction bits
   assign idx = mant_q[MantBits-1 -: IndexBits];
   always_ff @(posedge clk_i) if (en_i) begin
-    y0_q[2]  <= seed_rom[idx];
-    mc_q[2]  <= {mant_q, 1'b1};
-    j_q[2]   <= j1_q;
-    nul_q[2] <= nul1_q;
+    y0_2_q <= seed_rom[idx];
+    mc2_q  <= {mant_q, 1'b1};
+    j2_q   <= j1_q;
+    nul2_q <= nul1_q;
   end
 
   // ---- stage 3: y0^2, exact (2T fraction bits) --------------------------------------------
   logic [2*SeedBits+1:0] y0sq_q;
   always_ff @(posedge clk_i) if (en_i) begin
-    y0sq_q   <= (2*SeedBits+2)'(y0_q[2]) * (2*SeedBits+2)'(y0_q[2]);
-    y0_q[3]  <= y0_q[2];
-    mc_q[3]  <= mc_q[2];
-    j_q[3]   <= j_q[2];
-    nul_q[3] <= nul_q[2];
+    y0sq_q <= (2*SeedBits+2)'(y0_2_q) * (2*SeedBits+2)'(y0_2_q);
+    y0_3_q <= y0_2_q;
+    mc3_q  <= mc2_q;
+    j3_q   <= j2_q;
+    nul3_q <= nul2_q;
   end
 
   // ---- stage 4: u = 3 - round(m'c * y0^2), G fraction bits (|m'c y0^2 - 1| < 2^-9) ---------
@@ -116,14 +117,14 @@ module rsqrt_unit #(
   logic [PW4-1:0] t4;  // m'c * y0^2 < 2: the top bits are zero
   /* verilator lint_on UNUSEDSIGNAL */
   always_comb begin
-    prod4 = PW4'(mc_q[3]) * PW4'(y0sq_q);
+    prod4 = PW4'(mc3_q) * PW4'(y0sq_q);
     t4    = (prod4 + (PW4'(1) << (Sh4 - 1))) >> Sh4;
   end
   always_ff @(posedge clk_i) if (en_i) begin
-    u_q      <= (NrBits+2)'(3 << NrBits) - t4[NrBits+1:0];
-    y0_q[4]  <= y0_q[3];
-    j_q[4]   <= j_q[3];
-    nul_q[4] <= nul_q[3];
+    u_q    <= (NrBits+2)'(3 << NrBits) - t4[NrBits+1:0];
+    y0_4_q <= y0_3_q;
+    j4_q   <= j3_q;
+    nul4_q <= nul3_q;
   end
 
   // ---- stage 5: y = round(y0 * u / 2), F fraction bits: y <- y (3 - m' y^2) / 2 ------------
@@ -134,16 +135,16 @@ module rsqrt_unit #(
   /* verilator lint_on UNUSEDSIGNAL */
   logic [RsqrtBits+1:0] y_q;
   always_comb begin
-    prod5 = PW5'(y0_q[4]) * PW5'(u_q);
+    prod5 = PW5'(y0_4_q) * PW5'(u_q);
     y5    = (prod5 + (PW5'(1) << (Sh5 - 1))) >> Sh5;
   end
   always_ff @(posedge clk_i) if (en_i) begin
-    y_q      <= y5[RsqrtBits+1:0];
-    j_q[5]   <= j_q[4];
-    nul_q[5] <= nul_q[4];
+    y_q    <= y5[RsqrtBits+1:0];
+    j5_q   <= j4_q;
+    nul5_q <= nul4_q;
   end
 
   assign y_o    = y_q;
-  assign j_o    = j_q[5];
-  assign null_o = nul_q[5];
+  assign j_o    = j5_q;
+  assign null_o = nul5_q;
 endmodule

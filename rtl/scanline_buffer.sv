@@ -326,24 +326,38 @@ module scanline_buffer #(
   logic t_written_p /* verilator public_flat_rd */;
   logic covered_p /* verilator public_flat_rd */;
   localparam int unsigned PB = $clog2(Words * WordBits);  // an x in the padded words
-  logic [Words*WordBits-1:0] rpad;     // the read bank as one vector
-  /* verilator lint_off UNUSEDSIGNAL */
-  logic [Words*WordBits-1:0] rd_kept;  // and after this clock's take (padding unused)
-  /* verilator lint_on UNUSEDSIGNAL */
+  // Word by word, not as one MaxWidth-bit vector (a simulator rebuilt and shifted that vector on
+  // every evaluation of the input-driven logic); only rd_left and ra_written read inputs. A bit
+  // past MaxWidth is never written (x < width_i), so the counts below need no mask.
+  logic any_set, rest_rx;  // the read bank holds a written bit; one other than rx_q's
   always_comb begin
-    for (int w = 0; w < Words; w++) rpad[w*WordBits +: WordBits] = rd_written_q[w];
-    rd_kept = rpad;
-    if (take) begin
-      if (sparse_i) rd_kept = rpad & ~clr_pad;
-      else          rd_kept[PB'(rx_q)] = 1'b0;
+    int rxw, rxb, rpw, rpb;
+    logic [WordBits-1:0] below;
+    rxw = int'(rx_q) / WordBits;           // below_dirty: the bits below rx_q (all, past the line)
+    rxb = int'(rx_q) % WordBits;
+    rpw = int'(PB'(rx_q)) / WordBits;      // the bit a dense take clears
+    rpb = int'(PB'(rx_q)) % WordBits;
+    below_dirty = 1'b0;
+    any_set     = 1'b0;
+    rest_rx     = 1'b0;
+    for (int w = 0; w < Words; w++) begin
+      below = (rxw > w) ? '1 : (rxw == w) ? ~({WordBits{1'b1}} << rxb) : '0;
+      below_dirty |= |(rd_written_q[w] & below);
+      any_set     |= |rd_written_q[w];
+      rest_rx     |= |(rd_written_q[w] & ~((rpw == w) ? (WordBits'(1) << rpb) : '0));
     end
+  end
+  // After this clock's take: a sparse take clears the lowest written bit, so bits are left iff
+  // there were two (more); a dense take clears rx_q's.
+  assign rd_left = !take ? any_set : sparse_i ? more : rest_rx;
+  always_comb begin
+    int raw;
+    raw        = int'(PB'(rd_x)) / WordBits;
+    ra_written = (raw < Words) ? rd_written_q[raw][int'(PB'(rd_x)) % WordBits] : 1'b0;
   end
   assign t_written_p = t_written;
   assign covered_p   = covered;
-  assign below_dirty = |(rpad[MaxWidth-1:0] & ~({MaxWidth{1'b1}} << rx_q));
-  assign ra_written  = rpad[PB'(rd_x)];
   assign t_addr_ok   = t_addr_q == addr(wsel_q, t_x_q);
-  assign rd_left     = |rd_kept[MaxWidth-1:0];
 `endif
   // Why the sparse search needs no rx_q compare, and why covered needs no read at ra.
   `WATKINS_ASSERT(a_sparse_below_clear, rd_busy_q && sparse_i |-> !below_dirty)

@@ -28,11 +28,7 @@ module span_reciprocal #(
 );
   localparam int unsigned Stages = RecipBits + 2;  // normalize + R+1 quotient bits
 
-  logic                 en;
-  logic [RecipBits-1:0] m_q   [Stages];  // normalized divisor in [2^(R-1), 2^R)
-  logic [RecipBits-1:0] rem_q [Stages];  // partial remainder, < m
-  logic [RecipBits:0]   quo_q [Stages];  // quotient bits so far
-  logic [ExpBits-1:0]   p_q   [Stages];
+  logic en;
 
   // Valid, payload and the stall of every stage; the registers below advance on its en.
   // The payload (a whole span's setup in segment_interpolator) is written once, not shifted
@@ -69,29 +65,50 @@ module span_reciprocal #(
 
   // Quotient bit R-k in stage k: the numerator 2^(2R-1) has contributed 2^(R-2) to the partial
   // remainder before bit R (smaller than m, so every higher quotient bit is zero).
-  always_ff @(posedge clk_i) begin
-    if (en) begin
-      m_q[0]   <= norm[NormBits-1 -: RecipBits];
-      rem_q[0] <= RecipBits'(1) << (RecipBits - 2);
-      quo_q[0] <= '0;
-      p_q[0]   <= lead;
-      for (int k = 1; k < Stages; k++) begin
-        logic [RecipBits:0] twice;
-        logic               ge;
-        twice = {rem_q[k-1], 1'b0};
-        ge    = (twice >= {1'b0, m_q[k-1]});
-        rem_q[k] <= ge ? RecipBits'(twice - {1'b0, m_q[k-1]}) : RecipBits'(twice);
-        quo_q[k] <= {quo_q[k-1][RecipBits-1:0], ge};
-        m_q[k]   <= m_q[k-1];
-        p_q[k]   <= p_q[k-1];
+  // Each stage's registers are their own variables in a generate block, not elements of
+  // per-stage arrays: a simulator (Verilator) keeps a pending-write flag and value per written
+  // array element and clears them on every evaluation; plain variables need neither. Same flops.
+  for (genvar k = 0; k < Stages; k++) begin : g_stage
+    // The last stage's divisor and remainder (and every quotient's top bit but the last) are
+    // not read: synthesis drops those flops.
+    /* verilator lint_off UNUSEDSIGNAL */
+    logic [RecipBits-1:0] m_q;    // normalized divisor in [2^(R-1), 2^R)
+    logic [RecipBits-1:0] rem_q;  // partial remainder, < m
+    logic [RecipBits:0]   quo_q;  // quotient bits so far
+    /* verilator lint_on UNUSEDSIGNAL */
+    logic [ExpBits-1:0]   p_q;
+    if (k == 0) begin : g_norm
+      always_ff @(posedge clk_i) begin
+        if (en) begin
+          m_q   <= norm[NormBits-1 -: RecipBits];
+          rem_q <= RecipBits'(1) << (RecipBits - 2);
+          quo_q <= '0;
+          p_q   <= lead;
+        end
+      end
+    end else begin : g_bit
+      logic [RecipBits:0] twice;
+      logic               ge;
+      assign twice = {g_stage[k-1].rem_q, 1'b0};
+      assign ge    = (twice >= {1'b0, g_stage[k-1].m_q});
+      always_ff @(posedge clk_i) begin
+        if (en) begin
+          rem_q <= ge ? RecipBits'(twice - {1'b0, g_stage[k-1].m_q}) : RecipBits'(twice);
+          quo_q <= {g_stage[k-1].quo_q[RecipBits-1:0], ge};
+          m_q   <= g_stage[k-1].m_q;
+          p_q   <= g_stage[k-1].p_q;
+        end
       end
     end
   end
 
-  assign recip_o = quo_q[Stages-1];
-  assign p_o     = p_q[Stages-1];
+  assign recip_o = g_stage[Stages-1].quo_q;
+  assign p_o     = g_stage[Stages-1].p_q;
 
-  `WATKINS_ASSERT_HOLD(a_in_hold, valid_i, ready_o, {dx_i, payload_i})
-  `WATKINS_ASSERT_HOLD(a_out_hold, valid_o, ready_i, {recip_o, p_o, payload_o})
+  // The payload's hold is checked once, by u_pipe (stall_pipe's a_in_hold and a_out_hold: the
+  // same valid and ready): a simulator keeps a sampled copy of every signal an assertion reads,
+  // and the payload is a whole span's setup.
+  `WATKINS_ASSERT_HOLD(a_in_hold, valid_i, ready_o, dx_i)
+  `WATKINS_ASSERT_HOLD(a_out_hold, valid_o, ready_i, {recip_o, p_o})
   `WATKINS_COVER(c_stall, valid_o && !ready_i)
 endmodule
