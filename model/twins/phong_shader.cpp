@@ -6,17 +6,18 @@
 namespace watkins {
 
 i64 PhongShader::power(i64 base, int n) {
+  // acc and base stay in [0, 1], so the products are >= 0 and round_shift64 needs no sign case:
+  // add half, shift. Once no bit of n is left, the RTL's remaining stages pass acc unchanged.
   i64 acc = One;
-  for (int k = 0; k < NBits; ++k) {  // stage 4 + k
-    if ((n >> k) & 1) acc = round_shift64(acc * base, P);
-    base = round_shift64(base * base, P);
+  for (int k = 0; k < NBits && (n >> k) != 0; ++k) {  // stage 4 + k
+    if ((n >> k) & 1) acc = (acc * base + (i64{1} << (P - 1))) >> P;
+    base = (base * base + (i64{1} << (P - 1))) >> P;
   }
   return acc;
 }
 
-PhongShader::Terms PhongShader::terms(const Pixel& px, const Vec& light, const Vec& eye) {
+PhongShader::Terms PhongShader::terms(const Pixel& px, const Vec& light, const Vec& eye, i64 le) {
   Terms t;
-  const i64 le = frame_le(light, eye);
   // Stage 1: exact dot products.
   const i64 ndl = dot(px.n, light), nde = dot(px.n, eye);
   // Stage 2: round to D bits and clamp; i > 90 degrees is clamped to cos(i) = 0.
@@ -34,8 +35,8 @@ PhongShader::Terms PhongShader::terms(const Pixel& px, const Vec& light, const V
   return t;
 }
 
-std::array<int, 3> PhongShader::shade(const Pixel& px, const Vec& light, const Vec& eye) {
-  const Terms t = terms(px, light, eye);
+std::array<int, 3> PhongShader::shade(const Pixel& px, const Vec& light, const Vec& eye, i64 le) {
+  const Terms t = terms(px, light, eye, le);
   // Stages 12, 13: levels with D + MF fraction bits; specular W pow is white (255 per channel).
   const i64 spec = 255 * px.w * t.pow * (i64{1} << (D - P));
   std::array<int, 3> out{};

@@ -64,16 +64,16 @@ SpanSetup SegmentInterpolator::setup(const Segment& s, int width, const ChannelF
   const i64 offset = static_cast<i64>(span.x_start) * (i64{1} << fx) + (i64{1} << (fx - 1)) - xe;  // >= 0
   // 64 bits hold a product and its rounding constant when the operands are small enough, which
   // they usually are whatever the words: the offset is under a pixel except where the span is
-  // clipped, a delta is what the slot changes across the span. Checked on the values, per product;
+  // clipped, a delta is what the slot changes across the span (|F - E|, small even where E and F
+  // are large, as depth usually is). Checked on the values, per product;
   // otherwise 128 bits. Same formulas and rounding either way, so the same values.
   constexpr int Small = 62 - std::max(fmt::RecipBits, fmt::AlphaBits) - 1;  // operand bits
-  const i64 alpha0 = offset < (i64{1} << Small) ? alpha0_in<i64>(r, offset) : alpha0_in<i128>(r, offset);
+  constexpr i64 Limit = i64{1} << Small;
+  const i64 alpha0 = offset < Limit ? alpha0_in<i64>(r, offset) : alpha0_in<i128>(r, offset);
   const bool small_shift = r.p + fmt::RecipBits - fx <= 61;  // the step's rounding constant
   for (int c = fmt::ChanZ; c < fmt::NumChannels; ++c) {
-    const i64 e = s.e[c], f = s.f[c];
-    const bool small = small_shift && e > -(i64{1} << Small) && e < (i64{1} << Small) &&
-                       f > -(i64{1} << Small) && f < (i64{1} << Small);  // |F - E| < 2^(Small+1)
-    if (small)
+    const i128 delta = static_cast<i128>(s.f[c]) - s.e[c];  // exact for any words
+    if (small_shift && delta > -Limit && delta < Limit)
       setup_slot<i64>(s, c, formats, r, alpha0, span);
     else
       setup_slot<i128>(s, c, formats, r, alpha0, span);

@@ -82,7 +82,7 @@ struct SegmentInterpolator {
 class PixelPath {
  public:
   using Readings = SegmentInterpolator::Readings;
-  PixelPath(const ChannelFormats& f, Readings readings) : readings_(readings) {
+  explicit PixelPath(const ChannelFormats& f) {
     for (int c = fmt::ChanZ; c < fmt::NumChannels; ++c) sign_[c] = i64{1} << (f.bits[c] - 1);
     z_shift_ = f.frac[fmt::ChanZ];
     z_half_ = half(z_shift_);
@@ -103,19 +103,20 @@ class PixelPath {
     f.depth = static_cast<std::uint32_t>(round_clamp(value[fmt::ChanZ], z_shift_, z_half_, depth_max_));
     return f;
   }
-  // The attribute readings, for a fragment that needs them (one that won its pixel, or one a
-  // bench observes).
+  // The attribute readings R, for a fragment that needs them (one that won its pixel, or one a
+  // bench observes). A template parameter: a frame's loop knows which it needs.
+  template <Readings R>
   void fill(Fragment& f, const ChannelVector& value) const {
-    if (readings_ != Readings::Normal)
+    if (R != Readings::Normal)
       for (int c = 0; c < fmt::ShadeChannels; ++c)
         f.rgb[c] = static_cast<std::uint8_t>(
             round_clamp(value[fmt::ChanR + c], shade_shift_[c], shade_half_[c], fmt::ShadeMax));
-    if (readings_ != Readings::Shade)
+    if (R != Readings::Shade)
       for (int c = 0; c < 3; ++c) f.normal[c] = normal(value[fmt::ChanNx + c], normal_shift_[c]);
   }
   Fragment fragment(const SpanSetup& span, int x, const ChannelVector& value) const {
     Fragment f = head(span, x, value);
-    fill(f, value);
+    fill<Readings::Both>(f, value);
     return f;
   }
 
@@ -146,7 +147,6 @@ class PixelPath {
   }
   static_assert(fmt::FracBits < fmt::NormalInBits - 1, "normal scaling stays within the word");
 
-  Readings readings_;
   std::array<i64, fmt::NumChannels> sign_{};  // per slot: 2^(bits-1), wrap_to_sign's word
   int z_shift_ = 0;
   i64 z_half_ = 0, depth_max_ = 0;
@@ -155,11 +155,11 @@ class PixelPath {
 };
 
 inline Fragment SegmentInterpolator::fragment(const SpanSetup& span, int x, const ChannelVector& value) {
-  return PixelPath(span.formats, Readings::Both).fragment(span, x, value);
+  return PixelPath(span.formats).fragment(span, x, value);
 }
 
 inline void SegmentInterpolator::step(const SpanSetup& span, ChannelVector& value) {
-  PixelPath(span.formats, Readings::Both).step(span, value);
+  PixelPath(span.formats).step(span, value);
 }
 
 }  // namespace watkins

@@ -11,12 +11,59 @@ namespace watkins {
 namespace {
 
 // normalizer → phong_shader on one fragment: its rgb becomes the shade of its material.
-void phong_shade(const Frame& frame, Fragment& f) {
+// `le` is the frame's L.E (PhongShader::frame_le), worked out once per frame.
+void phong_shade(const Frame& frame, i64 le, Fragment& f) {
   const Normalizer::Unit u = Normalizer::normalize(f.normal[0], f.normal[1], f.normal[2]);
   const QuantizedMaterial& m = frame.materials.at(static_cast<std::size_t>(f.material));
   const PhongShader::Pixel px{u.n, m.cp, m.d, m.w, m.shininess};
-  const std::array<int, 3> rgb = PhongShader::shade(px, frame.light, frame.eye);
+  const std::array<int, 3> rgb = PhongShader::shade(px, frame.light, frame.eye, le);
   for (int c = 0; c < 3; ++c) f.rgb[c] = static_cast<std::uint8_t>(rgb[c]);
+}
+
+// The segments of one scan line through the interpolator (and the Phong blocks) into the line
+// buffer. What varies per frame is a template parameter, chosen once per frame: whether a bench
+// observes the fragments (Observed: each gets both readings and is reported) and the shading,
+// so the loop nobody observes holds no call, no test of the observer and no test of the mode.
+struct LineCounts {
+  long long fragments = 0, visible = 0;  // as PipelineStats counts them
+};
+template <bool Observed, ShadingMode Shading>
+LineCounts draw_segments(const Frame& frame, const std::vector<Segment>& segments, const ChannelFormats& formats,
+                        const PixelPath& path, i64 le, ScanlineBuffer& line, int y,
+                        const PipelineObserver& observe) {
+  constexpr auto readings = Observed ? PixelPath::Readings::Both
+                            : Shading == ShadingMode::Phong ? PixelPath::Readings::Normal
+                                                            : PixelPath::Readings::Shade;
+  LineCounts n;
+  for (const Segment& s : segments) {
+    const SpanSetup span = SegmentInterpolator::setup(s, frame.width, formats);
+    n.fragments += span.x_end - span.x_start;
+    ChannelVector v = span.value;
+    for (int x = span.x_start; x < span.x_end; ++x) {
+      // The depth test first: a hidden fragment's readings (and Phong shade) are computed only
+      // when a bench observes it. The RTL computes them all; the values kept are the same.
+      Fragment f = path.head(span, x, v);
+      const bool won = line.wins(f);
+      if (won || Observed) {
+        path.fill<readings>(f, v);
+        if (Shading == ShadingMode::Phong) phong_shade(frame, le, f);
+        if (won) line.store(f);
+        if (Observed) observe.fragment(y, f, won);
+      }
+      n.visible += won;
+      path.step(span, v);
+    }
+  }
+  return n;
+}
+
+using DrawSegments = LineCounts (*)(const Frame&, const std::vector<Segment>&, const ChannelFormats&,
+                                   const PixelPath&, i64, ScanlineBuffer&, int, const PipelineObserver&);
+
+DrawSegments draw_segments_for(bool observed, ShadingMode shading) {
+  if (shading == ShadingMode::Phong)
+    return observed ? draw_segments<true, ShadingMode::Phong> : draw_segments<false, ShadingMode::Phong>;
+  return observed ? draw_segments<true, ShadingMode::Gouraud> : draw_segments<false, ShadingMode::Gouraud>;
 }
 
 }  // namespace
@@ -52,11 +99,10 @@ Image WatkinsTop::render(const Frame& frame, const PipelineObserver& observe) {
   const ChannelFormats formats = config_.channels(frame.shading);
   // The shade or the normal reading, as the frame's pipeline uses; both for an observer (the
   // benches compare the interpolator's ports, which carry both).
-  using Readings = SegmentInterpolator::Readings;
   const bool observing = static_cast<bool>(observe.fragment);
-  const PixelPath path(formats, observing                             ? Readings::Both
-                                : frame.shading == ShadingMode::Phong ? Readings::Normal
-                                                                      : Readings::Shade);
+  const PixelPath path(formats);
+  const DrawSegments draw = draw_segments_for(observing, frame.shading);
+  const i64 le = PhongShader::frame_le(frame.light, frame.eye);
   walk_scan_lines(frame.edges, frame.height, max_active_edges_, formats, [&](const ScanLine& sl) {
     const int y = sl.y;
     stats_.edges += sl.entered;
@@ -69,30 +115,14 @@ Image WatkinsTop::render(const Frame& frame, const PipelineObserver& observe) {
       for (const Segment& s : sl.segments) observe.segment(y, s);
     if (observe.segments_end) observe.segments_end(y);
     line.clear();
-    for (const auto& s : sl.segments) {
-      const SpanSetup span = SegmentInterpolator::setup(s, frame.width, formats);
-      ChannelVector v = span.value;
-      for (int x = span.x_start; x < span.x_end; ++x) {
-        // The depth test first: a hidden fragment's readings (and Phong shade) are computed only
-        // when a bench observes it. The RTL computes them all; the values kept are the same.
-        Fragment f = path.head(span, x, v);
-        const bool won = line.wins(f);
-        if (won || observing) {
-          path.fill(f, v);
-          if (frame.shading == ShadingMode::Phong) phong_shade(frame, f);
-          if (won) line.store(f);
-          if (observing) observe.fragment(y, f, won);
-        }
-        ++stats_.fragments;
-        stats_.visible += won;
-        path.step(span, v);
-      }
-    }
+    const LineCounts n = draw(frame, sl.segments, formats, path, le, line, y, observe);
+    stats_.fragments += n.fragments;
+    stats_.visible += n.visible;
     if (observe.fragments_end) observe.fragments_end(y);
     // The image starts as background, uncovered: only the line's covered pixels are copied.
     const std::size_t row = std::size_t(y) * frame.width;
     for (const int x : line.written()) {
-      const auto& p = line.written_rgb(x);
+      const std::array<std::uint8_t, 3> p = line.written_rgb(x);
       std::uint8_t* out = &img.rgb[(row + x) * 3];
       out[0] = p[0], out[1] = p[1], out[2] = p[2];  // byte stores: no library call per pixel
       img.covered[row + x] = 1;
