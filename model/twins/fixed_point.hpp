@@ -24,6 +24,9 @@ constexpr i128 round_shift(i128 v, int s) {
   return floor_shift(v + (static_cast<i128>(1) << (s - 1)), s);
 }
 
+// floor_shift on 64 bits (a 128-bit shift by a run-time amount costs a branch and two words).
+constexpr i64 floor_shift64(i64 v, int s) { return v < 0 ? ~(~v >> s) : v >> s; }
+
 // round_shift on 64 bits, for words of at most 62 bits (the per-pixel path, where 128-bit shifts
 // by a run-time amount cost the model a quarter of its speed).
 constexpr i64 round_shift64(i64 v, int s) {

@@ -41,7 +41,8 @@ class ScanlineBuffer {
   // Writes a fragment that wins its pixel (wins(f) is true).
   void store(const Fragment& f) {
     const auto x = static_cast<std::size_t>(f.x);
-    if (key_[x] == Empty) written_x_.push_back(f.x);
+    // push_back of a copy: a reference into f would make the caller keep f in memory.
+    if (key_[x] == Empty) written_x_.push_back(static_cast<int>(x));
     key_[x] = key(f.depth, f.poly);
     rgb_[x] = pack(f.rgb[0], f.rgb[1], f.rgb[2]);
     poly_[x] = f.poly;

@@ -7,8 +7,9 @@ namespace watkins {
 namespace {
 
 // First pixel whose centre x + 1/2 is at or right of X: ceil(X − 1/2), X with fx fraction bits.
+// In 64 bits: X is a word of at most 62 bits, so adding under one pixel cannot overflow.
 i64 first_centre_at_or_after(i64 x, int fx) {
-  return static_cast<i64>(floor_shift(x - (i64{1} << (fx - 1)) + (i64{1} << fx) - 1, fx));
+  return floor_shift64(x - (i64{1} << (fx - 1)) + (i64{1} << fx) - 1, fx);
 }
 
 }  // namespace
@@ -72,8 +73,9 @@ SpanSetup SegmentInterpolator::setup(const Segment& s, int width, const ChannelF
   const i64 alpha0 = offset < Limit ? alpha0_in<i64>(r, offset) : alpha0_in<i128>(r, offset);
   const bool small_shift = r.p + fmt::RecipBits - fx <= 61;  // the step's rounding constant
   for (int c = fmt::ChanZ; c < fmt::NumChannels; ++c) {
-    const i128 delta = static_cast<i128>(s.f[c]) - s.e[c];  // exact for any words
-    if (small_shift && delta > -Limit && delta < Limit)
+    i64 delta = 0;
+    const bool overflow = __builtin_sub_overflow(s.f[c], s.e[c], &delta);  // not for words of 62 bits
+    if (small_shift && !overflow && delta > -Limit && delta < Limit)
       setup_slot<i64>(s, c, formats, r, alpha0, span);
     else
       setup_slot<i128>(s, c, formats, r, alpha0, span);

@@ -1,6 +1,7 @@
 #include "watkins_top.hpp"
 
 #include <algorithm>
+#include <type_traits>
 
 #include "normalizer.hpp"
 #include "phong_shader.hpp"
@@ -34,25 +35,38 @@ LineCounts draw_segments(const Frame& frame, const std::vector<Segment>& segment
   constexpr auto readings = Observed ? PixelPath::Readings::Both
                             : Shading == ShadingMode::Phong ? PixelPath::Readings::Normal
                                                             : PixelPath::Readings::Shade;
+  // Local copies: the line buffer's stores cannot alias them, so the loop keeps them in registers.
+  const PixelPath p = path;
   LineCounts n;
   for (const Segment& s : segments) {
     const SpanSetup span = SegmentInterpolator::setup(s, frame.width, formats);
     n.fragments += span.x_end - span.x_start;
-    ChannelVector v = span.value;
-    for (int x = span.x_start; x < span.x_end; ++x) {
-      // The depth test first: a hidden fragment's readings (and Phong shade) are computed only
-      // when a bench observes it. The RTL computes them all; the values kept are the same.
-      Fragment f = path.head(span, x, v);
-      const bool won = line.wins(f);
-      if (won || Observed) {
-        path.fill<readings>(f, v);
-        if (Shading == ShadingMode::Phong) phong_shade(frame, le, f);
-        if (won) line.store(f);
-        if (Observed) observe.fragment(y, f, won);
+    // A span whose values stay inside their words and readings (in_range) runs without wraps
+    // and clamps; any other span, and every span a bench observes, takes the general path.
+    auto run = [&](auto in_range) {
+      constexpr bool InRange = decltype(in_range)::value;
+      ChannelVector v = span.value;
+      const ChannelVector step = span.step;
+      for (int x = span.x_start; x < span.x_end; ++x) {
+        // The depth test first: a hidden fragment's readings (and Phong shade) are computed only
+        // when a bench observes it. The RTL computes them all; the values kept are the same.
+        Fragment f = p.head<InRange>(span, x, v);
+        const bool won = line.wins(f);
+        if (won || Observed) {
+          p.fill<readings, InRange>(f, v);
+          if (Shading == ShadingMode::Phong) phong_shade(frame, le, f);
+          if (won) line.store(f);
+          if (Observed) observe.fragment(y, f, won);
+        }
+        n.visible += won;
+        p.step<InRange>(step, v);
       }
-      n.visible += won;
-      path.step(span, v);
-    }
+    };
+    if (span.x_end <= span.x_start) continue;
+    if (p.in_range<readings>(span))
+      run(std::true_type{});
+    else
+      run(std::false_type{});
   }
   return n;
 }
