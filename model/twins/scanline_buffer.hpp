@@ -35,15 +35,21 @@ class ScanlineBuffer {
   // The depth test alone: whether a fragment at x with this depth and polygon would win its
   // pixel. One comparison of keys (see key()): an empty pixel holds a key above every fragment's.
   bool wins(int x, std::uint32_t depth, int poly) const {
-    return key(depth, poly) < key_[static_cast<std::size_t>(x)];
+    return key_of(depth, poly) < key_[static_cast<std::size_t>(x)];
   }
   bool wins(const Fragment& f) const { return wins(f.x, f.depth, f.poly); }
-  // Writes a fragment that wins its pixel (wins(f) is true).
-  void store(const Fragment& f) {
+  // The same in two parts, for a loop over one polygon's span: its key's low word once
+  // (tie_bits), then per fragment the comparison of key(depth, tie_bits).
+  std::uint64_t tie_bits(int poly) const { return static_cast<std::uint32_t>(poly) & poly_key_mask_; }
+  static std::uint64_t key(std::uint32_t depth, std::uint64_t tie_bits) { return (std::uint64_t{depth} << 32) | tie_bits; }
+  bool wins_key(int x, std::uint64_t key) const { return key < key_[static_cast<std::size_t>(x)]; }
+  // Writes a fragment that wins its pixel (wins(f) is true); `key` is its key.
+  void store(const Fragment& f) { store(f, key_of(f.depth, f.poly)); }
+  void store(const Fragment& f, std::uint64_t key) {
     const auto x = static_cast<std::size_t>(f.x);
     // push_back of a copy: a reference into f would make the caller keep f in memory.
     if (key_[x] == Empty) written_x_.push_back(static_cast<int>(x));
-    key_[x] = key(f.depth, f.poly);
+    key_[x] = key;
     rgb_[x] = pack(f.rgb[0], f.rgb[1], f.rgb[2]);
     poly_[x] = f.poly;
   }
@@ -78,9 +84,7 @@ class ScanlineBuffer {
   // rule (0 under Arrival), so "nearer, or as near and a smaller polygon" is one unsigned
   // comparison, and an equal key (Arrival at equal depth) loses. Depth is at most 32 bits and a
   // polygon id below 2^31, so no fragment's key reaches Empty.
-  std::uint64_t key(std::uint32_t depth, int poly) const {
-    return (std::uint64_t{depth} << 32) | (static_cast<std::uint32_t>(poly) & poly_key_mask_);
-  }
+  std::uint64_t key_of(std::uint32_t depth, int poly) const { return key(depth, tie_bits(poly)); }
   static constexpr std::uint64_t Empty = ~std::uint64_t{0};
   // rgb in one 32-bit word per pixel (R in the low byte): stored without byte stores, which the
   // compiler must assume alias everything else the loop holds.

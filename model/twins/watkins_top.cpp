@@ -47,15 +47,17 @@ LineCounts draw_segments(const Frame& frame, const std::vector<Segment>& segment
       constexpr bool InRange = decltype(in_range)::value;
       ChannelVector v = span.value;
       const ChannelVector step = span.step;
+      const std::uint64_t tie_bits = line.tie_bits(span.poly);
       for (int x = span.x_start; x < span.x_end; ++x) {
         // The depth test first: a hidden fragment's readings (and Phong shade) are computed only
         // when a bench observes it. The RTL computes them all; the values kept are the same.
         Fragment f = p.head<InRange>(span, x, v);
-        const bool won = line.wins(f);
+        const std::uint64_t key = ScanlineBuffer::key(f.depth, tie_bits);
+        const bool won = line.wins_key(x, key);
         if (won || Observed) {
           p.fill<readings, InRange>(f, v);
           if (Shading == ShadingMode::Phong) phong_shade(frame, le, f);
-          if (won) line.store(f);
+          if (won) line.store(f, key);
           if (Observed) observe.fragment(y, f, won);
         }
         n.visible += won;
