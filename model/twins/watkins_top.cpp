@@ -28,10 +28,18 @@ void phong_shade(const Frame& frame, i64 le, Fragment& f) {
 struct LineCounts {
   long long fragments = 0, visible = 0;  // as PipelineStats counts them
 };
+// Phong with nobody observing: a pixel's shade is a function of its last winner's normal and
+// material alone, so the line keeps those and shades each covered pixel once at read-out, not
+// every fragment that wins on the way (the same pixels: overdraw costs a depth test, not a shade).
+struct DeferredPhong {
+  std::vector<std::array<i64, 3>> normal;  // per pixel of the line
+  std::vector<int> material;
+};
 template <bool Observed, ShadingMode Shading>
 LineCounts draw_segments(const Frame& frame, const std::vector<Segment>& segments, const ChannelFormats& formats,
                         const PixelPath& path, i64 le, ScanlineBuffer& line, int y,
-                        const PipelineObserver& observe) {
+                        const PipelineObserver& observe, DeferredPhong& later) {
+  constexpr bool defer = !Observed && Shading == ShadingMode::Phong;
   constexpr auto readings = Observed ? PixelPath::Readings::Both
                             : Shading == ShadingMode::Phong ? PixelPath::Readings::Normal
                                                             : PixelPath::Readings::Shade;
@@ -56,7 +64,13 @@ LineCounts draw_segments(const Frame& frame, const std::vector<Segment>& segment
         const bool won = line.wins_key(x, key);
         if (won || Observed) {
           p.fill<readings, InRange>(f, v);
-          if (Shading == ShadingMode::Phong) phong_shade(frame, le, f);
+          if (defer) {
+            (void)frame.materials.at(static_cast<std::size_t>(f.material));  // the id check phong_shade makes
+            later.normal[static_cast<std::size_t>(x)] = f.normal;
+            later.material[static_cast<std::size_t>(x)] = f.material;
+          } else if (Shading == ShadingMode::Phong) {
+            phong_shade(frame, le, f);
+          }
           if (won) line.store(f, key);
           if (Observed) observe.fragment(y, f, won);
         }
@@ -74,7 +88,8 @@ LineCounts draw_segments(const Frame& frame, const std::vector<Segment>& segment
 }
 
 using DrawSegments = LineCounts (*)(const Frame&, const std::vector<Segment>&, const ChannelFormats&,
-                                   const PixelPath&, i64, ScanlineBuffer&, int, const PipelineObserver&);
+                                   const PixelPath&, i64, ScanlineBuffer&, int, const PipelineObserver&,
+                                   DeferredPhong&);
 
 DrawSegments draw_segments_for(bool observed, ShadingMode shading) {
   if (shading == ShadingMode::Phong)
@@ -119,6 +134,12 @@ Image WatkinsTop::render(const Frame& frame, const PipelineObserver& observe) {
   const PixelPath path(formats);
   const DrawSegments draw = draw_segments_for(observing, frame.shading);
   const i64 le = PhongShader::frame_le(frame.light, frame.eye);
+  const bool deferred = !observing && frame.shading == ShadingMode::Phong;
+  DeferredPhong later;
+  if (deferred) {
+    later.normal.resize(static_cast<std::size_t>(frame.width));
+    later.material.resize(static_cast<std::size_t>(frame.width));
+  }
   walk_scan_lines(frame.edges, frame.height, max_active_edges_, formats, [&](const ScanLine& sl) {
     const int y = sl.y;
     stats_.edges += sl.entered;
@@ -131,14 +152,21 @@ Image WatkinsTop::render(const Frame& frame, const PipelineObserver& observe) {
       for (const Segment& s : sl.segments) observe.segment(y, s);
     if (observe.segments_end) observe.segments_end(y);
     line.clear();
-    const LineCounts n = draw(frame, sl.segments, formats, path, le, line, y, observe);
+    const LineCounts n = draw(frame, sl.segments, formats, path, le, line, y, observe, later);
     stats_.fragments += n.fragments;
     stats_.visible += n.visible;
     if (observe.fragments_end) observe.fragments_end(y);
     // The image starts as background, uncovered: only the line's covered pixels are copied.
     const std::size_t row = std::size_t(y) * frame.width;
     for (const int x : line.written()) {
-      const std::array<std::uint8_t, 3> p = line.written_rgb(x);
+      std::array<std::uint8_t, 3> p = line.written_rgb(x);
+      if (deferred) {
+        Fragment f;
+        f.normal = later.normal[static_cast<std::size_t>(x)];
+        f.material = later.material[static_cast<std::size_t>(x)];
+        phong_shade(frame, le, f);
+        p = {f.rgb[0], f.rgb[1], f.rgb[2]};
+      }
       std::uint8_t* out = &img.rgb[(row + x) * 3];
       out[0] = p[0], out[1] = p[1], out[2] = p[2];  // byte stores: no library call per pixel
       img.covered[row + x] = 1;
