@@ -124,8 +124,14 @@ Image WatkinsTop::render(const Frame& frame, const FragmentObserver& observe) {
 }
 
 Image WatkinsTop::render(const Frame& frame, const PipelineObserver& observe) {
+  Image img;
+  render_into(frame, img, observe);
+  return img;
+}
+
+void WatkinsTop::render_into(const Frame& frame, Image& img, const PipelineObserver& observe) {
   stats_ = PipelineStats{};
-  Image img(frame.width, frame.height, frame.background);
+  img.reset(frame.width, frame.height, frame.background);
   ScanlineBuffer line(frame.width, frame.background, frame.depth_tie);
   const ChannelFormats formats = config_.channels(frame.shading);
   // The shade or the normal reading, as the frame's pipeline uses; both for an observer (the
@@ -174,8 +180,7 @@ Image WatkinsTop::render(const Frame& frame, const PipelineObserver& observe) {
     }
   });
   // The smoother after the line buffer, when the frame enables it (it sees the full raster).
-  if (frame.smoothed()) return Smoother(frame.smooth_w).apply(img);
-  return img;
+  if (frame.smoothed()) img = Smoother(frame.smooth_w).apply(img);
 }
 
 }  // namespace watkins
