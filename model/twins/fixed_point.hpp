@@ -44,6 +44,14 @@ constexpr i128 round_div(i128 a, i128 b) {
   return q;
 }
 
+// round_div on 64 bits, for |a| < 2^61 and 0 < b < 2^61 (a 128-bit division is a library call).
+constexpr i64 round_div64(i64 a, i64 b) {
+  const i64 n = 2 * a + b, d = 2 * b;
+  i64 q = n / d;
+  if ((n % d) != 0 && n < 0) --q;
+  return q;
+}
+
 // Keep the low `bits` bits and sign-extend them: what a signed register of that width holds.
 constexpr i64 wrap_signed(i128 v, int bits) {
   const i128 m = (static_cast<i128>(1) << bits) - 1;
