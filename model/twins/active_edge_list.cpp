@@ -21,10 +21,19 @@ bool ActiveEdgeList::insert(const EdgeRecord& rec) {
 }
 
 void ActiveEdgeList::advance() {
+  if (formats_.edge_order == 3)
+    advance_at<3>();
+  else
+    advance_at<1>();
+}
+
+template <int Order>
+void ActiveEdgeList::advance_at() {
+  const EdgeIncrementer::Signs sign = signs_;  // a local copy: the edges' stores cannot alias it
   std::size_t kept = 0;
   for (std::size_t i = 0; i < edges_.size(); ++i) {
     ActiveEdge& e = edges_[i];
-    EdgeIncrementer::step(e, formats_);
+    EdgeIncrementer::step<Order>(e, sign);
     if (e.remaining <= 0) continue;
     // Insertion sort as the survivors are compacted: shift the sorted prefix up past e.
     std::size_t j = kept;

@@ -20,7 +20,7 @@ class ActiveEdgeList {
   // Widths from the configuration, as the RTL takes them: entries MaxActiveEdges = capacity
   // (Config::max_active_edges); each entry's channel words ChannelFormats::bits[c].
   explicit ActiveEdgeList(int capacity, const ChannelFormats& formats = Config{}.channels(ShadingMode::Gouraud))
-      : capacity_(capacity), formats_(formats) {}
+      : capacity_(capacity), formats_(formats), signs_(EdgeIncrementer::signs(formats)) {}
 
   // Adds an edge on its first scan line. Returns false (and drops nothing) when full.
   bool insert(const EdgeRecord& rec);
@@ -32,8 +32,12 @@ class ActiveEdgeList {
   int capacity() const { return capacity_; }
 
  private:
+  template <int Order>
+  void advance_at();  // advance() at the configuration's edge order
+
   int capacity_;
   ChannelFormats formats_;
+  EdgeIncrementer::Signs signs_;  // of formats_
   std::vector<ActiveEdge> edges_;
 };
 

@@ -9,6 +9,7 @@
 //   remaining                LineBits (not configurable)
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 #include "config.hpp"
@@ -22,23 +23,40 @@ struct ActiveEdge {
 };
 
 struct EdgeIncrementer {
-  // One scan line: value += slope in every channel, wrapping like a register of the channel's
-  // width. A slope wrapped to the word steps the same values (addition modulo 2^bits), so only
-  // the values must fit; scene preparation checks that they do.
-  static void step(ActiveEdge& e, const ChannelFormats& f) {
+  // Slot c's sign bit 2^(bits[c]-1), the word wrap_to_sign keeps: worked out once per list.
+  using Signs = std::array<i64, fmt::NumChannels>;
+  static Signs signs(const ChannelFormats& f) {
+    Signs s{};
+    for (int c = 0; c < fmt::NumChannels; ++c) s[c] = i64{1} << (f.bits[c] - 1);
+    return s;
+  }
+  // One scan line at edge order Order (1 or 3): value += slope in every channel, wrapping like
+  // a register of the channel's width. A slope wrapped to the word steps the same values
+  // (addition modulo 2^bits), so only the values must fit; scene preparation checks that they
+  // do. The order is a template parameter: a list steps every edge at its configuration's.
+  template <int Order>
+  static void step(ActiveEdge& e, const Signs& sign) {
+    static_assert(Order == 1 || Order == 3, "edge order 1 or 3");
     // Modulo 2^64 (unsigned, so defined for any slope), then the word's low bits: the same as
     // the 128-bit sum wrapped, since a word is at most 62 bits.
-    auto add = [](i64 a, i64 b, int bits) {
-      return wrap_signed64(static_cast<i64>(static_cast<std::uint64_t>(a) + static_cast<std::uint64_t>(b)), bits);
+    auto add = [](i64 a, i64 b, i64 sign_bit) {
+      return wrap_to_sign(static_cast<i64>(static_cast<std::uint64_t>(a) + static_cast<std::uint64_t>(b)), sign_bit);
     };
     for (int c = 0; c < fmt::NumChannels; ++c) {
-      e.rec.value[c] = add(e.rec.value[c], e.rec.slope[c], f.bits[c]);
-      if (f.edge_order == 3) {
-        e.rec.slope[c] = add(e.rec.slope[c], e.rec.d2[c], f.bits[c]);
-        e.rec.d2[c] = add(e.rec.d2[c], e.rec.d3[c], f.bits[c]);
+      e.rec.value[c] = add(e.rec.value[c], e.rec.slope[c], sign[c]);
+      if (Order == 3) {
+        e.rec.slope[c] = add(e.rec.slope[c], e.rec.d2[c], sign[c]);
+        e.rec.d2[c] = add(e.rec.d2[c], e.rec.d3[c], sign[c]);
       }
     }
     --e.remaining;
+  }
+  // The same for one edge of the configuration f (its widths and edge order).
+  static void step(ActiveEdge& e, const ChannelFormats& f) {
+    if (f.edge_order == 3)
+      step<3>(e, signs(f));
+    else
+      step<1>(e, signs(f));
   }
   // The default configuration (today's ChannelBits words).
   static void step(ActiveEdge& e) { step(e, Config{}.channels(ShadingMode::Gouraud)); }

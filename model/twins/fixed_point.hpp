@@ -24,6 +24,9 @@ constexpr i128 round_shift(i128 v, int s) {
   return floor_shift(v + (static_cast<i128>(1) << (s - 1)), s);
 }
 
+// floor_shift on 64 bits (a 128-bit shift by a run-time amount costs a branch and two words).
+constexpr i64 floor_shift64(i64 v, int s) { return v < 0 ? ~(~v >> s) : v >> s; }
+
 // round_shift on 64 bits, for words of at most 62 bits (the per-pixel path, where 128-bit shifts
 // by a run-time amount cost the model a quarter of its speed).
 constexpr i64 round_shift64(i64 v, int s) {
@@ -37,6 +40,14 @@ constexpr i128 round_div(i128 a, i128 b) {
   i128 n = 2 * a + b;
   const i128 d = 2 * b;
   i128 q = n / d;
+  if ((n % d) != 0 && n < 0) --q;
+  return q;
+}
+
+// round_div on 64 bits, for |a| < 2^61 and 0 < b < 2^61 (a 128-bit division is a library call).
+constexpr i64 round_div64(i64 a, i64 b) {
+  const i64 n = 2 * a + b, d = 2 * b;
+  i64 q = n / d;
   if ((n % d) != 0 && n < 0) --q;
   return q;
 }

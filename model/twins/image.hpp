@@ -21,18 +21,25 @@ struct Image {
   Image(int w, int h)
       : width(w), height(h), rgb(std::size_t(w) * h * 3, 0), covered(std::size_t(w) * h, 0),
         owner(std::size_t(w) * h, -1) {}
-  // A frame of one shade, nothing covered: one row built and appended h times (each byte
-  // written once).
-  Image(int w, int h, const std::array<std::uint8_t, 3>& background)
-      : width(w), height(h), covered(std::size_t(w) * h, 0), owner(std::size_t(w) * h, -1) {
-    std::vector<std::uint8_t> row(std::size_t(w) * 3);
-    for (std::size_t i = 0; i < row.size(); i += 3) {
-      row[i] = background[0];
-      row[i + 1] = background[1];
-      row[i + 2] = background[2];
+  // A frame of one shade, nothing covered.
+  Image(int w, int h, const std::array<std::uint8_t, 3>& background) { reset(w, h, background); }
+  // The same in this image's storage: a renderer that draws frame after frame into one image
+  // reuses its memory instead of faulting in fresh pages each frame. One row is built and
+  // copied h times (each byte written once).
+  void reset(int w, int h, const std::array<std::uint8_t, 3>& background) {
+    width = w;
+    height = h;
+    const std::size_t pixels = std::size_t(w) * h;
+    covered.assign(pixels, 0);
+    owner.assign(pixels, -1);
+    rgb.resize(pixels * 3);
+    for (std::size_t i = 0; i < std::size_t(w) * 3; i += 3) {
+      rgb[i] = background[0];
+      rgb[i + 1] = background[1];
+      rgb[i + 2] = background[2];
     }
-    rgb.reserve(row.size() * static_cast<std::size_t>(h));
-    for (int y = 0; y < h; ++y) rgb.insert(rgb.end(), row.begin(), row.end());
+    for (int y = 1; y < h; ++y)
+      std::copy(rgb.begin(), rgb.begin() + std::ptrdiff_t(w) * 3, rgb.begin() + std::ptrdiff_t(y) * w * 3);
   }
   std::uint8_t* at(int x, int y) { return &rgb[(std::size_t(y) * width + x) * 3]; }
   const std::uint8_t* at(int x, int y) const { return &rgb[(std::size_t(y) * width + x) * 3]; }

@@ -6,22 +6,30 @@
 namespace watkins {
 
 i64 PhongShader::power(i64 base, int n) {
+  // acc and base stay in [0, 1], so the products are >= 0 and round_shift64 needs no sign case:
+  // add half, shift. Once no bit of n is left, the RTL's remaining stages pass acc unchanged.
   i64 acc = One;
-  for (int k = 0; k < NBits; ++k) {  // stage 4 + k
-    if ((n >> k) & 1) acc = round_shift64(acc * base, P);
-    base = round_shift64(base * base, P);
+  for (int k = 0; k < NBits && (n >> k) != 0; ++k) {  // stage 4 + k
+    if ((n >> k) & 1) acc = (acc * base + (i64{1} << (P - 1))) >> P;
+    base = (base * base + (i64{1} << (P - 1))) >> P;
   }
   return acc;
 }
 
-PhongShader::Terms PhongShader::terms(const Pixel& px, const Vec& light, const Vec& eye) {
-  Terms t;
-  const i64 le = frame_le(light, eye);
+namespace {
+
+// terms(), in this file so that shade() (per fragment) inlines it.
+inline PhongShader::Terms terms_of(const PhongShader::Pixel& px, const PhongShader::Vec& light,
+                                   const PhongShader::Vec& eye, i64 le) {
+  using PS = PhongShader;
+  constexpr int D = PS::D, P = PS::P, MF = PS::MF;
+  constexpr i64 One = PS::One;
+  PS::Terms t;
   // Stage 1: exact dot products.
-  const i64 ndl = dot(px.n, light), nde = dot(px.n, eye);
+  const i64 ndl = PS::dot(px.n, light), nde = PS::dot(px.n, eye);
   // Stage 2: round to D bits and clamp; i > 90 degrees is clamped to cos(i) = 0.
-  t.cos_i = round_dot(ndl, false);
-  t.ne = round_dot(nde, true);
+  t.cos_i = PS::round_dot(ndl, false);
+  t.ne = PS::round_dot(nde, true);
   t.front = t.cos_i > 0;
   // Stage 3: cos(s) = 2 (N.L)(N.E) - L.E, and the diffuse factor.
   const i64 cs2 = 2 * t.cos_i * t.ne - le * (i64{1} << D);  // 2D frac
@@ -30,12 +38,18 @@ PhongShader::Terms PhongShader::terms(const Pixel& px, const Vec& light, const V
   const i64 d = px.d > (1 << MF) ? (1 << MF) : px.d;
   t.f = t.cos_i * ((1 << MF) - d) + (static_cast<i64>(d) << D);  // D + MF fraction bits
   // Stages 4..11.
-  t.pow = t.spec ? power(t.cs, px.shininess) : 0;
+  t.pow = t.spec ? PS::power(t.cs, px.shininess) : 0;
   return t;
 }
 
-std::array<int, 3> PhongShader::shade(const Pixel& px, const Vec& light, const Vec& eye) {
-  const Terms t = terms(px, light, eye);
+}  // namespace
+
+PhongShader::Terms PhongShader::terms(const Pixel& px, const Vec& light, const Vec& eye, i64 le) {
+  return terms_of(px, light, eye, le);
+}
+
+std::array<int, 3> PhongShader::shade(const Pixel& px, const Vec& light, const Vec& eye, i64 le) {
+  const Terms t = terms_of(px, light, eye, le);
   // Stages 12, 13: levels with D + MF fraction bits; specular W pow is white (255 per channel).
   const i64 spec = 255 * px.w * t.pow * (i64{1} << (D - P));
   std::array<int, 3> out{};

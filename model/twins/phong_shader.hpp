@@ -71,8 +71,15 @@ struct PhongShader {
     return round_dot(dot(light, eye), true);
   }
   static i64 power(i64 base, int n);  // base^n, P fraction bits, base in [0, 1]
-  static Terms terms(const Pixel& px, const Vec& light, const Vec& eye);
-  static std::array<int, 3> shade(const Pixel& px, const Vec& light, const Vec& eye);
+  // The pixel's terms and levels; `le` = frame_le(light, eye), which a frame works out once.
+  static Terms terms(const Pixel& px, const Vec& light, const Vec& eye, i64 le);
+  static std::array<int, 3> shade(const Pixel& px, const Vec& light, const Vec& eye, i64 le);
+  static Terms terms(const Pixel& px, const Vec& light, const Vec& eye) {
+    return terms(px, light, eye, frame_le(light, eye));
+  }
+  static std::array<int, 3> shade(const Pixel& px, const Vec& light, const Vec& eye) {
+    return shade(px, light, eye, frame_le(light, eye));
+  }
 };
 
 }  // namespace watkins

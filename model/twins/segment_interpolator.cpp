@@ -7,8 +7,9 @@ namespace watkins {
 namespace {
 
 // First pixel whose centre x + 1/2 is at or right of X: ceil(X − 1/2), X with fx fraction bits.
+// In 64 bits: X is a word of at most 62 bits, so adding under one pixel cannot overflow.
 i64 first_centre_at_or_after(i64 x, int fx) {
-  return static_cast<i64>(floor_shift(x - (i64{1} << (fx - 1)) + (i64{1} << fx) - 1, fx));
+  return floor_shift64(x - (i64{1} << (fx - 1)) + (i64{1} << fx) - 1, fx);
 }
 
 }  // namespace
@@ -64,16 +65,17 @@ SpanSetup SegmentInterpolator::setup(const Segment& s, int width, const ChannelF
   const i64 offset = static_cast<i64>(span.x_start) * (i64{1} << fx) + (i64{1} << (fx - 1)) - xe;  // >= 0
   // 64 bits hold a product and its rounding constant when the operands are small enough, which
   // they usually are whatever the words: the offset is under a pixel except where the span is
-  // clipped, a delta is what the slot changes across the span. Checked on the values, per product;
+  // clipped, a delta is what the slot changes across the span (|F - E|, small even where E and F
+  // are large, as depth usually is). Checked on the values, per product;
   // otherwise 128 bits. Same formulas and rounding either way, so the same values.
   constexpr int Small = 62 - std::max(fmt::RecipBits, fmt::AlphaBits) - 1;  // operand bits
-  const i64 alpha0 = offset < (i64{1} << Small) ? alpha0_in<i64>(r, offset) : alpha0_in<i128>(r, offset);
+  constexpr i64 Limit = i64{1} << Small;
+  const i64 alpha0 = offset < Limit ? alpha0_in<i64>(r, offset) : alpha0_in<i128>(r, offset);
   const bool small_shift = r.p + fmt::RecipBits - fx <= 61;  // the step's rounding constant
   for (int c = fmt::ChanZ; c < fmt::NumChannels; ++c) {
-    const i64 e = s.e[c], f = s.f[c];
-    const bool small = small_shift && e > -(i64{1} << Small) && e < (i64{1} << Small) &&
-                       f > -(i64{1} << Small) && f < (i64{1} << Small);  // |F - E| < 2^(Small+1)
-    if (small)
+    i64 delta = 0;
+    const bool overflow = __builtin_sub_overflow(s.f[c], s.e[c], &delta);  // not for words of 62 bits
+    if (small_shift && !overflow && delta > -Limit && delta < Limit)
       setup_slot<i64>(s, c, formats, r, alpha0, span);
     else
       setup_slot<i128>(s, c, formats, r, alpha0, span);

@@ -79,50 +79,89 @@ struct SegmentInterpolator {
 // The per-pixel path (fragment() and step()) with the configuration's shifts, masks and limits
 // worked out once: what a frame's inner loop uses. All in 64 bits: a channel word is at most
 // Config::MaxWordBits (62) bits, so a value plus a step, or plus half an ulp, cannot overflow.
+// InRange (a template parameter of head, fill and step): the caller knows, from in_range(), that
+// the span's values stay inside their words and inside the readings' ranges, so a step needs no
+// wrap and a reading no clamp; the values are the same as the general path's.
 class PixelPath {
  public:
   using Readings = SegmentInterpolator::Readings;
-  PixelPath(const ChannelFormats& f, Readings readings) : readings_(readings) {
-    for (int c = fmt::ChanZ; c < fmt::NumChannels; ++c) sign_[c] = i64{1} << (f.bits[c] - 1);
+  explicit PixelPath(const ChannelFormats& f) {
+    for (int c = fmt::ChanZ; c < fmt::NumChannels; ++c) {
+      sign_[c] = i64{1} << (f.bits[c] - 1);
+      lo_[c] = -sign_[c];  // the word's range; readings narrow it below
+      hi_[c] = sign_[c] - 1;
+    }
     z_shift_ = f.frac[fmt::ChanZ];
     z_half_ = half(z_shift_);
     depth_max_ = (i64{1} << f.depth_bits) - 1;
+    narrow(lo_[fmt::ChanZ], hi_[fmt::ChanZ], z_half_, static_cast<i128>(depth_max_ + 1) << z_shift_);
+    shade_lo_ = lo_;
+    shade_hi_ = hi_;
     for (int c = 0; c < 3; ++c) {
       shade_shift_[c] = f.frac[fmt::ChanR + c];
       shade_half_[c] = half(shade_shift_[c]);
       normal_shift_[c] = f.frac[fmt::ChanNx + c] - fmt::FracBits;
+      narrow(shade_lo_[fmt::ChanR + c], shade_hi_[fmt::ChanR + c], shade_half_[c],
+             static_cast<i128>(fmt::ShadeMax + 1) << shade_shift_[c]);
     }
   }
 
+  // Whether the span keeps every slot inside its word and (for the readings R) inside the range
+  // its reading needs no clamp for: the values are linear in x, so the first and the last pixel
+  // decide. In 64 bits: an overflow of last's product or sum answers false (the general path).
+  template <Readings R>
+  bool in_range(const SpanSetup& span) const {
+    if (R == Readings::Both) return false;  // a bench's fragments take the general path
+    const i64 last_k = span.x_end - span.x_start - 1;
+    bool ok = true;
+    for (int c = fmt::ChanZ; c < fmt::NumChannels; ++c) {
+      const i64 first = span.value[c];
+      i64 run = 0, last = 0;
+      if (__builtin_mul_overflow(last_k, span.step[c], &run) || __builtin_add_overflow(first, run, &last)) return false;
+      const i64 lo = R == Readings::Shade ? shade_lo_[c] : lo_[c];
+      const i64 hi = R == Readings::Shade ? shade_hi_[c] : hi_[c];
+      ok &= (first >= lo) & (first <= hi) & (last >= lo) & (last <= hi);
+    }
+    return ok;
+  }
+
   // The fragment's position, ids and depth: what the depth test needs.
+  template <bool InRange = false>
   Fragment head(const SpanSetup& span, int x, const ChannelVector& value) const {
     Fragment f;
     f.x = x;
     f.poly = span.poly;
     f.material = span.material;
-    f.depth = static_cast<std::uint32_t>(round_clamp(value[fmt::ChanZ], z_shift_, z_half_, depth_max_));
+    f.depth = static_cast<std::uint32_t>(InRange ? (value[fmt::ChanZ] + z_half_) >> z_shift_
+                                                 : round_clamp(value[fmt::ChanZ], z_shift_, z_half_, depth_max_));
     return f;
   }
-  // The attribute readings, for a fragment that needs them (one that won its pixel, or one a
-  // bench observes).
+  // The attribute readings R, for a fragment that needs them (one that won its pixel, or one a
+  // bench observes). A template parameter: a frame's loop knows which it needs.
+  template <Readings R, bool InRange = false>
   void fill(Fragment& f, const ChannelVector& value) const {
-    if (readings_ != Readings::Normal)
+    if (R != Readings::Normal)
       for (int c = 0; c < fmt::ShadeChannels; ++c)
         f.rgb[c] = static_cast<std::uint8_t>(
-            round_clamp(value[fmt::ChanR + c], shade_shift_[c], shade_half_[c], fmt::ShadeMax));
-    if (readings_ != Readings::Shade)
+            InRange && R == Readings::Shade
+                ? (value[fmt::ChanR + c] + shade_half_[c]) >> shade_shift_[c]
+                : round_clamp(value[fmt::ChanR + c], shade_shift_[c], shade_half_[c], fmt::ShadeMax));
+    if (R != Readings::Shade)
       for (int c = 0; c < 3; ++c) f.normal[c] = normal(value[fmt::ChanNx + c], normal_shift_[c]);
   }
   Fragment fragment(const SpanSetup& span, int x, const ChannelVector& value) const {
     Fragment f = head(span, x, value);
-    fill(f, value);
+    fill<Readings::Both>(f, value);
     return f;
   }
 
   // value += step per slot, wrapping like a register of the slot's width.
-  void step(const SpanSetup& span, ChannelVector& value) const {
-    for (int c = fmt::ChanZ; c < fmt::NumChannels; ++c) value[c] = wrap_to_sign(value[c] + span.step[c], sign_[c]);
+  template <bool InRange = false>
+  void step(const ChannelVector& step, ChannelVector& value) const {
+    for (int c = fmt::ChanZ; c < fmt::NumChannels; ++c)
+      value[c] = InRange ? value[c] + step[c] : wrap_to_sign(value[c] + step[c], sign_[c]);
   }
+  void step(const SpanSetup& span, ChannelVector& value) const { step(span.step, value); }
 
  private:
   // Half an ulp of a value with s fraction bits (none for s = 0): round_shift64's constant.
@@ -135,6 +174,12 @@ class PixelPath {
     const i64 r = t >> s;
     return r > hi ? hi : r;
   }
+  // Values v whose round_clamp(v, s, h, hi) needs no clamp: 0 <= v + h < (hi + 1) << s = top.
+  // Within a word's range, so each bound fits 64 bits.
+  static void narrow(i64& lo, i64& hi, i64 h, i128 top) {
+    lo = std::max(lo, -h);
+    hi = static_cast<i64>(std::min<i128>(hi, top - h - 1));
+  }
   // The normalizer reads FracBits fraction bits whatever the normal's channel format: round away
   // extra bits, or scale up, saturating to NormalInBits (compared before the shift, so nothing
   // overflows; FracBits < NormalInBits - 1, so a shift never passes the word).
@@ -146,8 +191,10 @@ class PixelPath {
   }
   static_assert(fmt::FracBits < fmt::NormalInBits - 1, "normal scaling stays within the word");
 
-  Readings readings_;
   std::array<i64, fmt::NumChannels> sign_{};  // per slot: 2^(bits-1), wrap_to_sign's word
+  // Per slot, the values for which InRange gives the general path's result: lo_/hi_ the word
+  // (and, for Z, an unclamped depth); shade_lo_/shade_hi_ also an unclamped shade in slots 2..4.
+  std::array<i64, fmt::NumChannels> lo_{}, hi_{}, shade_lo_{}, shade_hi_{};
   int z_shift_ = 0;
   i64 z_half_ = 0, depth_max_ = 0;
   int shade_shift_[3] = {0, 0, 0}, normal_shift_[3] = {0, 0, 0};
@@ -155,11 +202,11 @@ class PixelPath {
 };
 
 inline Fragment SegmentInterpolator::fragment(const SpanSetup& span, int x, const ChannelVector& value) {
-  return PixelPath(span.formats, Readings::Both).fragment(span, x, value);
+  return PixelPath(span.formats).fragment(span, x, value);
 }
 
 inline void SegmentInterpolator::step(const SpanSetup& span, ChannelVector& value) {
-  PixelPath(span.formats, Readings::Both).step(span, value);
+  PixelPath(span.formats).step(span, value);
 }
 
 }  // namespace watkins

@@ -24,7 +24,8 @@ std::array<std::uint8_t, 3> Smoother::pixel(const Image& in, int x, int y) const
   std::array<std::uint8_t, 3> out{};
   for (int k = 0; k < 3; ++k) {
     const std::int64_t n = one * one * c[k] + one * w * s_edge[k] + w * w * s_corner[k];
-    out[k] = static_cast<std::uint8_t>(round_div(n, d));
+    // n < 2^28 and d < 2^18 (8-bit shades, W < 2): 64 bits hold the division exactly.
+    out[k] = static_cast<std::uint8_t>(round_div64(n, d));
   }
   return out;
 }

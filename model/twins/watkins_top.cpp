@@ -1,6 +1,7 @@
 #include "watkins_top.hpp"
 
 #include <algorithm>
+#include <type_traits>
 
 #include "normalizer.hpp"
 #include "phong_shader.hpp"
@@ -11,12 +12,89 @@ namespace watkins {
 namespace {
 
 // normalizer → phong_shader on one fragment: its rgb becomes the shade of its material.
-void phong_shade(const Frame& frame, Fragment& f) {
+// `le` is the frame's L.E (PhongShader::frame_le), worked out once per frame.
+void phong_shade(const Frame& frame, i64 le, Fragment& f) {
   const Normalizer::Unit u = Normalizer::normalize(f.normal[0], f.normal[1], f.normal[2]);
   const QuantizedMaterial& m = frame.materials.at(static_cast<std::size_t>(f.material));
   const PhongShader::Pixel px{u.n, m.cp, m.d, m.w, m.shininess};
-  const std::array<int, 3> rgb = PhongShader::shade(px, frame.light, frame.eye);
+  const std::array<int, 3> rgb = PhongShader::shade(px, frame.light, frame.eye, le);
   for (int c = 0; c < 3; ++c) f.rgb[c] = static_cast<std::uint8_t>(rgb[c]);
+}
+
+// The segments of one scan line through the interpolator (and the Phong blocks) into the line
+// buffer. What varies per frame is a template parameter, chosen once per frame: whether a bench
+// observes the fragments (Observed: each gets both readings and is reported) and the shading,
+// so the loop nobody observes holds no call, no test of the observer and no test of the mode.
+struct LineCounts {
+  long long fragments = 0, visible = 0;  // as PipelineStats counts them
+};
+// Phong with nobody observing: a pixel's shade is a function of its last winner's normal and
+// material alone, so the line keeps those and shades each covered pixel once at read-out, not
+// every fragment that wins on the way (the same pixels: overdraw costs a depth test, not a shade).
+struct DeferredPhong {
+  std::vector<std::array<i64, 3>> normal;  // per pixel of the line
+  std::vector<int> material;
+};
+template <bool Observed, ShadingMode Shading>
+LineCounts draw_segments(const Frame& frame, const std::vector<Segment>& segments, const ChannelFormats& formats,
+                        const PixelPath& path, i64 le, ScanlineBuffer& line, int y,
+                        const PipelineObserver& observe, DeferredPhong& later) {
+  constexpr bool defer = !Observed && Shading == ShadingMode::Phong;
+  constexpr auto readings = Observed ? PixelPath::Readings::Both
+                            : Shading == ShadingMode::Phong ? PixelPath::Readings::Normal
+                                                            : PixelPath::Readings::Shade;
+  // Local copies: the line buffer's stores cannot alias them, so the loop keeps them in registers.
+  const PixelPath p = path;
+  LineCounts n;
+  for (const Segment& s : segments) {
+    const SpanSetup span = SegmentInterpolator::setup(s, frame.width, formats);
+    n.fragments += span.x_end - span.x_start;
+    // A span whose values stay inside their words and readings (in_range) runs without wraps
+    // and clamps; any other span, and every span a bench observes, takes the general path.
+    auto run = [&](auto in_range) {
+      constexpr bool InRange = decltype(in_range)::value;
+      ChannelVector v = span.value;
+      const ChannelVector step = span.step;
+      const std::uint64_t tie_bits = line.tie_bits(span.poly);
+      for (int x = span.x_start; x < span.x_end; ++x) {
+        // The depth test first: a hidden fragment's readings (and Phong shade) are computed only
+        // when a bench observes it. The RTL computes them all; the values kept are the same.
+        Fragment f = p.head<InRange>(span, x, v);
+        const std::uint64_t key = ScanlineBuffer::key(f.depth, tie_bits);
+        const bool won = line.wins_key(x, key);
+        if (won || Observed) {
+          p.fill<readings, InRange>(f, v);
+          if (defer) {
+            (void)frame.materials.at(static_cast<std::size_t>(f.material));  // the id check phong_shade makes
+            later.normal[static_cast<std::size_t>(x)] = f.normal;
+            later.material[static_cast<std::size_t>(x)] = f.material;
+          } else if (Shading == ShadingMode::Phong) {
+            phong_shade(frame, le, f);
+          }
+          if (won) line.store(f, key);
+          if (Observed) observe.fragment(y, f, won);
+        }
+        n.visible += won;
+        p.step<InRange>(step, v);
+      }
+    };
+    if (span.x_end <= span.x_start) continue;
+    if (p.in_range<readings>(span))
+      run(std::true_type{});
+    else
+      run(std::false_type{});
+  }
+  return n;
+}
+
+using DrawSegments = LineCounts (*)(const Frame&, const std::vector<Segment>&, const ChannelFormats&,
+                                   const PixelPath&, i64, ScanlineBuffer&, int, const PipelineObserver&,
+                                   DeferredPhong&);
+
+DrawSegments draw_segments_for(bool observed, ShadingMode shading) {
+  if (shading == ShadingMode::Phong)
+    return observed ? draw_segments<true, ShadingMode::Phong> : draw_segments<false, ShadingMode::Phong>;
+  return observed ? draw_segments<true, ShadingMode::Gouraud> : draw_segments<false, ShadingMode::Gouraud>;
 }
 
 }  // namespace
@@ -46,17 +124,28 @@ Image WatkinsTop::render(const Frame& frame, const FragmentObserver& observe) {
 }
 
 Image WatkinsTop::render(const Frame& frame, const PipelineObserver& observe) {
+  Image img;
+  render_into(frame, img, observe);
+  return img;
+}
+
+void WatkinsTop::render_into(const Frame& frame, Image& img, const PipelineObserver& observe) {
   stats_ = PipelineStats{};
-  Image img(frame.width, frame.height, frame.background);
+  img.reset(frame.width, frame.height, frame.background);
   ScanlineBuffer line(frame.width, frame.background, frame.depth_tie);
   const ChannelFormats formats = config_.channels(frame.shading);
   // The shade or the normal reading, as the frame's pipeline uses; both for an observer (the
   // benches compare the interpolator's ports, which carry both).
-  using Readings = SegmentInterpolator::Readings;
   const bool observing = static_cast<bool>(observe.fragment);
-  const PixelPath path(formats, observing                             ? Readings::Both
-                                : frame.shading == ShadingMode::Phong ? Readings::Normal
-                                                                      : Readings::Shade);
+  const PixelPath path(formats);
+  const DrawSegments draw = draw_segments_for(observing, frame.shading);
+  const i64 le = PhongShader::frame_le(frame.light, frame.eye);
+  const bool deferred = !observing && frame.shading == ShadingMode::Phong;
+  DeferredPhong later;
+  if (deferred) {
+    later.normal.resize(static_cast<std::size_t>(frame.width));
+    later.material.resize(static_cast<std::size_t>(frame.width));
+  }
   walk_scan_lines(frame.edges, frame.height, max_active_edges_, formats, [&](const ScanLine& sl) {
     const int y = sl.y;
     stats_.edges += sl.entered;
@@ -69,30 +158,21 @@ Image WatkinsTop::render(const Frame& frame, const PipelineObserver& observe) {
       for (const Segment& s : sl.segments) observe.segment(y, s);
     if (observe.segments_end) observe.segments_end(y);
     line.clear();
-    for (const auto& s : sl.segments) {
-      const SpanSetup span = SegmentInterpolator::setup(s, frame.width, formats);
-      ChannelVector v = span.value;
-      for (int x = span.x_start; x < span.x_end; ++x) {
-        // The depth test first: a hidden fragment's readings (and Phong shade) are computed only
-        // when a bench observes it. The RTL computes them all; the values kept are the same.
-        Fragment f = path.head(span, x, v);
-        const bool won = line.wins(f);
-        if (won || observing) {
-          path.fill(f, v);
-          if (frame.shading == ShadingMode::Phong) phong_shade(frame, f);
-          if (won) line.store(f);
-          if (observing) observe.fragment(y, f, won);
-        }
-        ++stats_.fragments;
-        stats_.visible += won;
-        path.step(span, v);
-      }
-    }
+    const LineCounts n = draw(frame, sl.segments, formats, path, le, line, y, observe, later);
+    stats_.fragments += n.fragments;
+    stats_.visible += n.visible;
     if (observe.fragments_end) observe.fragments_end(y);
     // The image starts as background, uncovered: only the line's covered pixels are copied.
     const std::size_t row = std::size_t(y) * frame.width;
     for (const int x : line.written()) {
-      const auto& p = line.written_rgb(x);
+      std::array<std::uint8_t, 3> p = line.written_rgb(x);
+      if (deferred) {
+        Fragment f;
+        f.normal = later.normal[static_cast<std::size_t>(x)];
+        f.material = later.material[static_cast<std::size_t>(x)];
+        phong_shade(frame, le, f);
+        p = {f.rgb[0], f.rgb[1], f.rgb[2]};
+      }
       std::uint8_t* out = &img.rgb[(row + x) * 3];
       out[0] = p[0], out[1] = p[1], out[2] = p[2];  // byte stores: no library call per pixel
       img.covered[row + x] = 1;
@@ -100,8 +180,7 @@ Image WatkinsTop::render(const Frame& frame, const PipelineObserver& observe) {
     }
   });
   // The smoother after the line buffer, when the frame enables it (it sees the full raster).
-  if (frame.smoothed()) return Smoother(frame.smooth_w).apply(img);
-  return img;
+  if (frame.smoothed()) img = Smoother(frame.smooth_w).apply(img);
 }
 
 }  // namespace watkins

@@ -85,6 +85,9 @@ class WatkinsTop {
   Image render(const Frame& frame, const FragmentObserver& observe = nullptr);
   // The same, reporting every stage stream to `observe`.
   Image render(const Frame& frame, const PipelineObserver& observe);
+  // The same into `out`, whose storage is reused (Image::reset): for a loop drawing frame after
+  // frame. The image is the one render() returns.
+  void render_into(const Frame& frame, Image& out, const PipelineObserver& observe = {});
   const PipelineStats& stats() const { return stats_; }
 
  private:
