@@ -27,7 +27,7 @@ constexpr int RecipStages = fmt::RecipBits + 2;  // span_reciprocal: normalize +
 constexpr int InterpFifoDepth = 4;               // segment_interpolator's FifoDepth
 constexpr int NormalizerStages = 8;              // normalizer: squares, rsqrt_unit (5), product, round
 constexpr int ShaderStages = 13;                 // phong_shader: dots, round, cos(s), 8 powers, 2 out
-constexpr int SmootherStages = fmt::ShadeBits + 4;  // smoother: line read, window, sums, dividend, a divider
+constexpr int SmootherStages = fmt::ShadeBits + 5;  // smoother: line read, window, sums, products, dividend, a divider
                                                     // stage per quotient bit
 }  // namespace rtl_timing
 
