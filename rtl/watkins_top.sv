@@ -6,7 +6,7 @@
 // and the fragment's shade goes straight to the depth test. Phong = 1: they are the vertex
 // normal; each fragment's interpolated normal is normalized and shaded by Phong's eq. (3) with
 // its polygon's material (a 2^MaterialIdBits-entry table written through material_*_i between
-// frames) and the frame's light_i / eye_i (sampled with the frame size), adding 21 cycles of
+// frames) and the frame's light_i / eye_i (sampled with the frame size), adding 32 cycles of
 // latency, not throughput: still one fragment per clock, shaded before the depth test.
 // A frame starts with the first beat of its edge stream once the previous frame's last pixel
 // has left and its stream has been read up to its EOF beat; width, height and background are
