@@ -217,7 +217,7 @@ module phong_shader #(
   // ---- stage 23: 255 W cos(s)^n (white highlight), D + MF fraction bits -----------------------
   logic [LW-1:0] spec_q;
   always_ff @(posedge clk_i) if (en) begin
-    diff2_q <= diff_q;
+    for (int c = 0; c < 3; c++) diff2_q[c] <= diff_q[c];
     spec_q  <= ((LW'(wacc_q) << 8) - LW'(wacc_q)) << (DotBits - PowBits);
   end
 
