@@ -21,8 +21,8 @@
 // keeps the background elsewhere (e.g. a framebuffer cleared once). sparse_i = 0: every pixel.
 // Smoothing (smooth_w_i != 0 for the frame): Herman & Liu's 3x3 smoother (rtl/smoother.sv) after
 // the scanline buffer. It needs the whole raster, so a smoothed frame is emitted in full whatever
-// sparse_i says; its last pixel leaves width + 14 clocks after the buffer's last (the flush of the
-// last line and the smoother's 13 stages). smooth_w_i = 0: the smoother is bypassed, no latency.
+// sparse_i says; its last pixel leaves width + 15 clocks after the buffer's last (the flush of the
+// last line and the smoother's 14 stages). smooth_w_i = 0: the smoother is bypassed, no latency.
 // Equal depth (tie_submission_i for the frame): 0 keeps the fragment that reached the depth test
 // first (segments in closing order); 1 keeps the smaller polygon id, i.e. the first polygon
 // submitted when ids follow submission order, as GL's GL_LESS depth test does. Each fragment
