@@ -181,19 +181,37 @@ module phong_shader #(
     for (int j = 1; j <= 2 * ShininessBits; j++) f_q[j] <= f_q[j-1];
   end
 
-  localparam int PB2 = 2 * PowBits + 3;
+  // The products split at bit PSplit into four partial products, each registered straight from
+  // its multiplier block (a 21 x 21 product and its adder tree in one clock limited the shader
+  // at 58 MHz on the ECP5); the round stage adds them: x·y = {x1·y1, x0·y0} + (x0·y1 + x1·y0)·2^PSplit.
+  localparam int PB2    = 2 * PowBits + 3;
+  localparam int PSplit = 17;                     // fits an 18 x 18 multiplier, signed or not
+  localparam int PHi    = PowBits + 1 - PSplit;   // 4
   for (genvar k = 0; k < ShininessBits; k++) begin : g_pow
     /* verilator lint_off UNUSEDSIGNAL */
-    logic [PB2-1:0] pa_q, pb_q, pa, pb;  // products <= 2^2P plus half: only [2P:P] is kept
+    logic [PB2-1:0] pa, pb;  // products <= 2^2P plus half: only [2P:P] is kept
     /* verilator lint_on UNUSEDSIGNAL */
-    logic [PowBits:0] acc_k_q;           // acc_q[k], for a bit of n that is clear
+    logic [2*PSplit-1:0]   a00_q, b00_q;          // low x low
+    logic [PSplit+PHi-1:0] a01_q, a10_q, b01_q;   // low x high (b10 = b01: a square)
+    logic [2*PHi-1:0]      a11_q, b11_q;          // high x high
+    logic [PowBits:0]      acc_k_q;               // acc_q[k], for a bit of n that is clear
+    logic [PSplit-1:0]     x0, y0;
+    logic [PHi-1:0]        x1, y1;
+    assign {x1, x0} = acc_q[k];
+    assign {y1, y0} = base_q[k];
     always_ff @(posedge clk_i) if (en) begin
-      pa_q    <= PB2'(acc_q[k])  * PB2'(base_q[k]);
-      pb_q    <= PB2'(base_q[k]) * PB2'(base_q[k]);
+      a00_q   <= (2*PSplit)'(x0) * (2*PSplit)'(y0);
+      a01_q   <= (PSplit+PHi)'(x0) * (PSplit+PHi)'(y1);
+      a10_q   <= (PSplit+PHi)'(x1) * (PSplit+PHi)'(y0);
+      a11_q   <= (2*PHi)'(x1) * (2*PHi)'(y1);
+      b00_q   <= (2*PSplit)'(y0) * (2*PSplit)'(y0);
+      b01_q   <= (PSplit+PHi)'(y0) * (PSplit+PHi)'(y1);
+      b11_q   <= (2*PHi)'(y1) * (2*PHi)'(y1);
       acc_k_q <= acc_q[k];
     end
-    assign pa = pa_q + PB2'(1 << (PowBits - 1));
-    assign pb = pb_q + PB2'(1 << (PowBits - 1));
+    assign pa = PB2'({a11_q, a00_q}) + (PB2'(a01_q) << PSplit) + (PB2'(a10_q) << PSplit)
+              + PB2'(1 << (PowBits - 1));
+    assign pb = PB2'({b11_q, b00_q}) + (PB2'(b01_q) << (PSplit + 1)) + PB2'(1 << (PowBits - 1));
     always_ff @(posedge clk_i) if (en) begin
       acc_q[k+1] <= n_q[PowFirst + 2 * k - 1][k] ? pa[2*PowBits:PowBits] : acc_k_q;
     end
