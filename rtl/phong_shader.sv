@@ -1,11 +1,12 @@
 // phong_shader: Phong's shading rule S = Cp [cos(i)(1-d) + d] + W cos(s)^n (Phong 1975 eq. 3)
 // per pixel, light and eye at infinity, cos(s) = R.E = 2(N.L)(N.E) - L.E (Phong's reflected
 // vector, eqs. 4-8), cos(s)^n by square-and-multiply over the 8 bits of n; bit-exact twin of
-// model/twins/phong_shader.hpp. Latency 13, one pixel per clock; every stage registers valid and data;
+// model/twins/phong_shader.hpp. Latency 24, one pixel per clock; every stage registers valid and data;
 // one global stall (stall_pipe): ready_o = ready_i || !valid_o (combinational from ready_i and the
-// output valid flop only). light_i / eye_i are frame constants: L.E is registered from them every
-// clock (le_q), so they must be stable from one clock before a frame's first pixel to its last
-// output.
+// output valid flop only). Every product is registered on its own, the sums and roundings that
+// use it one stage later (ECP5 MULT18 and iCE40 MAC16 timing). light_i / eye_i are frame
+// constants: L.E is computed from them over four clocks, every clock, so they must be stable from
+// one clock before a frame's first pixel to its last output.
 `include "watkins_assert.svh"
 
 module phong_shader #(
@@ -40,8 +41,14 @@ module phong_shader #(
   localparam int CW       = 2 * DotBits + 6;                // 2 cos(i) (N.E) - L.E at 2D fraction bits
   localparam int FW       = DotBits + MF + 1;               // f = cos(i)(1-d) + d <= 1
   localparam int LW       = FW + 8 + 2;                     // a level at D + MF fraction bits, plus sum
-  localparam int PowFirst = 3;                              // acc_q[0] sits in stage 3 (u_pipe.valid_q[2])
-  localparam int Stages   = PowFirst + ShininessBits + 2;   // 13: dots, round, cos(s), 8 powers, 2 out
+  localparam int WAB      = MaterialBits + PowBits + 1;     // W cos(s)^n
+  // Stages: 1 the dot products' six products, 2 their sums, 3 round, 4 cos(i)(N.E) and
+  // cos(i)(1-d), 5 cos(s) and f, 6..21 the powers (a product stage and a round stage per bit of
+  // n), 22 Cp f and W pow, 23 255 W pow, 24 round and saturate.
+  localparam int CosStage = 5;                              // acc_q[0], base_q[0], f_q[0]
+  localparam int PowFirst = CosStage + 1;                   // power k: stages PowFirst + 2k, + 2k + 1
+  localparam int PowLast  = CosStage + 2 * ShininessBits;   // 21: acc_q[ShininessBits]
+  localparam int Stages   = PowLast + 3;                    // 24
 
   // Valid, payload and the stall of every stage; the registers below advance on its en.
   logic en;
@@ -62,19 +69,21 @@ module phong_shader #(
     .en_o     (en)
   );
 
-  // Exact dot product of two Q2.14 vectors (28 fraction bits).
-  function automatic logic signed [DW-1:0] dot3(input logic [3*UB-1:0] a, input logic [3*UB-1:0] b);
-    logic signed [DW-1:0] acc, x, y;
-    acc = '0;
+  // The three products of a dot product of two Q2.14 vectors, each exact (28 fraction bits).
+  function automatic logic [3*DW-1:0] products3(input logic [3*UB-1:0] a, input logic [3*UB-1:0] b);
+    logic signed [DW-1:0] x, y, p;
     for (int c = 0; c < 3; c++) begin
-      x   = DW'(signed'(a[c*UB +: UB]));  // sign-extended to DW
-      y   = DW'(signed'(b[c*UB +: UB]));
-      acc = acc + x * y;
+      x = DW'(signed'(a[c*UB +: UB]));  // sign-extended to DW
+      y = DW'(signed'(b[c*UB +: UB]));
+      p = x * y;
+      products3[c*DW +: DW] = p;
     end
-    dot3 = acc;
+  endfunction
+  function automatic logic signed [DW-1:0] sum3(input logic [3*DW-1:0] p);
+    sum3 = signed'(p[0 +: DW]) + signed'(p[DW +: DW]) + signed'(p[2*DW +: DW]);
   endfunction
 
-  // round(v / 2^(2UF-D)), clamped to [lo, 2 - 2^-D] (lo = 0 or -2): stage 2 and L.E.
+  // round(v / 2^(2UF-D)), clamped to [lo, 2 - 2^-D] (lo = 0 or -2): stage 3 and L.E.
   function automatic logic signed [DotBits+1:0] round_dot(input logic signed [DW-1:0] v,
                                                           input logic neg_ok);
     logic signed [DW-1:0] r, hi, lo;  // all signed: the comparisons below are signed
@@ -86,108 +95,156 @@ module phong_shader #(
     else             round_dot = r[DotBits+1:0];
   endfunction
 
-  // ---- frame constant: L.E, D fraction bits -----------------------------------------------------
+  // ---- frame constant: cos(s)'s offset -L.E 2^D plus its rounding half, over four clocks -------
+  logic [3*DW-1:0]           le_p_q;
+  logic signed [DW-1:0]      le_s_q;
   logic signed [DotBits+1:0] le_q;
-  always_ff @(posedge clk_i) le_q <= round_dot(dot3(light_i, eye_i), 1'b1);
+  logic signed [CW-1:0]      cs_k_q;
+  always_ff @(posedge clk_i) begin
+    le_p_q <= products3(light_i, eye_i);
+    le_s_q <= sum3(le_p_q);
+    le_q   <= round_dot(le_s_q, 1'b1);
+    cs_k_q <= CW'(1 <<< (2 * DotBits - PowBits - 1)) - (CW'(le_q) <<< DotBits);
+  end
 
-  // Pixel attributes travel alongside: index s holds the pixel in stage s+1 (u_pipe.valid_q[s]).
-  localparam int AttrLast = PowFirst + ShininessBits - 1;  // 10: stage 11 feeds stage 12
-  logic [watkins_pkg::RgbBits-1:0] cp_q [AttrLast+1];  // vectors: yosys 0.23 and struct arrays
-  logic [MaterialBits-1:0]         w_q  [AttrLast+1];
-  logic [ShininessBits-1:0]        n_q  [AttrLast];    // last read by the final power stage
+  // Pixel attributes travel alongside: index s - 1 holds the pixel in stage s (u_pipe.valid_q[s-1]).
+  logic [watkins_pkg::RgbBits-1:0] cp_q [PowLast];  // vectors: yosys 0.23 and struct arrays
+  logic [MaterialBits-1:0]         w_q  [PowLast];
+  logic [ShininessBits-1:0]        n_q  [PowLast-1];  // last read by the final power stage
+  logic [MaterialBits-1:0]         d_q  [CosStage-1]; // last read by stage 5
   always_ff @(posedge clk_i) if (en) begin
-    cp_q[0]      <= cp_i;
-    w_q[0]       <= w_i;
-    n_q[0]       <= shininess_i;
-    for (int s = 1; s <= AttrLast; s++) begin
+    cp_q[0] <= cp_i;
+    w_q[0]  <= w_i;
+    n_q[0]  <= shininess_i;
+    d_q[0]  <= (d_i > MaterialBits'(1 << MF)) ? MaterialBits'(1 << MF) : d_i;  // d <= 1.0
+    for (int s = 1; s < PowLast; s++) begin
       cp_q[s] <= cp_q[s-1];
       w_q[s]  <= w_q[s-1];
     end
-    for (int s = 1; s < AttrLast; s++) n_q[s] <= n_q[s-1];
+    for (int s = 1; s < PowLast - 1; s++) n_q[s] <= n_q[s-1];
+    for (int s = 1; s < CosStage - 1; s++) d_q[s] <= d_q[s-1];
   end
 
-  // ---- stage 1: N.L and N.E, exact -------------------------------------------------------------
-  logic signed [DW-1:0]    ndl_q, nde_q;
-  logic [MaterialBits-1:0] d1_q;
+  // ---- stage 1: the products of N.L and N.E ------------------------------------------------------
+  logic [3*DW-1:0] nl_p_q, ne_p_q;
   always_ff @(posedge clk_i) if (en) begin
-    ndl_q <= dot3(normal_i, light_i);
-    nde_q <= dot3(normal_i, eye_i);
-    d1_q  <= (d_i > MaterialBits'(1 << MF)) ? MaterialBits'(1 << MF) : d_i;  // d <= 1.0
+    nl_p_q <= products3(normal_i, light_i);
+    ne_p_q <= products3(normal_i, eye_i);
   end
 
-  // ---- stage 2: cos(i) >= 0 (i > 90 degrees clamped, Phong p. 313), N.E ------------------
+  // ---- stage 2: N.L and N.E, exact -------------------------------------------------------------
+  logic signed [DW-1:0] ndl_q, nde_q;
+  always_ff @(posedge clk_i) if (en) begin
+    ndl_q <= sum3(nl_p_q);
+    nde_q <= sum3(ne_p_q);
+  end
+
+  // ---- stage 3: cos(i) >= 0 (i > 90 degrees clamped, Phong p. 313), N.E ------------------
   logic signed [DotBits+1:0] cosi_q, ne_q;
-  logic [MaterialBits-1:0]   d2_q;
   always_ff @(posedge clk_i) if (en) begin
     cosi_q <= round_dot(ndl_q, 1'b0);
     ne_q   <= round_dot(nde_q, 1'b1);
-    d2_q   <= d1_q;
   end
 
-  // ---- stage 3: cos(s) = 2 cos(i)(N.E) - L.E in [0, 1] (P bits), f = cos(i)(1-d) + d -----------
-  logic signed [CW-1:0]    cs2, csr, ci_w, ne_w, le_w;
-  logic [PowBits:0]        cs;
-  logic [FW-1:0]           f;
-  logic [MaterialBits-1:0] omd;  // 1 - d, 1.0 = 256
+  // ---- stage 4: the products cos(i)(N.E) and cos(i)(1-d) ---------------------------------------
+  logic signed [CW-1:0]    cne_q;
+  logic [FW-1:0]           fp_q;
+  logic                    front_q;  // cos(i) > 0
+  logic [MaterialBits-1:0] omd;      // 1 - d, 1.0 = 256
+  assign omd = MaterialBits'(1 << MF) - d_q[2];
+  always_ff @(posedge clk_i) if (en) begin
+    cne_q   <= CW'(cosi_q) * CW'(ne_q);
+    fp_q    <= FW'(cosi_q[DotBits:0]) * FW'(omd);
+    front_q <= cosi_q != '0;
+  end
+
+  // ---- stage 5: cos(s) = 2 cos(i)(N.E) - L.E in [0, 1] (P bits), f = cos(i)(1-d) + d -----------
+  logic signed [CW-1:0] csr;
+  logic [PowBits:0]     cs;
   always_comb begin
-    ci_w = CW'(cosi_q);
-    ne_w = CW'(ne_q);
-    le_w = CW'(le_q);
-    cs2  = ((ci_w * ne_w) <<< 1) - (le_w <<< DotBits);
-    csr  = (cs2 + CW'(1 <<< (2 * DotBits - PowBits - 1))) >>> (2 * DotBits - PowBits);
+    csr = ((cne_q <<< 1) + cs_k_q) >>> (2 * DotBits - PowBits);
     if (csr > CW'(1 <<< PowBits)) cs = (PowBits+1)'(1 << PowBits);
     else if (csr < 0)             cs = '0;
     else                          cs = csr[PowBits:0];
-    omd = MaterialBits'(1 << MF) - d2_q;
-    f   = FW'(cosi_q[DotBits:0]) * FW'(omd) + (FW'(d2_q) << DotBits);
   end
 
-  // Power stages k = 0..ShininessBits-1 (stage PowFirst + k): acc *= base if bit k of n,
-  // base *= base.
+  // Power k = 0..ShininessBits-1 (stages PowFirst + 2k and + 2k + 1): acc *= base if bit k of n,
+  // base *= base, the products registered in the first stage, rounded in the second.
   logic [PowBits:0] acc_q  [ShininessBits+1];
   logic [PowBits:0] base_q [ShininessBits];
-  logic [FW-1:0]    f_q    [ShininessBits+1];
+  logic [FW-1:0]    f_q    [2*ShininessBits+1];  // f_q[j]: stage CosStage + j
   always_ff @(posedge clk_i) if (en) begin
     // A pixel facing away (cos(i) = 0) or with cos(s) = 0 starts from acc = 0: specular 0.
-    acc_q[0]  <= (cosi_q != '0 && cs != '0) ? (PowBits+1)'(1 << PowBits) : '0;
+    acc_q[0]  <= (front_q && cs != '0) ? (PowBits+1)'(1 << PowBits) : '0;
     base_q[0] <= cs;
-    f_q[0]    <= f;
+    f_q[0]    <= fp_q + (FW'(d_q[3]) << DotBits);
+    for (int j = 1; j <= 2 * ShininessBits; j++) f_q[j] <= f_q[j-1];
   end
 
+  // The products split at bit PSplit into four partial products, each registered straight from
+  // its multiplier block (a 21 x 21 product and its adder tree in one clock limited the shader
+  // at 58 MHz on the ECP5); the round stage adds them: x·y = {x1·y1, x0·y0} + (x0·y1 + x1·y0)·2^PSplit.
+  localparam int PB2    = 2 * PowBits + 3;
+  localparam int PSplit = 17;                     // fits an 18 x 18 multiplier, signed or not
+  localparam int PHi    = PowBits + 1 - PSplit;   // 4
   for (genvar k = 0; k < ShininessBits; k++) begin : g_pow
     /* verilator lint_off UNUSEDSIGNAL */
-    logic [2*PowBits+2:0] pa, pb;  // products <= 2^2P plus half: only [2P:P] is kept
+    logic [PB2-1:0] pa, pb;  // products <= 2^2P plus half: only [2P:P] is kept
     /* verilator lint_on UNUSEDSIGNAL */
-    always_comb begin
-      pa = (2*PowBits+3)'(acc_q[k])  * (2*PowBits+3)'(base_q[k]) + (2*PowBits+3)'(1 << (PowBits - 1));
-      pb = (2*PowBits+3)'(base_q[k]) * (2*PowBits+3)'(base_q[k]) + (2*PowBits+3)'(1 << (PowBits - 1));
-    end
+    logic [2*PSplit-1:0]   a00_q, b00_q;          // low x low
+    logic [PSplit+PHi-1:0] a01_q, a10_q, b01_q;   // low x high (b10 = b01: a square)
+    logic [2*PHi-1:0]      a11_q, b11_q;          // high x high
+    logic [PowBits:0]      acc_k_q;               // acc_q[k], for a bit of n that is clear
+    logic [PSplit-1:0]     x0, y0;
+    logic [PHi-1:0]        x1, y1;
+    assign {x1, x0} = acc_q[k];
+    assign {y1, y0} = base_q[k];
     always_ff @(posedge clk_i) if (en) begin
-      acc_q[k+1] <= n_q[PowFirst - 1 + k][k] ? pa[2*PowBits:PowBits] : acc_q[k];
-      f_q[k+1]   <= f_q[k];
+      a00_q   <= (2*PSplit)'(x0) * (2*PSplit)'(y0);
+      a01_q   <= (PSplit+PHi)'(x0) * (PSplit+PHi)'(y1);
+      a10_q   <= (PSplit+PHi)'(x1) * (PSplit+PHi)'(y0);
+      a11_q   <= (2*PHi)'(x1) * (2*PHi)'(y1);
+      b00_q   <= (2*PSplit)'(y0) * (2*PSplit)'(y0);
+      b01_q   <= (PSplit+PHi)'(y0) * (PSplit+PHi)'(y1);
+      b11_q   <= (2*PHi)'(y1) * (2*PHi)'(y1);
+      acc_k_q <= acc_q[k];
+    end
+    assign pa = PB2'({a11_q, a00_q}) + (PB2'(a01_q) << PSplit) + (PB2'(a10_q) << PSplit)
+              + PB2'(1 << (PowBits - 1));
+    assign pb = PB2'({b11_q, b00_q}) + (PB2'(b01_q) << (PSplit + 1)) + PB2'(1 << (PowBits - 1));
+    always_ff @(posedge clk_i) if (en) begin
+      acc_q[k+1] <= n_q[PowFirst + 2 * k - 1][k] ? pa[2*PowBits:PowBits] : acc_k_q;
     end
     if (k + 1 < ShininessBits) begin : g_base
       always_ff @(posedge clk_i) if (en) base_q[k+1] <= pb[2*PowBits:PowBits];
     end
   end
 
-  // ---- stage 12: Cp f per channel, 255 W cos(s)^n (white highlight), D + MF fraction bits ------
+  // ---- stage 22: Cp f per channel, W cos(s)^n --------------------------------------------------
   // Channel c is byte c of rgb_t (B, G, R for c = 0, 1, 2) in Cp and in the shade alike: the
   // three channels are computed the same way, so the loop need not know which is which.
-  logic [LW-1:0] diff_q [3];
-  logic [LW-1:0] spec_q;
+  logic [LW-1:0]  diff_q [3];
+  logic [LW-1:0]  diff2_q [3];
+  logic [WAB-1:0] wacc_q;
   always_ff @(posedge clk_i) if (en) begin
     for (int c = 0; c < 3; c++)
-      diff_q[c] <= LW'(cp_q[AttrLast][c*8 +: 8]) * LW'(f_q[ShininessBits]);
-    spec_q <= (LW'(8'd255) * LW'(w_q[AttrLast]) * LW'(acc_q[ShininessBits])) << (DotBits - PowBits);
+      diff_q[c] <= LW'(cp_q[PowLast-1][c*8 +: 8]) * LW'(f_q[2*ShininessBits]);
+    wacc_q <= WAB'(w_q[PowLast-1]) * WAB'(acc_q[ShininessBits]);
   end
 
-  // ---- stage 13: level = saturate(round(Cp f + 255 W pow)) --------------------------------------
+  // ---- stage 23: 255 W cos(s)^n (white highlight), D + MF fraction bits -----------------------
+  logic [LW-1:0] spec_q;
+  always_ff @(posedge clk_i) if (en) begin
+    for (int c = 0; c < 3; c++) diff2_q[c] <= diff_q[c];
+    spec_q  <= ((LW'(wacc_q) << 8) - LW'(wacc_q)) << (DotBits - PowBits);
+  end
+
+  // ---- stage 24: level = saturate(round(Cp f + 255 W pow)) --------------------------------------
   logic [watkins_pkg::RgbBits-1:0] rgb_q;
   always_ff @(posedge clk_i) if (en) begin
     for (int c = 0; c < 3; c++) begin
       logic [LW-1:0] lvl;
-      lvl = (diff_q[c] + spec_q + (LW'(1) << (DotBits + MF - 1))) >> (DotBits + MF);
+      lvl = (diff2_q[c] + spec_q + (LW'(1) << (DotBits + MF - 1))) >> (DotBits + MF);
       rgb_q[c*8 +: 8] <= (lvl > LW'(255)) ? 8'd255 : lvl[7:0];
     end
   end

@@ -129,7 +129,11 @@ module segment_interpolator #(
   assign xe_f = seg_f_i[0 +: XBits];
 
   always_comb begin
-    logic signed [PCB-1:0] fce, fcf, xs_full, xe_full;
+    logic signed [PCB-1:0] fce, fcf;
+    // The clamped ends keep LB bits: beyond them the span is empty (decided from fce and fcf).
+    /* verilator lint_off UNUSEDSIGNAL */
+    logic signed [PCB-1:0] xs_full, xe_full;
+    /* verilator lint_on UNUSEDSIGNAL */
     // offset < dx when the span is not empty, so its top bits (and those of x_start beyond them:
     // the sum is exact modulo 2^(DxBits+2)) are dropped.
     /* verilator lint_off UNUSEDSIGNAL */
@@ -140,7 +144,9 @@ module segment_interpolator #(
     xs_full = (fce < 0) ? '0 : fce;
     xe_full = (fcf > $signed(PCB'(width_i))) ? $signed(PCB'(width_i)) : fcf;
     s0_d.eol   = seg_eol_i;
-    s0_d.empty = (xe_full <= xs_full);
+    // empty = min(fcf, width) <= max(fce, 0), spread into four compares of the unclamped ends
+    // that run side by side (through the clamps it was the block's longest path).
+    s0_d.empty = (fcf <= fce) || (fcf <= 0) || ($signed(PCB'(width_i)) <= fce) || (width_i == '0);
     s0_d.poly     = seg_poly_i;
     s0_d.material = seg_material_i;
     s0_d.xs    = LB'(xs_full);

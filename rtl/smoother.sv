@@ -2,7 +2,7 @@
 // of the raster-order frame becomes the 3x3 weighted mean (G1 + W·Σ edges + W²·Σ corners) /
 // (1 + W·n_edge + W²·n_corner) per channel, neighbours counted only when on the screen and
 // covered (f_i); uncovered pixels keep their shade. W = w_i / 2^SmoothWFracBits; w_i = 0 is the
-// identity. Latency: pixel (x, y) leaves 12 clocks after the input beat at (x+1, y+1) (raster
+// identity. Latency: pixel (x, y) leaves 14 clocks after the input beat at (x+1, y+1) (raster
 // index + width + 1) was taken; the last width + 1 pixels of a frame come from flush steps, one
 // per clock after its last input beat (ready_o low meanwhile). One pixel per clock; every stage
 // registered, stalled together: ready_o = (ready_i || !valid_o) && !flushing (combinational).
@@ -158,20 +158,24 @@ module smoother #(
     end
   end
 
-  // ------------------------------------------------------------ stage 3: f_i and the sums
-  // Stages 3..12 compute inside their registers' enables (functions called under `if`), each
+  // ------------------------------------------------------------ stage 3: f_i and pair sums
+  // Stages 3..14 compute inside their registers' enables (functions called under `if`), each
   // stage's registers loading only a valid pixel: the same gates, clock-enabled, and a
   // simulator does no work for an empty stage (a frame with W = 0 leaves all of them empty).
-  localparam int unsigned SumsBits = 2 * 3 * SumBits + 2 * NB;  // {s_edge, s_corner, n_edge, n_corner}
-  // Edges: up, left, right, down; corners: up-left, up-right, down-left, down-right.
-  function automatic logic [SumsBits-1:0] window_sums(logic [3*PB-1:0] w0, logic [3*PB-1:0] w1,
-                                                      logic [3*PB-1:0] w2, logic [3:0] m);
-    logic [PB-1:0]        centre;
-    logic [8*PB-1:0]      nb;
-    logic [7:0]           f;
-    logic [3*SumBits-1:0] s_edge, s_corner;
-    logic [NB-1:0]        n_edge, n_corner;
-    logic                 m_left, m_right, m_up, m_down;
+  // Stage 3 adds the masked neighbours two by two, stage 4 the two pairs (the mask and a
+  // four-input sum in one clock limited the smoother at 79 MHz on the ECP5).
+  localparam int unsigned PairBits = SB + 1;
+  localparam int unsigned PairsBits = 2 * 3 * 2 * PairBits + 2 * NB;  // {edge pairs, corner pairs, n_edge, n_corner}
+  // Edges: up, left, right, down; corners: up-left, up-right, down-left, down-right. Pair j of a
+  // kind is its neighbours 2j and 2j + 1; channel c's pairs at (2c + j)·PairBits.
+  function automatic logic [PairsBits-1:0] window_pairs(logic [3*PB-1:0] w0, logic [3*PB-1:0] w1,
+                                                        logic [3*PB-1:0] w2, logic [3:0] m);
+    logic [PB-1:0]           centre;
+    logic [8*PB-1:0]         nb;
+    logic [7:0]              f;
+    logic [6*PairBits-1:0]   p_edge, p_corner;
+    logic [NB-1:0]           n_edge, n_corner;
+    logic                    m_left, m_right, m_up, m_down;
     {m_left, m_right, m_up, m_down} = m;
     centre = w1[PB +: PB];
     nb = {w2[0 +: PB], w0[0 +: PB], w2[2*PB +: PB], w0[2*PB +: PB],
@@ -186,52 +190,73 @@ module smoother #(
     f[6] = m_down && m_left;
     f[7] = m_down && m_right;
     for (int i = 0; i < 8; i++) f[i] = f[i] && nb[i*PB + PB-1] && centre[PB-1];
-    s_edge   = '0;
-    s_corner = '0;
-    n_edge   = '0;
-    n_corner = '0;
     for (int c = 0; c < 3; c++) begin
-      for (int i = 0; i < 4; i++) begin
-        if (f[i])     s_edge[c*SumBits +: SumBits]   = s_edge[c*SumBits +: SumBits]
-                                                     + SumBits'(nb[i*PB + c*SB +: SB]);
-        if (f[i + 4]) s_corner[c*SumBits +: SumBits] = s_corner[c*SumBits +: SumBits]
-                                                     + SumBits'(nb[(i+4)*PB + c*SB +: SB]);
+      for (int j = 0; j < 2; j++) begin
+        p_edge[(2*c + j)*PairBits +: PairBits] =
+            (f[2*j]     ? PairBits'(nb[(2*j)*PB + c*SB +: SB])     : '0)
+          + (f[2*j + 1] ? PairBits'(nb[(2*j + 1)*PB + c*SB +: SB]) : '0);
+        p_corner[(2*c + j)*PairBits +: PairBits] =
+            (f[4 + 2*j]     ? PairBits'(nb[(4 + 2*j)*PB + c*SB +: SB])     : '0)
+          + (f[4 + 2*j + 1] ? PairBits'(nb[(4 + 2*j + 1)*PB + c*SB +: SB]) : '0);
       end
     end
+    n_edge   = '0;
+    n_corner = '0;
     for (int i = 0; i < 4; i++) begin
       n_edge   = n_edge + NB'(f[i]);
       n_corner = n_corner + NB'(f[i + 4]);
     end
-    window_sums = {s_edge, s_corner, n_edge, n_corner};
+    window_pairs = {p_edge, p_corner, n_edge, n_corner};
+  endfunction
+  // Per channel, the sum of its two pairs.
+  function automatic logic [3*SumBits-1:0] pair_sums(logic [6*PairBits-1:0] p);
+    for (int c = 0; c < 3; c++)
+      pair_sums[c*SumBits +: SumBits] = SumBits'(p[(2*c)*PairBits +: PairBits])
+                                      + SumBits'(p[(2*c + 1)*PairBits +: PairBits]);
   endfunction
 
-  logic [PB-1:0]        centre;
-  logic                 v3_q;
-  logic [3*SumBits-1:0] s_edge_q, s_corner_q;
-  logic [3*SB-1:0]      g1_q;
-  logic [NB-1:0]        n_edge_q, n_corner_q;
-  logic [PayBits-1:0]   pay3_q;
+  logic [PB-1:0]         centre;
+  logic                  vp_q, v3_q;
+  logic [6*PairBits-1:0] p_edge_q, p_corner_q;
+  logic [3*SumBits-1:0]  s_edge_q, s_corner_q;
+  logic [3*SB-1:0]       g1p_q, g1_q;
+  logic [NB-1:0]         np_edge_q, np_corner_q, n_edge_q, n_corner_q;
+  logic [PayBits-1:0]    payp_q, pay3_q;
 
   assign centre = win_q[1][PB +: PB];
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
+      vp_q <= 1'b0;
       v3_q <= 1'b0;
     end else if (en) begin
-      v3_q <= v2_q;
+      vp_q <= v2_q;
+      v3_q <= vp_q;
     end
   end
   always_ff @(posedge clk_i) begin
     if (en && v2_q) begin
-      {s_edge_q, s_corner_q, n_edge_q, n_corner_q} <= window_sums(win_q[0], win_q[1], win_q[2], m2_q);
-      g1_q       <= centre[3*SB-1:0];
-      pay3_q     <= {centre[PB-1], ox2_q, oy2_q, last2_q};
+      {p_edge_q, p_corner_q, np_edge_q, np_corner_q} <= window_pairs(win_q[0], win_q[1], win_q[2], m2_q);
+      g1p_q  <= centre[3*SB-1:0];
+      payp_q <= {centre[PB-1], ox2_q, oy2_q, last2_q};
     end
   end
 
-  // ------------------------------------------------------------ stage 4: dividend and divisor
-  // The denominator's products by n in 0..4 and W² by shifts and adds: multiplier blocks (the
-  // UP5K has 8) go to the six products by the sums. W² is registered: w_i is stable for the
-  // frame, and a frame's first pixel reaches this stage width + 5 clocks after its start.
+  // ------------------------------------------------------------ stage 4: the sums
+  always_ff @(posedge clk_i) begin
+    if (en && vp_q) begin
+      s_edge_q   <= pair_sums(p_edge_q);
+      s_corner_q <= pair_sums(p_corner_q);
+      n_edge_q   <= np_edge_q;
+      n_corner_q <= np_corner_q;
+      g1_q       <= g1p_q;
+      pay3_q     <= payp_q;
+    end
+  end
+
+  // ------------------------------------------------------------ stage 5: the products
+  // The products by n in 0..4 by shifts and adds: multiplier blocks (the UP5K has 8) go to the
+  // six products by the sums. Stage 5 registers the products, stage 6 their sums (one product
+  // and a four-input sum in one clock limited the whole Gouraud top).
   function automatic logic [DenBits-1:0] times_count(logic [DenBits-1:0] v, logic [NB-1:0] n);
     case (n)
       3'd0:    times_count = '0;
@@ -241,31 +266,72 @@ module smoother #(
       default: times_count = v << 2;  // 4, the most neighbours of a kind
     endcase
   endfunction
-  function automatic logic [2*WB-1:0] square(logic [WB-1:0] v);
-    square = '0;
-    for (int i = 0; i < WB; i++) if (v[i]) square = square + ((2*WB)'(v) << i);
-  endfunction
+
+  // W², a frame constant, from a three-clock adder tree of the partial products of w_i (never
+  // one clock: that path limited the top). w_i is stable for the frame, and a frame's first
+  // pixel reaches stage 5 width + 6 clocks after the frame's first input beat, so w2_q is
+  // settled by then.
+  // (WB is a multiple of 4: pairs, then quads, then their sum.)
+  localparam int unsigned W2B = 2 * WB;
+  logic [W2B-1:0] w2_pair_q [WB/2];  // two partial products each
+  logic [W2B-1:0] w2_quad_q [WB/4];  // four
+  logic [W2B-1:0] w2_q;
+  always_ff @(posedge clk_i) begin
+    logic [W2B-1:0] sum;
+    for (int i = 0; i < WB / 2; i++)
+      w2_pair_q[i] <= (w_i[2*i]   ? (W2B'(w_i) << (2*i))     : '0)
+                    + (w_i[2*i+1] ? (W2B'(w_i) << (2*i + 1)) : '0);
+    for (int i = 0; i < WB / 4; i++) w2_quad_q[i] <= w2_pair_q[2*i] + w2_pair_q[2*i+1];
+    sum = '0;
+    for (int i = 0; i < WB / 4; i++) sum = sum + w2_quad_q[i];
+    w2_q <= sum;
+  end
+
+  localparam int unsigned PeB = WB + SumBits;      // w·S_edge
+  localparam int unsigned PcB = 2 * WB + SumBits;  // w²·S_corner
+  logic                 v4_q;
+  logic [3*PeB-1:0]     pe_q;
+  logic [3*PcB-1:0]     pc_q;
+  logic [3*SB-1:0]      g1_4_q;
+  logic [DenBits-1:0]   de_q, dc_q;  // w·n_edge, w²·n_corner
+  logic [PayBits-1:0]   pay4_q;
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      v4_q <= 1'b0;
+    end else if (en) begin
+      v4_q <= v3_q;
+    end
+  end
+  always_ff @(posedge clk_i) begin
+    if (en && v3_q) begin
+      for (int c = 0; c < 3; c++) begin
+        pe_q[c*PeB +: PeB] <= PeB'(w_i) * PeB'(s_edge_q[c*SumBits +: SumBits]);
+        pc_q[c*PcB +: PcB] <= PcB'(w2_q) * PcB'(s_corner_q[c*SumBits +: SumBits]);
+      end
+      de_q   <= times_count(DenBits'(w_i), n_edge_q);
+      dc_q   <= times_count(DenBits'(w2_q), n_corner_q);
+      g1_4_q <= g1_q;
+      pay4_q <= pay3_q;
+    end
+  end
+
+  // ------------------------------------------------------------ stage 6: dividend and divisor
   // d = 2^2F + 2^F·w·n_edge + w²·n_corner.
-  function automatic logic [DenBits-1:0] divisor(logic [WB-1:0] w, logic [2*WB-1:0] w2,
-                                                 logic [NB-1:0] n_edge, logic [NB-1:0] n_corner);
-    divisor = (DenBits'(1) << (2*F)) + (times_count(DenBits'(w), n_edge) << F)
-            + times_count(DenBits'(w2), n_corner);
+  function automatic logic [DenBits-1:0] divisor(logic [DenBits-1:0] de, logic [DenBits-1:0] dc);
+    divisor = (DenBits'(1) << (2*F)) + (de << F) + dc;
   endfunction
   // 2n + d per channel, n = 2^2F·G1 + 2^F·w·S_edge + w²·S_corner.
-  function automatic logic [3*DvdBits-1:0] dividend(logic [3*SB-1:0] g1, logic [3*SumBits-1:0] s_edge,
-                                                    logic [3*SumBits-1:0] s_corner, logic [WB-1:0] w,
-                                                    logic [2*WB-1:0] w2, logic [DenBits-1:0] d);
+  function automatic logic [3*DvdBits-1:0] dividend(logic [3*SB-1:0] g1, logic [3*PeB-1:0] pe,
+                                                    logic [3*PcB-1:0] pc, logic [DenBits-1:0] d);
     for (int c = 0; c < 3; c++) begin
       dividend[c*DvdBits +: DvdBits] =
-          ((DvdBits'(g1[c*SB +: SB]) << (2*F)) + (DvdBits'(w) * DvdBits'(s_edge[c*SumBits +: SumBits]) << F)
-           + DvdBits'(w2) * DvdBits'(s_corner[c*SumBits +: SumBits])) * DvdBits'(2) + DvdBits'(d);
+          ((DvdBits'(g1[c*SB +: SB]) << (2*F)) + (DvdBits'(pe[c*PeB +: PeB]) << F)
+           + DvdBits'(pc[c*PcB +: PcB])) * DvdBits'(2) + DvdBits'(d);
     end
   endfunction
 
-  logic [2*WB-1:0]    w2_q;
-  always_ff @(posedge clk_i) w2_q <= square(w_i);
-
-  // ------------------------------------------------------------ stages 5..12: restoring division
+  // ------------------------------------------------------------ stages 7..14: restoring division
   // Stage k takes quotient bit SB-1-k: the remainder is below 2d·2^(SB-k) before it.
   logic [DivStages:0]   dv_q;
   logic [3*DvdBits-1:0] rem_q [DivStages+1];
@@ -292,16 +358,15 @@ module smoother #(
     if (!rst_ni) begin
       dv_q[0] <= 1'b0;
     end else if (en) begin
-      dv_q[0] <= v3_q;
+      dv_q[0] <= v4_q;
     end
   end
   always_ff @(posedge clk_i) begin
-    if (en && v3_q) begin
-      rem_q[0] <= dividend(g1_q, s_edge_q, s_corner_q, w_i, w2_q,
-                           divisor(w_i, w2_q, n_edge_q, n_corner_q));
+    if (en && v4_q) begin
+      rem_q[0] <= dividend(g1_4_q, pe_q, pc_q, divisor(de_q, dc_q));
       quo_q[0] <= '0;
-      dsr_q[0] <= divisor(w_i, w2_q, n_edge_q, n_corner_q) << 1;
-      pay_q[0] <= pay3_q;
+      dsr_q[0] <= divisor(de_q, dc_q) << 1;
+      pay_q[0] <= pay4_q;
     end
   end
 

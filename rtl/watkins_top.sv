@@ -6,7 +6,7 @@
 // and the fragment's shade goes straight to the depth test. Phong = 1: they are the vertex
 // normal; each fragment's interpolated normal is normalized and shaded by Phong's eq. (3) with
 // its polygon's material (a 2^MaterialIdBits-entry table written through material_*_i between
-// frames) and the frame's light_i / eye_i (sampled with the frame size), adding 21 cycles of
+// frames) and the frame's light_i / eye_i (sampled with the frame size), adding 32 cycles of
 // latency, not throughput: still one fragment per clock, shaded before the depth test.
 // A frame starts with the first beat of its edge stream once the previous frame's last pixel
 // has left and its stream has been read up to its EOF beat; width, height and background are
@@ -21,8 +21,8 @@
 // keeps the background elsewhere (e.g. a framebuffer cleared once). sparse_i = 0: every pixel.
 // Smoothing (smooth_w_i != 0 for the frame): Herman & Liu's 3x3 smoother (rtl/smoother.sv) after
 // the scanline buffer. It needs the whole raster, so a smoothed frame is emitted in full whatever
-// sparse_i says; its last pixel leaves width + 13 clocks after the buffer's last (the flush of the
-// last line and the smoother's 12 stages). smooth_w_i = 0: the smoother is bypassed, no latency.
+// sparse_i says; its last pixel leaves width + 15 clocks after the buffer's last (the flush of the
+// last line and the smoother's 14 stages). smooth_w_i = 0: the smoother is bypassed, no latency.
 // Equal depth (tie_submission_i for the frame): 0 keeps the fragment that reached the depth test
 // first (segments in closing order); 1 keeps the smaller polygon id, i.e. the first polygon
 // submitted when ids follow submission order, as GL's GL_LESS depth test does. Each fragment

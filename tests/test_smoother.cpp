@@ -116,10 +116,10 @@ TEST(Smoother, SceneWeightReachesTheTop) {
   EXPECT_NE(smoothed.rgb, flat.rgb);
   EXPECT_EQ(smoothed.covered, flat.covered);
   // A smoothed frame is read out in full: sparse output changes nothing, and the smoother adds
-  // the flush of its last line and its 12 stages.
+  // the flush of its last line and its 14 stages.
   const CyclePrediction full = predict_cycles(p, PixelOutput::FullFrame);
   EXPECT_EQ(predict_cycles(p, PixelOutput::Sparse).cycles, full.cycles);
-  EXPECT_EQ(full.cycles, predict_cycles(plain, PixelOutput::FullFrame).cycles + p.width + 13);
+  EXPECT_EQ(full.cycles, predict_cycles(plain, PixelOutput::FullFrame).cycles + p.width + 15);
   EXPECT_EQ(full.pixels, static_cast<long long>(p.width) * p.height);
 }
 

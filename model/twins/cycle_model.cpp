@@ -1,6 +1,7 @@
 #include "cycle_model.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
@@ -125,8 +126,10 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
   std::uint64_t recip_valid = 0;
   const std::uint64_t recip_mask = (std::uint64_t{1} << RecipStages) - 1;
   std::size_t recip_out = 0;  // items that left the reciprocal
-  bool sa_valid = false, sb_valid = false, sc_valid = false;
-  std::size_t sa_item = 0, sb_item = 0, sc_item = 0;
+  // The setup stages after the reciprocal (sa .. sc), all enabled by tail_en; the last is sc.
+  std::array<bool, InterpTailStages> tail_valid{};
+  std::array<std::size_t, InterpTailStages> tail_item{};
+  constexpr int Sc = InterpTailStages - 1;
   std::size_t fifo[InterpFifoDepth] = {};
   int fifo_head = 0, fifo_count = 0;
   bool step_active = false;
@@ -145,8 +148,7 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
   auto key = [&] {
     return std::make_tuple(frame_q, drain_q, line_q, rd_q, cnt_stream, cnt_fill, out_done_q, inc_done_q,
                            eol_sent_q, next_record, eof_taken, st_valid, st_retire, seg_valid,
-                           s0_valid_q, recip_valid, recip_out, sa_valid, sb_valid, sc_valid, sa_item, sb_item,
-                           sc_item, fifo[0], fifo[1], fifo[2], fifo[3], fifo_head, fifo_count, step_active,
+                           s0_valid_q, recip_valid, recip_out, tail_valid, tail_item, fifo[0], fifo[1], fifo[2], fifo[3], fifo_head, fifo_count, step_active,
                            frag_valid, frag_eol, norm.valid, norm.eol, shade.valid, shade.eol, rd_busy_q,
                            rline_q, lines_written);
   };
@@ -177,7 +179,8 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
     const bool emit_eol = out_free && !step_active && head_valid && head.eol;
     const bool pop = emit_eol || (emit_frag && from_head);
     // sc -> FIFO
-    const Streams::Item& sc = st.items[sc_valid ? sc_item : 0];
+    const bool sc_valid = tail_valid[Sc];
+    const Streams::Item& sc = st.items[sc_valid ? tail_item[Sc] : 0];
     const bool sc_keep = sc.eol || sc.pixels > 0;
     const bool fifo_ready = fifo_count != InterpFifoDepth;
     const bool push = sc_valid && sc_keep && fifo_ready;
@@ -260,17 +263,17 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
       --fifo_count;
     }
     if (push) {
-      fifo[(fifo_head + fifo_count) % InterpFifoDepth] = sc_item;
+      fifo[(fifo_head + fifo_count) % InterpFifoDepth] = tail_item[Sc];
       ++fifo_count;
     }
-    // sa -> sb -> sc, reciprocal, s0
+    // sa -> ... -> sc, reciprocal, s0
     if (tail_en) {
-      sc_valid = sb_valid;
-      sc_item = sb_item;
-      sb_valid = sa_valid;
-      sb_item = sa_item;
-      sa_valid = rc_valid;
-      if (rc_valid) sa_item = recip_out++;
+      for (int s = Sc; s > 0; --s) {
+        tail_valid[s] = tail_valid[s - 1];
+        tail_item[s] = tail_item[s - 1];
+      }
+      tail_valid[0] = rc_valid;
+      if (rc_valid) tail_item[0] = recip_out++;
     }
     if (en_recip) recip_valid = ((recip_valid << 1) | std::uint64_t(s0_valid_q)) & recip_mask;
     if (seg_ready) s0_valid_q = seg_valid;

@@ -47,8 +47,8 @@ void check_smoothed(const std::string& name, ShadingMode shading, double w) {
     if (o.gap == 0 && o.stall == 0) {
       const CyclePrediction c = predict_cycles(p, o.sparse ? PixelOutput::Sparse : PixelOutput::FullFrame);
       EXPECT_EQ(r.cycles, c.cycles) << what;
-      // The smoother's flush of the last line and its 12 stages, on top of the unsmoothed frame.
-      EXPECT_EQ(c.cycles, predict_cycles(plain, PixelOutput::FullFrame).cycles + p.width + 13) << what;
+      // The smoother's flush of the last line and its 14 stages, on top of the unsmoothed frame.
+      EXPECT_EQ(c.cycles, predict_cycles(plain, PixelOutput::FullFrame).cycles + p.width + 15) << what;
     }
   }
 }
