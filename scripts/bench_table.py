@@ -1,0 +1,115 @@
+#!/usr/bin/env python3
+"""README's speed table from one `scripts/bench` run (its printed lines on stdin or in a file).
+
+Every figure in the table is one line of that run, so the ratios beside it were measured side by
+side on the same machine at the same load. Issue 11's targets are shown with each figure.
+  scripts/bench_table.py BENCH_LOG [--out table.md]
+"""
+import argparse
+import re
+import sys
+
+
+def model_rows(lines):
+    """Per scene block of watkins_bench: fixed, new image, double, Mesa (M fragments/s)."""
+    blocks, cur = [], None
+    for line in lines:
+        m = re.match(r"^(phong: )?scene +(.*)$", line)
+        if m:
+            cur = {"phong": bool(m.group(1)), "scene": m.group(2)}
+            blocks.append(cur)
+            continue
+        if cur is None:
+            continue
+        body = line[len("phong: "):] if line.startswith("phong: ") else line
+        for key, label in (("fixed", "fixed-point model"), ("new", "model, new image"),
+                           ("double", "double reference"), ("mesa", "mesa gl")):
+            m = re.match(r"^%s +[0-9.]+ ms/frame +([0-9.]+) M fragments/s" % re.escape(label), body)
+            if m:
+                cur[key] = float(m.group(1))
+    return blocks
+
+
+def scene_name(text):
+    if text.startswith("<default scene>"):
+        return "default scene"
+    m = re.match(r"grid (\d+x\d+), (\d+) triangles", text)
+    return "grid %s, %s triangles" % m.groups() if m else text.split(" (")[0]
+
+
+def fmt(v):
+    return "%.1f M" % v if v is not None else "—"
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("log")
+    ap.add_argument("--out")
+    a = ap.parse_args()
+    lines = [l.rstrip("\n") for l in (sys.stdin if a.log == "-" else open(a.log))]
+    out = []
+    machine = next((l.split(None, 1)[1] for l in lines if l.startswith("machine ")), "?")
+    out.append("`scripts/bench` (%s), one run:" % machine.strip())
+    out.append("")
+    out.append("| what | figure | issue 11 target |")
+    out.append("|---|---|---|")
+    instr = {m.group(2): m.group(1) for l in lines
+             for m in [re.match(r"^model instructions +(\d+) per fragment \(callgrind, (.*)\)$", l)] if m}
+    for b in model_rows(lines):
+        name = scene_name(b["scene"])
+        shading = "Phong" if b["phong"] else "Gouraud"
+        target = 30.0 if b["phong"] else 70.0
+        fixed = b.get("fixed")
+        verdict = ("met" if fixed and fixed >= target else "not met") + " (≥ %d M)" % target
+        parts = ["**%s fragments/s**" % fmt(fixed)]
+        if "new" in b:
+            parts.append("%s with a new image per frame" % fmt(b["new"]))
+        parts.append("double reference %s" % fmt(b.get("double")))
+        if "mesa" in b:
+            parts.append("Mesa llvmpipe, one thread, %s" % fmt(b["mesa"]))
+        key = "default scene" if name == "default scene" else "--grid 32"
+        if not b["phong"] and key in instr:
+            parts.append("%s instructions per fragment (callgrind)" % instr[key])
+        out.append("| model, %s, %s | %s | %s |" % (shading, name, "; ".join(parts), verdict))
+    for l in lines:
+        m = re.match(r"^verilator (.*?) +(\d+) (cycles/s|instructions/cycle)$", l)
+        if not m:
+            continue
+        what, value, unit = m.groups()
+        target = ""
+        if unit == "cycles/s":
+            v = int(value)
+            if "plain" in what and "gouraud" in what:
+                target = ("met" if v >= 2_500_000 else "not met") + " (≥ 2.5 M, stage checker on)"
+            elif "SystemC" in what and "gouraud" in what:
+                target = ("met" if v >= 1_000_000 else "not met") + " (≥ 1 M)"
+            out.append("| Verilator, %s | **%.2f M cycles/s** (wall) | %s |" % (what, v / 1e6, target))
+        else:
+            out.append("| Verilator, %s | %s instructions per simulated cycle (callgrind) | |" % (what, value))
+    ipc = {m.group(1): int(m.group(2)) for l in lines
+           for m in [re.match(r"^verilator plain C\+\+ harness, (gouraud|phong) top, stage checker on +(\d+) inst", l)] if m}
+    if len(ipc) == 2:
+        r = ipc["phong"] / ipc["gouraud"]
+        out.append("| Verilator, Phong top against Gouraud top (instructions per cycle, stage checker on) | %.2fx | %s (≤ 1.20x) |"
+                   % (r, "met" if r <= 1.2 else "not met"))
+    for l in lines:
+        m = re.match(r"^icarus speed +(\d+) cycles/s", l)
+        if m:
+            out.append("| Icarus Verilog (yosys-elaborated RTL), default scene | %s k cycles/s | |" % (int(m.group(1)) / 1e3))
+    frames = [l for l in lines if re.match(r"^\S+ (gouraud|phong)( sparse)? +\d+ ", l)]
+    if frames:
+        out.append("")
+        out.append("| RTL frame (Verilated, `watkins render --rtl`) | cycles | fragments | fragments/cycle | pixels/cycle | mismatches |")
+        out.append("|---|---|---|---|---|---|")
+        for l in frames:
+            f = l.split()
+            name = " ".join(f[:-5])
+            out.append("| %s | %s |" % (name, " | ".join(f[-5:])))
+    text = "\n".join(out) + "\n"
+    if a.out:
+        open(a.out, "w").write(text)
+    sys.stdout.write(text)
+
+
+if __name__ == "__main__":
+    main()
