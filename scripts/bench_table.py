@@ -14,7 +14,7 @@ def model_rows(lines):
     """Per scene block of watkins_bench: fixed, new image, double, Mesa (M fragments/s)."""
     blocks, cur = [], None
     for line in lines:
-        m = re.match(r"^(phong: )?scene +(.*)$", line)
+        m = re.match(r"^(phong: )?scene {3,}(.*)$", line)
         if m:
             cur = {"phong": bool(m.group(1)), "scene": m.group(2)}
             blocks.append(cur)
