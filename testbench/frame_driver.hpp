@@ -31,11 +31,15 @@ class FrameDriver {
 
   // Runs the frames back to back (RtlResult in `r`). expected[f]: frame f's model image, or null
   // (not compared); stages: the model's stage streams of every frame (empty: not checked).
-  // Resets the top first on the first run and after a failed one (or when opt.reset).
+  // Resets the top first when opt.reset (the default), and regardless on the first run and
+  // after a failed one. A reset starts from the same pins and the same clocks every time, so a
+  // run with reset gives the same result whatever the top ran before.
   void run(const std::vector<const PreparedScene*>& scenes, const std::vector<const Image*>& expected,
            const std::vector<StageStreams>& stages, const RtlOptions& opt, RtlResult& r);
 
  private:
+  // Holds rst_ni low for ResetCycles clocks with every input at rest (as at power-up: zero,
+  // edge_i poisoned), so that no pin keeps the previous run's value through the reset.
   void reset(const EdgeWords& poison);
 
   TopPins& pins_;

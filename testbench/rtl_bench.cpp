@@ -59,8 +59,8 @@ std::string parameter_text(const std::vector<RtlParameter>& params) {
   return s;
 }
 
-// A --cc top and its driver, made on first use and kept (the driver resets it before its first
-// run and after a failed one).
+// A --cc top and its driver, made on first use and kept (the driver resets it before every run
+// unless RtlOptions::reset is false, and then still before its first run and after a failed one).
 struct CcSide {
   std::unique_ptr<detail::CcModel> model;
   std::unique_ptr<detail::FrameDriver> driver;

@@ -4,7 +4,8 @@
 // collects the pixel stream (seeded random back-pressure), checks it pixel by pixel against the
 // model image, watches for hangs and protocol errors, and counts cycles. The bench is built once
 // per process on first use (SystemC elaborates only once) and runs frames one after another;
-// frames within one run_rtl_frames() call follow each other back to back.
+// frames within one run_rtl_frames() call follow each other back to back. Each call starts with
+// a reset (RtlOptions::reset), so its cycle counts and images are the same whatever ran before.
 #pragma once
 
 #include <array>
@@ -71,7 +72,11 @@ struct RtlOptions {
   std::string trace_path;  // FST waveform of the whole run when not empty
   long long watchdog = 100000;  // cycles without any handshake before the run counts as hung
   bool compare = true;     // render the model (unless given the expected images) and compare
-  bool reset = false;      // reset before the run (always done first and after a failed run)
+  // Reset the top before the run (its pins at rest, ResetCycles clocks), so that the run's
+  // result never depends on the runs before it on the same top. false continues from the state
+  // the previous run left (a test of the RTL running frames after frames without a reset); the
+  // first run of a top and a run after a failed one reset regardless.
+  bool reset = true;
   // Compare the three internal stage streams (active edges, segments, fragments) with the
   // model's, transfer by transfer (needs `compare`); the first difference names its stage.
   bool check_stages = true;

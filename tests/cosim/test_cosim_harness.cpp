@@ -26,22 +26,27 @@ RtlResult run_on(RtlHarness harness, const PreparedScene& p, RtlOptions o) {
   return run_rtl(p, o);
 }
 
+// Every cycle count (the run's, including reset and drain, and each frame's) and every frame.
+void expect_same_result(const std::string& what, const RtlResult& a, const RtlResult& b) {
+  EXPECT_EQ(a.cycles, b.cycles) << what;
+  EXPECT_EQ(a.sim_cycles, b.sim_cycles) << what;
+  EXPECT_EQ(a.stage_items, b.stage_items) << what;
+  ASSERT_EQ(a.frames.size(), b.frames.size()) << what;
+  for (std::size_t f = 0; f < a.frames.size(); ++f) {
+    EXPECT_EQ(a.frames[f].first_edge_cycle, b.frames[f].first_edge_cycle) << what << " frame " << f;
+    EXPECT_EQ(a.frames[f].last_pixel_cycle, b.frames[f].last_pixel_cycle) << what << " frame " << f;
+    EXPECT_EQ(a.frames[f].pixels, b.frames[f].pixels) << what << " frame " << f;
+    EXPECT_EQ(a.frames[f].image.rgb, b.frames[f].image.rgb) << what << " frame " << f;
+    EXPECT_EQ(a.frames[f].image.covered, b.frames[f].image.covered) << what << " frame " << f;
+  }
+}
+
 void expect_same_run(const std::string& what, const RtlOptions& o, const RtlResult& fast, const RtlResult& sc) {
   expect_clean(what + " on the plain C++ harness", o, fast);
   expect_clean(what + " on the SystemC bench", o, sc);
   EXPECT_NE(fast.top.find("speed build"), std::string::npos) << fast.top;
   EXPECT_NE(sc.top.find("SystemC bench"), std::string::npos) << sc.top;
-  EXPECT_EQ(fast.cycles, sc.cycles) << what;
-  EXPECT_EQ(fast.sim_cycles, sc.sim_cycles) << what;
-  EXPECT_EQ(fast.stage_items, sc.stage_items) << what;
-  ASSERT_EQ(fast.frames.size(), sc.frames.size()) << what;
-  for (std::size_t f = 0; f < fast.frames.size(); ++f) {
-    EXPECT_EQ(fast.frames[f].first_edge_cycle, sc.frames[f].first_edge_cycle) << what << " frame " << f;
-    EXPECT_EQ(fast.frames[f].last_pixel_cycle, sc.frames[f].last_pixel_cycle) << what << " frame " << f;
-    EXPECT_EQ(fast.frames[f].pixels, sc.frames[f].pixels) << what << " frame " << f;
-    EXPECT_EQ(fast.frames[f].image.rgb, sc.frames[f].image.rgb) << what << " frame " << f;
-    EXPECT_EQ(fast.frames[f].image.covered, sc.frames[f].image.covered) << what << " frame " << f;
-  }
+  expect_same_result(what, fast, sc);
 }
 
 // The default scene and sphere.json, both tops, full-frame and sparse, without and with gaps
@@ -73,6 +78,44 @@ TEST(CosimHarness, FramesBackToBackAgree) {
   fo.harness = RtlHarness::Fast;
   so.harness = RtlHarness::SystemC;
   expect_same_run("default, sphere, default", o, run_rtl_frames({&a, &s, &a}, fo), run_rtl_frames({&a, &s, &a}, so));
+}
+
+// A run's result never depends on what ran before it in the process (each run resets the top
+// first): on each bench the same scene three times, with another scene in the other output mode
+// between the first two and a hung run (the sink never ready: a frame left mid-way) between the
+// last two, gives the same cycle counts and frames each time; and the two benches agree.
+TEST(CosimHarness, RunsDoNotDependOnEarlierRuns) {
+  for (const ShadingMode shading : {ShadingMode::Gouraud, ShadingMode::Phong}) {
+    BuildOptions b;
+    b.shading = shading;
+    const PreparedScene a = prepare(load_scene_or_default("", b));
+    const PreparedScene s = prepare(load_scene_or_default(WATKINS_SOURCE_DIR "/scenes/sphere.json", b));
+    const std::string what = std::string("default scene ") + to_string(shading);
+    RtlResult first[2];
+    for (const RtlHarness harness : {RtlHarness::Fast, RtlHarness::SystemC}) {
+      const std::string on = what + (harness == RtlHarness::Fast ? " on the plain C++ harness" : " on the SystemC bench");
+      const RtlOptions o = random_options(1);
+      RtlOptions other = random_options(2);
+      other.sparse = true;
+      RtlOptions stuck;
+      stuck.stall = 1.0;
+      stuck.watchdog = 500;
+      stuck.compare = false;
+      const RtlResult r1 = run_on(harness, a, o);
+      expect_clean(on + ", first run", o, r1);
+      expect_clean("sphere.json sparse in between", other, run_on(harness, s, other));
+      const RtlResult r2 = run_on(harness, a, o);
+      expect_clean(on + ", second run", o, r2);
+      const RtlResult hung = run_on(harness, s, stuck);
+      EXPECT_TRUE(hung.hang) << on << ": a sink never ready must hang the run\n" << hung.summary();
+      const RtlResult r3 = run_on(harness, a, o);
+      expect_clean(on + ", third run", o, r3);
+      expect_same_result(on + ": second run against the first", r1, r2);
+      expect_same_result(on + ": third run (after a hung one) against the first", r1, r3);
+      first[harness == RtlHarness::Fast ? 0 : 1] = r1;
+    }
+    expect_same_run(what + ", first runs", random_options(1), first[0], first[1]);
+  }
 }
 
 // A waveform comes from the SystemC bench's traced tops, whichever bench was asked for.

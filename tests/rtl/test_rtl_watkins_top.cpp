@@ -54,6 +54,7 @@ struct Top {
     opt.gap = gap_pct / 100.0;
     opt.stall = bp_pct / 100.0;
     opt.sparse = sparse;
+    opt.reset = false;  // frames after frames on one top without a reset (overflow_o stays set)
     tb::RtlResult r;
     driver.run({&p}, {ref}, {}, opt, r);
     EXPECT_TRUE(r.assertion.empty()) << r.assertion;
