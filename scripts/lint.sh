@@ -25,6 +25,19 @@ trap 'rm -rf "$LOG"' EXIT
 echo "== verilator --lint-only -Wall"
 verilator --lint-only -Wall "${INC[@]}" --top-module watkins_top "${VLT[@]}" "$PKG" "${SRCS[@]}"
 verilator --lint-only -Wall "${INC[@]}" --top-module watkins_top -GPhong=1 "${VLT[@]}" "$PKG" "${SRCS[@]}"
+# A configuration file's top parameters as `watkins_gen_pkg --params` prints them (built here from
+# the sources, as scripts/gen_pkg.sh does, so lint needs no build), Phong dropped (both modes are
+# linted), and --unroll-count N for a list of N > 64 active edges (Verilator unrolls
+# active_edge_list's insertion loop only up to --unroll-count iterations: BLKLOOPINIT).
+curved_params() {
+  [ -x "$LOG/gen_pkg" ] || g++ -std=c++17 -Imodel/twins -Imodel/prepare -Imodel/scene sim/gen_pkg.cpp \
+    model/twins/config.cpp model/prepare/config_file.cpp model/scene/strict_json.cpp -o "$LOG/gen_pkg"
+  local p n
+  p=$("$LOG/gen_pkg" --params "$1" --shading phong | grep -v '^-GPhong=' | tr '\n' ' ')
+  n=$(echo "$p" | sed -n 's/.*-GMaxActiveEdges=\([0-9]*\).*/\1/p')
+  [ "$n" -gt 64 ] && p="$p --unroll-count $n"
+  echo "$p"
+}
 # The top built for other configurations (as `watkins_gen_pkg --params` prints them): a sized
 # one (docs/size/default.*.json: depth without fraction bits, X narrower than the screen index)
 # and an odd one (X at the 1/16-pixel minimum, 3-bit depth word, normals finer than the
@@ -33,7 +46,7 @@ verilator --lint-only -Wall "${INC[@]}" --top-module watkins_top -GPhong=1 "${VL
 # must be unrolled (Verilator BLKLOOPINIT), which it does up to --unroll-count iterations, 64 by default).
 CONFIGS=("-GMaxActiveEdges=36 -GMaxWidth=320 -GXIntBits=9 -GXFracBits=15 -GDepthIntBits=6 -GDepthFracBits=0 -GAttrIntBits=9 -GAttrFracBits=6 -GDepthBits=5 -GPolyIdBits=7 -GMaterialIdBits=1 -GEdgeIdBits=9"
          "-GMaxActiveEdges=5 -GMaxWidth=100 -GXIntBits=8 -GXFracBits=4 -GDepthIntBits=2 -GDepthFracBits=1 -GAttrIntBits=1 -GAttrFracBits=18 -GDepthBits=16 -GPolyIdBits=1 -GMaterialIdBits=3 -GEdgeIdBits=3"
-         "-GMaxActiveEdges=68 -GMaxWidth=320 -GXIntBits=10 -GXFracBits=16 -GDepthIntBits=23 -GDepthFracBits=8 -GAttrIntBits=2 -GAttrFracBits=16 -GDepthBits=22 -GPolyIdBits=9 -GMaterialIdBits=3 -GEdgeIdBits=12 -GEdgeOrder=3 --unroll-count 68")
+         "$(curved_params docs/size/patches.curves.phong.json)")
 for cfg in "${CONFIGS[@]}"; do
   for phong in 0 1; do
     # shellcheck disable=SC2086
