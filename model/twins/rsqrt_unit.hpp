@@ -84,7 +84,7 @@ inline RsqrtUnit::Mantissa RsqrtUnit::normalize_mantissa(std::uint64_t m) {
   }
   // Leading zeros of m in MBits bits, rounded down to even: m' = (m << 2j) / 2^36 >= 1/4.
   const int lz = MBits - 1 - msb_index(m);
-  r.j = lz / 2;
+  r.j = static_cast<int>(static_cast<unsigned>(lz) >> 1);  // lz >= 0: m < 2^MBits
   const std::uint64_t shifted = m << (2 * r.j);  // < 2^36
   r.mant = static_cast<std::uint32_t>(shifted >> (MBits - W));
   return r;

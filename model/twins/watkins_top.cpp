@@ -183,20 +183,25 @@ void WatkinsTop::render_into(const Frame& frame, Image& img, const PipelineObser
     if (observe.fragments_end) observe.fragments_end(y);
     // The image starts as background, uncovered: only the line's covered pixels are copied.
     const std::size_t row = std::size_t(y) * frame.width;
-    for (const int x : line.written()) {
-      std::uint8_t* out = &img.rgb[(row + x) * 3];
-      if (deferred) {
-        const std::array<int, 3> p =
-            phong.shade(later.normal[static_cast<std::size_t>(x)], later.material[static_cast<std::size_t>(x)]);
-        out[0] = static_cast<std::uint8_t>(p[0]), out[1] = static_cast<std::uint8_t>(p[1]);
-        out[2] = static_cast<std::uint8_t>(p[2]);
-      } else {
-        const std::array<std::uint8_t, 3> p = line.written_rgb(x);
+    // Two loops, the test of the mode outside them.
+    auto copy_out = [&](auto shade) {
+      for (const int x : line.written()) {
+        const std::array<std::uint8_t, 3> p = shade(x);
+        std::uint8_t* out = &img.rgb[(row + x) * 3];
         out[0] = p[0], out[1] = p[1], out[2] = p[2];  // byte stores: no library call per pixel
+        img.covered[row + x] = 1;
+        img.owner[row + x] = line.written_poly(x);
       }
-      img.covered[row + x] = 1;
-      img.owner[row + x] = line.written_poly(x);
-    }
+    };
+    if (deferred)
+      copy_out([&](int x) {
+        const std::array<int, 3> rgb =
+            phong.shade(later.normal[static_cast<std::size_t>(x)], later.material[static_cast<std::size_t>(x)]);
+        return std::array<std::uint8_t, 3>{static_cast<std::uint8_t>(rgb[0]), static_cast<std::uint8_t>(rgb[1]),
+                                           static_cast<std::uint8_t>(rgb[2])};
+      });
+    else
+      copy_out([&](int x) { return line.written_rgb(x); });
   });
   // The smoother after the line buffer, when the frame enables it (it sees the full raster).
   if (frame.smoothed()) img = Smoother(frame.smooth_w).apply(img);
