@@ -1,12 +1,12 @@
 // Twin of rtl/phong_shader.sv; see phong_shader.hpp for the stage list.
 #include "phong_shader.hpp"
 
-
 namespace watkins {
 
 namespace {
 
-// terms(), in this file so that shade() (per fragment) inlines it.
+// terms(), in this file so that shade(Pixel, ...) inlines it (the per-pixel path of a frame is
+// shade(n, MaterialTerms, ...) in phong_shader.hpp).
 inline PhongShader::Terms terms_of(const PhongShader::Pixel& px, const PhongShader::Vec& light,
                                    const PhongShader::Vec& eye, i64 le) {
   using PS = PhongShader;
