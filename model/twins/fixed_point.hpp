@@ -35,6 +35,16 @@ constexpr i64 round_shift64(i64 v, int s) {
   return t < 0 ? ~(~t >> s) : t >> s;
 }
 
+// round_shift64 without its sign branch, for |v| < 2^61 and s in [1, 61]: the bias 2^62, a
+// multiple of 2^s, makes the sum non-negative, so a plain shift floors it, and comes off after:
+// floor((v + 2^(s-1) + 2^62) / 2^s) = floor((v + 2^(s-1)) / 2^s) + 2^(62-s), with no overflow as
+// 0 < v + 2^(s-1) + 2^62 < 2^63. For per-pixel words whose sign varies from pixel to pixel (normal
+// components, dot products), where the branch would be mispredicted. Same value as round_shift64.
+constexpr i64 round_shift62(i64 v, int s) {
+  constexpr i64 bias = i64{1} << 62;
+  return ((v + (i64{1} << (s - 1)) + bias) >> s) - (bias >> s);
+}
+
 // round(a / b) for b > 0, ties toward +infinity; exact for any a.
 constexpr i128 round_div(i128 a, i128 b) {
   i128 n = 2 * a + b;

@@ -17,6 +17,7 @@
 // in the direction of the (quantized) input, however short it is.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 
@@ -40,8 +41,33 @@ struct Normalizer {
   }
   // Stage 7 for one component.
   static i64 scale(i64 n, std::uint32_t y, int j);
+  // Stage 7 without the saturation, which never acts on a component of the vector y was worked
+  // out for: |n_i| <= |n| < sqrt(mant + 1) 2^(8-j), so |unit| < sqrt((mant + 1) 2^-W) y 2^(UF-F) + 1/2,
+  // below sqrt(3) 2^UF + 1/2 for every mant (tests/test_phong_fast_path.cpp runs them all), far
+  // inside UnitBits. normalize() uses it.
+  static i64 scale_unsaturated(i64 n, std::uint32_t y, int j) {
+    // |n| < 2^(NormalInBits-1) and y <= 2^(F+1): |p| < 2^40, in round_shift62's range; the sign
+    // of n varies from pixel to pixel, so the rounding takes no branch on it.
+    return round_shift62(n * static_cast<i64>(y), F + 4 - j);
+  }
   // The whole block: components are NormalInBits signed, FracBits fraction bits.
   static Unit normalize(i64 nx, i64 ny, i64 nz);
 };
+
+// Inline: the Phong pipeline runs them per shaded pixel.
+inline i64 Normalizer::scale(i64 n, std::uint32_t y, int j) {
+  // unit = n 2^-16 * y 2^-F * 2^(j-2) in units of 2^-14: shift right by F + 4 - j >= F - 13.
+  constexpr i64 hi = (i64{1} << (fmt::UnitBits - 1)) - 1;
+  return std::clamp<i64>(scale_unsaturated(n, y, j), -hi - 1, hi);
+}
+
+inline Normalizer::Unit Normalizer::normalize(i64 nx, i64 ny, i64 nz) {
+  const RsqrtUnit::Mantissa mm = RsqrtUnit::normalize_mantissa(sum_of_squares(nx, ny, nz));
+  const std::uint32_t y = RsqrtUnit::rsqrt_mant(mm.mant);  // 0 for the null vector
+  Unit u;
+  u.null = mm.null;
+  u.n = {scale_unsaturated(nx, y, mm.j), scale_unsaturated(ny, y, mm.j), scale_unsaturated(nz, y, mm.j)};
+  return u;
+}
 
 }  // namespace watkins

@@ -1,24 +1,12 @@
 // Twin of rtl/phong_shader.sv; see phong_shader.hpp for the stage list.
 #include "phong_shader.hpp"
 
-#include <algorithm>
-
 namespace watkins {
-
-i64 PhongShader::power(i64 base, int n) {
-  // acc and base stay in [0, 1], so the products are >= 0 and round_shift64 needs no sign case:
-  // add half, shift. Once no bit of n is left, the RTL's remaining stages pass acc unchanged.
-  i64 acc = One;
-  for (int k = 0; k < NBits && (n >> k) != 0; ++k) {  // stage 4 + k
-    if ((n >> k) & 1) acc = (acc * base + (i64{1} << (P - 1))) >> P;
-    base = (base * base + (i64{1} << (P - 1))) >> P;
-  }
-  return acc;
-}
 
 namespace {
 
-// terms(), in this file so that shade() (per fragment) inlines it.
+// terms(), in this file so that shade(Pixel, ...) inlines it (the per-pixel path of a frame is
+// shade(n, MaterialTerms, ...) in phong_shader.hpp).
 inline PhongShader::Terms terms_of(const PhongShader::Pixel& px, const PhongShader::Vec& light,
                                    const PhongShader::Vec& eye, i64 le) {
   using PS = PhongShader;

@@ -26,7 +26,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <utility>
 
 #include "fixed_point.hpp"
 #include "formats.hpp"
@@ -70,10 +72,26 @@ struct PhongShader {
   static i64 frame_le(const Vec& light, const Vec& eye) {
     return round_dot(dot(light, eye), true);
   }
-  static i64 power(i64 base, int n);  // base^n, P fraction bits, base in [0, 1]
+  // base^n, P fraction bits, base in [0, 1]; n's low NBits bits (the RTL's register).
+  static i64 power(i64 base, int n);
   // The pixel's terms and levels; `le` = frame_le(light, eye), which a frame works out once.
   static Terms terms(const Pixel& px, const Vec& light, const Vec& eye, i64 le);
   static std::array<int, 3> shade(const Pixel& px, const Vec& light, const Vec& eye, i64 le);
+  // The per-pixel path of a frame (WatkinsTop): what depends on the material alone is worked out
+  // once per frame (material_terms), the pixel's values with no sign branch (round_shift62).
+  // Same bits as shade(Pixel, ...) for every input (the arithmetic is the same, regrouped;
+  // tests/test_phong_fast_path.cpp compares the two).
+  struct MaterialTerms {
+    std::array<i64, 3> cp{};  // Cp, 8-bit levels
+    i64 one_minus_d = 0;      // 1 - d, MF fraction bits (d clamped to 1.0)
+    i64 d_term = 0;           // d, D + MF fraction bits: f = cos(i) (1 - d) + d
+    i64 spec_scale = 0;       // 255 W 2^(D-P): the specular level is spec_scale * cos(s)^n
+    int shininess = 0;        // n
+    i64 (*power)(i64) = nullptr;  // cs -> cs^n, PhongShader::power for this n (PowerTable)
+  };
+  static MaterialTerms material_terms(const std::array<int, 3>& cp, int d, int w, int shininess);
+  static std::array<int, 3> shade(const Vec& n, const MaterialTerms& m, const Vec& light, const Vec& eye, i64 le);
+
   static Terms terms(const Pixel& px, const Vec& light, const Vec& eye) {
     return terms(px, light, eye, frame_le(light, eye));
   }
@@ -81,5 +99,74 @@ struct PhongShader {
     return shade(px, light, eye, frame_le(light, eye));
   }
 };
+
+// Inline (the per-pixel path). Stage for stage as terms_of() and shade() in phong_shader.cpp, with
+// two exact rewrites of "round, then clamp": every word rounded is below 2^61 in magnitude (the
+// static_asserts in phong_shader.cpp bound them), where round_shift62 equals round_shift64; and
+// clamp(round(v), 0, hi) = min(nonneg_round(max(v, 0)), hi), as round(v) <= 0 for every v <= 0 and
+// round(0) = 0, so a word clamped below at 0 is rounded as a non-negative number (add, shift).
+inline std::array<int, 3> PhongShader::shade(const Vec& n, const MaterialTerms& m, const Vec& light, const Vec& eye,
+                                             i64 le) {
+  constexpr i64 hi = (i64{1} << (D + 1)) - 1;
+  constexpr int SDot = 2 * UF - D, SCs = 2 * D - P;
+  const auto nonneg_round = [](i64 v, int s) { return (v + (i64{1} << (s - 1))) >> s; };  // v >= 0
+  const i64 cos_i = std::min(nonneg_round(std::max<i64>(dot(n, light), 0), SDot), hi);  // stage 2
+  const i64 ne = std::clamp<i64>(round_shift62(dot(n, eye), SDot), -hi - 1, hi);
+  const i64 cs = std::min(nonneg_round(std::max<i64>(2 * cos_i * ne - le * (i64{1} << D), 0), SCs), One);  // 3
+  const i64 f = cos_i * m.one_minus_d + m.d_term;
+  const i64 spec = cos_i > 0 && cs > 0 ? m.spec_scale * m.power(cs) : 0;  // 4..11, 12
+  std::array<int, 3> out{};
+  for (int c = 0; c < 3; ++c)  // 12, 13
+    out[c] = static_cast<int>(std::min<i64>(nonneg_round(std::max<i64>(m.cp[c] * f + spec, 0), OutFrac), fmt::ShadeMax));
+  return out;
+}
+
+// power() for n's NBits bits, inline: with `bits` a constant (power_of<n>) the loops unroll.
+[[gnu::always_inline]] inline i64 power_bits(i64 base, unsigned bits) {
+  // The stage list's products, less two that cannot change a bit: acc's first product is
+  // One * base, which rounds to base exactly ((2^P base + 2^(P-1)) >> P = base), and the square
+  // after n's top bit, which no later stage uses. Stages past n's top bit pass acc unchanged, and
+  // once base is 0 every later product is 0 (acc has a factor left to take).
+  constexpr int P = PhongShader::P;
+  constexpr i64 half = i64{1} << (P - 1);
+  if (bits == 0) return PhongShader::One;
+  for (; !(bits & 1); bits >>= 1) base = (base * base + half) >> P;
+  i64 acc = base;
+  while ((bits >>= 1) != 0) {
+    base = (base * base + half) >> P;
+    if (base == 0) return 0;
+    if (bits & 1) acc = (acc * base + half) >> P;
+  }
+  return acc;
+}
+
+inline i64 PhongShader::power(i64 base, int n) {
+  return power_bits(base, static_cast<unsigned>(n) & ((1u << NBits) - 1));  // the RTL's NBits register
+}
+
+// power() for one n, unrolled; PowerTable[n] (material_terms() picks a material's once per frame).
+template <unsigned N>
+i64 power_of(i64 base) {
+  return power_bits(base, N);
+}
+template <std::size_t... N>
+constexpr std::array<i64 (*)(i64), sizeof...(N)> power_table(std::index_sequence<N...>) {
+  return {&power_of<static_cast<unsigned>(N)>...};
+}
+inline constexpr std::array<i64 (*)(i64), (1 << PhongShader::NBits)> PowerTable =
+    power_table(std::make_index_sequence<(1 << PhongShader::NBits)>{});
+
+inline PhongShader::MaterialTerms PhongShader::material_terms(const std::array<int, 3>& cp, int d, int w,
+                                                              int shininess) {
+  MaterialTerms m;
+  for (int c = 0; c < 3; ++c) m.cp[c] = cp[c];
+  const i64 dc = d > (1 << MF) ? (1 << MF) : d;
+  m.one_minus_d = (1 << MF) - dc;
+  m.d_term = dc * (i64{1} << D);
+  m.spec_scale = 255 * static_cast<i64>(w) * (i64{1} << (D - P));
+  m.shininess = shininess;
+  m.power = PowerTable[static_cast<std::size_t>(static_cast<unsigned>(shininess) & ((1u << NBits) - 1))];
+  return m;
+}
 
 }  // namespace watkins

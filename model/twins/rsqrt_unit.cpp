@@ -8,5 +8,7 @@ static_assert((RsqrtUnit::W + 2) + 2 * (RsqrtUnit::T + 1) <= 62 && (RsqrtUnit::T
               "rsqrt_mant products fit 64 bits");
 static_assert(RsqrtUnit::seed(RsqrtUnit::MantLo >> (RsqrtUnit::W - RsqrtUnit::P)) < (1u << (RsqrtUnit::T + 1)),
               "seed must fit T+1 bits");
+static_assert((RsqrtUnit::W + 1) + 2 * RsqrtUnit::T - RsqrtUnit::G >= 1 && RsqrtUnit::T + RsqrtUnit::G + 1 - RsqrtUnit::F >= 1,
+              "rsqrt_mant's roundings are right shifts");
 
 }  // namespace watkins

@@ -84,7 +84,7 @@ inline RsqrtUnit::Mantissa RsqrtUnit::normalize_mantissa(std::uint64_t m) {
   }
   // Leading zeros of m in MBits bits, rounded down to even: m' = (m << 2j) / 2^36 >= 1/4.
   const int lz = MBits - 1 - msb_index(m);
-  r.j = lz / 2;
+  r.j = static_cast<int>(static_cast<unsigned>(lz) >> 1);  // lz >= 0: m < 2^MBits
   const std::uint64_t shifted = m << (2 * r.j);  // < 2^36
   r.mant = static_cast<std::uint32_t>(shifted >> (MBits - W));
   return r;
@@ -95,10 +95,12 @@ inline std::uint32_t RsqrtUnit::rsqrt_mant(std::uint32_t mant) {
   const std::uint64_t y0 = RsqrtSeedRom[mant >> (W - P)];                  // T fraction bits
   const std::uint64_t y0sq = y0 * y0;                                     // 2T fraction bits
   // 64 bits hold every product: m'c < 2^(W+2), y0^2 < 2^(2T+2), y0 u < 2^(T+1) 2^(G+2).
-  const i64 t = round_shift64(static_cast<i64>(mc * y0sq), (W + 1) + 2 * T - G);  // G fraction
-  const i64 u = (i64{3} << G) - t;                                             // 3 - m'c y0^2
-  const i64 y = round_shift64(static_cast<i64>(y0) * u, T + G + 1 - F);        // y0 u / 2
-  return static_cast<std::uint32_t>(y);
+  // Every word here is >= 0 (u too: m'c y0^2 < 2 for every mant, tests/test_phong_fast_path.cpp
+  // runs them all), so round_shift's "add half, shift" is an unsigned add and shift.
+  constexpr int S1 = (W + 1) + 2 * T - G, S2 = T + G + 1 - F;
+  const std::uint64_t t = (mc * y0sq + (std::uint64_t{1} << (S1 - 1))) >> S1;  // G fraction
+  const std::uint64_t u = (std::uint64_t{3} << G) - t;                         // 3 - m'c y0^2
+  return static_cast<std::uint32_t>((y0 * u + (std::uint64_t{1} << (S2 - 1))) >> S2);  // y0 u / 2
 }
 
 }  // namespace watkins

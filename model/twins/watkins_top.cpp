@@ -11,15 +11,35 @@
 namespace watkins {
 namespace {
 
-// normalizer → phong_shader on one fragment: its rgb becomes the shade of its material.
-// `le` is the frame's L.E (PhongShader::frame_le), worked out once per frame.
-void phong_shade(const Frame& frame, i64 le, Fragment& f) {
-  const Normalizer::Unit u = Normalizer::normalize(f.normal[0], f.normal[1], f.normal[2]);
-  const QuantizedMaterial& m = frame.materials.at(static_cast<std::size_t>(f.material));
-  const PhongShader::Pixel px{u.n, m.cp, m.d, m.w, m.shininess};
-  const std::array<int, 3> rgb = PhongShader::shade(px, frame.light, frame.eye, le);
-  for (int c = 0; c < 3; ++c) f.rgb[c] = static_cast<std::uint8_t>(rgb[c]);
-}
+// The Phong blocks' frame constants: light, eye, L.E (PhongShader::frame_le) and each material's
+// terms (PhongShader::material_terms), worked out once per frame instead of per pixel.
+struct PhongFrame {
+  PhongShader::Vec light{}, eye{};
+  i64 le = 0;
+  std::vector<PhongShader::MaterialTerms> materials;  // by material id, as frame.materials
+  explicit PhongFrame(const Frame& frame)
+      : light(frame.light), eye(frame.eye), le(PhongShader::frame_le(frame.light, frame.eye)) {
+    if (frame.shading != ShadingMode::Phong) return;
+    materials.reserve(frame.materials.size());
+    for (const QuantizedMaterial& m : frame.materials)
+      materials.push_back(PhongShader::material_terms(m.cp, m.d, m.w, m.shininess));
+  }
+  // normalizer → phong_shader on one normal of material `id` (checked by the caller).
+  std::array<int, 3> shade(const std::array<i64, 3>& normal, int id) const {
+    const Normalizer::Unit u = Normalizer::normalize(normal[0], normal[1], normal[2]);
+    return PhongShader::shade(u.n, materials[static_cast<std::size_t>(id)], light, eye, le);
+  }
+  // The same on a fragment: its rgb becomes the shade of its material (std::out_of_range for an id
+  // past the table, as the material table's read).
+  void shade(Fragment& f) const {
+    const std::array<int, 3> rgb = shade(f.normal, check(f.material));
+    for (int c = 0; c < 3; ++c) f.rgb[c] = static_cast<std::uint8_t>(rgb[c]);
+  }
+  int check(int id) const {
+    (void)materials.at(static_cast<std::size_t>(id));
+    return id;
+  }
+};
 
 // The segments of one scan line through the interpolator (and the Phong blocks) into the line
 // buffer. What varies per frame is a template parameter, chosen once per frame: whether a bench
@@ -37,7 +57,7 @@ struct DeferredPhong {
 };
 template <bool Observed, ShadingMode Shading>
 LineCounts draw_segments(const Frame& frame, const std::vector<Segment>& segments, const ChannelFormats& formats,
-                        const PixelPath& path, i64 le, ScanlineBuffer& line, int y,
+                        const PixelPath& path, const PhongFrame& phong, ScanlineBuffer& line, int y,
                         const PipelineObserver& observe, DeferredPhong& later) {
   constexpr bool defer = !Observed && Shading == ShadingMode::Phong;
   constexpr auto readings = Observed ? PixelPath::Readings::Both
@@ -65,11 +85,10 @@ LineCounts draw_segments(const Frame& frame, const std::vector<Segment>& segment
         if (won || Observed) {
           p.fill<readings, InRange>(f, v);
           if (defer) {
-            (void)frame.materials.at(static_cast<std::size_t>(f.material));  // the id check phong_shade makes
             later.normal[static_cast<std::size_t>(x)] = f.normal;
-            later.material[static_cast<std::size_t>(x)] = f.material;
+            later.material[static_cast<std::size_t>(x)] = phong.check(f.material);  // shade(f)'s check
           } else if (Shading == ShadingMode::Phong) {
-            phong_shade(frame, le, f);
+            phong.shade(f);
           }
           if (won) line.store(f, key);
           if (Observed) observe.fragment(y, f, won);
@@ -88,7 +107,7 @@ LineCounts draw_segments(const Frame& frame, const std::vector<Segment>& segment
 }
 
 using DrawSegments = LineCounts (*)(const Frame&, const std::vector<Segment>&, const ChannelFormats&,
-                                   const PixelPath&, i64, ScanlineBuffer&, int, const PipelineObserver&,
+                                   const PixelPath&, const PhongFrame&, ScanlineBuffer&, int, const PipelineObserver&,
                                    DeferredPhong&);
 
 DrawSegments draw_segments_for(bool observed, ShadingMode shading) {
@@ -139,7 +158,7 @@ void WatkinsTop::render_into(const Frame& frame, Image& img, const PipelineObser
   const bool observing = static_cast<bool>(observe.fragment);
   const PixelPath path(formats);
   const DrawSegments draw = draw_segments_for(observing, frame.shading);
-  const i64 le = PhongShader::frame_le(frame.light, frame.eye);
+  const PhongFrame phong(frame);
   const bool deferred = !observing && frame.shading == ShadingMode::Phong;
   DeferredPhong later;
   if (deferred) {
@@ -158,26 +177,31 @@ void WatkinsTop::render_into(const Frame& frame, Image& img, const PipelineObser
       for (const Segment& s : sl.segments) observe.segment(y, s);
     if (observe.segments_end) observe.segments_end(y);
     line.clear();
-    const LineCounts n = draw(frame, sl.segments, formats, path, le, line, y, observe, later);
+    const LineCounts n = draw(frame, sl.segments, formats, path, phong, line, y, observe, later);
     stats_.fragments += n.fragments;
     stats_.visible += n.visible;
     if (observe.fragments_end) observe.fragments_end(y);
     // The image starts as background, uncovered: only the line's covered pixels are copied.
     const std::size_t row = std::size_t(y) * frame.width;
-    for (const int x : line.written()) {
-      std::array<std::uint8_t, 3> p = line.written_rgb(x);
-      if (deferred) {
-        Fragment f;
-        f.normal = later.normal[static_cast<std::size_t>(x)];
-        f.material = later.material[static_cast<std::size_t>(x)];
-        phong_shade(frame, le, f);
-        p = {f.rgb[0], f.rgb[1], f.rgb[2]};
+    // Two loops, the test of the mode outside them.
+    auto copy_out = [&](auto shade) {
+      for (const int x : line.written()) {
+        const std::array<std::uint8_t, 3> p = shade(x);
+        std::uint8_t* out = &img.rgb[(row + x) * 3];
+        out[0] = p[0], out[1] = p[1], out[2] = p[2];  // byte stores: no library call per pixel
+        img.covered[row + x] = 1;
+        img.owner[row + x] = line.written_poly(x);
       }
-      std::uint8_t* out = &img.rgb[(row + x) * 3];
-      out[0] = p[0], out[1] = p[1], out[2] = p[2];  // byte stores: no library call per pixel
-      img.covered[row + x] = 1;
-      img.owner[row + x] = line.written_poly(x);
-    }
+    };
+    if (deferred)
+      copy_out([&](int x) {
+        const std::array<int, 3> rgb =
+            phong.shade(later.normal[static_cast<std::size_t>(x)], later.material[static_cast<std::size_t>(x)]);
+        return std::array<std::uint8_t, 3>{static_cast<std::uint8_t>(rgb[0]), static_cast<std::uint8_t>(rgb[1]),
+                                           static_cast<std::uint8_t>(rgb[2])};
+      });
+    else
+      copy_out([&](int x) { return line.written_rgb(x); });
   });
   // The smoother after the line buffer, when the frame enables it (it sees the full raster).
   if (frame.smoothed()) img = Smoother(frame.smooth_w).apply(img);
