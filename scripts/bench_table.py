@@ -71,19 +71,30 @@ def main():
         if not b["phong"] and key in instr:
             parts.append("%s instructions per fragment (callgrind)" % instr[key])
         out.append("| model, %s, %s | %s | %s |" % (shading, name, "; ".join(parts), verdict))
-    for l in lines:
-        m = re.match(r"^verilator (.*?) +(\d+) (cycles/s|instructions/cycle)$", l)
-        if not m:
-            continue
-        what, value, unit = m.groups()
+    verilator = [m.groups() for l in lines
+                 for m in [re.match(r"^verilator (.*?) +(\d+) (cycles/s|instructions/cycle)$", l)] if m]
+    # The SystemC bench's speed build (no assertions, no tracing) is the one issue 11's 1 M
+    # cycles/s is for; its row shows the assertion build's figure (the tests' bench) beside it.
+    # Logs without a speed build: the assertion build's row carries the target.
+    speed_sc = {re.sub(r" \(speed build;", " (assertions;", w): int(v) for w, v, u in verilator
+                if u == "cycles/s" and "SystemC" in w and "(speed build;" in w}
+    for what, value, unit in verilator:
         target = ""
         if unit == "cycles/s":
             v = int(value)
+            if what in speed_sc:
+                continue  # shown beside the speed build's figure
+            figure = "**%.2f M cycles/s** (wall)" % (v / 1e6)
+            if "SystemC" in what and "(speed build;" in what:
+                twin = re.sub(r" \(speed build;", " (assertions;", what)
+                asserting = next((int(x) for w, x, u in verilator if w == twin and u == "cycles/s"), None)
+                if asserting is not None:
+                    figure += "; assertion build (the tests' bench) %.2f M" % (asserting / 1e6)
             if "plain" in what and "gouraud" in what:
                 target = ("met" if v >= 2_500_000 else "not met") + " (≥ 2.5 M, stage checker on)"
             elif "SystemC" in what and "gouraud" in what:
                 target = ("met" if v >= 1_000_000 else "not met") + " (≥ 1 M)"
-            out.append("| Verilator, %s | **%.2f M cycles/s** (wall) | %s |" % (what, v / 1e6, target))
+            out.append("| Verilator, %s | %s | %s |" % (what, figure, target))
         else:
             out.append("| Verilator, %s | %s instructions per simulated cycle (callgrind) | |" % (what, value))
     ipc = {m.group(1): int(m.group(2)) for l in lines

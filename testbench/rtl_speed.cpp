@@ -1,7 +1,9 @@
-// Simulation speed of the RTL on one bench of the default configuration, built twice from this one
-// source: watkins_rtl_speed_sc (the SystemC bench: --sc tops with assertions and tracing) and
-// watkins_rtl_speed_cc (the plain C++ harness on the speed build's --cc tops).
-//   watkins_rtl_speed_{sc,cc} [SCENE] [--shading gouraud|phong] [--repeat N] [--gap P] [--stall P]
+// Simulation speed of the RTL on one bench of the default configuration, built three times from
+// this one source: watkins_rtl_speed_sc (the SystemC bench: --sc tops with assertions and
+// tracing), watkins_rtl_speed_sc_fast (the SystemC bench on --sc tops without assertions or
+// tracing: sc_bench.hpp's sc_speed, built only as an explicit target) and watkins_rtl_speed_cc
+// (the plain C++ harness on the speed build's --cc tops).
+//   watkins_rtl_speed_{sc,sc_fast,cc} [SCENE] [--shading gouraud|phong] [--repeat N] [--gap P] [--stall P]
 //                             [--seed N] [--no-stage-check]
 #include <CLI/CLI.hpp>
 
@@ -14,6 +16,26 @@
 #include "prepare.hpp"
 #include "rtl_bench.hpp"
 #include "scene.hpp"
+#ifdef WATKINS_SPEED_SC_FAST
+#include "sc_bench.hpp"
+#endif
+
+namespace {
+
+// One run on this program's bench.
+watkins::tb::RtlResult run(const watkins::PreparedScene& scene, const watkins::tb::RtlOptions& opt,
+                           const watkins::Image& expected) {
+#ifdef WATKINS_SPEED_SC_FAST
+  // run_rtl would take the assertion build's SystemC bench: call the speed build's directly.
+  watkins::tb::RtlResult r;
+  watkins::tb::detail::sc_speed::run_systemc({&scene}, opt, {&expected}, r);
+  return r;
+#else
+  return watkins::tb::run_rtl(scene, opt, &expected);
+#endif
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"watkins_rtl_speed: simulated cycles per second of the Verilated pipeline"};
@@ -46,14 +68,14 @@ int main(int argc, char** argv) {
     const BuiltScene scene = load_scene_or_default(scene_path, build);
     const PreparedScene prepared = prepare(scene);
     const Image expected = WatkinsTop().render(prepared);
-    tb::RtlResult warm = tb::run_rtl(prepared, opt, &expected);  // also builds the bench
+    tb::RtlResult warm = run(prepared, opt, expected);  // also builds the bench
     long long cycles = 0;
     double wall = 0;
     const std::clock_t cpu0 = std::clock();  // CPU time: robust against other jobs on the machine
     bool ok = warm.ok();
     for (int i = 0; i < repeat; ++i) {
       opt.seed += 1;
-      const tb::RtlResult r = tb::run_rtl(prepared, opt, &expected);
+      const tb::RtlResult r = run(prepared, opt, expected);
       cycles += r.sim_cycles;
       wall += r.wall_seconds;
       ok = ok && r.ok();

@@ -2,6 +2,9 @@
 // by one SC_THREAD that also runs the drive loop (frame_driver.hpp) through TopPins on the signals.
 // Two Verilated builds of the one top: Phong = 0 (Vwatkins_top) and Phong = 1
 // (Vwatkins_top_phong), each in its own bench module; a run clocks only the one its scenes need.
+// Compiled with WATKINS_SC_SPEED=1 it is the speed build instead (sc_bench.hpp): the tops
+// Vwatkins_top_sc_fast and Vwatkins_top_sc_fast_phong, Verilated without --assert and without
+// tracing, and the functions in namespace sc_speed; nothing else differs.
 //
 // Why one thread and no sc_clock: the driver is the same plain C++ as the plain harness's
 // (so both run identical checks and must agree on every cycle), a cycle is two timed waits with
@@ -20,10 +23,18 @@
 #include <verilated.h>
 #include <verilated_fst_c.h>
 
+#if WATKINS_SC_SPEED
+#include "Vwatkins_top_sc_fast.h"
+#include "Vwatkins_top_sc_fast___024root.h"  // the public internal stage signals
+#include "Vwatkins_top_sc_fast_phong.h"
+#include "Vwatkins_top_sc_fast_phong___024root.h"
+#else
 #include "Vwatkins_top.h"
 #include "Vwatkins_top___024root.h"  // the public internal stage signals
 #include "Vwatkins_top_phong.h"
 #include "Vwatkins_top_phong___024root.h"
+#endif
+#include "config.hpp"
 #include "expectations.hpp"
 #include "formats.hpp"
 #include "fst_trace.hpp"
@@ -33,11 +44,28 @@
 #include "verilated_stop.hpp"
 
 // libsystemc's own main() calls sc_main; our programs have their own main() and run the kernel
-// from ordinary code (run_rtl), but the shared library still needs the symbol.
+// from ordinary code (run_rtl), but the shared library still needs the symbol. The speed build's
+// is weak: a program may link both builds (watkins_rtl_speed_sc_fast links watkins_tb too).
+#if WATKINS_SC_SPEED
+__attribute__((weak))
+#endif
 int sc_main(int, char**) { return 0; }
 
 namespace watkins::tb::detail {
 namespace {
+
+// The two tops of this build, and what run_systemc and systemc_description call them.
+#if WATKINS_SC_SPEED
+using GouraudTop = Vwatkins_top_sc_fast;
+using PhongTop = Vwatkins_top_sc_fast_phong;
+constexpr bool Asserts = false;
+constexpr const char* BuildName = "speed build: no assertions, no tracing";
+#else
+using GouraudTop = Vwatkins_top;
+using PhongTop = Vwatkins_top_phong;
+constexpr bool Asserts = true;
+constexpr const char* BuildName = "with assertions";
+#endif
 
 // The SystemC tops at their default parameters (not overridden in testbench/CMakeLists.txt but
 // for Phong): the default configuration's.
@@ -122,7 +150,14 @@ struct TopBench : sc_module, TopPins {
     trace_.dump(t);
   }
   bool stopped() override { return take_stop(*dut.contextp()); }
-  bool trace_open(const std::string& path) override { return trace_.open(dut, path); }
+  bool trace_open(const std::string& path) override {
+#if WATKINS_SC_SPEED
+    (void)path;
+    throw std::invalid_argument("RTL: --trace: the SystemC bench's speed build is Verilated without tracing");
+#else
+    return trace_.open(dut, path);
+#endif
+  }
   void trace_close() override { trace_.close(); }
   const StageTaps* stage_taps() override {
     if (!taps_.ae_valid) taps_ = detail::stage_taps(*dut.rootp);
@@ -146,8 +181,8 @@ struct Side {
 };
 
 struct Bench {
-  Side<Vwatkins_top> gouraud{"watkins_tb"};
-  Side<Vwatkins_top_phong> phong{"watkins_tb_phong"};
+  Side<GouraudTop> gouraud{Asserts ? "watkins_tb" : "watkins_tb_speed"};
+  Side<PhongTop> phong{Asserts ? "watkins_tb_phong" : "watkins_tb_speed_phong"};
   bool dead = false;
 };
 
@@ -184,6 +219,10 @@ Bench& bench() {
 
 }  // namespace
 
+#if WATKINS_SC_SPEED
+namespace sc_speed {
+#endif
+
 void systemc_initial_state(int seed) {
   if (initial_state().built && seed != initial_state().seed)
     throw std::logic_error("rtl_initial_state: the Verilated tops of this process are built already");
@@ -191,8 +230,8 @@ void systemc_initial_state(int seed) {
 }
 
 std::string systemc_description() {
-  return "SystemC bench (Verilated --sc watkins_top with assertions, Phong = 0 and 1, one SC_THREAD each, SystemC " +
-         std::string(sc_release()) + ")";
+  return std::string("SystemC bench (Verilated --sc watkins_top, ") + BuildName +
+         ", Phong = 0 and 1, one SC_THREAD each, SystemC " + sc_release() + ")";
 }
 
 namespace {
@@ -223,8 +262,12 @@ void run_on(Bench& b, Side<Dut>& side, const Work& work) {
 void run_systemc(const std::vector<const PreparedScene*>& scenes, const RtlOptions& opt,
                  const std::vector<const Image*>& expected, RtlResult& r) {
   const bool phong = phong_frames(scenes);
-  r.top = std::string("SystemC bench, Verilated --sc watkins_top at the default configuration with assertions (Phong = ") +
-          (phong ? "1)" : "0)");
+  const ShadingMode shading = phong ? ShadingMode::Phong : ShadingMode::Gouraud;
+  // run_rtl_frames checks this for the assertion build; the speed build is called directly.
+  if (rtl_parameters(frames_config(scenes), shading) != rtl_parameters(Config{}, shading))
+    throw std::invalid_argument("RTL: the SystemC bench has the default configuration's tops only");
+  r.top = std::string("SystemC bench, Verilated --sc watkins_top at the default configuration, ") + BuildName +
+          " (Phong = " + (phong ? "1)" : "0)");
   const Expectations want = expect(scenes, opt, expected, r, MaxWidth);
   Bench& b = bench();
   if (b.dead) throw std::runtime_error("RTL bench: the SystemC kernel stopped in an earlier run");
@@ -234,5 +277,9 @@ void run_systemc(const std::vector<const PreparedScene*>& scenes, const RtlOptio
   else
     run_on(b, b.gouraud, work);
 }
+
+#if WATKINS_SC_SPEED
+}  // namespace sc_speed
+#endif
 
 }  // namespace watkins::tb::detail

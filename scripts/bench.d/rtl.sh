@@ -3,13 +3,21 @@
 # Phong shading (watkins_top with Phong = 0 and 1), in full-frame output (bound by one pixel per
 # clock) and sparse output (--sparse: covered pixels only, bound by the fragment path); the
 # overdraw scene is bound by the fragment rate. Then simulated cycles per second of both tops on
-# both benches: the plain C++ harness (the speed build: no assertions, no tracing) and the
-# SystemC bench (assertions and tracing compiled in).
+# the plain C++ harness (the speed build: no assertions, no tracing) and on both builds of the
+# SystemC bench: the one the tests run (assertions and tracing compiled in) and its speed build
+# (watkins_rtl_speed_sc_fast: --sc tops without assertions or tracing; not in the default build,
+# so this script builds that target first, -j${WATKINS_JOBS:-2}).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 build="${WATKINS_BUILD:-$root/build}"
 [ -x "$build/testbench/watkins_rtl_speed_sc" ] && [ -x "$build/testbench/watkins_rtl_speed_cc" ] ||
   { echo "rtl: not built (needs Verilator, SystemC, WATKINS_RTL_SPEED and WATKINS_RTL_SYSTEMC)"; exit 0; }
+harnesses=(cc sc)
+if cmake --build "$build" -j"${WATKINS_JOBS:-2}" --target watkins_rtl_speed_sc_fast >"$build/sc_fast_build.log" 2>&1; then
+  harnesses+=(sc_fast)
+else
+  echo "rtl: the SystemC bench's speed build did not build (log: $build/sc_fast_build.log); its figures are left out"
+fi
 scenes=("" "$root/scenes/sphere.json" "$root/scenes/cone.json" "$root/scenes/overdraw.json")
 printf "%-26s %9s %9s %8s %11s %10s\n" "rtl frame" "cycles" "fragments" "frag/cyc" "pixels/cyc" "mismatches"
 for scene in "${scenes[@]}"; do
@@ -24,13 +32,21 @@ for scene in "${scenes[@]}"; do
     done
   done
 done
-speed() {  # $1: harness (sc, cc), $2: shading
+speed() {  # $1: harness (sc, sc_fast, cc), $2: shading
   "$build/testbench/watkins_rtl_speed_$1" --repeat 3 --shading "$2" | sed -n 's/^speed *\([0-9]*\) cycles\/s.*/\1/p'
 }
-# Both benches, both tops, in one run (the machine is shared: compare figures of the same run).
+label() {  # $1: harness, $2: shading
+  case $1 in
+    cc) echo "plain C++ harness, $2 top (speed build, eval loop)" ;;
+    sc) echo "SystemC bench, $2 top (assertions; one SC_THREAD)" ;;
+    sc_fast) echo "SystemC bench, $2 top (speed build; one SC_THREAD)" ;;
+  esac
+}
+# Every bench, both tops, in one run (the machine is shared: compare figures of the same run).
 for shading in gouraud phong; do
-  printf "verilator %-60s %s cycles/s\n" "plain C++ harness, ${shading} top (speed build, eval loop)" "$(speed cc $shading)"
-  printf "verilator %-60s %s cycles/s\n" "SystemC bench, ${shading} top (assertions; one SC_THREAD)" "$(speed sc $shading)"
+  for h in "${harnesses[@]}"; do
+    printf "verilator %-60s %s cycles/s\n" "$(label $h $shading)" "$(speed $h $shading)"
+  done
 done
 # Instructions per simulated cycle (callgrind: repeatable on a shared machine): the difference
 # between a 3-frame and a 1-frame run over the difference in cycles, so the warm-up frame and the
@@ -53,6 +69,12 @@ if command -v valgrind >/dev/null; then
     printf "verilator %-60s %s instructions/cycle\n" "plain C++ harness, ${shading} top, stage checker on" \
       "$(per_cycle cc --shading $shading)"
   done
-  printf "verilator %-60s %s instructions/cycle\n" "SystemC bench, gouraud top, stage checker on" \
-    "$(per_cycle sc --shading gouraud)"
+  for shading in gouraud phong; do
+    printf "verilator %-60s %s instructions/cycle\n" "SystemC bench, ${shading} top (assertions), stage checker on" \
+      "$(per_cycle sc --shading $shading)"
+    if [[ " ${harnesses[*]} " == *" sc_fast "* ]]; then
+      printf "verilator %-60s %s instructions/cycle\n" "SystemC bench, ${shading} top (speed build), stage checker on" \
+        "$(per_cycle sc_fast --shading $shading)"
+    fi
+  done
 fi
