@@ -96,8 +96,7 @@ module active_edge_list #(
   localparam int unsigned AB = IB + 1;
   logic [EB-1:0]   body_mem [2 ** AB];
   // The filling bank's order: entry i's {sort key, body index} in one word (past the count:
-  // don't care). One array written once per entry: a simulator keeps one pending-write flag per
-  // written element, so this costs half what separate key and index arrays did.
+  // don't care).
   logic [KB+IB-1:0] order_q [N];
   // The streaming bank's order from the entry at rd_q on: g_sidx[i].q below.
   logic [IB-1:0]   rd_head;      // the streaming bank's body index read next clock
@@ -291,22 +290,6 @@ module active_edge_list #(
     end
   end
 
-  // Sorted insertion of the key and the body's index: entries before the new one stay, the one
-  // at its place takes it, the tail moves up by one. (One array: each entry reads its
-  // neighbour's old value, which a simulator can only order for array elements, not for
-  // separate variables without copying each of them on every clock.)
-  always_ff @(posedge clk_i) begin
-    if (ins_write) begin
-      for (int i = 0; i < N; i++) begin
-        if (!sorts_before(order_q[i][IB +: KB], CntB'(i), cnt_fill_q, ins_key)) begin
-          order_q[i] <= (i == 0 || sorts_before(order_q[(i + N - 1) % N][IB +: KB], CntB'((i + N - 1) % N),
-                                                cnt_fill_q, ins_key))
-                        ? {ins_key, IB'(cnt_fill_q)} : order_q[(i + N - 1) % N];
-        end
-      end
-    end
-  end
-
   // The streaming bank's index list, one variable per entry (a simulator then neither copies nor
   // shifts a packed N-entry list on every clock): entry i is the body index of the entry at
   // rd_q + i; the swap loads the filling bank's order, each advance moves the list down by one.
@@ -321,6 +304,32 @@ module active_edge_list #(
     always_ff @(posedge clk_i) begin
       if (next_line) q <= order_q[i][IB-1:0];
       else if (advance) q <= next;
+    end
+  end
+
+  // Sorted insertion of the key and the body's index: entries before the new one stay, the one
+  // at its place takes it, the tail moves up by one. Each entry is assigned in its own block
+  // from its own and its lower neighbour's old value, no loop writes the array: so the simulator
+  // unrolls nothing (Verilator's BLKLOOPINIT at any size). (One array rather than a variable per
+  // entry: Verilator keeps a pending-write flag per written element of an array, but copies a
+  // separate variable in and out of a shadow on every clock, about twice the instructions.)
+  for (genvar i = 0; i < N; i++) begin : g_order
+    if (i > 0) begin : g_above
+      always_ff @(posedge clk_i) begin
+        if (ins_write) begin
+          if (!sorts_before(order_q[i][IB +: KB], CntB'(i), cnt_fill_q, ins_key)) begin
+            order_q[i] <= sorts_before(order_q[i-1][IB +: KB], CntB'(i - 1), cnt_fill_q, ins_key)
+                          ? {ins_key, IB'(cnt_fill_q)} : order_q[i-1];
+          end
+        end
+      end
+    end else begin : g_bottom
+      always_ff @(posedge clk_i) begin
+        if (ins_write) begin
+          if (!sorts_before(order_q[0][IB +: KB], CntB'(0), cnt_fill_q, ins_key))
+            order_q[0] <= {ins_key, IB'(cnt_fill_q)};
+        end
+      end
     end
   end
 

@@ -3,7 +3,14 @@
 // same polygon closes it; segments leave in closing order, the end-of-line marker follows them
 // and clears the table (an edge left open draws nothing). A segment's material is its closing
 // edge's (both edges belong to one polygon, so one material).
-// Latency 1: output registered; ready_o = ready_i || !valid_o (combinational).
+// Latency 2: an input register, then the output register; both register valid and data;
+// edge_ready_o = !in_valid_q || seg_ready_i || !seg_valid_o (combinational). The input register
+// keeps, beside the edge, which table entries hold its polygon (one comparator per entry, on the
+// edge as it arrives): so neither the active-edge list's RAM read nor the comparators sit on the
+// path that pairs the edge and updates the table. The table an arriving edge is compared with is
+// the one the edge in the input register leaves behind: that edge writes its polygon into the
+// entry used_q (always, whether it opens or not: only an open entry is ever matched), so for that
+// entry the comparison is with the registered edge's polygon instead.
 // The open table has MaxActiveEdges entries, so it cannot fill: a line carries at most that
 // many edges, so an edge that opens a segment takes the next entry never used on this line (a
 // counter, no search for a free one), and the closing edge's entry index is the OR of the
@@ -43,45 +50,54 @@ module segment_former #(
   chans_t                            open_value_q [N];
   logic [CntB-1:0]       used_q;       // entries taken on this line (0 .. N), cleared by the marker
 
-  logic          fire, has_free;
+  // The input register: the edge and which entries hold its polygon when it is paired.
+  logic                      in_valid_q, in_eol_q;
+  logic [PolyIdBits-1:0]     in_poly_q;
+  logic [MaterialIdBits-1:0] in_material_q;
+  chans_t                    in_value_q;
+  logic [N-1:0]              in_same_q;
+
+  logic          out_en, pair, has_free;
+  logic [N-1:0]  match;
   logic [IB-1:0] free_idx;
 
-  assign edge_ready_o = seg_ready_i || !seg_valid_o;
-  assign fire         = edge_valid_i && edge_ready_o;
-
-  // The open entries of polygon `poly` (one-hot: polygon ids are unique among open entries) and
-  // the entry's index, the OR of the matching entries' indices (0 when none matches). Functions
-  // called inside the `if (fire)` of the registers they feed, not kept as signals: the same
-  // comparators in hardware (the calls share them), but a simulator then searches only on the
-  // clocks that take an edge, not on every evaluation.
-  function automatic logic [N-1:0] open_match(input logic [PolyIdBits-1:0] poly);
-    for (int i = 0; i < N; i++) open_match[i] = open_q[i] && open_poly_q[i] == poly;
-  endfunction
-  function automatic logic [IB-1:0] open_index(input logic [PolyIdBits-1:0] poly);
-    logic [N-1:0] match;
-    match = open_match(poly);
-    open_index = '0;
-    for (int i = 0; i < N; i++) open_index = open_index | (IB'(i) & {IB{match[i]}});
-  endfunction
+  assign out_en       = seg_ready_i || !seg_valid_o;
+  assign pair         = in_valid_q && out_en;    // the registered edge is paired this clock
+  assign edge_ready_o = out_en || !in_valid_q;
+  assign match        = in_same_q & open_q;      // its open entry (one-hot or none)
   assign has_free = used_q != CntB'(N);
   assign free_idx = IB'(used_q);
 
+  // Which entries hold `poly` once the registered edge is paired: entry used_q takes the
+  // registered edge's polygon. Entries past the line's used ones compare with stale polygons,
+  // but they are not open, and `match` masks them. A function called inside the input
+  // register's `if`, not kept as a signal: the same comparators in hardware, but a simulator
+  // compares only on the clocks that take an edge.
+  function automatic logic [N-1:0] holds(input logic [PolyIdBits-1:0] poly);
+    for (int i = 0; i < N; i++)
+      holds[i] = (CntB'(i) == used_q) ? (in_poly_q == poly) : (open_poly_q[i] == poly);
+  endfunction
+  // The matching entry's index, the OR of the matching entries' indices (0 when none matches).
+  function automatic logic [IB-1:0] match_index(input logic [N-1:0] m);
+    match_index = '0;
+    for (int i = 0; i < N; i++) match_index = match_index | (IB'(i) & {IB{m[i]}});
+  endfunction
+
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
+      in_valid_q  <= 1'b0;
       open_q      <= '0;
       used_q      <= '0;
       seg_valid_o <= 1'b0;
     end else begin
-      // seg_valid_o <= fire && (edge_eol_i || open_match(edge_poly_i) != '0) whenever edge_ready_o.
-      if (edge_ready_o) seg_valid_o <= 1'b0;
-      if (fire) begin
-        if (edge_eol_i) begin
-          seg_valid_o <= 1'b1;
+      if (edge_ready_o) in_valid_q <= edge_valid_i;
+      if (out_en) seg_valid_o <= pair && (in_eol_q || match != '0);
+      if (pair) begin
+        if (in_eol_q) begin
           open_q <= '0;
           used_q <= '0;
-        end else if (open_match(edge_poly_i) != '0) begin
-          seg_valid_o <= 1'b1;
-          open_q <= open_q & ~open_match(edge_poly_i);
+        end else if (match != '0) begin
+          open_q <= open_q & ~match;
         end else if (has_free) begin
           open_q[free_idx] <= 1'b1;
           used_q <= used_q + 1'b1;
@@ -91,17 +107,29 @@ module segment_former #(
   end
 
   always_ff @(posedge clk_i) begin
-    if (fire) begin
-      if (!edge_eol_i && open_match(edge_poly_i) == '0 && has_free) begin
-        open_poly_q[free_idx]  <= edge_poly_i;
-        open_value_q[free_idx] <= edge_value_i;
+    if (edge_valid_i && edge_ready_o) begin
+      in_poly_q     <= edge_poly_i;
+      in_material_q <= edge_material_i;
+      in_value_q    <= edge_value_i;
+      in_eol_q      <= edge_eol_i;
+      in_same_q     <= holds(edge_poly_i);
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (pair) begin
+      // Written whether the edge opens or not (an entry past the open ones): the write enable
+      // waits for no comparison.
+      if (!in_eol_q && has_free) begin
+        open_poly_q[free_idx]  <= in_poly_q;
+        open_value_q[free_idx] <= in_value_q;
       end
-      if (edge_eol_i || open_match(edge_poly_i) != '0) begin
-        seg_e_o    <= open_value_q[open_index(edge_poly_i)];
-        seg_f_o    <= edge_value_i;
-        seg_poly_o <= edge_poly_i;
-        seg_material_o <= edge_material_i;
-        seg_eol_o  <= edge_eol_i;
+      if (in_eol_q || match != '0) begin
+        seg_e_o    <= open_value_q[match_index(match)];
+        seg_f_o    <= in_value_q;
+        seg_poly_o <= in_poly_q;
+        seg_material_o <= in_material_q;
+        seg_eol_o  <= in_eol_q;
       end
     end
   end
@@ -110,6 +138,13 @@ module segment_former #(
     edge_value_i, edge_eol_i})
   `WATKINS_ASSERT_HOLD(a_out_hold, seg_valid_o, seg_ready_i, {seg_e_o, seg_f_o, seg_poly_o,
     seg_material_o, seg_eol_o})
-  `WATKINS_ASSERT(a_table_room, fire && !edge_eol_i && open_match(edge_poly_i) == '0 |-> has_free)
+  `WATKINS_ASSERT(a_table_room, pair && !in_eol_q && match == '0 |-> has_free)
+`ifdef WATKINS_ASSERT_ON
+  // The entries found on arrival are those a search at pairing time would find.
+  function automatic logic [N-1:0] open_now(input logic [PolyIdBits-1:0] poly);
+    for (int i = 0; i < N; i++) open_now[i] = open_q[i] && open_poly_q[i] == poly;
+  endfunction
+  `WATKINS_ASSERT(a_match_forwarded, pair && !in_eol_q |-> match == open_now(in_poly_q))
+`endif
   `WATKINS_COVER(c_two_open, $countones(open_q) >= 2)
 endmodule

@@ -27,23 +27,18 @@ verilator --lint-only -Wall "${INC[@]}" --top-module watkins_top "${VLT[@]}" "$P
 verilator --lint-only -Wall "${INC[@]}" --top-module watkins_top -GPhong=1 "${VLT[@]}" "$PKG" "${SRCS[@]}"
 # A configuration file's top parameters as `watkins_gen_pkg --params` prints them (built here from
 # the sources, as scripts/gen_pkg.sh does, so lint needs no build), Phong dropped (both modes are
-# linted), and --unroll-count N for a list of N > 64 active edges (Verilator unrolls
-# active_edge_list's insertion loop only up to --unroll-count iterations: BLKLOOPINIT).
+# linted).
 curved_params() {
   [ -x "$LOG/gen_pkg" ] || g++ -std=c++17 -Imodel/twins -Imodel/prepare -Imodel/scene sim/gen_pkg.cpp \
     model/twins/config.cpp model/prepare/config_file.cpp model/scene/strict_json.cpp -o "$LOG/gen_pkg"
-  local p n
-  p=$("$LOG/gen_pkg" --params "$1" --shading phong | grep -v '^-GPhong=' | tr '\n' ' ')
-  n=$(echo "$p" | sed -n 's/.*-GMaxActiveEdges=\([0-9]*\).*/\1/p')
-  [ "$n" -gt 64 ] && p="$p --unroll-count $n"
-  echo "$p"
+  "$LOG/gen_pkg" --params "$1" --shading phong | grep -v '^-GPhong=' | tr '\n' ' '
 }
 # The top built for other configurations (as `watkins_gen_pkg --params` prints them): a sized
 # one (docs/size/default.*.json: depth without fraction bits, X narrower than the screen index)
 # and an odd one (X at the 1/16-pixel minimum, 3-bit depth word, normals finer than the
 # normalizer reads), each in both shading modes; and the curved-edge top (EdgeOrder 3,
-# docs/size/patches.curves.phong.json's formats; 68 active edges: active_edge_list's insertion loop
-# must be unrolled (Verilator BLKLOOPINIT), which it does up to --unroll-count iterations, 64 by default).
+# docs/size/patches.curves.phong.json's formats; 68 active edges, more than the 64 iterations
+# Verilator unrolls by default: active_edge_list's insertion must need no unrolling).
 CONFIGS=("-GMaxActiveEdges=36 -GMaxWidth=320 -GXIntBits=9 -GXFracBits=15 -GDepthIntBits=6 -GDepthFracBits=0 -GAttrIntBits=9 -GAttrFracBits=6 -GDepthBits=5 -GPolyIdBits=7 -GMaterialIdBits=1 -GEdgeIdBits=9"
          "-GMaxActiveEdges=5 -GMaxWidth=100 -GXIntBits=8 -GXFracBits=4 -GDepthIntBits=2 -GDepthFracBits=1 -GAttrIntBits=1 -GAttrFracBits=18 -GDepthBits=16 -GPolyIdBits=1 -GMaterialIdBits=3 -GEdgeIdBits=3"
          "$(curved_params docs/size/patches.curves.phong.json)")

@@ -1,15 +1,18 @@
 // segment_former_formal: proves rtl/segment_former.sv (3 table entries, 4 polygon ids, 3-bit
 // channel vector) holds valid and its whole output until ready, and emits exactly the segments a
-// reference pairing says, once each, in order: the harness keeps which polygons are open on the
-// line and the vector of each one's opening edge; an input edge of an open polygon (or the
-// end-of-line marker) must come out as the next segment, with the opening edge's vector as e, its
-// own as f (each input edge carries its sequence number as its vector), its polygon, material
-// and marker; any other edge opens its polygon and emits nothing. Segments due minus segments
-// out is seg_valid_o. The environment opens at most 3 segments per line (the table's capacity: a
-// line carries at most MaxActiveEdges edges, and an opening edge takes the next entry never used
-// on the line). Induction invariants tie every table entry to the reference: it holds an open
-// polygon with its opening vector, no two entries hold one polygon, as many entries are open as
-// polygons, the entries used on the line are the segments opened on it and no later entry is open.
+// reference pairing says, once each, in order. Its input register holds the last edge taken until
+// it is paired, once; the entries it found holding that edge's polygon on arrival are the open
+// ones of the polygon when it is paired. The harness keeps which polygons are open on the line
+// and the vector of each one's opening edge, and pairs the registered edge when the DUT does: an
+// edge of an open polygon (or the end-of-line marker) must come out as the next segment, with
+// the opening edge's vector as e, its own as f (each input edge carries its sequence number as
+// its vector), its polygon, material and marker; any other edge opens its polygon and emits
+// nothing. Segments due minus segments out is seg_valid_o. The environment opens at most 3
+// segments per line (the table's capacity: a line carries at most MaxActiveEdges edges, and an
+// opening edge takes the next entry never used on the line). Induction invariants tie every
+// table entry to the reference: it holds an open polygon with its opening vector, no two entries
+// hold one polygon, as many entries are open as polygons, the entries used on the line are the
+// segments opened on it and no later entry is open.
 `include "formal_stream.svh"
 
 module segment_former_formal #(
@@ -43,18 +46,51 @@ module segment_former_formal #(
   `FORMAL_ASSERT_HOLD(out, seg_valid_o, seg_ready_i, {seg_e_o, seg_f_o, seg_poly_o, seg_material_o,
     seg_eol_o})
 
-  // The reference: open polygons and their opening vectors; the segment due next.
-  logic                  fire, closes;
+  // The DUT's input register (hierconn wires: flatten connects them to u_dut's registers). It
+  // must hold the last edge taken, once; the reference pairs that edge when the DUT does.
+  (* hierconn *) logic                      \u_dut.in_valid_q ;
+  (* hierconn *) logic                      \u_dut.in_eol_q ;
+  (* hierconn *) logic [PolyIdBits-1:0]     \u_dut.in_poly_q ;
+  (* hierconn *) logic [MaterialIdBits-1:0] \u_dut.in_material_q ;
+  (* hierconn *) logic [VectorBits-1:0]     \u_dut.in_value_q ;
+  (* hierconn *) logic [N-1:0]              \u_dut.in_same_q ;
+  logic                      in_valid, in_eol;
+  logic [PolyIdBits-1:0]     in_poly;
+  logic [MaterialIdBits-1:0] in_material;
+  logic [VectorBits-1:0]     in_value;
+  assign in_valid    = \u_dut.in_valid_q ;
+  assign in_eol      = \u_dut.in_eol_q ;
+  assign in_poly     = \u_dut.in_poly_q ;
+  assign in_material = \u_dut.in_material_q ;
+  assign in_value    = \u_dut.in_value_q ;
+
+  logic                      taken_eol_q;
+  logic [PolyIdBits-1:0]     taken_poly_q;
+  logic [MaterialIdBits-1:0] taken_material_q;
+  logic [VectorBits-1:0]     taken_value_q;
+  always_ff @(posedge clk_i) begin
+    if (edge_valid_i && edge_ready_o) begin
+      taken_eol_q      <= edge_eol_i;
+      taken_poly_q     <= edge_poly_i;
+      taken_material_q <= edge_material_i;
+      taken_value_q    <= edge_value_i;
+    end
+  end
+
+  // The reference: open polygons and their opening vectors; the segment due next. It pairs the
+  // registered edge on the clock the DUT pairs it (pair).
+  logic                  pair, closes;
   logic [Polys-1:0]      open_q;
   logic [VectorBits-1:0] opened_q [Polys];
   logic [VectorBits-1:0] exp_e_q, exp_f_q;
   logic [PolyIdBits-1:0] exp_poly_q;
   logic [MaterialIdBits-1:0] exp_material_q;
   logic                  exp_eol_q;
-  assign fire   = edge_valid_i && edge_ready_o;
-  assign closes = edge_eol_i || open_q[edge_poly_i];
+  assign pair   = in_valid && (seg_ready_i || !seg_valid_o);
+  assign closes = in_eol || open_q[in_poly];
   `FORMAL_COUNT(n_in_q, VectorBits, edge_valid_i, edge_ready_o)
-  `FORMAL_COUNT(n_due_q, VectorBits, edge_valid_i && closes, edge_ready_o)
+  `FORMAL_COUNT(n_pair_q, VectorBits, in_valid, seg_ready_i || !seg_valid_o)
+  `FORMAL_COUNT(n_due_q, VectorBits, in_valid && closes, seg_ready_i || !seg_valid_o)
   `FORMAL_COUNT(n_out_q, VectorBits, seg_valid_o, seg_ready_i)
 
   logic [1:0] opened_n_q;  // segments opened on this line, <= N
@@ -62,24 +98,41 @@ module segment_former_formal #(
     if (!rst_ni) begin
       open_q     <= '0;
       opened_n_q <= '0;
-    end else if (fire) begin
-      if (edge_eol_i) begin
+    end else if (pair) begin
+      if (in_eol) begin
         open_q     <= '0;
         opened_n_q <= '0;
       end else begin
-        open_q[edge_poly_i] <= !open_q[edge_poly_i];
-        if (!open_q[edge_poly_i]) opened_n_q <= opened_n_q + 1'b1;
+        open_q[in_poly] <= !open_q[in_poly];
+        if (!open_q[in_poly]) opened_n_q <= opened_n_q + 1'b1;
       end
     end
   end
   always_ff @(posedge clk_i) begin
-    if (fire && !edge_eol_i && !open_q[edge_poly_i]) opened_q[edge_poly_i] <= edge_value_i;
-    if (fire && closes) begin
-      exp_e_q        <= opened_q[edge_poly_i];
-      exp_f_q        <= edge_value_i;
-      exp_poly_q     <= edge_poly_i;
-      exp_material_q <= edge_material_i;
-      exp_eol_q      <= edge_eol_i;
+    if (pair && !in_eol && !open_q[in_poly]) opened_q[in_poly] <= in_value;
+    if (pair && closes) begin
+      exp_e_q        <= opened_q[in_poly];
+      exp_f_q        <= in_value;
+      exp_poly_q     <= in_poly;
+      exp_material_q <= in_material;
+      exp_eol_q      <= in_eol;
+    end
+  end
+  // The open polygons and their count once the registered edge is paired too: what the next
+  // edge taken finds.
+  logic [Polys-1:0] open_after;
+  logic [1:0]       opened_n_after;
+  always_comb begin
+    open_after     = open_q;
+    opened_n_after = opened_n_q;
+    if (in_valid) begin
+      if (in_eol) begin
+        open_after     = '0;
+        opened_n_after = '0;
+      end else begin
+        open_after[in_poly] = !open_q[in_poly];
+        if (!open_q[in_poly]) opened_n_after = opened_n_q + 1'b1;
+      end
     end
   end
 
@@ -110,10 +163,22 @@ module segment_former_formal #(
     if (edge_valid_i) begin
       assume (edge_value_i == n_in_q);
       // At most N segments opened per line.
-      assume (edge_eol_i || open_q[edge_poly_i] || opened_n_q < 2'(N));
+      assume (edge_eol_i || open_after[edge_poly_i] || opened_n_after < 2'(N));
     end
     if (rst_ni) begin
-      assert (edge_ready_o == (seg_ready_i || !seg_valid_o));
+      assert (edge_ready_o == (seg_ready_i || !seg_valid_o || !in_valid));
+      // The input register holds the last edge taken until it is paired, once.
+      assert (VectorBits'(n_in_q - n_pair_q) == VectorBits'(in_valid));
+      if (in_valid) begin
+        assert (in_eol == taken_eol_q && in_poly == taken_poly_q && in_material == taken_material_q
+                && in_value == taken_value_q && in_value == VectorBits'(n_in_q - 1'b1));
+        // It fits in the table (the environment's bound, taken when it arrived).
+        assert (in_eol || open_q[in_poly] || opened_n_q < 2'(N));
+        // The entries it found on arrival are the open ones of its polygon now.
+        if (!in_eol)
+          for (int unsigned i = 0; i < N; i++)
+            assert ((\u_dut.in_same_q [i] && \u_dut.open_q [i]) == (\u_dut.open_q [i] && poly[i] == in_poly));
+      end
       // Every segment due comes out once, in order, as the reference pairs it.
       assert (VectorBits'(n_due_q - n_out_q) == VectorBits'(seg_valid_o));
       if (seg_valid_o) begin
