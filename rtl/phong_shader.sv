@@ -89,16 +89,21 @@ module phong_shader #(
   endfunction
 
   // round(v / 2^(2UF-D)), clamped to [lo, 2 - 2^-D] (lo = 0 or -2): stage 3 and L.E.
+  // The clamp reads r's bits, not compares (a compare is a second carry chain after the add):
+  // r is in [-2^(D+1), 2^(D+1) - 1] exactly when its bits from D + 1 up are all sign copies.
   function automatic logic signed [DotBits+1:0] round_dot(input logic signed [DW-1:0] v,
                                                           input logic neg_ok);
-    logic signed [DW-1:0] r, hi, lo;  // all signed: the comparisons below are signed
-    hi = DW'((1 <<< (DotBits + 1)) - 1);  // < 2.0: the register's range, not 1.0 (see model)
-    lo = neg_ok ? -hi - DW'(1) : DW'(0);
-    r  = (v + DW'(1 <<< (2 * UF - DotBits - 1))) >>> (2 * UF - DotBits);
-    if (r > hi)      round_dot = hi[DotBits+1:0];
-    else if (r < lo) round_dot = lo[DotBits+1:0];
-    else             round_dot = r[DotBits+1:0];
+    logic signed [DW-1:0] r;
+    logic                 neg, fits;
+    r    = (v + DW'(1 <<< (2 * UF - DotBits - 1))) >>> (2 * UF - DotBits);
+    neg  = r[DW-1];
+    fits = r[DW-1:DotBits+1] == '0 || r[DW-1:DotBits+1] == '1;
+    if (neg && !neg_ok) round_dot = '0;                             // lo = 0
+    else if (fits)      round_dot = r[DotBits+1:0];
+    else if (neg)       round_dot = {1'b1, (DotBits+1)'(0)};        // lo = -2^(D+1)
+    else                round_dot = {1'b0, {(DotBits+1){1'b1}}};    // hi = 2^(D+1) - 1 (*)
   endfunction
+  // (*) hi < 2.0: the register's range, not 1.0 (see model).
 
   // ---- frame constant: cos(s)'s offset -L.E 2^D plus its rounding half, over four clocks -------
   logic [3*DW-1:0]           le_p_q;
@@ -191,13 +196,19 @@ module phong_shader #(
   end
 
   // ---- stage 6: cos(s) = 2 cos(i)(N.E) - L.E in [0, 1] (P bits), f = cos(i)(1-d) + d -----------
+  // The clamp to [0, 2^P] and the test cs != 0 read csr's bits (its sign, any bit above P, the
+  // bits below P) instead of comparing: a compare is a second carry chain after the add.
   logic signed [CW-1:0] csr;
   logic [PowBits:0]     cs;
+  logic                 cs_neg, cs_over, cs_pos;
   always_comb begin
-    csr = ((cne_q <<< 1) + cs_k_q) >>> (2 * DotBits - PowBits);
-    if (csr > CW'(1 <<< PowBits)) cs = (PowBits+1)'(1 << PowBits);
-    else if (csr < 0)             cs = '0;
-    else                          cs = csr[PowBits:0];
+    csr     = ((cne_q <<< 1) + cs_k_q) >>> (2 * DotBits - PowBits);
+    cs_neg  = csr[CW-1];
+    cs_over = !cs_neg && (csr[CW-2:PowBits+1] != '0 || (csr[PowBits] && csr[PowBits-1:0] != '0));  // > 2^P
+    cs_pos  = !cs_neg && csr[CW-2:0] != '0;                                                          // > 0
+    if (cs_over)     cs = (PowBits+1)'(1 << PowBits);
+    else if (cs_neg) cs = '0;
+    else             cs = csr[PowBits:0];
   end
 
   // Power k = 0..ShininessBits-1 (stages PowFirst + 2k and + 2k + 1): acc *= base if bit k of n,
@@ -207,7 +218,7 @@ module phong_shader #(
   logic [FW-1:0]    f_q    [2*ShininessBits+1];  // f_q[j]: stage CosStage + j
   always_ff @(posedge clk_i) if (en) begin
     // A pixel facing away (cos(i) = 0) or with cos(s) = 0 starts from acc = 0: specular 0.
-    acc_q[0]  <= (front5_q && cs != '0) ? (PowBits+1)'(1 << PowBits) : '0;
+    acc_q[0]  <= (front5_q && cs_pos) ? (PowBits+1)'(1 << PowBits) : '0;  // cs_pos: cs != 0
     base_q[0] <= cs;
     f_q[0]    <= fp_q + (FW'(d_q[CosStage-2]) << DotBits);
     for (int j = 1; j <= 2 * ShininessBits; j++) f_q[j] <= f_q[j-1];
@@ -280,10 +291,13 @@ module phong_shader #(
   end
 
   // ---- stage 24: Cp f and 255 W cos(s)^n (white highlight), D + MF fraction bits -------------
-  logic [LW-1:0] diff2_q [3];
+  // The final rounding's half, 2^(D+MF-1), is set in Cp f's sum as a bit above Cp f0 (< 2^(PSplit+8)
+  // <= 2^(D+MF-1): an OR, no carry), so stage 25 adds two operands, not three.
+  localparam logic [LW-1:0] Half = LW'(1) << (DotBits + MF - 1);
+  logic [LW-1:0] diff2_q [3];  // Cp f plus the rounding half
   logic [LW-1:0] spec_q;
   always_ff @(posedge clk_i) if (en) begin
-    for (int c = 0; c < 3; c++) diff2_q[c] <= LW'(df0_q[c]) + (LW'(df1_q[c]) << PSplit);
+    for (int c = 0; c < 3; c++) diff2_q[c] <= (LW'(df0_q[c]) | Half) + (LW'(df1_q[c]) << PSplit);
     spec_q <= (LW'(wa0_q) + (LW'(wa1_q) << PSplit)) << (DotBits - PowBits);
   end
 
@@ -292,7 +306,7 @@ module phong_shader #(
   always_ff @(posedge clk_i) if (en) begin
     for (int c = 0; c < 3; c++) begin
       logic [LW-1:0] lvl;
-      lvl = (diff2_q[c] + spec_q + (LW'(1) << (DotBits + MF - 1))) >> (DotBits + MF);
+      lvl = (diff2_q[c] + spec_q) >> (DotBits + MF);  // diff2_q holds the rounding half
       rgb_q[c*8 +: 8] <= (lvl > LW'(255)) ? 8'd255 : lvl[7:0];
     end
   end
