@@ -2,7 +2,9 @@
 // a unit N; p. 317 asks for "a very fast mechanism for obtaining square roots"), bit-exact twin
 // of model/twins/normalizer.hpp. m = Nx^2+Ny^2+Nz^2 exact, 1/sqrt(m) by rsqrt_unit (even shift, seed
 // table, one Newton-Raphson step), N * 1/sqrt(m) rounded and saturated to UnitBits.
-// Latency 8, one normal per clock; every stage registers valid and data; one global stall
+// Latency 14, one normal per clock; every stage registers valid and data; every product is
+// registered straight from its multiplier block (the final one as partial products split at an
+// 18 x 18 multiplier), its sums, shift and round a stage later each; one global stall
 // (stall_pipe): ready_o = ready_i || !valid_o (combinational from ready_i and the output valid
 // flop only).
 // The null vector (m = 0) gives (0, 0, 0) with null_o set; any m > 0 gives a unit vector.
@@ -27,8 +29,8 @@ module normalizer #(
 );
   localparam int MBits      = 2 * NB;                   // 36: m < 3 * 2^34
   localparam int RsqrtBits  = watkins_pkg::RsqrtBits;   // F below: fraction bits of y
-  localparam int RDelay     = 5;                        // rsqrt_unit latency
-  localparam int Stages     = 1 + RDelay + 2;           // squares, rsqrt, product, round
+  localparam int RDelay     = 8;                        // rsqrt_unit latency
+  localparam int Stages     = 2 + RDelay + 4;           // squares, sum, rsqrt, partials, sum, shift, round
   localparam int ScaledBits = NB + RsqrtBits + 3;       // N * y, signed, plus a rounding guard bit
 
   // Valid, payload and the stall of every stage; the registers below advance on its en.
@@ -50,22 +52,19 @@ module normalizer #(
     .en_o     (en)
   );
 
-  // ---- stage 0: m = Nx^2 + Ny^2 + Nz^2, exact ------------------------------------------------
-  logic signed [MBits-1:0] sq [3];
-  logic        [MBits-1:0] m;
-  always_comb begin
-    for (int c = 0; c < 3; c++) begin
-      logic signed [NB-1:0] n;
-      n     = signed'(normal_i[c*NB +: NB]);
-      sq[c] = n * n;  // both operands extended to MBits: exact, <= 2^34
-    end
-    m = unsigned'(sq[0]) + unsigned'(sq[1]) + unsigned'(sq[2]);
+  // ---- stage 0: Nx^2, Ny^2, Nz^2, exact, each registered from its multiplier block -------------
+  // ---- stage 1: m = Nx^2 + Ny^2 + Nz^2 (the squares and their sum in one clock: 90 MHz) ---------
+  for (genvar c = 0; c < 3; c++) begin : g_sq  // a generate block, not an array: see g_n below
+    logic signed [NB-1:0] n;
+    logic [MBits-1:0]     q;  // <= 2^34: non-negative
+    assign n = signed'(normal_i[c*NB +: NB]);
+    always_ff @(posedge clk_i) if (en) q <= unsigned'(MBits'(n) * MBits'(n));  // exact
   end
 
   logic [MBits-1:0] m_q;
-  always_ff @(posedge clk_i) if (en) m_q <= m;
+  always_ff @(posedge clk_i) if (en) m_q <= g_sq[0].q + g_sq[1].q + g_sq[2].q;
 
-  // ---- stages 1..5: y = 1/sqrt(m') with 1/sqrt(m) = y * 2^(j-2) --------------------------------
+  // ---- stages 2..9: y = 1/sqrt(m') with 1/sqrt(m) = y * 2^(j-2) --------------------------------
   logic [RsqrtBits+1:0] y;
   logic [4:0]   j;
   logic         nul;
@@ -78,11 +77,11 @@ module normalizer #(
     .null_o (nul)
   );
 
-  // N waits alongside the rsqrt pipe (stage 0 .. stage 5). The per-stage and per-component
+  // N waits alongside the rsqrt pipe (stage 0 .. stage 9). The per-stage and per-component
   // registers are plain variables of generate blocks, not array elements: a simulator
   // (Verilator) keeps a pending-write flag and value per written array element and clears them
   // on every evaluation. Same flops.
-  for (genvar s = 0; s <= RDelay; s++) begin : g_n
+  for (genvar s = 0; s <= RDelay + 1; s++) begin : g_n
     logic [3*NB-1:0] q;
     if (s == 0) begin : g_in
       always_ff @(posedge clk_i) if (en) q <= normal_i;
@@ -91,41 +90,74 @@ module normalizer #(
     end
   end
 
-  // ---- stage 6: p = N * y, exact (FracBits + F fraction bits) ----------------------------------
-  // ---- stage 7: unit = saturate(round(p / 2^(F+4-j))): Q2.14 -----------------------------------
-  // 1/sqrt(m) = y 2^(j-2) and N carries 16 fraction bits, so the shift to 14 is F + 4 - j, in
-  // [F-13, F+4]: always a right shift. round = add half, arithmetic shift (round_shift).
-  logic [4:0]      j6_q;
-  logic            nul6_q;
-  logic [4:0]      sh;
-  logic [3*UB-1:0] unit;
+  // ---- stage 10: N * y as two partial products, y split at bit YSplit ---------------------------
+  // N (NB signed) times y (RsqrtBits + 2 unsigned) is wider than one 18 x 18 multiplier block;
+  // each partial product is registered straight from its block, summed a stage later (the
+  // product, its adder, the shift and the round in one clock limited the Phong top at 41 MHz).
+  // The shift is registered as MaxJ - j (see stage 12), computed here off the rsqrt's output.
+  // ---- stage 11: p = N * y, exact (FracBits + F fraction bits) ----------------------------------
+  // ---- stage 12: t = floor(p / 2^(F+3-j)), the shift alone --------------------------------------
+  // ---- stage 13: unit = saturate((t + 1) >> 1): Q2.14 ---------------------------------------------
+  // 1/sqrt(m) = y 2^(j-2) and N carries 16 fraction bits, so the rounding shift to 14 is
+  // sh = F + 4 - j, in [F-13, F+4]: always a right shift. round(p / 2^sh) = floor((p + 2^(sh-1)) /
+  // 2^sh) = floor((floor(p / 2^(sh-1)) + 1) / 2): the shift by sh - 1 first (stage 12), then one
+  // increment and a shift by one (stage 13), the same value as round_shift's add-then-shift.
+  // sh - 1 >= MinShift, so stage 12 drops MinShift bits by wiring and shifts by MaxJ - j in [0, MaxJ].
+  localparam int YBits    = RsqrtBits + 2;
+  localparam int YSplit   = 17;                          // fits an 18 x 18 multiplier as {0, y}
+  localparam int YHi      = YBits - YSplit;              // 7
+  localparam int MaxJ     = (MBits - 1) / 2;             // rsqrt_unit's largest j: 17
+  localparam int MinShift = RsqrtBits + 3 - MaxJ;        // sh - 1 at j = MaxJ: 8
+  localparam int TBits    = ScaledBits - MinShift;       // t, signed
+  logic [4:0]                   sh10_q, sh11_q;          // MaxJ - j
+  logic                         nul10_q, nul11_q, nul12_q, nul13_q;
+  logic [3*UB-1:0]              unit;
   always_ff @(posedge clk_i) if (en) begin
-    j6_q   <= j;
-    nul6_q <= nul;
+    sh10_q  <= 5'(MaxJ) - j;
+    nul10_q <= nul;
+    sh11_q  <= sh10_q;
+    nul11_q <= nul10_q;
+    nul12_q <= nul11_q;
   end
-  assign sh = 5'(RsqrtBits + 4) - j6_q;
 
   for (genvar c = 0; c < 3; c++) begin : g_comp
+    logic signed [NB-1:0]         n;
+    logic signed [NB+YSplit-1:0]  pl_q;   // N * y[YSplit-1:0]
+    logic signed [NB+YHi-1:0]     ph_q;   // N * y[YBits-1:YSplit]
     logic signed [ScaledBits-1:0] p_q;
-    logic signed [ScaledBits-1:0] r;
-    always_ff @(posedge clk_i) if (en) p_q <= signed'(g_n[RDelay].q[c*NB +: NB]) * signed'({1'b0, y});
+    /* verilator lint_off UNUSEDSIGNAL */
+    logic signed [ScaledBits-1:0] ps;     // p >>> MinShift: its top MinShift bits are sign copies
+    /* verilator lint_on UNUSEDSIGNAL */
+    logic signed [TBits-1:0]      t_q;
+    logic signed [TBits:0]        r;
+    assign n = signed'(g_n[RDelay+1].q[c*NB +: NB]);
+    always_ff @(posedge clk_i) if (en) begin
+      pl_q <= (NB+YSplit)'(n) * signed'((NB+YSplit)'({1'b0, y[YSplit-1:0]}));
+      ph_q <= (NB+YHi)'(n) * signed'((NB+YHi)'({1'b0, y[YBits-1:YSplit]}));
+      p_q  <= (ScaledBits'(ph_q) <<< YSplit) + ScaledBits'(pl_q);
+      t_q  <= signed'(ps[TBits-1:0]) >>> sh11_q;
+    end
+    assign ps = p_q >>> MinShift;
+    // Saturation when r's bits above UB - 1 are not all copies of its sign: bit tests, not
+    // compares (a compare would be a second carry chain after the increment).
+    logic fits;
     always_comb begin
-      r = (p_q + (ScaledBits'(1) << (sh - 5'd1))) >>> sh;
-      if (r > ScaledBits'((1 << (UB - 1)) - 1)) unit[c*UB +: UB] = UB'((1 << (UB - 1)) - 1);
-      else if (r < -ScaledBits'(1 << (UB - 1))) unit[c*UB +: UB] = UB'(1 << (UB - 1));
-      else                                      unit[c*UB +: UB] = r[UB-1:0];
+      r    = ((TBits+1)'(t_q) + (TBits+1)'(1)) >>> 1;
+      fits = r[TBits:UB-1] == '0 || r[TBits:UB-1] == '1;
+      if (fits)           unit[c*UB +: UB] = r[UB-1:0];
+      else if (!r[TBits]) unit[c*UB +: UB] = UB'((1 << (UB - 1)) - 1);
+      else                unit[c*UB +: UB] = UB'(1 << (UB - 1));
     end
   end
 
   logic [3*UB-1:0] unit_q;
-  logic            nul7_q;
   always_ff @(posedge clk_i) if (en) begin
-    unit_q <= unit;
-    nul7_q <= nul6_q;
+    unit_q  <= unit;
+    nul13_q <= nul12_q;
   end
 
   assign unit_o = unit_q;
-  assign null_o = nul7_q;
+  assign null_o = nul13_q;
 
   // The payload's hold is checked once, by u_pipe (stall_pipe's a_in_hold and a_out_hold: the
   // same valid and ready): a simulator keeps a sampled copy of every signal an assertion reads.

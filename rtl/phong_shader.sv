@@ -1,10 +1,11 @@
 // phong_shader: Phong's shading rule S = Cp [cos(i)(1-d) + d] + W cos(s)^n (Phong 1975 eq. 3)
 // per pixel, light and eye at infinity, cos(s) = R.E = 2(N.L)(N.E) - L.E (Phong's reflected
 // vector, eqs. 4-8), cos(s)^n by square-and-multiply over the 8 bits of n; bit-exact twin of
-// model/twins/phong_shader.hpp. Latency 24, one pixel per clock; every stage registers valid and data;
+// model/twins/phong_shader.hpp. Latency 25, one pixel per clock; every stage registers valid and data;
 // one global stall (stall_pipe): ready_o = ready_i || !valid_o (combinational from ready_i and the
-// output valid flop only). Every product is registered on its own, the sums and roundings that
-// use it one stage later (ECP5 MULT18 and iCE40 MAC16 timing). light_i / eye_i are frame
+// output valid flop only). Every product is registered on its own, a product wider than one
+// 18 x 18 multiplier as partial products, the sums and roundings that use it one stage later
+// (ECP5 MULT18 and iCE40 MAC16 timing). light_i / eye_i are frame
 // constants: L.E is computed from them over four clocks, every clock, so they must be stable from
 // one clock before a frame's first pixel to its last output.
 `include "watkins_assert.svh"
@@ -41,14 +42,18 @@ module phong_shader #(
   localparam int CW       = 2 * DotBits + 6;                // 2 cos(i) (N.E) - L.E at 2D fraction bits
   localparam int FW       = DotBits + MF + 1;               // f = cos(i)(1-d) + d <= 1
   localparam int LW       = FW + 8 + 2;                     // a level at D + MF fraction bits, plus sum
-  localparam int WAB      = MaterialBits + PowBits + 1;     // W cos(s)^n
   // Stages: 1 the dot products' six products, 2 their sums, 3 round, 4 cos(i)(N.E) and
-  // cos(i)(1-d), 5 cos(s) and f, 6..21 the powers (a product stage and a round stage per bit of
-  // n), 22 Cp f and W pow, 23 255 W pow, 24 round and saturate.
-  localparam int CosStage = 5;                              // acc_q[0], base_q[0], f_q[0]
+  // cos(i)(1-d) as partial products, 5 their sums, 6 cos(s) and f, 7..22 the powers (a product
+  // stage and a round stage per bit of n), 23 Cp f and 255 W pow as partial products, 24 their
+  // sums, 25 round and saturate.
+  localparam int CosStage = 6;                              // acc_q[0], base_q[0], f_q[0]
   localparam int PowFirst = CosStage + 1;                   // power k: stages PowFirst + 2k, + 2k + 1
-  localparam int PowLast  = CosStage + 2 * ShininessBits;   // 21: acc_q[ShininessBits]
-  localparam int Stages   = PowLast + 3;                    // 24
+  localparam int PowLast  = CosStage + 2 * ShininessBits;   // 22: acc_q[ShininessBits]
+  localparam int Stages   = PowLast + 3;                    // 25
+  // A product wider than an 18 x 18 multiplier is split at bit PSplit of an operand (17: the low
+  // part fits the multiplier unsigned, with a zero sign bit), each partial product registered
+  // straight from its block; x y = x1 y 2^PSplit + x0 y (and the same for both operands split).
+  localparam int PSplit   = 17;
 
   // Valid, payload and the stall of every stage; the registers below advance on its en.
   logic en;
@@ -84,16 +89,21 @@ module phong_shader #(
   endfunction
 
   // round(v / 2^(2UF-D)), clamped to [lo, 2 - 2^-D] (lo = 0 or -2): stage 3 and L.E.
+  // The clamp reads r's bits, not compares (a compare is a second carry chain after the add):
+  // r is in [-2^(D+1), 2^(D+1) - 1] exactly when its bits from D + 1 up are all sign copies.
   function automatic logic signed [DotBits+1:0] round_dot(input logic signed [DW-1:0] v,
                                                           input logic neg_ok);
-    logic signed [DW-1:0] r, hi, lo;  // all signed: the comparisons below are signed
-    hi = DW'((1 <<< (DotBits + 1)) - 1);  // < 2.0: the register's range, not 1.0 (see model)
-    lo = neg_ok ? -hi - DW'(1) : DW'(0);
-    r  = (v + DW'(1 <<< (2 * UF - DotBits - 1))) >>> (2 * UF - DotBits);
-    if (r > hi)      round_dot = hi[DotBits+1:0];
-    else if (r < lo) round_dot = lo[DotBits+1:0];
-    else             round_dot = r[DotBits+1:0];
+    logic signed [DW-1:0] r;
+    logic                 neg, fits;
+    r    = (v + DW'(1 <<< (2 * UF - DotBits - 1))) >>> (2 * UF - DotBits);
+    neg  = r[DW-1];
+    fits = r[DW-1:DotBits+1] == '0 || r[DW-1:DotBits+1] == '1;
+    if (neg && !neg_ok) round_dot = '0;                             // lo = 0
+    else if (fits)      round_dot = r[DotBits+1:0];
+    else if (neg)       round_dot = {1'b1, (DotBits+1)'(0)};        // lo = -2^(D+1)
+    else                round_dot = {1'b0, {(DotBits+1){1'b1}}};    // hi = 2^(D+1) - 1 (*)
   endfunction
+  // (*) hi < 2.0: the register's range, not 1.0 (see model).
 
   // ---- frame constant: cos(s)'s offset -L.E 2^D plus its rounding half, over four clocks -------
   logic [3*DW-1:0]           le_p_q;
@@ -109,18 +119,16 @@ module phong_shader #(
 
   // Pixel attributes travel alongside: index s - 1 holds the pixel in stage s (u_pipe.valid_q[s-1]).
   logic [watkins_pkg::RgbBits-1:0] cp_q [PowLast];  // vectors: yosys 0.23 and struct arrays
-  logic [MaterialBits-1:0]         w_q  [PowLast];
+  logic [MaterialBits-1:0]         w_q  [PowLast-1];  // then 255 W: w255_q
   logic [ShininessBits-1:0]        n_q  [PowLast-1];  // last read by the final power stage
-  logic [MaterialBits-1:0]         d_q  [CosStage-1]; // last read by stage 5
+  logic [MaterialBits-1:0]         d_q  [CosStage-1]; // last read by stage 6
   always_ff @(posedge clk_i) if (en) begin
     cp_q[0] <= cp_i;
     w_q[0]  <= w_i;
     n_q[0]  <= shininess_i;
     d_q[0]  <= (d_i > MaterialBits'(1 << MF)) ? MaterialBits'(1 << MF) : d_i;  // d <= 1.0
-    for (int s = 1; s < PowLast; s++) begin
-      cp_q[s] <= cp_q[s-1];
-      w_q[s]  <= w_q[s-1];
-    end
+    for (int s = 1; s < PowLast; s++) cp_q[s] <= cp_q[s-1];
+    for (int s = 1; s < PowLast - 1; s++) w_q[s] <= w_q[s-1];
     for (int s = 1; s < PowLast - 1; s++) n_q[s] <= n_q[s-1];
     for (int s = 1; s < CosStage - 1; s++) d_q[s] <= d_q[s-1];
   end
@@ -146,26 +154,61 @@ module phong_shader #(
     ne_q   <= round_dot(nde_q, 1'b1);
   end
 
-  // ---- stage 4: the products cos(i)(N.E) and cos(i)(1-d) ---------------------------------------
-  logic signed [CW-1:0]    cne_q;
-  logic [FW-1:0]           fp_q;
-  logic                    front_q;  // cos(i) > 0
-  logic [MaterialBits-1:0] omd;      // 1 - d, 1.0 = 256
+  // ---- stage 4: the products cos(i)(N.E) and cos(i)(1-d), as partial products ------------------
+  // cos(i) >= 0 (D + 1 bits unsigned) split into c1, c0; N.E (D + 2 bits signed) into n1 (signed),
+  // n0: cos(i)(N.E) = c1 n1 2^2PSplit + (c1 n0 + c0 n1) 2^PSplit + c0 n0, four multiplier blocks
+  // (session 8 measured the 26 x 26 product and its adders in one clock at 15.4 ns on the ECP5).
+  localparam int CHi = DotBits + 1 - PSplit;                // 8: c1, unsigned
+  localparam int NHi = DotBits + 2 - PSplit;                // 9: n1, signed
+  logic [PSplit-1:0]              c0, n0;
+  logic [CHi-1:0]                 c1;
+  logic signed [NHi-1:0]          n1;
+  logic [2*PSplit-1:0]            cn00_q;                   // c0 n0
+  logic signed [PSplit+NHi:0]     cn01_q;                   // c0 n1
+  logic [PSplit+CHi-1:0]          cn10_q;                   // c1 n0
+  logic signed [CHi+NHi:0]        cn11_q;                   // c1 n1
+  logic [PSplit+MaterialBits-1:0] fp0_q;                    // c0 (1-d)
+  logic [CHi+MaterialBits-1:0]    fp1_q;                    // c1 (1-d)
+  logic                           front_q;                  // cos(i) > 0
+  logic [MaterialBits-1:0]        omd;                      // 1 - d, 1.0 = 256
   assign omd = MaterialBits'(1 << MF) - d_q[2];
+  assign {c1, c0} = cosi_q[DotBits:0];
+  assign {n1, n0} = ne_q;
   always_ff @(posedge clk_i) if (en) begin
-    cne_q   <= CW'(cosi_q) * CW'(ne_q);
-    fp_q    <= FW'(cosi_q[DotBits:0]) * FW'(omd);
+    cn00_q  <= (2*PSplit)'(c0) * (2*PSplit)'(n0);
+    cn01_q  <= signed'((PSplit+NHi+1)'({1'b0, c0})) * (PSplit+NHi+1)'(n1);
+    cn10_q  <= (PSplit+CHi)'(c1) * (PSplit+CHi)'(n0);
+    cn11_q  <= signed'((CHi+NHi+1)'({1'b0, c1})) * (CHi+NHi+1)'(n1);
+    fp0_q   <= (PSplit+MaterialBits)'(c0) * (PSplit+MaterialBits)'(omd);
+    fp1_q   <= (CHi+MaterialBits)'(c1) * (CHi+MaterialBits)'(omd);
     front_q <= cosi_q != '0;
   end
 
-  // ---- stage 5: cos(s) = 2 cos(i)(N.E) - L.E in [0, 1] (P bits), f = cos(i)(1-d) + d -----------
+  // ---- stage 5: cos(i)(N.E) and cos(i)(1-d), exact ---------------------------------------------
+  logic signed [CW-1:0] cne_q;
+  logic [FW-1:0]        fp_q;
+  logic                 front5_q;
+  always_ff @(posedge clk_i) if (en) begin
+    cne_q    <= (CW'(cn11_q) <<< (2 * PSplit)) + CW'(cn00_q)
+              + (CW'(cn01_q) <<< PSplit) + (CW'(cn10_q) <<< PSplit);
+    fp_q     <= FW'(fp0_q) + (FW'(fp1_q) << PSplit);
+    front5_q <= front_q;
+  end
+
+  // ---- stage 6: cos(s) = 2 cos(i)(N.E) - L.E in [0, 1] (P bits), f = cos(i)(1-d) + d -----------
+  // The clamp to [0, 2^P] and the test cs != 0 read csr's bits (its sign, any bit above P, the
+  // bits below P) instead of comparing: a compare is a second carry chain after the add.
   logic signed [CW-1:0] csr;
   logic [PowBits:0]     cs;
+  logic                 cs_neg, cs_over, cs_pos;
   always_comb begin
-    csr = ((cne_q <<< 1) + cs_k_q) >>> (2 * DotBits - PowBits);
-    if (csr > CW'(1 <<< PowBits)) cs = (PowBits+1)'(1 << PowBits);
-    else if (csr < 0)             cs = '0;
-    else                          cs = csr[PowBits:0];
+    csr     = ((cne_q <<< 1) + cs_k_q) >>> (2 * DotBits - PowBits);
+    cs_neg  = csr[CW-1];
+    cs_over = !cs_neg && (csr[CW-2:PowBits+1] != '0 || (csr[PowBits] && csr[PowBits-1:0] != '0));  // > 2^P
+    cs_pos  = !cs_neg && csr[CW-2:0] != '0;                                                          // > 0
+    if (cs_over)     cs = (PowBits+1)'(1 << PowBits);
+    else if (cs_neg) cs = '0;
+    else             cs = csr[PowBits:0];
   end
 
   // Power k = 0..ShininessBits-1 (stages PowFirst + 2k and + 2k + 1): acc *= base if bit k of n,
@@ -175,9 +218,9 @@ module phong_shader #(
   logic [FW-1:0]    f_q    [2*ShininessBits+1];  // f_q[j]: stage CosStage + j
   always_ff @(posedge clk_i) if (en) begin
     // A pixel facing away (cos(i) = 0) or with cos(s) = 0 starts from acc = 0: specular 0.
-    acc_q[0]  <= (front_q && cs != '0) ? (PowBits+1)'(1 << PowBits) : '0;
+    acc_q[0]  <= (front5_q && cs_pos) ? (PowBits+1)'(1 << PowBits) : '0;  // cs_pos: cs != 0
     base_q[0] <= cs;
-    f_q[0]    <= fp_q + (FW'(d_q[3]) << DotBits);
+    f_q[0]    <= fp_q + (FW'(d_q[CosStage-2]) << DotBits);
     for (int j = 1; j <= 2 * ShininessBits; j++) f_q[j] <= f_q[j-1];
   end
 
@@ -185,7 +228,6 @@ module phong_shader #(
   // its multiplier block (a 21 x 21 product and its adder tree in one clock limited the shader
   // at 58 MHz on the ECP5); the round stage adds them: x·y = {x1·y1, x0·y0} + (x0·y1 + x1·y0)·2^PSplit.
   localparam int PB2    = 2 * PowBits + 3;
-  localparam int PSplit = 17;                     // fits an 18 x 18 multiplier, signed or not
   localparam int PHi    = PowBits + 1 - PSplit;   // 4
   for (genvar k = 0; k < ShininessBits; k++) begin : g_pow
     /* verilator lint_off UNUSEDSIGNAL */
@@ -220,31 +262,51 @@ module phong_shader #(
     end
   end
 
-  // ---- stage 22: Cp f per channel, W cos(s)^n --------------------------------------------------
+  // ---- stage 22 (the last power stage): 255 W, so W pow needs no multiply by 255 after it ----
+  logic [MaterialBits+7:0] w255_q;  // 255 W < 2^17: one multiplier block with a PSplit-bit operand
+  always_ff @(posedge clk_i) if (en)
+    w255_q <= ((MaterialBits+8)'(w_q[PowLast-2]) << 8) - (MaterialBits+8)'(w_q[PowLast-2]);
+
+  // ---- stage 23: Cp f per channel and 255 W cos(s)^n, as partial products ----------------------
   // Channel c is byte c of rgb_t (B, G, R for c = 0, 1, 2) in Cp and in the shade alike: the
   // three channels are computed the same way, so the loop need not know which is which.
-  logic [LW-1:0]  diff_q [3];
-  logic [LW-1:0]  diff2_q [3];
-  logic [WAB-1:0] wacc_q;
+  // f (FW bits) and pow (P + 1 bits) are split at PSplit: two multiplier blocks each.
+  localparam int FHi = FW - PSplit;            // 16
+  localparam int AHi = PowBits + 1 - PSplit;   // 4
+  logic [PSplit+7:0]                df0_q [3];  // Cp f0
+  logic [FHi+7:0]                   df1_q [3];  // Cp f1
+  logic [MaterialBits+8+PSplit-1:0] wa0_q;      // 255 W pow0
+  logic [MaterialBits+8+AHi-1:0]    wa1_q;      // 255 W pow1
+  logic [FW-1:0]                    fl;
+  logic [PowBits:0]                 al;
+  assign fl = f_q[2*ShininessBits];
+  assign al = acc_q[ShininessBits];
   always_ff @(posedge clk_i) if (en) begin
-    for (int c = 0; c < 3; c++)
-      diff_q[c] <= LW'(cp_q[PowLast-1][c*8 +: 8]) * LW'(f_q[2*ShininessBits]);
-    wacc_q <= WAB'(w_q[PowLast-1]) * WAB'(acc_q[ShininessBits]);
+    for (int c = 0; c < 3; c++) begin
+      df0_q[c] <= (PSplit+8)'(cp_q[PowLast-1][c*8 +: 8]) * (PSplit+8)'(fl[PSplit-1:0]);
+      df1_q[c] <= (FHi+8)'(cp_q[PowLast-1][c*8 +: 8]) * (FHi+8)'(fl[FW-1:PSplit]);
+    end
+    wa0_q <= (MaterialBits+8+PSplit)'(w255_q) * (MaterialBits+8+PSplit)'(al[PSplit-1:0]);
+    wa1_q <= (MaterialBits+8+AHi)'(w255_q) * (MaterialBits+8+AHi)'(al[PowBits:PSplit]);
   end
 
-  // ---- stage 23: 255 W cos(s)^n (white highlight), D + MF fraction bits -----------------------
+  // ---- stage 24: Cp f and 255 W cos(s)^n (white highlight), D + MF fraction bits -------------
+  // The final rounding's half, 2^(D+MF-1), is set in Cp f's sum as a bit above Cp f0 (< 2^(PSplit+8)
+  // <= 2^(D+MF-1): an OR, no carry), so stage 25 adds two operands, not three.
+  localparam logic [LW-1:0] Half = LW'(1) << (DotBits + MF - 1);
+  logic [LW-1:0] diff2_q [3];  // Cp f plus the rounding half
   logic [LW-1:0] spec_q;
   always_ff @(posedge clk_i) if (en) begin
-    for (int c = 0; c < 3; c++) diff2_q[c] <= diff_q[c];
-    spec_q  <= ((LW'(wacc_q) << 8) - LW'(wacc_q)) << (DotBits - PowBits);
+    for (int c = 0; c < 3; c++) diff2_q[c] <= (LW'(df0_q[c]) | Half) + (LW'(df1_q[c]) << PSplit);
+    spec_q <= (LW'(wa0_q) + (LW'(wa1_q) << PSplit)) << (DotBits - PowBits);
   end
 
-  // ---- stage 24: level = saturate(round(Cp f + 255 W pow)) --------------------------------------
+  // ---- stage 25: level = saturate(round(Cp f + 255 W pow)) --------------------------------------
   logic [watkins_pkg::RgbBits-1:0] rgb_q;
   always_ff @(posedge clk_i) if (en) begin
     for (int c = 0; c < 3; c++) begin
       logic [LW-1:0] lvl;
-      lvl = (diff2_q[c] + spec_q + (LW'(1) << (DotBits + MF - 1))) >> (DotBits + MF);
+      lvl = (diff2_q[c] + spec_q) >> (DotBits + MF);  // diff2_q holds the rounding half
       rgb_q[c*8 +: 8] <= (lvl > LW'(255)) ? 8'd255 : lvl[7:0];
     end
   end

@@ -1,8 +1,11 @@
 // rsqrt_unit: y ~ 1/sqrt(m') for m = 2^(4-2j) * m', m' in [1/4, 1) (the normalizer's "very fast
 // mechanism for obtaining square roots", Phong 1975 p. 317): even-shift normalization, a 768-row
 // seed table, one Newton-Raphson step. Bit-exact twin of Normalizer::normalize_mantissa and
-// RsqrtUnit::rsqrt_mant (model/twins/rsqrt_unit.hpp). Latency 5, every stage registered; no
-// handshake: en_i advances every stage at once (the parent owns valid/ready and the stall).
+// RsqrtUnit::rsqrt_mant (model/twins/rsqrt_unit.hpp). Latency 8, every stage registered; the
+// seed ROM's output is registered once more before y0^2; the two Newton-Raphson products, wider
+// than an 18 x 18 multiplier, are registered as partial products and summed and rounded a stage
+// later; no handshake: en_i advances every stage at once (the parent owns valid/ready and the
+// stall).
 module rsqrt_unit #(
   localparam int MBits     = 2 * watkins_pkg::NormalInBits,  // m = Nx^2 + Ny^2 + Nz^2, exact
   localparam int RsqrtBits = watkins_pkg::RsqrtBits          // F: fraction bits of y
@@ -78,8 +81,8 @@ module rsqrt_unit #(
   // (Verilator) keeps a pending-write flag and value per written array element and clears them
   // on every evaluation. Same flops.
   logic [MantBits-1:0] mant_q;
-  logic [4:0]   j1_q, j2_q, j3_q, j4_q, j5_q;
-  logic         nul1_q, nul2_q, nul3_q, nul4_q, nul5_q;
+  logic [4:0]   j1_q, j2_q, j3_q, j4_q, j5_q, j6_q, j7_q, j8_q;
+  logic         nul1_q, nul2_q, nul3_q, nul4_q, nul5_q, nul6_q, nul7_q, nul8_q;
   always_ff @(posedge clk_i) if (en_i) begin
     mant_q <= shifted[MBits-1 -: MantBits];  // 0 for m = 0: reads ROM default 0 below
     j1_q   <= j1;
@@ -88,8 +91,8 @@ module rsqrt_unit #(
 
   // ---- stage 2: seed y0 ---------------------------------------------------------------------
   logic [IndexBits-1:0] idx;
-  logic [SeedBits:0]    y0_2_q, y0_3_q, y0_4_q;
-  logic [MantBits:0]    mc2_q, mc3_q;  // m'c = mant + half an ulp: {mant, 1}, W+1 fraction bits
+  logic [SeedBits:0]    y0_2_q, y0_3_q, y0_4_q, y0_5_q, y0_6_q;
+  logic [MantBits:0]    mc2_q, mc3_q, mc4_q;  // m'c = mant + half an ulp: {mant, 1}, W+1 fraction bits
   assign idx = mant_q[MantBits-1 -: IndexBits];
   always_ff @(posedge clk_i) if (en_i) begin
     y0_2_q <= seed_rom[idx];
@@ -98,53 +101,104 @@ module rsqrt_unit #(
     nul2_q <= nul1_q;
   end
 
-  // ---- stage 3: y0^2, exact (2T fraction bits) --------------------------------------------
-  logic [2*SeedBits+1:0] y0sq_q;
+  // ---- stage 3: the seed registered again, so the block RAM's clock-to-out (5.8 ns on the ECP5)
+  // and the multiplier are not in one clock (the normalizer's path at 80.7 MHz) ----------------
   always_ff @(posedge clk_i) if (en_i) begin
-    y0sq_q <= (2*SeedBits+2)'(y0_2_q) * (2*SeedBits+2)'(y0_2_q);
     y0_3_q <= y0_2_q;
     mc3_q  <= mc2_q;
     j3_q   <= j2_q;
     nul3_q <= nul2_q;
   end
 
-  // ---- stage 4: u = 3 - round(m'c * y0^2), G fraction bits (|m'c y0^2 - 1| < 2^-9) ---------
+  // ---- stage 4: y0^2, exact (2T fraction bits) --------------------------------------------
+  logic [2*SeedBits+1:0] y0sq_q;
+  always_ff @(posedge clk_i) if (en_i) begin
+    y0sq_q <= (2*SeedBits+2)'(y0_3_q) * (2*SeedBits+2)'(y0_3_q);
+    y0_4_q <= y0_3_q;
+    mc4_q  <= mc3_q;
+    j4_q   <= j3_q;
+    nul4_q <= nul3_q;
+  end
+
+  // The wide products are split at bit PSplit of each operand wider than 18 bits (the low part
+  // fits a multiplier block unsigned), each partial product registered straight from its block:
+  // x y = x1 y1 2^2PSplit + (x1 y0 + x0 y1) 2^PSplit + x0 y0.
+  localparam int PSplit = 17;
+
+  // ---- stage 5: m'c * y0^2 as four partial products ------------------------------------------
+  localparam int AW  = MantBits + 1;          // m'c: 21 bits
+  localparam int BW  = 2 * SeedBits + 2;      // y0^2: 30 bits
+  localparam int AHi = AW - PSplit;           // 4
+  localparam int BHi = BW - PSplit;           // 13
+  logic [PSplit-1:0]     a0, b0;
+  logic [AHi-1:0]        a1;
+  logic [BHi-1:0]        b1;
+  logic [2*PSplit-1:0]   p00_q;
+  logic [PSplit+BHi-1:0] p01_q;
+  logic [AHi+PSplit-1:0] p10_q;
+  logic [AHi+BHi-1:0]    p11_q;
+  assign {a1, a0} = mc4_q;
+  assign {b1, b0} = y0sq_q;
+  always_ff @(posedge clk_i) if (en_i) begin
+    p00_q  <= (2*PSplit)'(a0) * (2*PSplit)'(b0);
+    p01_q  <= (PSplit+BHi)'(a0) * (PSplit+BHi)'(b1);
+    p10_q  <= (AHi+PSplit)'(a1) * (AHi+PSplit)'(b0);
+    p11_q  <= (AHi+BHi)'(a1) * (AHi+BHi)'(b1);
+    y0_5_q <= y0_4_q;
+    j5_q   <= j4_q;
+    nul5_q <= nul4_q;
+  end
+
+  // ---- stage 6: u = 3 - round(m'c * y0^2), G fraction bits (|m'c y0^2 - 1| < 2^-9) ---------
   // The product plus one bit for the rounding add.
-  localparam int PW4 = (MantBits + 1) + (2 * SeedBits + 2) + 1;
+  localparam int PW4 = AW + BW + 1;
   logic [PW4-1:0]    prod4;
   logic [NrBits+1:0] u_q;
   /* verilator lint_off UNUSEDSIGNAL */
   logic [PW4-1:0] t4;  // m'c * y0^2 < 2: the top bits are zero
   /* verilator lint_on UNUSEDSIGNAL */
   always_comb begin
-    prod4 = PW4'(mc3_q) * PW4'(y0sq_q);
+    prod4 = PW4'({p11_q, p00_q}) + (PW4'(p01_q) << PSplit) + (PW4'(p10_q) << PSplit);
     t4    = (prod4 + (PW4'(1) << (Sh4 - 1))) >> Sh4;
   end
   always_ff @(posedge clk_i) if (en_i) begin
     u_q    <= (NrBits+2)'(3 << NrBits) - t4[NrBits+1:0];
-    y0_4_q <= y0_3_q;
-    j4_q   <= j3_q;
-    nul4_q <= nul3_q;
+    y0_6_q <= y0_5_q;
+    j6_q   <= j5_q;
+    nul6_q <= nul5_q;
   end
 
-  // ---- stage 5: y = round(y0 * u / 2), F fraction bits: y <- y (3 - m' y^2) / 2 ------------
-  localparam int PW5 = (SeedBits + 1) + (NrBits + 2) + 1;
+  // ---- stage 7: y0 * u as two partial products (u split at PSplit) -------------------------
+  localparam int YW  = SeedBits + 1;          // y0: 15 bits
+  localparam int UW  = NrBits + 2;            // u: 26 bits
+  localparam int UHi = UW - PSplit;           // 9
+  logic [YW+PSplit-1:0] q0_q;
+  logic [YW+UHi-1:0]    q1_q;
+  always_ff @(posedge clk_i) if (en_i) begin
+    q0_q   <= (YW+PSplit)'(y0_6_q) * (YW+PSplit)'(u_q[PSplit-1:0]);
+    q1_q   <= (YW+UHi)'(y0_6_q) * (YW+UHi)'(u_q[UW-1:PSplit]);
+    j7_q   <= j6_q;
+    nul7_q <= nul6_q;
+  end
+
+  // ---- stage 8: y = round(y0 * u / 2), F fraction bits: y <- y (3 - m' y^2) / 2 ------------
+  localparam int PW5 = YW + UW + 1;
   logic [PW5-1:0] prod5;
   /* verilator lint_off UNUSEDSIGNAL */
   logic [PW5-1:0] y5;  // y <= 2: the top bits are zero
   /* verilator lint_on UNUSEDSIGNAL */
   logic [RsqrtBits+1:0] y_q;
   always_comb begin
-    prod5 = PW5'(y0_4_q) * PW5'(u_q);
+    prod5 = PW5'(q0_q) + (PW5'(q1_q) << PSplit);
     y5    = (prod5 + (PW5'(1) << (Sh5 - 1))) >> Sh5;
   end
   always_ff @(posedge clk_i) if (en_i) begin
     y_q    <= y5[RsqrtBits+1:0];
-    j5_q   <= j4_q;
-    nul5_q <= nul4_q;
+    j8_q   <= j7_q;
+    nul8_q <= nul7_q;
   end
 
   assign y_o    = y_q;
-  assign j_o    = j5_q;
-  assign null_o = nul5_q;
+  assign j_o    = j8_q;
+  assign null_o = nul8_q;
 endmodule

@@ -33,16 +33,16 @@ PreparedScene with_shading(PreparedScene p, ShadingMode mode) {
 // each line's read-out (W cycles) hides the next marker, so the last pixel is read at 36 + H*W
 // and taken one cycle later: H*W + 38 cycles counting cycle 0. Sparse: an empty line is one read
 // step, so the list's 2 cycles per line set the pace: the last line's marker arrives at
-// 36 + 2(H-1), is read one cycle later and taken the next: 2H + 37. The Phong top's 32 stages
-// (normalizer 8, shader 24) delay it all by 32.
+// 36 + 2(H-1), is read one cycle later and taken the next: 2H + 37. The Phong top's 39 stages
+// (normalizer 14, shader 25) delay it all by 39.
 TEST(CycleModel, EmptyFrameByHand) {
   for (const auto& [w, h] : {std::pair{13, 5}, std::pair{320, 240}, std::pair{1, 1}, std::pair{40, 60}}) {
     const PreparedScene g = prepare(screen(w, h, {}, "empty"));
     const PreparedScene p = with_shading(g, ShadingMode::Phong);
     EXPECT_EQ(predict_cycles(g, PixelOutput::FullFrame).cycles, w * h + 38) << w << "x" << h;
-    EXPECT_EQ(predict_cycles(p, PixelOutput::FullFrame).cycles, w * h + 38 + 32) << w << "x" << h;
+    EXPECT_EQ(predict_cycles(p, PixelOutput::FullFrame).cycles, w * h + 38 + 39) << w << "x" << h;
     EXPECT_EQ(predict_cycles(g, PixelOutput::Sparse).cycles, 2 * h + 37) << w << "x" << h;
-    EXPECT_EQ(predict_cycles(p, PixelOutput::Sparse).cycles, 2 * h + 37 + 32) << w << "x" << h;
+    EXPECT_EQ(predict_cycles(p, PixelOutput::Sparse).cycles, 2 * h + 37 + 39) << w << "x" << h;
     EXPECT_EQ(predict_cycles(g, PixelOutput::FullFrame).pixels, w * h);
     EXPECT_EQ(predict_cycles(g, PixelOutput::Sparse).pixels, 1);  // the terminating beat
   }
@@ -75,7 +75,7 @@ TEST(CycleModel, ShippedScenesMeetTheBounds) {
     EXPECT_GE(sparse.cycles, beats) << name;
     EXPECT_LE(sparse.cycles, full.cycles) << name;
     const PreparedScene p = with_shading(g, ShadingMode::Phong);
-    EXPECT_EQ(predict_cycles(p, PixelOutput::FullFrame).cycles, full.cycles + 32) << name;
+    EXPECT_EQ(predict_cycles(p, PixelOutput::FullFrame).cycles, full.cycles + 39) << name;
     ++checked;
   }
   EXPECT_GT(checked, 5);

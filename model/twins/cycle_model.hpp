@@ -26,8 +26,8 @@ namespace rtl_timing {
 constexpr int RecipStages = fmt::RecipBits + 2;  // span_reciprocal: normalize + R+1 quotient bits
 constexpr int InterpFifoDepth = 4;               // segment_interpolator's FifoDepth
 constexpr int InterpTailStages = 3;              // segment_interpolator: sa, sb, sc after the reciprocal
-constexpr int NormalizerStages = 8;              // normalizer: squares, rsqrt_unit (5), product, round
-constexpr int ShaderStages = 24;                 // phong_shader: dots (3), cos(s) (2), 8 powers (2 each), 3 out
+constexpr int NormalizerStages = 14;             // normalizer: squares, sum, rsqrt_unit (8), partial products, sum, shift, round
+constexpr int ShaderStages = 25;                 // phong_shader: dots (3), cos(s) (3), 8 powers (2 each), 3 out
 constexpr int SmootherStages = fmt::ShadeBits + 6;  // smoother: line read, window, pairs, sums, products, dividend, a divider
                                                     // stage per quotient bit
 }  // namespace rtl_timing

@@ -1,7 +1,7 @@
-// normalizer_formal: proves rtl/normalizer.sv (8 stages, a 4-bit payload) holds valid and its whole
+// normalizer_formal: proves rtl/normalizer.sv (14 stages, a 4-bit payload) holds valid and its whole
 // output until ready, passes every beat once, in order, with its payload unchanged (each input
 // beat carries its sequence number as payload), keeps ready_o = ready_i || !valid_o and holds at
-// most 8 beats. stall_pipe_checker ties the payload RAM of its u_pipe to the tags in flight; the
+// most 14 beats. stall_pipe_checker ties the payload RAM of its u_pipe to the tags in flight; the
 // normal's datapath is free (its values are the unit benches' business).
 `include "formal_stream.svh"
 
@@ -9,7 +9,7 @@ module normalizer_formal #(
   parameter int unsigned PayloadBits = 4,  // the tag: >= log2 of the RAM depth
   localparam int unsigned NB      = watkins_pkg::NormalInBits,
   localparam int unsigned UB      = watkins_pkg::UnitBits,
-  localparam int unsigned Stages  = 8,  // normalizer's pipe: squares, rsqrt (5), product, round
+  localparam int unsigned Stages  = 14,  // normalizer's pipe: squares, sum, rsqrt (8), partial products, sum, shift, round
   localparam int unsigned PtrBits = $clog2(Stages + 1),
   localparam int unsigned Depth   = 2 ** PtrBits
 ) (

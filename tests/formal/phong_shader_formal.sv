@@ -1,7 +1,7 @@
-// phong_shader_formal: proves rtl/phong_shader.sv (24 stages, a 5-bit payload) holds valid and its
+// phong_shader_formal: proves rtl/phong_shader.sv (25 stages, a 5-bit payload) holds valid and its
 // shade until ready, passes every beat once, in order, with its payload unchanged (each input beat
 // carries its sequence number as payload), keeps ready_o = ready_i || !valid_o and holds at most
-// 24 beats. stall_pipe_checker ties the payload RAM of its u_pipe to the tags in flight; the
+// 25 beats. stall_pipe_checker ties the payload RAM of its u_pipe to the tags in flight; the
 // shading datapath, light and eye are free (values are the unit benches' business).
 `include "formal_stream.svh"
 
@@ -10,7 +10,7 @@ module phong_shader_formal #(
   localparam int unsigned UB      = watkins_pkg::UnitBits,
   localparam int unsigned MB      = watkins_pkg::MaterialBits,
   localparam int unsigned SB      = watkins_pkg::ShininessBits,
-  localparam int unsigned Stages  = 5 + 2 * SB + 3,  // phong_shader's pipe: dots, cos(s), powers, output
+  localparam int unsigned Stages  = 6 + 2 * SB + 3,  // phong_shader's pipe: dots, cos(s), powers, output
   localparam int unsigned PtrBits = $clog2(Stages + 1),
   localparam int unsigned Depth   = 2 ** PtrBits
 ) (

@@ -16,7 +16,7 @@ using namespace watkins::rtl;
 
 namespace {
 
-constexpr int Latency = 5;
+constexpr int Latency = 8;
 
 struct Bench {
   Harness<Vrsqrt_unit> h;
