@@ -134,11 +134,12 @@ module segment_interpolator #(
     /* verilator lint_off UNUSEDSIGNAL */
     logic signed [PCB-1:0] xs_full, xe_full;
     /* verilator lint_on UNUSEDSIGNAL */
-    // offset < dx when the span is not empty, so its top bits (and those of x_start beyond them:
-    // the sum is exact modulo 2^(DxBits+2)) are dropped.
+    // The clipped offset h - X_E: offset < dx when the span is not empty, so its top bits are
+    // dropped (the difference is exact modulo 2^(DxBits+2)).
     /* verilator lint_off UNUSEDSIGNAL */
-    logic signed [DxBits+1:0]  off;
+    logic signed [DxBits+1:0]  off_clip;
     /* verilator lint_on UNUSEDSIGNAL */
+    logic [FX-1:0]             frac_h, off_frac;
     fce     = first_centre(xe_e);
     fcf     = first_centre(xe_f);
     xs_full = (fce < 0) ? '0 : fce;
@@ -151,9 +152,15 @@ module segment_interpolator #(
     s0_d.material = seg_material_i;
     s0_d.xs    = LB'(xs_full);
     s0_d.xe    = LB'(xe_full);
-    off        = $signed((DxBits + 2)'({s0_d.xs, 1'b1, (FX - 1)'(0)}))
-               - $signed({{3{xe_e[XBits-1]}}, xe_e});
-    s0_d.offset = DxBits'(off);
+    // offset = x_start + h - X_E (h = 2^(FX-1)), not through x_start's add and clamp: unclipped
+    // (fce >= 0, x_start = fce) fce 2^FX = X_E + h - 1 - ((X_E + h - 1) mod 2^FX), so the offset
+    // is 2^FX - 1 - ((X_E + h - 1) mod 2^FX), the complement of an FX-bit sum of X_E's fraction
+    // bits; clipped (fce < 0, x_start = 0) it is h - X_E. Both run beside fce's sign. A span
+    // whose fce is beyond LB bits is empty, so x_start's truncation never mattered here.
+    frac_h      = xe_e[FX-1:0] + FX'((1 << (FX - 1)) - 1);
+    off_clip    = $signed((DxBits + 2)'(1 << (FX - 1))) - $signed({{3{xe_e[XBits-1]}}, xe_e});
+    off_frac    = ~frac_h;
+    s0_d.offset = fce[PCB-1] ? DxBits'(off_clip) : DxBits'(off_frac);
     s0_dx_d     = DxBits'($signed({xe_f[XBits-1], xe_f}) - $signed({xe_e[XBits-1], xe_e}));
     s0_d.e      = s0_e_d;
     s0_d.delta  = s0_delta_d;
