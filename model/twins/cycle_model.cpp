@@ -120,7 +120,7 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
   bool st_valid = false, st_retire = false;  // the edge_incrementer's output (st_valid, st_retire)
   // ---- segment_former
   bool seg_valid = false;  // seg_valid_o
-  // ---- segment_interpolator: s0, span_reciprocal, sa/sb/sc, FIFO, stepper. Items pass every
+  // ---- segment_interpolator: s0, span_reciprocal, sa .. sd, FIFO, stepper. Items pass every
   // stage in order, so a stage's item is its position in st.items, counted where it leaves.
   bool s0_valid_q = false;
   std::uint64_t recip_valid = 0;
