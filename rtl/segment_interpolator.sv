@@ -1,12 +1,13 @@
 // segment_interpolator: span setup for each segment E..F, then one fragment per pixel by alpha
 // stepping, exactly model/twins/segment_interpolator.cpp (setup(), fragment(), step()).
 // Setup pipeline, one segment per clock: s0 (pixel range, clipping, dx, offset, deltas) ->
-// span_reciprocal (26) -> sa (alpha and step partial products) -> sp (their sums) -> sb (round,
-// clamp alpha0, saturate steps) -> sc (value partial products) -> sd (their sums) -> FIFO
-// (value = E + round(delta*alpha0)); empty spans are dropped before the FIFO. The stepper emits one fragment per clock from a registered output,
+// span_reciprocal (26) -> sa (alpha and step partial products) -> sp (their sums) -> sh (their
+// shifts) -> sb (round, clamp alpha0, saturate steps) -> sc (value partial products) -> sd
+// (their sums with E and the rounding constant: the value E + round(delta*alpha0)) -> FIFO;
+// empty spans are dropped before the FIFO. The stepper emits one fragment per clock from a registered output,
 // taking a span's first pixel straight from the FIFO head, so consecutive spans (even of one
 // pixel) leave no bubble and a span's setup hides behind the previous spans' pixels.
-// Latency segment -> first fragment: 34 cycles. All stage outputs registered; ready is
+// Latency segment -> first fragment: 35 cycles. All stage outputs registered; ready is
 // combinational through the setup stages (one stall signal), registered at the FIFO.
 // End-of-line markers pass through in order. Each fragment carries its segment's polygon id
 // (the scanline_buffer's equal-depth rule) and material id, and both readings of the three
@@ -72,17 +73,14 @@ module segment_interpolator #(
   function automatic int unsigned ilo(int unsigned c, int unsigned zw, int unsigned aw);
     ilo = (c == 1) ? 0 : zw + (c - 2) * aw;
   endfunction
-  // A slot's word and fraction bits, and the widths of its delta (word + 1), of delta * recip
-  // and of delta * alpha0 (with room for the rounding constant: the step's shift p + R - FX
-  // reaches XBits - 1 + R - FX, so a narrow slot's product still needs X's headroom).
+  // A slot's word and fraction bits, and the widths of its delta (word + 1) and of delta * recip
+  // (with room for the rounding constant: the step's shift p + R - FX reaches XBits - 1 + R - FX,
+  // so a narrow slot's product still needs X's headroom).
   localparam int unsigned ZD  = ZBits + 1,    AD  = AttrBits + 1;
   localparam int unsigned ZPS = ((ZBits > XBits - FX) ? ZBits : XBits - FX) + RecipBits + 3;
   localparam int unsigned APS = ((AttrBits > XBits - FX) ? AttrBits : XBits - FX) + RecipBits + 3;
-  localparam int unsigned ZPV = ZBits + AlphaBits + 3, APV = AttrBits + AlphaBits + 3;
   localparam int unsigned IVB = ZBits + 3 * AttrBits;  // value, step, E
   localparam int unsigned IDB = ZD + 3 * AD;           // delta
-  localparam int unsigned IPS = ZPS + 3 * APS;         // delta * recip
-  localparam int unsigned IPV = ZPV + 3 * APV;         // delta * alpha0
   // The sb shifts: p + RecipBits - AlphaBits (alpha0) and p + RecipBits - FX (the steps), p <
   // DxBits, in shift amounts only as wide as their largest value (a shift amount as wide as the
   // product made yosys build a shifter stage for every one of its bits).
@@ -215,9 +213,10 @@ module segment_interpolator #(
   );
 
   // ---------------------------------------------------------------- sa .. sd: alpha0, steps, values
-  // sa: offset * recip and delta * recip as partial products. sp: their sums. sb: alpha0 =
-  // min(round_shift(offset*recip, p + RecipBits - AlphaBits), 2^AlphaBits) (round_shift by 0 is
-  // exact) and the steps. sc: delta * alpha0 as partial products. sd: their sums.
+  // sa: offset * recip and delta * recip as partial products. sp: their sums. sh: their shifts.
+  // sb: alpha0 = min(round_shift(offset*recip, p + RecipBits - AlphaBits), 2^AlphaBits)
+  // (round_shift by 0 is exact) and the steps. sc: delta * alpha0 as partial products. sd: the
+  // values.
   // Every product wider than a multiplier block is split at bit MSplit of each operand too wide
   // for one, each partial product registered straight from its block and the partial products
   // summed a stage later (a product and its adder tree in one clock limited the block):
@@ -227,8 +226,8 @@ module segment_interpolator #(
   localparam int unsigned OHi = (DxBits > MSplit) ? DxBits - MSplit : 1;  // offset's high part
   localparam int unsigned RHi = RecipBits + 1 - MSplit;                    // recip's high part
   localparam int unsigned AHi = AlphaBits + 1 - MSplit;                    // alpha0's high part
-  logic                sa_valid_q, sp_valid_q, sb_valid_q, sc_valid_q, sd_valid_q;
-  span_pre_t           sa_span_q, sp_span_q, sb_span_q, sc_span_q;
+  logic                sa_valid_q, sp_valid_q, sh_valid_q, sb_valid_q, sc_valid_q, sd_valid_q;
+  span_pre_t           sa_span_q, sp_span_q, sh_span_q, sb_span_q, sc_span_q;
   logic [ShAB-1:0]     sa_sha_q, sp_sha_q;  // alpha0's shift p + RecipBits - AlphaBits
   logic [ShSB-1:0]     sa_shs_q, sp_shs_q;  // the steps' shift p + RecipBits - FX (> 0)
   logic [2*MSplit-1:0]   sa_pa00_q;           // offset * recip: low x low
@@ -242,7 +241,7 @@ module segment_interpolator #(
   span_pre_t           sd_span_q;
   /* verilator lint_on UNUSEDSIGNAL */
   logic [IVB-1:0]      sb_step_q, sc_step_q, sd_step_q;
-  logic [IPV-1:0]      sd_pv_q;             // delta * alpha0 per slot
+  logic [IVB-1:0]      sd_value_q;          // E + round_shift(delta * alpha0, AlphaBits) per slot
 
   logic [MSplit-1:0] rc_r0, sb_a0;  // recip's and alpha0's low parts
   logic [RHi-1:0]    rc_r1;
@@ -261,12 +260,13 @@ module segment_interpolator #(
   // and the rounding is one increment of the AlphaBits + 1 bits the clamp keeps. The clamp reads
   // the high bits: ra > 2^AlphaBits exactly when u has a bit above ua's, or ua >= 2^AlphaBits
   // with anything below that bit or the rounding bit set; it does not wait for the increment.
-  logic [APBits:0]    sb_u;
+  // The shift has its own stage (sh): shift, increment and clamp in one clock were the block's
+  // longest path.
+  logic [APBits:0]    sh_u_q;
   logic [AlphaBits:0] sb_ua;   // floor(x / 2^s), when it is below 2^(AlphaBits + 1)
   logic               sb_over; // ra > 2^AlphaBits
-  assign sb_u    = {sp_pa_q, 1'b0} >> sp_sha_q;
-  assign sb_ua   = sb_u[AlphaBits+1:1];
-  assign sb_over = |sb_u[APBits:AlphaBits+2] || (sb_ua[AlphaBits] && (|sb_ua[AlphaBits-1:0] || sb_u[0]));
+  assign sb_ua   = sh_u_q[AlphaBits+1:1];
+  assign sb_over = |sh_u_q[APBits:AlphaBits+2] || (sb_ua[AlphaBits] && (|sb_ua[AlphaBits-1:0] || sh_u_q[0]));
 
   always_ff @(posedge clk_i) begin
     if (tail_en) begin
@@ -283,8 +283,10 @@ module segment_interpolator #(
       sp_shs_q  <= sa_shs_q;
       sp_pa_q   <= APBits'({sa_pa11_q, sa_pa00_q}) + (APBits'(sa_pa01_q) << MSplit)
                  + (APBits'(sa_pa10_q) << MSplit);
-      sb_span_q <= sp_span_q;
-      sb_alpha_q <= sb_over ? (AlphaBits + 1)'(1 << AlphaBits) : sb_ua + (AlphaBits + 1)'(sb_u[0]);
+      sh_span_q <= sp_span_q;
+      sh_u_q    <= {sp_pa_q, 1'b0} >> sp_sha_q;
+      sb_span_q <= sh_span_q;
+      sb_alpha_q <= sb_over ? (AlphaBits + 1)'(1 << AlphaBits) : sb_ua + (AlphaBits + 1)'(sh_u_q[0]);
       sc_span_q <= sb_span_q;
       sc_step_q <= sb_step_q;
       sd_span_q <= sc_span_q;
@@ -299,8 +301,7 @@ module segment_interpolator #(
     localparam int unsigned Lo = ilo(c, ZBits, AttrBits);
     localparam int unsigned Dl = ilo(c, ZD, AD);
     localparam int unsigned PS = (c == 1) ? ZPS : APS;
-    localparam int unsigned PV = (c == 1) ? ZPV : APV;
-    localparam int unsigned Vl = ilo(c, ZPV, APV);
+    localparam int unsigned VS = W + AlphaBits;  // the value's sum: W bits above AlphaBits
     localparam logic signed [PS-1:0] StepMax = $signed((PS'(1) << (W - 1)) - PS'(1));
     localparam logic signed [PS-1:0] StepMin = -$signed(PS'(1) << (W - 1));
     // The delta (signed, W + 1 bits) times an unsigned low part ({0, x0}: MSplit + 1 bits) and
@@ -320,9 +321,8 @@ module segment_interpolator #(
     // does not fit W bits, rs saturates to its sign (below the range, + u[0] reaches at most
     // StepMin); when it fits, only StepMax + 1 leaves the range, so the increment is skipped
     // there. The W-bit increment runs beside the tests, not before them.
-    logic signed [PS:0] u;
+    logic signed [PS:0] u;              // in sh
     logic               fits, at_max;
-    assign u      = $signed({ps_q, 1'b0}) >>> sp_shs_q;
     assign fits   = &u[PS:W] || ~|u[PS:W];
     assign at_max = !u[W] && &u[W-1:1];
     always_ff @(posedge clk_i) begin
@@ -330,11 +330,17 @@ module segment_interpolator #(
         ps0_q <= P0B'(d_rc * $signed({1'b0, rc_r0}));
         ps1_q <= P1B'(d_rc * $signed({1'b0, rc_r1}));
         ps_q  <= PS'(ps0_q) + (PS'(ps1_q) << MSplit);
+        u     <= $signed({ps_q, 1'b0}) >>> sp_shs_q;
         if (!fits) sb_step_q[Lo +: W] <= u[PS] ? W'(StepMin) : W'(StepMax);
         else sb_step_q[Lo +: W] <= u[W:1] + W'(u[0] && !at_max);
         pv0_q <= P0B'(d_sb * $signed({1'b0, sb_a0}));
         pv1_q <= V1B'(d_sb * $signed({1'b0, sb_a1}));
-        sd_pv_q[Vl +: PV] <= PV'(pv0_q) + (PV'(pv1_q) << MSplit);
+        // value = wrap(E + ((pv + 2^(AlphaBits-1)) >> AlphaBits), W) = bits [AlphaBits +: W] of
+        // pv + (E 2^AlphaBits + 2^(AlphaBits-1)): E and the rounding constant are one operand
+        // (their bits do not overlap), added with the partial products here, so the FIFO's
+        // input is a register. Sums modulo 2^VS keep those bits.
+        sd_value_q[Lo +: W] <= W'((VS'(pv0_q) + (VS'(pv1_q) << MSplit)
+                                   + {sc_span_q.e[Lo +: W], 1'b1, (AlphaBits - 1)'(0)}) >> AlphaBits);
       end
     end
   end
@@ -343,13 +349,15 @@ module segment_interpolator #(
     if (!rst_ni) begin
       sa_valid_q <= 1'b0;
       sp_valid_q <= 1'b0;
+      sh_valid_q <= 1'b0;
       sb_valid_q <= 1'b0;
       sc_valid_q <= 1'b0;
       sd_valid_q <= 1'b0;
     end else if (tail_en) begin
       sa_valid_q <= rc_valid;
       sp_valid_q <= sa_valid_q;
-      sb_valid_q <= sp_valid_q;
+      sh_valid_q <= sp_valid_q;
+      sb_valid_q <= sh_valid_q;
       sc_valid_q <= sb_valid_q;
       sd_valid_q <= sc_valid_q;
     end
@@ -369,21 +377,6 @@ module segment_interpolator #(
   span_t          f_in, f_out;
   logic           f_in_valid, f_in_ready, f_out_valid, f_out_ready;
   logic           sd_keep;
-  logic [IVB-1:0] f_in_value;
-
-  // value = wrap(E + round_shift(delta*alpha0, AlphaBits), W): only the low W bits survive.
-  for (genvar c = 1; c <= NI; c++) begin : g_value
-    localparam int unsigned W  = watkins_pkg::slot_bits(c, XBits, ZBits, AttrBits);
-    localparam int unsigned Lo = ilo(c, ZBits, AttrBits);
-    localparam int unsigned PV = (c == 1) ? ZPV : APV;
-    localparam int unsigned Vl = ilo(c, ZPV, APV);
-    // The wrap to W bits drops the quotient's top bits.
-    /* verilator lint_off UNUSEDSIGNAL */
-    logic signed [PV-1:0] r;
-    /* verilator lint_on UNUSEDSIGNAL */
-    assign r = ($signed(sd_pv_q[Vl +: PV]) + $signed(PV'(1) << (AlphaBits - 1))) >>> AlphaBits;
-    assign f_in_value[Lo +: W] = sd_span_q.e[Lo +: W] + W'(r);
-  end
 
   always_comb begin
     f_in.eol      = sd_span_q.eol;
@@ -391,7 +384,7 @@ module segment_interpolator #(
     f_in.material = sd_span_q.material;
     f_in.xs       = sd_span_q.xs;
     f_in.xe       = sd_span_q.xe;
-    f_in.value    = f_in_value;
+    f_in.value    = sd_value_q;
     f_in.step     = sd_step_q;
   end
 

@@ -55,10 +55,18 @@ module span_reciprocal #(
   // the shift in one clock were the block's longest path.
   localparam int unsigned NormBits = (DxBits > RecipBits) ? DxBits : RecipBits;
   localparam int unsigned ShBits   = $clog2(NormBits);
+  // The shift NormBits - 1 - p comes out of the encoder beside p, not from a subtract after it.
   logic [ExpBits-1:0] lead;
+  logic [ShBits-1:0]  lead_sh;
   always_comb begin
-    lead = '0;
-    for (int i = 0; i < DxBits; i++) if (dx_i[i]) lead = ExpBits'(i);
+    lead    = '0;
+    lead_sh = ShBits'(NormBits - 1);
+    for (int i = 0; i < DxBits; i++) begin
+      if (dx_i[i]) begin
+        lead    = ExpBits'(i);
+        lead_sh = ShBits'(NormBits - 1 - i);
+      end
+    end
   end
 
   // Quotient bit R-k+1 in stage k >= 3, bits R and R-1 in stage 2: the numerator 2^(2R-1) has
@@ -84,7 +92,7 @@ module span_reciprocal #(
       always_ff @(posedge clk_i) begin
         if (en) begin
           dx_q <= dx_i;
-          sh_q <= ShBits'(NormBits - 1) - ShBits'(lead);
+          sh_q <= lead_sh;
           p_q  <= lead;
         end
       end

@@ -28,20 +28,20 @@ PreparedScene with_shading(PreparedScene p, ShadingMode mode) {
 // An empty W x H frame, by hand. The active-edge list: cycle 0 starts the frame, cycle 1 swaps
 // to line 1 (the stream's head is its EOF beat), and from cycle 2 each line is its end-of-line
 // marker (one cycle) and the swap (one): 2 cycles per line. The first marker reaches the line
-// buffer at cycle 37: segment former 3, s0 4, span_reciprocal 5..30, sa/sp/sb/sc/sd 31..35,
-// FIFO 36, the stepper's output register 37. Full-frame: each line's read-out (W cycles) hides
-// the next marker, so the last pixel is read at 37 + H*W and taken one cycle later: H*W + 39
+// buffer at cycle 38: segment former 3, s0 4, span_reciprocal 5..30, sa/sp/sh/sb/sc/sd 31..36,
+// FIFO 37, the stepper's output register 38. Full-frame: each line's read-out (W cycles) hides
+// the next marker, so the last pixel is read at 38 + H*W and taken one cycle later: H*W + 40
 // cycles counting cycle 0. Sparse: an empty line is one read step, so the list's 2 cycles per
-// line set the pace: the last line's marker arrives at 37 + 2(H-1), is read one cycle later and
-// taken the next: 2H + 38. The Phong top's 32 stages (normalizer 8, shader 24) delay it all by 32.
+// line set the pace: the last line's marker arrives at 38 + 2(H-1), is read one cycle later and
+// taken the next: 2H + 39. The Phong top's 32 stages (normalizer 8, shader 24) delay it all by 32.
 TEST(CycleModel, EmptyFrameByHand) {
   for (const auto& [w, h] : {std::pair{13, 5}, std::pair{320, 240}, std::pair{1, 1}, std::pair{40, 60}}) {
     const PreparedScene g = prepare(screen(w, h, {}, "empty"));
     const PreparedScene p = with_shading(g, ShadingMode::Phong);
-    EXPECT_EQ(predict_cycles(g, PixelOutput::FullFrame).cycles, w * h + 39) << w << "x" << h;
-    EXPECT_EQ(predict_cycles(p, PixelOutput::FullFrame).cycles, w * h + 39 + 32) << w << "x" << h;
-    EXPECT_EQ(predict_cycles(g, PixelOutput::Sparse).cycles, 2 * h + 38) << w << "x" << h;
-    EXPECT_EQ(predict_cycles(p, PixelOutput::Sparse).cycles, 2 * h + 38 + 32) << w << "x" << h;
+    EXPECT_EQ(predict_cycles(g, PixelOutput::FullFrame).cycles, w * h + 40) << w << "x" << h;
+    EXPECT_EQ(predict_cycles(p, PixelOutput::FullFrame).cycles, w * h + 40 + 32) << w << "x" << h;
+    EXPECT_EQ(predict_cycles(g, PixelOutput::Sparse).cycles, 2 * h + 39) << w << "x" << h;
+    EXPECT_EQ(predict_cycles(p, PixelOutput::Sparse).cycles, 2 * h + 39 + 32) << w << "x" << h;
     EXPECT_EQ(predict_cycles(g, PixelOutput::FullFrame).pixels, w * h);
     EXPECT_EQ(predict_cycles(g, PixelOutput::Sparse).pixels, 1);  // the terminating beat
   }
