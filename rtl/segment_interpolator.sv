@@ -452,6 +452,7 @@ module segment_interpolator #(
     logic signed [W:0]   t;  // fraction bits are rounded away
     /* verilator lint_on UNUSEDSIGNAL */
     logic signed [CW-1:0] r;
+    logic [CW-2:0]       mag;  // r without its sign
     logic [HiBits-1:0]   level;
     assign v = cur_value[Lo +: W];
     assign next_value[Lo +: W] = cur_value[Lo +: W] + cur_step[Lo +: W];
@@ -461,8 +462,10 @@ module segment_interpolator #(
       assign t = $signed({v[W-1], v});
     end
     assign r = CW'($signed(t[W:F]));
-    assign level = (r < 0) ? '0
-                 : (r > $signed(CW'({HiBits{1'b1}}))) ? {HiBits{1'b1}} : HiBits'(r);
+    // clamp(r, 0, 2^HiBits - 1) from r's bits, not through two compares after the rounding add:
+    // below 0 when the sign is set, above the maximum when a bit above the level's is set.
+    assign mag   = r[CW-2:0];
+    assign level = r[CW-1] ? '0 : (|(mag >> HiBits)) ? {HiBits{1'b1}} : HiBits'(mag);
     if (c == 1) begin : g_depth
       assign depth_d = level;
     end else begin : g_attr
@@ -473,6 +476,7 @@ module segment_interpolator #(
       localparam int unsigned SW = (NW > NB) ? NW : NB;                           // compare width
       logic signed [NW-1:0] n;
       logic signed [SW-1:0] ns;
+      logic [SW-NB:0]       ns_hi;  // all equal: ns fits NB bits
       if (F > FB) begin : g_down
         /* verilator lint_off UNUSEDSIGNAL */
         logic signed [W:0] tn;
@@ -484,11 +488,13 @@ module segment_interpolator #(
       end else begin : g_up
         assign n = $signed({v, (FB - F)'(0)});
       end
-      assign ns = SW'(n);
+      assign ns    = SW'(n);
+      assign ns_hi = ns[SW-1:NB-1];
+      // Saturate to NB bits from the bits above them, not through two compares.
       assign normal_d[(c - 2)*NB +: NB] =
-          (ns > $signed(SW'((64'd1 << (NB - 1)) - 1))) ? NB'((64'd1 << (NB - 1)) - 1)
-        : (ns < -$signed(SW'(64'd1 << (NB - 1))))      ? NB'(64'd1 << (NB - 1))
-        : NB'(ns);
+          (&ns_hi || ~|ns_hi) ? NB'(ns)
+        : ns[SW-1]            ? NB'(64'd1 << (NB - 1))
+        :                       NB'((64'd1 << (NB - 1)) - 1);
     end
   end
 
