@@ -1,12 +1,13 @@
 // segment_interpolator: span setup for each segment E..F, then one fragment per pixel by alpha
 // stepping, exactly model/twins/segment_interpolator.cpp (setup(), fragment(), step()).
 // Setup pipeline, one segment per clock: s0 (pixel range, clipping, dx, offset, deltas) ->
-// span_reciprocal (26) -> sa (alpha and step products) -> sb (round, clamp alpha0, saturate
-// steps) -> sc (value products) -> FIFO (value = E + round(delta*alpha0)); empty spans are
-// dropped before the FIFO. The stepper emits one fragment per clock from a registered output,
+// span_reciprocal (26) -> sa (alpha and step partial products) -> sp (their sums) -> sh (their
+// shifts) -> sb (round, clamp alpha0, saturate steps) -> sc (value partial products) -> sd
+// (their sums with E and the rounding constant: the value E + round(delta*alpha0)) -> FIFO;
+// empty spans are dropped before the FIFO. The stepper emits one fragment per clock from a registered output,
 // taking a span's first pixel straight from the FIFO head, so consecutive spans (even of one
 // pixel) leave no bubble and a span's setup hides behind the previous spans' pixels.
-// Latency segment -> first fragment: 32 cycles. All stage outputs registered; ready is
+// Latency segment -> first fragment: 35 cycles. All stage outputs registered; ready is
 // combinational through the setup stages (one stall signal), registered at the FIFO.
 // End-of-line markers pass through in order. Each fragment carries its segment's polygon id
 // (the scanline_buffer's equal-depth rule) and material id, and both readings of the three
@@ -72,17 +73,14 @@ module segment_interpolator #(
   function automatic int unsigned ilo(int unsigned c, int unsigned zw, int unsigned aw);
     ilo = (c == 1) ? 0 : zw + (c - 2) * aw;
   endfunction
-  // A slot's word and fraction bits, and the widths of its delta (word + 1), of delta * recip
-  // and of delta * alpha0 (with room for the rounding constant: the step's shift p + R - FX
-  // reaches XBits - 1 + R - FX, so a narrow slot's product still needs X's headroom).
+  // A slot's word and fraction bits, and the widths of its delta (word + 1) and of delta * recip
+  // (with room for the rounding constant: the step's shift p + R - FX reaches XBits - 1 + R - FX,
+  // so a narrow slot's product still needs X's headroom).
   localparam int unsigned ZD  = ZBits + 1,    AD  = AttrBits + 1;
   localparam int unsigned ZPS = ((ZBits > XBits - FX) ? ZBits : XBits - FX) + RecipBits + 3;
   localparam int unsigned APS = ((AttrBits > XBits - FX) ? AttrBits : XBits - FX) + RecipBits + 3;
-  localparam int unsigned ZPV = ZBits + AlphaBits + 3, APV = AttrBits + AlphaBits + 3;
   localparam int unsigned IVB = ZBits + 3 * AttrBits;  // value, step, E
   localparam int unsigned IDB = ZD + 3 * AD;           // delta
-  localparam int unsigned IPS = ZPS + 3 * APS;         // delta * recip
-  localparam int unsigned IPV = ZPV + 3 * APV;         // delta * alpha0
   // The sb shifts: p + RecipBits - AlphaBits (alpha0) and p + RecipBits - FX (the steps), p <
   // DxBits, in shift amounts only as wide as their largest value (a shift amount as wide as the
   // product made yosys build a shifter stage for every one of its bits).
@@ -134,11 +132,12 @@ module segment_interpolator #(
     /* verilator lint_off UNUSEDSIGNAL */
     logic signed [PCB-1:0] xs_full, xe_full;
     /* verilator lint_on UNUSEDSIGNAL */
-    // offset < dx when the span is not empty, so its top bits (and those of x_start beyond them:
-    // the sum is exact modulo 2^(DxBits+2)) are dropped.
+    // The clipped offset h - X_E: offset < dx when the span is not empty, so its top bits are
+    // dropped (the difference is exact modulo 2^(DxBits+2)).
     /* verilator lint_off UNUSEDSIGNAL */
-    logic signed [DxBits+1:0]  off;
+    logic signed [DxBits+1:0]  off_clip;
     /* verilator lint_on UNUSEDSIGNAL */
+    logic [FX-1:0]             frac_h, off_frac;
     fce     = first_centre(xe_e);
     fcf     = first_centre(xe_f);
     xs_full = (fce < 0) ? '0 : fce;
@@ -151,9 +150,15 @@ module segment_interpolator #(
     s0_d.material = seg_material_i;
     s0_d.xs    = LB'(xs_full);
     s0_d.xe    = LB'(xe_full);
-    off        = $signed((DxBits + 2)'({s0_d.xs, 1'b1, (FX - 1)'(0)}))
-               - $signed({{3{xe_e[XBits-1]}}, xe_e});
-    s0_d.offset = DxBits'(off);
+    // offset = x_start + h - X_E (h = 2^(FX-1)), not through x_start's add and clamp: unclipped
+    // (fce >= 0, x_start = fce) fce 2^FX = X_E + h - 1 - ((X_E + h - 1) mod 2^FX), so the offset
+    // is 2^FX - 1 - ((X_E + h - 1) mod 2^FX), the complement of an FX-bit sum of X_E's fraction
+    // bits; clipped (fce < 0, x_start = 0) it is h - X_E. Both run beside fce's sign. A span
+    // whose fce is beyond LB bits is empty, so x_start's truncation never mattered here.
+    frac_h      = xe_e[FX-1:0] + FX'((1 << (FX - 1)) - 1);
+    off_clip    = $signed((DxBits + 2)'(1 << (FX - 1))) - $signed({{3{xe_e[XBits-1]}}, xe_e});
+    off_frac    = ~frac_h;
+    s0_d.offset = fce[PCB-1] ? DxBits'(off_clip) : DxBits'(off_frac);
     s0_dx_d     = DxBits'($signed({xe_f[XBits-1], xe_f}) - $signed({xe_e[XBits-1], xe_e}));
     s0_d.e      = s0_e_d;
     s0_d.delta  = s0_delta_d;
@@ -207,34 +212,61 @@ module segment_interpolator #(
     .ready_i  (tail_en)
   );
 
-  // ---------------------------------------------------------------- sa, sb, sc: alpha0
-  // sa: offset * recip. sb: alpha0 = min(round_shift(offset*recip, p + RecipBits - AlphaBits),
-  // 2^AlphaBits); round_shift by 0 is exact.
-  logic                sa_valid_q, sb_valid_q, sc_valid_q;
-  span_pre_t           sa_span_q, sb_span_q;
-  logic [ShAB-1:0]     sa_sha_q;     // alpha0's shift p + RecipBits - AlphaBits
-  logic [ShSB-1:0]     sa_shs_q;     // the steps' shift p + RecipBits - FX (> 0)
-  logic [APBits-1:0]   sa_pa_q;      // offset * recip, unsigned
-  logic [AlphaBits:0]  sb_alpha_q;   // alpha0 in [0, 2^AlphaBits]
+  // ---------------------------------------------------------------- sa .. sd: alpha0, steps, values
+  // sa: offset * recip and delta * recip as partial products. sp: their sums. sh: their shifts.
+  // sb: alpha0 = min(round_shift(offset*recip, p + RecipBits - AlphaBits), 2^AlphaBits)
+  // (round_shift by 0 is exact) and the steps. sc: delta * alpha0 as partial products. sd: the
+  // values.
+  // Every product wider than a multiplier block is split at bit MSplit of each operand too wide
+  // for one, each partial product registered straight from its block and the partial products
+  // summed a stage later (a product and its adder tree in one clock limited the block):
+  // x y = x0 y0 + (x0 y1 + x1 y0) 2^MSplit + x1 y1 2^(2 MSplit), the sums taken modulo the
+  // product's word as before. recip and alpha0 are unsigned, so their halves are too.
+  localparam int unsigned MSplit = 17;  // a low part fits an 18 x 18 multiplier, signed or not
+  localparam int unsigned OHi = (DxBits > MSplit) ? DxBits - MSplit : 1;  // offset's high part
+  localparam int unsigned RHi = RecipBits + 1 - MSplit;                    // recip's high part
+  localparam int unsigned AHi = AlphaBits + 1 - MSplit;                    // alpha0's high part
+  logic                sa_valid_q, sp_valid_q, sh_valid_q, sb_valid_q, sc_valid_q, sd_valid_q;
+  span_pre_t           sa_span_q, sp_span_q, sh_span_q, sb_span_q, sc_span_q;
+  logic [ShAB-1:0]     sa_sha_q, sp_sha_q;  // alpha0's shift p + RecipBits - AlphaBits
+  logic [ShSB-1:0]     sa_shs_q, sp_shs_q;  // the steps' shift p + RecipBits - FX (> 0)
+  logic [2*MSplit-1:0]   sa_pa00_q;           // offset * recip: low x low
+  logic [MSplit+RHi-1:0] sa_pa01_q;           // low offset x high recip
+  logic [OHi+MSplit-1:0] sa_pa10_q;           // high offset x low recip
+  logic [OHi+RHi-1:0]    sa_pa11_q;           // high x high (0 for an offset of MSplit bits)
+  logic [APBits-1:0]   sp_pa_q;             // offset * recip, unsigned
+  logic [AlphaBits:0]  sb_alpha_q;          // alpha0 in [0, 2^AlphaBits]
   // offset and delta are spent by the FIFO; keeping one span type is simpler than a third struct.
   /* verilator lint_off UNUSEDSIGNAL */
-  span_pre_t           sc_span_q;
+  span_pre_t           sd_span_q;
   /* verilator lint_on UNUSEDSIGNAL */
-  logic [IPS-1:0]      sa_ps_q;      // delta * recip per slot
-  logic [IVB-1:0]      sb_step_q, sc_step_q;
-  logic [IPV-1:0]      sc_pv_q;      // delta * alpha0 per slot
+  logic [IVB-1:0]      sb_step_q, sc_step_q, sd_step_q;
+  logic [IVB-1:0]      sd_value_q;          // E + round_shift(delta * alpha0, AlphaBits) per slot
+
+  logic [MSplit-1:0] rc_r0, sb_a0;  // recip's and alpha0's low parts
+  logic [RHi-1:0]    rc_r1;
+  logic [AHi-1:0]    sb_a1;
+  logic [MSplit-1:0] rc_o0;         // offset's
+  logic [OHi-1:0]    rc_o1;
+  assign rc_r0 = MSplit'(rc_recip);
+  assign rc_r1 = RHi'(rc_recip >> MSplit);
+  assign sb_a0 = MSplit'(sb_alpha_q);
+  assign sb_a1 = AHi'(sb_alpha_q >> MSplit);
+  assign rc_o0 = MSplit'(rc_span.offset);
+  assign rc_o1 = OHi'(rc_span.offset >> MSplit);
 
   // alpha0 shifts first and rounds after: round_shift(x, s) = (floor(2x / 2^s) + 1) / 2, so the
   // shifter takes the product straight from its register (u = {x, 0} >> s, also exact for s = 0)
   // and the rounding is one increment of the AlphaBits + 1 bits the clamp keeps. The clamp reads
   // the high bits: ra > 2^AlphaBits exactly when u has a bit above ua's, or ua >= 2^AlphaBits
   // with anything below that bit or the rounding bit set; it does not wait for the increment.
-  logic [APBits:0]    sb_u;
+  // The shift has its own stage (sh): shift, increment and clamp in one clock were the block's
+  // longest path.
+  logic [APBits:0]    sh_u_q;
   logic [AlphaBits:0] sb_ua;   // floor(x / 2^s), when it is below 2^(AlphaBits + 1)
   logic               sb_over; // ra > 2^AlphaBits
-  assign sb_u    = {sa_pa_q, 1'b0} >> sa_sha_q;
-  assign sb_ua   = sb_u[AlphaBits+1:1];
-  assign sb_over = |sb_u[APBits:AlphaBits+2] || (sb_ua[AlphaBits] && (|sb_ua[AlphaBits-1:0] || sb_u[0]));
+  assign sb_ua   = sh_u_q[AlphaBits+1:1];
+  assign sb_over = |sh_u_q[APBits:AlphaBits+2] || (sb_ua[AlphaBits] && (|sb_ua[AlphaBits-1:0] || sh_u_q[0]));
 
   always_ff @(posedge clk_i) begin
     if (tail_en) begin
@@ -242,11 +274,23 @@ module segment_interpolator #(
       // Both shifts are known from p alone: computed here, beside the products.
       sa_sha_q  <= ShAB'(rc_p) + ShAB'(RecipBits) - ShAB'(AlphaBits);
       sa_shs_q  <= ShSB'(rc_p) + ShSB'(RecipBits) - ShSB'(FX);
-      sa_pa_q   <= APBits'(rc_span.offset) * APBits'(rc_recip);
-      sb_span_q <= sa_span_q;
-      sb_alpha_q <= sb_over ? (AlphaBits + 1)'(1 << AlphaBits) : sb_ua + (AlphaBits + 1)'(sb_u[0]);
+      sa_pa00_q <= (2*MSplit)'(rc_o0) * (2*MSplit)'(rc_r0);
+      sa_pa01_q <= (MSplit+RHi)'(rc_o0) * (MSplit+RHi)'(rc_r1);
+      sa_pa10_q <= (OHi+MSplit)'(rc_o1) * (OHi+MSplit)'(rc_r0);
+      sa_pa11_q <= (OHi+RHi)'(rc_o1) * (OHi+RHi)'(rc_r1);
+      sp_span_q <= sa_span_q;
+      sp_sha_q  <= sa_sha_q;
+      sp_shs_q  <= sa_shs_q;
+      sp_pa_q   <= APBits'({sa_pa11_q, sa_pa00_q}) + (APBits'(sa_pa01_q) << MSplit)
+                 + (APBits'(sa_pa10_q) << MSplit);
+      sh_span_q <= sp_span_q;
+      sh_u_q    <= {sp_pa_q, 1'b0} >> sp_sha_q;
+      sb_span_q <= sh_span_q;
+      sb_alpha_q <= sb_over ? (AlphaBits + 1)'(1 << AlphaBits) : sb_ua + (AlphaBits + 1)'(sh_u_q[0]);
       sc_span_q <= sb_span_q;
       sc_step_q <= sb_step_q;
+      sd_span_q <= sc_span_q;
+      sd_step_q <= sc_step_q;
     end
   end
 
@@ -257,27 +301,46 @@ module segment_interpolator #(
     localparam int unsigned Lo = ilo(c, ZBits, AttrBits);
     localparam int unsigned Dl = ilo(c, ZD, AD);
     localparam int unsigned PS = (c == 1) ? ZPS : APS;
-    localparam int unsigned Pl = ilo(c, ZPS, APS);
-    localparam int unsigned PV = (c == 1) ? ZPV : APV;
-    localparam int unsigned Vl = ilo(c, ZPV, APV);
+    localparam int unsigned VS = W + AlphaBits;  // the value's sum: W bits above AlphaBits
     localparam logic signed [PS-1:0] StepMax = $signed((PS'(1) << (W - 1)) - PS'(1));
     localparam logic signed [PS-1:0] StepMin = -$signed(PS'(1) << (W - 1));
+    // The delta (signed, W + 1 bits) times an unsigned low part ({0, x0}: MSplit + 1 bits) and
+    // high part: exact products.
+    localparam int unsigned P0B = W + MSplit + 2;
+    localparam int unsigned P1B = W + RHi + 2;
+    localparam int unsigned V1B = W + AHi + 2;
+    logic signed [W:0]     d_rc, d_sb;  // the delta leaving the reciprocal, and in sb
+    logic signed [P0B-1:0] ps0_q, pv0_q;
+    logic signed [P1B-1:0] ps1_q;
+    logic signed [V1B-1:0] pv1_q;
+    logic signed [PS-1:0]  ps_q;        // delta * recip, in sp
+    assign d_rc = rc_span.delta[Dl +: W + 1];
+    assign d_sb = sb_span_q.delta[Dl +: W + 1];
     // Shift first, round after, as alpha0: u = {x, 0} >>> s = floor(x / 2^(s-1)) (s > 0), and
     // rs = floor((u + 1) / 2) = (u >>> 1) + u[0]. Saturate from u's high bits: when u >>> 1
     // does not fit W bits, rs saturates to its sign (below the range, + u[0] reaches at most
     // StepMin); when it fits, only StepMax + 1 leaves the range, so the increment is skipped
     // there. The W-bit increment runs beside the tests, not before them.
-    logic signed [PS:0] u;
+    logic signed [PS:0] u;              // in sh
     logic               fits, at_max;
-    assign u      = $signed({sa_ps_q[Pl +: PS], 1'b0}) >>> sa_shs_q;
     assign fits   = &u[PS:W] || ~|u[PS:W];
     assign at_max = !u[W] && &u[W-1:1];
     always_ff @(posedge clk_i) begin
       if (tail_en) begin
-        sa_ps_q[Pl +: PS] <= PS'($signed(rc_span.delta[Dl +: W + 1]) * $signed({1'b0, rc_recip}));
+        ps0_q <= P0B'(d_rc * $signed({1'b0, rc_r0}));
+        ps1_q <= P1B'(d_rc * $signed({1'b0, rc_r1}));
+        ps_q  <= PS'(ps0_q) + (PS'(ps1_q) << MSplit);
+        u     <= $signed({ps_q, 1'b0}) >>> sp_shs_q;
         if (!fits) sb_step_q[Lo +: W] <= u[PS] ? W'(StepMin) : W'(StepMax);
         else sb_step_q[Lo +: W] <= u[W:1] + W'(u[0] && !at_max);
-        sc_pv_q[Vl +: PV] <= PV'($signed(sb_span_q.delta[Dl +: W + 1]) * $signed({1'b0, sb_alpha_q}));
+        pv0_q <= P0B'(d_sb * $signed({1'b0, sb_a0}));
+        pv1_q <= V1B'(d_sb * $signed({1'b0, sb_a1}));
+        // value = wrap(E + ((pv + 2^(AlphaBits-1)) >> AlphaBits), W) = bits [AlphaBits +: W] of
+        // pv + (E 2^AlphaBits + 2^(AlphaBits-1)): E and the rounding constant are one operand
+        // (their bits do not overlap), added with the partial products here, so the FIFO's
+        // input is a register. Sums modulo 2^VS keep those bits.
+        sd_value_q[Lo +: W] <= W'((VS'(pv0_q) + (VS'(pv1_q) << MSplit)
+                                   + {sc_span_q.e[Lo +: W], 1'b1, (AlphaBits - 1)'(0)}) >> AlphaBits);
       end
     end
   end
@@ -285,12 +348,18 @@ module segment_interpolator #(
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       sa_valid_q <= 1'b0;
+      sp_valid_q <= 1'b0;
+      sh_valid_q <= 1'b0;
       sb_valid_q <= 1'b0;
       sc_valid_q <= 1'b0;
+      sd_valid_q <= 1'b0;
     end else if (tail_en) begin
       sa_valid_q <= rc_valid;
-      sb_valid_q <= sa_valid_q;
+      sp_valid_q <= sa_valid_q;
+      sh_valid_q <= sp_valid_q;
+      sb_valid_q <= sh_valid_q;
       sc_valid_q <= sb_valid_q;
+      sd_valid_q <= sc_valid_q;
     end
   end
 
@@ -307,37 +376,22 @@ module segment_interpolator #(
 
   span_t          f_in, f_out;
   logic           f_in_valid, f_in_ready, f_out_valid, f_out_ready;
-  logic           sc_keep;
-  logic [IVB-1:0] f_in_value;
-
-  // value = wrap(E + round_shift(delta*alpha0, AlphaBits), W): only the low W bits survive.
-  for (genvar c = 1; c <= NI; c++) begin : g_value
-    localparam int unsigned W  = watkins_pkg::slot_bits(c, XBits, ZBits, AttrBits);
-    localparam int unsigned Lo = ilo(c, ZBits, AttrBits);
-    localparam int unsigned PV = (c == 1) ? ZPV : APV;
-    localparam int unsigned Vl = ilo(c, ZPV, APV);
-    // The wrap to W bits drops the quotient's top bits.
-    /* verilator lint_off UNUSEDSIGNAL */
-    logic signed [PV-1:0] r;
-    /* verilator lint_on UNUSEDSIGNAL */
-    assign r = ($signed(sc_pv_q[Vl +: PV]) + $signed(PV'(1) << (AlphaBits - 1))) >>> AlphaBits;
-    assign f_in_value[Lo +: W] = sc_span_q.e[Lo +: W] + W'(r);
-  end
+  logic           sd_keep;
 
   always_comb begin
-    f_in.eol      = sc_span_q.eol;
-    f_in.poly     = sc_span_q.poly;
-    f_in.material = sc_span_q.material;
-    f_in.xs       = sc_span_q.xs;
-    f_in.xe       = sc_span_q.xe;
-    f_in.value    = f_in_value;
-    f_in.step     = sc_step_q;
+    f_in.eol      = sd_span_q.eol;
+    f_in.poly     = sd_span_q.poly;
+    f_in.material = sd_span_q.material;
+    f_in.xs       = sd_span_q.xs;
+    f_in.xe       = sd_span_q.xe;
+    f_in.value    = sd_value_q;
+    f_in.step     = sd_step_q;
   end
 
   // Empty spans produce nothing and are dropped here; markers always go through.
-  assign sc_keep    = sc_span_q.eol || !sc_span_q.empty;
-  assign f_in_valid = sc_valid_q && sc_keep;
-  assign tail_en    = !sc_valid_q || !sc_keep || f_in_ready;
+  assign sd_keep    = sd_span_q.eol || !sd_span_q.empty;
+  assign f_in_valid = sd_valid_q && sd_keep;
+  assign tail_en    = !sd_valid_q || !sd_keep || f_in_ready;
 
   stream_fifo #(
     .DataBits($bits(f_in)),
@@ -398,6 +452,7 @@ module segment_interpolator #(
     logic signed [W:0]   t;  // fraction bits are rounded away
     /* verilator lint_on UNUSEDSIGNAL */
     logic signed [CW-1:0] r;
+    logic [CW-2:0]       mag;  // r without its sign
     logic [HiBits-1:0]   level;
     assign v = cur_value[Lo +: W];
     assign next_value[Lo +: W] = cur_value[Lo +: W] + cur_step[Lo +: W];
@@ -407,8 +462,10 @@ module segment_interpolator #(
       assign t = $signed({v[W-1], v});
     end
     assign r = CW'($signed(t[W:F]));
-    assign level = (r < 0) ? '0
-                 : (r > $signed(CW'({HiBits{1'b1}}))) ? {HiBits{1'b1}} : HiBits'(r);
+    // clamp(r, 0, 2^HiBits - 1) from r's bits, not through two compares after the rounding add:
+    // below 0 when the sign is set, above the maximum when a bit above the level's is set.
+    assign mag   = r[CW-2:0];
+    assign level = r[CW-1] ? '0 : (|(mag >> HiBits)) ? {HiBits{1'b1}} : HiBits'(mag);
     if (c == 1) begin : g_depth
       assign depth_d = level;
     end else begin : g_attr
@@ -419,6 +476,7 @@ module segment_interpolator #(
       localparam int unsigned SW = (NW > NB) ? NW : NB;                           // compare width
       logic signed [NW-1:0] n;
       logic signed [SW-1:0] ns;
+      logic [SW-NB:0]       ns_hi;  // all equal: ns fits NB bits
       if (F > FB) begin : g_down
         /* verilator lint_off UNUSEDSIGNAL */
         logic signed [W:0] tn;
@@ -430,11 +488,13 @@ module segment_interpolator #(
       end else begin : g_up
         assign n = $signed({v, (FB - F)'(0)});
       end
-      assign ns = SW'(n);
+      assign ns    = SW'(n);
+      assign ns_hi = ns[SW-1:NB-1];
+      // Saturate to NB bits from the bits above them, not through two compares.
       assign normal_d[(c - 2)*NB +: NB] =
-          (ns > $signed(SW'((64'd1 << (NB - 1)) - 1))) ? NB'((64'd1 << (NB - 1)) - 1)
-        : (ns < -$signed(SW'(64'd1 << (NB - 1))))      ? NB'(64'd1 << (NB - 1))
-        : NB'(ns);
+          (&ns_hi || ~|ns_hi) ? NB'(ns)
+        : ns[SW-1]            ? NB'(64'd1 << (NB - 1))
+        :                       NB'((64'd1 << (NB - 1)) - 1);
     end
   end
 
@@ -476,5 +536,5 @@ module segment_interpolator #(
     frag_normal_o, frag_poly_o, frag_material_o, frag_eol_o})
   `WATKINS_ASSERT(a_x_on_screen, frag_valid_o && !frag_eol_o |-> frag_x_o < width_i)
   `WATKINS_COVER(c_back_to_back_spans, emit_frag && from_head && frag_valid_o && !frag_eol_o)
-  `WATKINS_COVER(c_empty_dropped, sc_valid_q && !sc_keep)
+  `WATKINS_COVER(c_empty_dropped, sd_valid_q && !sd_keep)
 endmodule

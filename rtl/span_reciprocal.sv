@@ -1,8 +1,9 @@
 // span_reciprocal: 1/dx for a span width dx > 0 as mantissa recip = floor(2^(2R-1) / m) and
 // exponent p = floor(log2 dx), m = dx normalized to exactly R = RecipBits bits (low bits
 // truncated), exactly model/twins/span_reciprocal.hpp: 1/dx ~= recip * 2^-(p+R).
-// Pipelined, one input per clock: 1 stage leading-one detection and normalization, then a
-// restoring divider of R+1 stages (one quotient bit each). Latency R+2 = 26 cycles. Every stage
+// Pipelined, one input per clock: a stage of leading-one detection, a stage of normalization,
+// then a restoring divider whose first stage takes quotient bits R and R-1 (both decided by m
+// alone) and whose R-1 further stages take one bit each. Latency R+2 = 26 cycles. Every stage
 // is registered; one global stall (ready_o = ready_i || !valid_o, stall_pipe) holds the whole
 // pipe. payload_i travels alongside, so the caller keeps its span data in step with the quotient:
 // kept in a RAM (stall_pipe PayloadRam), only the quotient's own registers are per stage.
@@ -26,7 +27,7 @@ module span_reciprocal #(
   output logic                   valid_o,
   input  logic                   ready_i
 );
-  localparam int unsigned Stages = RecipBits + 2;  // normalize + R+1 quotient bits
+  localparam int unsigned Stages = RecipBits + 2;  // detect, normalize, R quotient stages (R+1 bits)
 
   logic en;
 
@@ -48,23 +49,31 @@ module span_reciprocal #(
     .en_o     (en)
   );
 
-  // Leading-one detection and normalization (dx << (NormBits-1-p) puts the leading one on top;
-  // its top R bits are the model's m whether dx is shifted left or right). A narrow dx (a
-  // configuration with few X bits) is widened to R bits first.
+  // Leading-one detection (stage 0), then normalization (stage 1): dx << (NormBits-1-p) puts
+  // the leading one on top; its top R bits are the model's m whether dx is shifted left or right.
+  // A narrow dx (a configuration with few X bits) is widened to R bits first. The detection and
+  // the shift in one clock were the block's longest path.
   localparam int unsigned NormBits = (DxBits > RecipBits) ? DxBits : RecipBits;
+  localparam int unsigned ShBits   = $clog2(NormBits);
+  // The shift NormBits - 1 - p comes out of the encoder beside p, not from a subtract after it.
   logic [ExpBits-1:0] lead;
-  // Only the top R bits of the normalized width matter (the model truncates the rest).
-  /* verilator lint_off UNUSEDSIGNAL */
-  logic [NormBits-1:0] norm;
-  /* verilator lint_on UNUSEDSIGNAL */
+  logic [ShBits-1:0]  lead_sh;
   always_comb begin
-    lead = '0;
-    for (int i = 0; i < DxBits; i++) if (dx_i[i]) lead = ExpBits'(i);
-    norm = NormBits'(dx_i) << (NormBits - 1 - 32'(lead));
+    lead    = '0;
+    lead_sh = ShBits'(NormBits - 1);
+    for (int i = 0; i < DxBits; i++) begin
+      if (dx_i[i]) begin
+        lead    = ExpBits'(i);
+        lead_sh = ShBits'(NormBits - 1 - i);
+      end
+    end
   end
 
-  // Quotient bit R-k in stage k: the numerator 2^(2R-1) has contributed 2^(R-2) to the partial
-  // remainder before bit R (smaller than m, so every higher quotient bit is zero).
+  // Quotient bit R-k+1 in stage k >= 3, bits R and R-1 in stage 2: the numerator 2^(2R-1) has
+  // contributed 2^(R-2) to the partial remainder before bit R (smaller than m, so every higher
+  // quotient bit is zero). With m in [2^(R-1), 2^R), the restoring steps for bits R and R-1 are
+  // fixed: bit R = (2^(R-1) >= m), i.e. m = 2^(R-1), leaving 0 or 2^(R-1); bit R-1 is then
+  // its complement (0 >= m never, 2^R >= m always), leaving 0 or 2^R - m.
   // Each stage's registers are their own variables in a generate block, not elements of
   // per-stage arrays: a simulator (Verilator) keeps a pending-write flag and value per written
   // array element and clears them on every evaluation; plain variables need neither. Same flops.
@@ -75,15 +84,39 @@ module span_reciprocal #(
     logic [RecipBits-1:0] m_q;    // normalized divisor in [2^(R-1), 2^R)
     logic [RecipBits-1:0] rem_q;  // partial remainder, < m
     logic [RecipBits:0]   quo_q;  // quotient bits so far
+    logic [DxBits-1:0]    dx_q;   // stage 0 only: dx
+    logic [ShBits-1:0]    sh_q;   // stage 0 only: NormBits - 1 - p
     /* verilator lint_on UNUSEDSIGNAL */
     logic [ExpBits-1:0]   p_q;
-    if (k == 0) begin : g_norm
+    if (k == 0) begin : g_lead
       always_ff @(posedge clk_i) begin
         if (en) begin
-          m_q   <= norm[NormBits-1 -: RecipBits];
-          rem_q <= RecipBits'(1) << (RecipBits - 2);
-          quo_q <= '0;
-          p_q   <= lead;
+          dx_q <= dx_i;
+          sh_q <= lead_sh;
+          p_q  <= lead;
+        end
+      end
+    end else if (k == 1) begin : g_norm
+      // Only the top R bits of the normalized width matter (the model truncates the rest).
+      /* verilator lint_off UNUSEDSIGNAL */
+      logic [NormBits-1:0] norm;
+      /* verilator lint_on UNUSEDSIGNAL */
+      assign norm = NormBits'(g_stage[0].dx_q) << g_stage[0].sh_q;
+      always_ff @(posedge clk_i) begin
+        if (en) begin
+          m_q <= norm[NormBits-1 -: RecipBits];
+          p_q <= g_stage[0].p_q;
+        end
+      end
+    end else if (k == 2) begin : g_top
+      logic top;  // quotient bit R: m = 2^(R-1)
+      assign top = ~|g_stage[1].m_q[RecipBits-2:0];
+      always_ff @(posedge clk_i) begin
+        if (en) begin
+          rem_q <= top ? '0 : RecipBits'(-g_stage[1].m_q);
+          quo_q <= {(RecipBits - 1)'(0), top, !top};
+          m_q   <= g_stage[1].m_q;
+          p_q   <= g_stage[1].p_q;
         end
       end
     end else begin : g_bit

@@ -121,7 +121,7 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
   // ---- segment_former: its input register (the edge and whether pairing it emits) and its output
   bool sf_in_valid = false, sf_in_emits = false;  // in_valid_q; the edge closes or is a marker
   bool seg_valid = false;                         // seg_valid_o
-  // ---- segment_interpolator: s0, span_reciprocal, sa/sb/sc, FIFO, stepper. Items pass every
+  // ---- segment_interpolator: s0, span_reciprocal, sa .. sd, FIFO, stepper. Items pass every
   // stage in order, so a stage's item is its position in st.items, counted where it leaves.
   bool s0_valid_q = false;
   std::uint64_t recip_valid = 0;

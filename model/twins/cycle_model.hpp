@@ -7,7 +7,7 @@
 // for the segment former, spans queue in the interpolator's FIFO, an end-of-line marker waits at
 // the ping-pong line buffer for the reader), so this is a clocked model of the pipeline's
 // control only — every valid/ready register and counter of active_edge_list, edge_incrementer,
-// segment_former, segment_interpolator (s0, span_reciprocal, sa/sb/sc, stream_fifo, stepper),
+// segment_former, segment_interpolator (s0, span_reciprocal, sa .. sd, stream_fifo, stepper),
 // [Phong: normalizer, phong_shader] and scanline_buffer — driven by the twins' own streams
 // (walk_scan_lines: each line's active edges with their retire flags, the segment former's
 // pairing, each span's pixel range). No channel arithmetic runs per cycle, so it is exact and
@@ -25,7 +25,7 @@ namespace watkins {
 namespace rtl_timing {
 constexpr int RecipStages = fmt::RecipBits + 2;  // span_reciprocal: normalize + R+1 quotient bits
 constexpr int InterpFifoDepth = 4;               // segment_interpolator's FifoDepth
-constexpr int InterpTailStages = 3;              // segment_interpolator: sa, sb, sc after the reciprocal
+constexpr int InterpTailStages = 6;              // segment_interpolator: sa, sp, sh, sb, sc, sd after the reciprocal
 constexpr int NormalizerStages = 14;             // normalizer: squares, sum, rsqrt_unit (8), partial products, sum, shift, round
 constexpr int ShaderStages = 25;                 // phong_shader: dots (3), cos(s) (3), 8 powers (2 each), 3 out
 constexpr int SmootherStages = fmt::ShadeBits + 6;  // smoother: line read, window, pairs, sums, products, dividend, a divider
