@@ -23,6 +23,9 @@
 // the scanline buffer. It needs the whole raster, so a smoothed frame is emitted in full whatever
 // sparse_i says; its last pixel leaves width + 15 clocks after the buffer's last (the flush of the
 // last line and the smoother's 14 stages). smooth_w_i = 0: the smoother is bypassed, no latency.
+// Smoothing = 0 (Config::smoothing false): a top for scenes that never smooth has no smoother
+// at all (about 7,400 ECP5 LC and 6 multipliers saved); smooth_w_i is ignored, a frame must
+// start with it 0 (asserted), and the pixel stream comes straight from the scanline buffer.
 // Equal depth (tie_submission_i for the frame): 0 keeps the fragment that reached the depth test
 // first (segments in closing order); 1 keeps the smaller polygon id, i.e. the first polygon
 // submitted when ids follow submission order, as GL's GL_LESS depth test does. Each fragment
@@ -51,6 +54,7 @@ module watkins_top #(
   parameter int unsigned MaterialIdBits = watkins_pkg::MaterialIdBits,
   parameter int unsigned EdgeIdBits     = watkins_pkg::EdgeIdBits,      // records per frame
   parameter int unsigned EdgeOrder      = 1,  // 1: straight edges (slope); 3: cubic edges (d1, d2, d3)
+  parameter int          Smoothing      = 1,  // 0: no smoother (smooth_w_i must be 0 at every frame start)
   localparam int unsigned XBits    = XIntBits + XFracBits,
   localparam int unsigned ZBits    = DepthIntBits + DepthFracBits,
   localparam int unsigned AttrBits = AttrIntBits + AttrFracBits,
@@ -99,9 +103,7 @@ module watkins_top #(
   logic [LB-1:0] width_q, height_q;
   watkins_pkg::rgb_t background_q;
   logic          sparse_q, tie_submission_q;
-  logic [watkins_pkg::SmoothWBits-1:0] smooth_w_q;
-  logic          smooth_on;
-  assign smooth_on = smooth_w_q != '0;
+  logic          smooth_on;  // this frame is smoothed (never, without a smoother)
 
   assign start = edge_valid_i && !frame_busy_q && !ael_busy;
 
@@ -122,7 +124,6 @@ module watkins_top #(
       background_q <= background_i;
       sparse_q     <= sparse_i;
       tie_submission_q <= tie_submission_i;
-      smooth_w_q   <= smooth_w_i;
     end
   end
 
@@ -360,38 +361,63 @@ module watkins_top #(
   );
 
   // ------------------------------------------------------------ smoothing (per frame)
-  watkins_pkg::rgb_t sm_rgb;
-  logic              sm_covered, sm_last, sm_valid, sm_ready;
-  logic [LB-1:0]     sm_x, sm_y;
+  if (Smoothing != 0) begin : g_smoother
+    logic [watkins_pkg::SmoothWBits-1:0] smooth_w_q;
+    always_ff @(posedge clk_i) begin
+      if (start) smooth_w_q <= smooth_w_i;
+    end
+    assign smooth_on = smooth_w_q != '0;
 
-  smoother #(
-    .MaxWidth(MaxWidth)
-  ) u_smoother (
-    .clk_i, .rst_ni,
-    .width_i  (width_q),
-    .height_i (height_q),
-    .w_i      (smooth_w_q),
-    .rgb_i    (sb_rgb),
-    .covered_i(sb_covered),
-    .last_i   (sb_last),
-    .valid_i  (sb_valid && smooth_on),
-    .ready_o  (sm_ready),
-    .rgb_o    (sm_rgb),
-    .covered_o(sm_covered),
-    .x_o      (sm_x),
-    .y_o      (sm_y),
-    .last_o   (sm_last),
-    .valid_o  (sm_valid),
-    .ready_i  (pixel_ready_i)
-  );
+    watkins_pkg::rgb_t sm_rgb;
+    logic              sm_covered, sm_last, sm_valid, sm_ready;
+    logic [LB-1:0]     sm_x, sm_y;
 
-  assign sb_ready        = smooth_on ? sm_ready : pixel_ready_i;
-  assign pixel_rgb_o     = smooth_on ? sm_rgb : sb_rgb;
-  assign pixel_covered_o = smooth_on ? sm_covered : sb_covered;
-  assign pixel_x_o       = smooth_on ? sm_x : sb_x;
-  assign pixel_y_o       = smooth_on ? sm_y : sb_y;
-  assign pixel_last_o    = smooth_on ? sm_last : sb_last;
-  assign pixel_valid_o   = smooth_on ? sm_valid : sb_valid;
+    smoother #(
+      .MaxWidth(MaxWidth)
+    ) u_smoother (
+      .clk_i, .rst_ni,
+      .width_i  (width_q),
+      .height_i (height_q),
+      .w_i      (smooth_w_q),
+      .rgb_i    (sb_rgb),
+      .covered_i(sb_covered),
+      .last_i   (sb_last),
+      .valid_i  (sb_valid && smooth_on),
+      .ready_o  (sm_ready),
+      .rgb_o    (sm_rgb),
+      .covered_o(sm_covered),
+      .x_o      (sm_x),
+      .y_o      (sm_y),
+      .last_o   (sm_last),
+      .valid_o  (sm_valid),
+      .ready_i  (pixel_ready_i)
+    );
+
+    assign sb_ready        = smooth_on ? sm_ready : pixel_ready_i;
+    assign pixel_rgb_o     = smooth_on ? sm_rgb : sb_rgb;
+    assign pixel_covered_o = smooth_on ? sm_covered : sb_covered;
+    assign pixel_x_o       = smooth_on ? sm_x : sb_x;
+    assign pixel_y_o       = smooth_on ? sm_y : sb_y;
+    assign pixel_last_o    = smooth_on ? sm_last : sb_last;
+    assign pixel_valid_o   = smooth_on ? sm_valid : sb_valid;
+
+    // The smoother is empty between frames: a frame without smoothing never sees its output.
+    `WATKINS_ASSERT(a_smooth_idle, !smooth_on |-> !sm_valid)
+    `WATKINS_COVER(c_smoothed_frame, smooth_on && pixel_valid_o && pixel_ready_i && pixel_last_o)
+  end else begin : g_no_smoother
+    assign smooth_on       = 1'b0;
+    assign sb_ready        = pixel_ready_i;
+    assign pixel_rgb_o     = sb_rgb;
+    assign pixel_covered_o = sb_covered;
+    assign pixel_x_o       = sb_x;
+    assign pixel_y_o       = sb_y;
+    assign pixel_last_o    = sb_last;
+    assign pixel_valid_o   = sb_valid;
+    // Nothing here could smooth the frame: its driver must not ask (the benches refuse first).
+    logic unused_smooth_w;
+    assign unused_smooth_w = ^smooth_w_i;
+    `WATKINS_ASSERT(a_no_smoother, start |-> smooth_w_i == '0)
+  end
 
   `WATKINS_ASSERT_HOLD(a_edge_hold, edge_valid_i, edge_ready_o, {edge_i, edge_eof_i})
   `WATKINS_ASSERT_HOLD(a_pixel_hold, pixel_valid_o, pixel_ready_i, {pixel_rgb_o, pixel_covered_o,
@@ -401,7 +427,4 @@ module watkins_top #(
   `WATKINS_ASSERT(a_overflow_sticky, overflow_o |=> overflow_o)
   `WATKINS_ASSERT(a_material_between_frames, material_we_i |-> !frame_busy_q)
   `WATKINS_COVER(c_frame_done, pixel_valid_o && pixel_ready_i && pixel_last_o)
-  // The smoother is empty between frames: a frame without smoothing never sees its output.
-  `WATKINS_ASSERT(a_smooth_idle, !smooth_on |-> !sm_valid)
-  `WATKINS_COVER(c_smoothed_frame, smooth_on && pixel_valid_o && pixel_ready_i && pixel_last_o)
 endmodule

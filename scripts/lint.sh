@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Lint and synthesis check of rtl/: Verilator --lint-only -Wall on every file (package first) and
-# on watkins_top in both shading modes (Phong = 0 and 1), then yosys 0.23: read,
+# on watkins_top in both shading modes (Phong = 0 and 1), without the smoother, and built for
+# configuration files (docs/size, tests/lint), then yosys 0.23: read,
 # hierarchy/proc/check of the Phong top (every module) at the synthesis sizes; with --synth a full synth_ice40 of the Gouraud top with small
 # buffers (MaxWidth, MaxActiveEdges) and of the two Phong blocks (normalizer, phong_shader) on their
 # own, so every module is synthesized in a few minutes; --synth-all also synthesizes the whole
@@ -25,28 +26,32 @@ trap 'rm -rf "$LOG"' EXIT
 echo "== verilator --lint-only -Wall"
 verilator --lint-only -Wall "${INC[@]}" --top-module watkins_top "${VLT[@]}" "$PKG" "${SRCS[@]}"
 verilator --lint-only -Wall "${INC[@]}" --top-module watkins_top -GPhong=1 "${VLT[@]}" "$PKG" "${SRCS[@]}"
-# A configuration file's top parameters as `watkins_gen_pkg --params` prints them (built here from
-# the sources, as scripts/gen_pkg.sh does, so lint needs no build), Phong dropped (both modes are
-# linted).
-curved_params() {
+# The top without Herman & Liu's smoother (Smoothing = 0), at the default configuration.
+verilator --lint-only -Wall "${INC[@]}" --top-module watkins_top -GSmoothing=0 "${VLT[@]}" "$PKG" "${SRCS[@]}"
+# A configuration file's top parameters as `watkins_gen_pkg --params F --shading S` prints them
+# (built here from the sources, as scripts/gen_pkg.sh does, so lint needs no build; Phong
+# included).
+top_params() {  # $1: configuration file, $2: gouraud | phong
   [ -x "$LOG/gen_pkg" ] || g++ -std=c++17 -Imodel/twins -Imodel/prepare -Imodel/scene sim/gen_pkg.cpp \
     model/twins/config.cpp model/prepare/config_file.cpp model/scene/strict_json.cpp -o "$LOG/gen_pkg"
-  "$LOG/gen_pkg" --params "$1" --shading phong | grep -v '^-GPhong=' | tr '\n' ' '
+  local p
+  p=$("$LOG/gen_pkg" --params "$1" --shading "$2" | tr '\n' ' ')
+  [ -n "$p" ] || { echo "lint.sh: no parameters from $1" >&2; exit 1; }
+  echo "$p"
 }
-# The top built for other configurations (as `watkins_gen_pkg --params` prints them): a sized
-# one (docs/size/default.*.json: depth without fraction bits, X narrower than the screen index)
-# and an odd one (X at the 1/16-pixel minimum, 3-bit depth word, normals finer than the
-# normalizer reads), each in both shading modes; and the curved-edge top (EdgeOrder 3,
-# docs/size/patches.curves.phong.json's formats; 68 active edges, more than the 64 iterations
-# Verilator unrolls by default: active_edge_list's insertion must need no unrolling).
-CONFIGS=("-GMaxActiveEdges=36 -GMaxWidth=320 -GXIntBits=9 -GXFracBits=15 -GDepthIntBits=6 -GDepthFracBits=0 -GAttrIntBits=9 -GAttrFracBits=6 -GDepthBits=5 -GPolyIdBits=7 -GMaterialIdBits=1 -GEdgeIdBits=9"
-         "-GMaxActiveEdges=5 -GMaxWidth=100 -GXIntBits=8 -GXFracBits=4 -GDepthIntBits=2 -GDepthFracBits=1 -GAttrIntBits=1 -GAttrFracBits=18 -GDepthBits=16 -GPolyIdBits=1 -GMaterialIdBits=3 -GEdgeIdBits=3"
-         "$(curved_params docs/size/patches.curves.phong.json)")
-for cfg in "${CONFIGS[@]}"; do
-  for phong in 0 1; do
-    # shellcheck disable=SC2086
-    verilator --lint-only -Wall "${INC[@]}" --top-module watkins_top -GPhong=$phong $cfg "${VLT[@]}" "$PKG" "${SRCS[@]}"
-  done
+# The top built for other configurations, read from their files (FILE@shading): the sized default
+# scene (docs/size/default.*.json: depth without fraction bits, X narrower than the screen index,
+# no smoother: Smoothing = 0), an odd one (tests/lint/odd.json: X at the 1/16-pixel minimum, 3-bit
+# depth word, normals finer than the normalizer reads) in both shading modes, and the curved-edge
+# top (EdgeOrder 3, docs/size/patches.curves.phong.json; 68 active edges, more than the 64 iterations Verilator
+# unrolls by default: active_edge_list's insertion must need no unrolling), both modes.
+LINT_TOPS=(docs/size/default.gouraud.json@gouraud docs/size/default.phong.json@phong
+           tests/lint/odd.json@gouraud tests/lint/odd.json@phong
+           docs/size/patches.curves.phong.json@gouraud docs/size/patches.curves.phong.json@phong)
+for top in "${LINT_TOPS[@]}"; do
+  cfg=$(top_params "${top%@*}" "${top#*@}")
+  # shellcheck disable=SC2086
+  verilator --lint-only -Wall "${INC[@]}" --top-module watkins_top $cfg "${VLT[@]}" "$PKG" "${SRCS[@]}"
 done
 # Every module on its own as well, so parameters the top does not use are checked too.
 for f in "${SRCS[@]}"; do
@@ -74,9 +79,9 @@ SMALL="-chparam MaxWidth $SYNTH_WIDTH -chparam MaxActiveEdges $SYNTH_EDGES"
 echo "== yosys read + hierarchy/proc/check (Phong top: every module; MaxWidth=$SYNTH_WIDTH, MaxActiveEdges=$SYNTH_EDGES)"
 # The buffers as synthesis sizes them (Verilator above lints the defaults): a quick check.
 yosys_check elab "$READ; hierarchy -check -top watkins_top $SMALL -chparam Phong 1; proc; check -assert"
-# The sized configuration above (yosys takes the same parameters through chparam).
-SIZED=$(echo "${CONFIGS[0]}" | sed -E 's/-G([A-Za-z]+)=([0-9]+)/-chparam \1 \2/g')
-yosys_check elab_sized "$READ; hierarchy -check -top watkins_top $SIZED -chparam Phong 1; proc; check -assert"
+# The sized Phong top above (yosys takes the same parameters through chparam).
+SIZED=$(top_params docs/size/default.phong.json phong | sed -E 's/-G([A-Za-z]+)=([0-9]+)/-chparam \1 \2/g')
+yosys_check elab_sized "$READ; hierarchy -check -top watkins_top $SIZED; proc; check -assert"
 # And the curved-edge top (EdgeOrder 3).
 yosys_check elab_cubic "$READ; hierarchy -check -top watkins_top $SMALL -chparam Phong 1 -chparam EdgeOrder 3; proc; check -assert"
 echo "   clean"

@@ -11,7 +11,8 @@
 // Gouraud frame, normal in a Phong frame), depth_bits and depth.frac_bits one bit at a time while
 // the criterion holds, coordinate descent until no width can drop a bit; in four orders of the
 // widths, keeping the smallest edge record (then line buffer). Integer bits are exactly
-// what SceneNeeds reports at the chosen fractions; capacities are the scene's needs.
+// what SceneNeeds reports at the chosen fractions; capacities are the scene's needs; the smoother
+// (smoothing) only when the scene's shading.smooth turns it on.
 #include "size.hpp"
 
 #include <CLI/CLI.hpp>
@@ -152,6 +153,8 @@ class Judge {
   // SceneError when the widths are not a valid configuration.
   Config sized_config(const Widths& w) const {
     Config c;
+    // The smoother only when the scene smooths (shading.smooth): a top without it is much smaller.
+    c.smoothing = quantize_smooth_weight(scene_.smooth) != 0;
     c.x.frac_bits = w[DimX];
     attr(c).frac_bits = w[DimAttr];
     c.depth_bits = w[DimDepthBits];
@@ -339,6 +342,8 @@ int run_size(const SizeArgs& a) {
               c.max_active_edges, c.max_width, c.max_materials, id_bits(c.max_materials),
               phong ? "" : ": Gouraud edges carry material 0", c.max_polygons, id_bits(c.max_polygons),
               c.max_edges, id_bits(c.max_edges));
+  std::printf("smoothing     %s\n", c.smoothing ? "true (the scene smooths: the top has the smoother)"
+                                                 : "false (the scene never smooths: the top has no smoother)");
   std::printf("edge record   %d bits (default %d)\n", c.edge_record_bits(shading), def.edge_record_bits(shading));
   Config def_rtl = def;
   def_rtl.max_width = fmt::DefaultMaxWidth;

@@ -751,11 +751,21 @@ int run_synth(const SynthArgs& a) {
         for (const RtlParameter& p : rtl_parameters(configs[ci].config, d->shading)) top.emplace_back(p.name, p.value);
         Parameters wanted = top;
         if (!d->top) {
-          const std::string key = configs[ci].label + (d->shading == ShadingMode::Phong ? " phong" : " gouraud");
+          // A configuration without the smoother (smoothing false) has none in its top: the smoother
+          // is measured as the same configuration's top with the smoother would instantiate it.
+          const bool add_smoother = std::string(d->module) == "smoother" && !configs[ci].config.smoothing;
+          const std::string key = configs[ci].label + (d->shading == ShadingMode::Phong ? " phong" : " gouraud") +
+                                  (add_smoother ? " smoothing" : "");
           if (!in_top.count(key)) {
-            const fs::path tdir = work / configs[ci].label / (d->shading == ShadingMode::Phong ? "top-phong" : "top-gouraud");
+            const fs::path tdir = work / configs[ci].label /
+                                  ((d->shading == ShadingMode::Phong ? "top-phong" : "top-gouraud") +
+                                   std::string(add_smoother ? "-smoothing" : ""));
             fs::create_directories(tdir);
-            in_top[key] = block_parameters(rtl, top, tdir, a.timeout);
+            Config with = configs[ci].config;
+            with.smoothing = true;
+            Parameters elab;
+            for (const RtlParameter& p : rtl_parameters(with, d->shading)) elab.emplace_back(p.name, p.value);
+            in_top[key] = block_parameters(rtl, add_smoother ? elab : top, tdir, a.timeout);
           }
           if (!in_top[key].count(d->module))
             throw std::runtime_error(std::string("watkins_top does not instantiate ") + d->module);

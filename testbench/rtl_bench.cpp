@@ -100,6 +100,13 @@ RtlResult run_rtl_frames(const std::vector<const PreparedScene*>& scenes, const 
                          const std::vector<const Image*>& expected) {
   const ShadingMode shading = detail::phong_frames(scenes) ? ShadingMode::Phong : ShadingMode::Gouraud;
   const Config& config = detail::frames_config(scenes);
+  // A top without the smoother ignores smooth_w_i (and asserts it 0): never drive it a smoothed frame.
+  if (!config.smoothing)
+    for (std::size_t f = 0; f < scenes.size(); ++f)
+      if (scenes[f]->smoothed())
+        throw std::invalid_argument("RTL: smoothing: frame " + std::to_string(f) + " smooths (smooth_w " +
+                                    std::to_string(scenes[f]->smooth_w) +
+                                    ") but its configuration has smoothing false (the top has no smoother)");
   const std::vector<RtlParameter> params = rtl_parameters(config, shading);
   RtlResult r;
   const detail::CcModelEntry* m = find_cc_model(params);

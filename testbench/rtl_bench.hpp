@@ -193,7 +193,8 @@ std::string rtl_unavailable(const Config& config, ShadingMode shading, const std
 int rtl_max_width(const Config& config = Config{}, ShadingMode shading = ShadingMode::Gouraud);
 
 // Runs frames back to back in one simulation, all prepared for one configuration and one shading
-// (else std::invalid_argument); with no top for them, the result's `unavailable` says so: the next frame's edges follow the previous frame's
+// (else std::invalid_argument; so is a smoothed frame for a configuration with smoothing false,
+// whose top has no smoother); with no top for them, the result's `unavailable` says so: the next frame's edges follow the previous frame's
 // end-of-frame beat at once when screen size and background are the same; otherwise the source
 // waits for the previous frame's last pixel before changing width_i/height_i/background_i.
 RtlResult run_rtl_frames(const std::vector<const PreparedScene*>& scenes, const RtlOptions& opt = {},

@@ -53,6 +53,32 @@ TEST_F(CliConfig, TooNarrowForTheSceneIsRefused) {
   EXPECT_FALSE(exists(png));
 }
 
+// A scene that smooths on a configuration without the smoother ("smoothing": false): one line
+// naming the field, exit code 1, no image; on the model and on the RTL (docs/size/default.gouraud.json
+// has no smoother: the default scene never smooths), whether or not this build has that top.
+TEST_F(CliConfig, SmoothingOnAConfigurationWithoutTheSmootherIsRefused) {
+  const std::string cfg = write("nosmooth.json", R"({"smoothing": false})");
+  const std::string sized = WATKINS_SOURCE_DIR "/docs/size/default.gouraud.json";
+  const std::string png = dir_ + "/out.png";
+  const std::string line = ": smoothing: the scene smooths (W = 102/128, shading.smooth or --smooth); the configuration "
+                           "has smoothing false (no smoother)\n";
+  for (const std::string& args :
+       {"render " WATKINS_SOURCE_DIR "/scenes/cone.json --smooth 0.8 --config " + cfg + " --out " + png,
+        "render --shading gouraud --smooth 0.8 --rtl --config " + sized + " --out " + png}) {
+    SCOPED_TRACE(args);
+    const CliRun r = run(args);
+    EXPECT_EQ(r.exit_code, 1) << r.output;
+    EXPECT_EQ(r.output.rfind("watkins: error: ", 0), 0u) << r.output;
+    EXPECT_EQ(r.output.find('\n'), r.output.size() - 1) << "one line: " << r.output;
+    EXPECT_NE(r.output.find(line), std::string::npos) << r.output;
+    EXPECT_FALSE(exists(png));
+  }
+  // Without --smooth the same configuration renders.
+  const CliRun ok = run("render " WATKINS_SOURCE_DIR "/scenes/cone.json --config " + cfg + " --out " + png);
+  EXPECT_EQ(ok.exit_code, 0) << ok.output;
+  EXPECT_TRUE(exists(png));
+}
+
 // A configuration no Verilated top was built for (WATKINS_RTL_CONFIGS) is refused in one line.
 TEST_F(CliConfig, RtlRefusesAConfigurationWithoutATop) {
   const std::string cfg = write("narrow.json", R"({"shade": {"frac_bits": 8}})");

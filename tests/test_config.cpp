@@ -109,8 +109,54 @@ TEST(Config, GeneratorPrintsTheRtlParametersOfAConfiguration) {
   EXPECT_NE(p.find("-GPolyIdBits=3\n-GMaterialIdBits=2\n"), std::string::npos) << p;
   EXPECT_NE(generate(R"({"x": {"frac_bits": 1}})", "gouraud").find("x.frac_bits: 1 is below 4"), std::string::npos);
   EXPECT_NE(generate("{}", "flat").find("--shading: expected gouraud or phong, got flat"), std::string::npos);
+  // Without the smoother: the same list and Smoothing = 0 last (the RTL's default is 1).
+  EXPECT_EQ(generate(R"({"smoothing": false})", "phong"),
+            "-GPhong=1\n-GMaxActiveEdges=64\n-GMaxWidth=1024\n-GXIntBits=26\n-GXFracBits=16\n"
+            "-GDepthIntBits=26\n-GDepthFracBits=16\n-GAttrIntBits=26\n-GAttrFracBits=16\n-GDepthBits=24\n"
+            "-GPolyIdBits=16\n-GMaterialIdBits=4\n-GEdgeIdBits=18\n-GSmoothing=0\n");
+  EXPECT_EQ(generate(R"({"smoothing": true})", "gouraud"), generate("{}", "gouraud"));
   close(fd);
   std::remove(path.c_str());
+}
+
+// "smoothing": absent or true keeps today's top (and its parameter list, so every existing file
+// builds what it built); false drops the smoother: Smoothing = 0, and a scene that smooths is
+// refused in one line naming the field, while one that does not renders exactly as before.
+TEST(Config, SmoothingFalseBuildsATopWithoutTheSmoother) {
+  auto err = [](const std::string& text) { return error_of([&] { parse_config(text, "c.json"); }); };
+  EXPECT_TRUE(parse_config("{}", "c.json").smoothing);
+  EXPECT_EQ(err(R"({"smoothing": 0})"), "c.json: smoothing: expected true or false, got 0");
+  EXPECT_EQ(err(R"({"smoothing": "no"})"), "c.json: smoothing: expected true or false, got \"no\"");
+  Config off;
+  off.smoothing = false;
+  EXPECT_TRUE(parse_config(R"({"smoothing": false})", "c.json") == off);
+  EXPECT_FALSE(off == Config{});
+  EXPECT_NE(config_json(off).find("\"smoothing\": false"), std::string::npos);
+  EXPECT_EQ(config_json(Config{}).find("smoothing"), std::string::npos);
+  EXPECT_TRUE(parse_config(config_json(off), "c.json") == off);
+  for (ShadingMode m : {ShadingMode::Gouraud, ShadingMode::Phong}) {
+    std::vector<RtlParameter> with = rtl_parameters(Config{}, m), without = rtl_parameters(off, m);
+    for (const RtlParameter& p : with) EXPECT_STRNE(p.name, "Smoothing");
+    ASSERT_EQ(without.size(), with.size() + 1);
+    EXPECT_TRUE((without.back() == RtlParameter{"Smoothing", 0}));
+    without.pop_back();
+    EXPECT_EQ(without, with);
+  }
+
+  BuildOptions opt;
+  opt.smooth = 0.8;
+  const BuiltScene smoothed = load_scene(WATKINS_SOURCE_DIR "/scenes/cone.json", opt);
+  EXPECT_EQ(error_of([&] { prepare(smoothed, off); }),
+            smoothed.name + ": smoothing: the scene smooths (W = 102/128, shading.smooth or --smooth); the "
+            "configuration has smoothing false (no smoother)");
+  EXPECT_EQ(error_of([&] { prepare(smoothed, Config{}); }), "");
+  const BuiltScene plain = load_scene(WATKINS_SOURCE_DIR "/scenes/cone.json");
+  const PreparedScene a = prepare(plain, Config{}), b = prepare(plain, off);
+  EXPECT_EQ(b.edges.size(), a.edges.size());
+  EXPECT_EQ(b.smooth_w, 0);
+  const Image ia = render(a, Config{}), ib = render(b, off);
+  EXPECT_EQ(ib.rgb, ia.rgb);
+  EXPECT_EQ(ib.covered, ia.covered);
 }
 
 // Narrower shade fraction bits F on the Gouraud scenes. X and depth keep their formats, so

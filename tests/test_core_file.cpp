@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "config.hpp"
 
@@ -40,7 +41,13 @@ TEST(CoreFile, DeclaresEveryTopParameter) {
   const size_t toplevel_params = text.find("parameters: [", targets);
   ASSERT_NE(toplevel_params, std::string::npos);
   const std::string passed = text.substr(toplevel_params, text.find(']', toplevel_params) - toplevel_params);
-  for (const watkins::RtlParameter& p : watkins::rtl_parameters(watkins::Config{}, watkins::ShadingMode::Phong)) {
+  // The default configuration's list, and the parameters listed only when not at the RTL's default.
+  watkins::Config other;
+  other.edge_order = 3;
+  other.smoothing = false;
+  std::vector<watkins::RtlParameter> params = watkins::rtl_parameters(watkins::Config{}, watkins::ShadingMode::Phong);
+  for (const watkins::RtlParameter& p : watkins::rtl_parameters(other, watkins::ShadingMode::Phong)) params.push_back(p);
+  for (const watkins::RtlParameter& p : params) {
     EXPECT_NE(text.find(std::string("\n  ") + p.name + ":\n"), std::string::npos) << p.name << " not declared";
     EXPECT_NE(passed.find(p.name), std::string::npos) << p.name << " not passed to watkins_top";
   }

@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include "cli_run.hpp"
@@ -141,6 +143,10 @@ void check_scene(const std::string& dir, const Case& k) {
     EXPECT_FALSE(v.ok()) << "width " << d << " can drop a bit and still pass";
   }
 
+  // None of these scenes smooths: its top is built without the smoother.
+  EXPECT_FALSE(cfg.smoothing);
+  EXPECT_NE(r.output.find("smoothing     false"), std::string::npos) << r.output;
+
   // `watkins render --config F` accepts the file.
   const CliRun render = run("render " + scene_path + " --shading " + k.shading + " --config " + out + " --out " +
                             dir + "/r.png");
@@ -163,6 +169,27 @@ TEST_F(Size, LooserBoundIsNoWiderOnTheCone) {
   const Config tight = load_config(dir_ + "/b1.json");
   const Config loose = load_config(dir_ + "/cone.gouraud.json");
   EXPECT_LE(loose.edge_record_bits(ShadingMode::Gouraud), tight.edge_record_bits(ShadingMode::Gouraud));
+}
+
+// A scene that smooths (shading.smooth) keeps the smoother; the same scene without it drops it.
+TEST_F(Size, SmoothingFollowsTheScene) {
+  std::ifstream in(WATKINS_SOURCE_DIR "/scenes/cone.json");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string from = R"("shading": {)";
+  const auto at = text.find(from);
+  ASSERT_NE(at, std::string::npos);
+  text.insert(at + from.size(), R"("smooth": 0.8, )");
+  const std::string scene = write("smoothed_cone.json", text);
+  for (const bool smooth : {true, false}) {
+    const std::string out = dir_ + (smooth ? "/on.json" : "/off.json");
+    const CliRun r = run("size " + (smooth ? scene : std::string(WATKINS_SOURCE_DIR "/scenes/cone.json")) + " --out " + out);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_EQ(load_config(out).smoothing, smooth);
+    EXPECT_NE(r.output.find(smooth ? "smoothing     true" : "smoothing     false"), std::string::npos) << r.output;
+    // The smoothed scene renders on its configuration, and is refused on the other one.
+    const CliRun render = run("render " + scene + " --config " + out + " --out " + dir_ + "/r.png");
+    EXPECT_EQ(render.exit_code, smooth ? 0 : 1) << render.output;
+  }
 }
 
 TEST_F(Size, DefaultOutputNameIsTheSceneStem) {
@@ -212,6 +239,7 @@ TEST_F(Size, CurvesConfigurationCoversTheShippedPatchScenes) {
                                      std::pair{cover.max_polygons, c.max_polygons},
                                      std::pair{cover.max_edges, c.max_edges}})
       EXPECT_GE(have, need);
+    EXPECT_GE(cover.smoothing, c.smoothing) << "the scene smooths: the configuration needs the smoother";
     BuildOptions opt;
     opt.shading = ShadingMode::Phong;
     opt.patches_as_curves = true;

@@ -40,6 +40,13 @@ class ConfigReader {
     if (!(std::isfinite(x) && x == std::floor(x) && std::fabs(x) < 1e9)) fail(f, "expected an integer, got " + show(*it));
     out = static_cast<int>(x);
   }
+  // A boolean at j[key] when present (kept otherwise).
+  void boolean(const json& j, const char* key, bool& out) const {
+    auto it = j.find(key);
+    if (it == j.end()) return;
+    if (!it->is_boolean()) fail(key, "expected true or false, got " + show(*it));
+    out = it->get<bool>();
+  }
   void group(const json& j, const char* key, ChannelFormat& out) const {
     auto it = j.find(key);
     if (it == j.end()) return;
@@ -58,7 +65,7 @@ Config parse_config(const std::string& text, const std::string& name) {
   const json root = parse_strict_json(text, name, /*comments=*/false);
   const ConfigReader r(name);
   r.keys(root, "", {"x", "depth", "shade", "normal", "depth_bits", "max_active_edges", "max_width",
-                    "max_materials", "max_polygons", "max_edges", "edge_order"});
+                    "max_materials", "max_polygons", "max_edges", "edge_order", "smoothing"});
   Config c;
   r.group(root, "x", c.x);
   r.group(root, "depth", c.depth);
@@ -71,6 +78,7 @@ Config parse_config(const std::string& text, const std::string& name) {
   r.integer(root, "", "max_polygons", c.max_polygons);
   r.integer(root, "", "max_edges", c.max_edges);
   r.integer(root, "", "edge_order", c.edge_order);
+  r.boolean(root, "smoothing", c.smoothing);
   if (const std::string e = c.check(); !e.empty()) throw SceneError(name + ": " + e);
   return c;
 }
@@ -106,6 +114,8 @@ std::string config_json(const Config& c) {
     << "  \"max_edges\": " << c.max_edges;
   // Written only when not the default, so an order-1 file reads as it always did.
   if (c.edge_order != 1) o << ",\n  \"edge_order\": " << c.edge_order;
+  // Likewise: absent means the smoother is there.
+  if (!c.smoothing) o << ",\n  \"smoothing\": false";
   o << "\n}\n";
   return o.str();
 }

@@ -14,7 +14,8 @@ namespace watkins {
 Config parse_config(const std::string& text, const std::string& name);
 // Reads and parses the file at `path`.
 Config load_config(const std::string& path);
-// The configuration as a file parse_config reads back (every key written).
+// The configuration as a file parse_config reads back (every key written but edge_order 1 and
+// smoothing true, the defaults, so older files and new ones read the same).
 std::string config_json(const Config& config);
 
 }  // namespace watkins

@@ -286,6 +286,10 @@ static PreparedScene prepare_unnamed(const BuiltScene& scene, const Config& cfg)
   out.shading = scene.shading;
   out.depth_tie = scene.depth_tie;
   out.smooth_w = quantize_smooth_weight(scene.smooth);
+  if (out.smoothed() && !cfg.smoothing)
+    throw SceneError("smoothing: the scene smooths (W = " + std::to_string(out.smooth_w) + "/" +
+                     std::to_string(1 << fmt::SmoothWFracBits) +
+                     ", shading.smooth or --smooth); the configuration has smoothing false (no smoother)");
   const bool phong = scene.shading == ShadingMode::Phong;
   if (phong) prepare_phong_constants(scene, cfg, out);
   const ChannelFormats formats = cfg.channels(scene.shading);

@@ -52,6 +52,8 @@ std::vector<RtlParameter> rtl_parameters(const Config& c, ShadingMode shading) {
   // The RTL's default is 1; leaving it out then keeps every order-1 list (and the tops built
   // for it, keyed by the list) exactly as before the parameter existed.
   if (c.edge_order != 1) p.push_back({"EdgeOrder", c.edge_order});
+  // Likewise Smoothing (RTL default 1): only a top without the smoother lists it.
+  if (!c.smoothing) p.push_back({"Smoothing", 0});
   return p;
 }
 

@@ -20,6 +20,9 @@
 //   edge_order       EdgeOrder: 1 steps value += slope (straight edges), 3 steps a cubic by forward
 //                    differences (Whitted's curved edges, model/prepare/curved_edges.hpp); listed
 //                    only when not 1, so an order-1 configuration's list is what it always was
+//   smoothing        Smoothing: false builds the top without Herman & Liu's smoother (a frame
+//                    that smooths is refused, prepare() and the RTL benches); listed only when
+//                    false, so a smoothing configuration's list is what it always was
 // Each twin's header lists which of its registers takes which of these.
 #pragma once
 
@@ -68,6 +71,9 @@ struct Config {
   // (d1, d2, d3: a cubic in the scan-line index, for Whitted's curved edges; the record carries
   // three channel vectors of differences instead of one).
   int edge_order = 1;
+  // Whether the hardware has Herman & Liu's 3x3 smoother after the scanline buffer (Frame::smooth_w
+  // != 0 needs it). A scene that never smooths is built without it: a top's largest optional block.
+  bool smoothing = true;
 
   // Limits a configuration must respect (validate() checks them).
   static constexpr int MaxWordBits = 62;      // the model keeps every word in 64 bits, products in 128
@@ -102,7 +108,7 @@ struct Config {
     return x == o.x && depth == o.depth && shade == o.shade && normal == o.normal &&
            depth_bits == o.depth_bits && max_active_edges == o.max_active_edges &&
            max_width == o.max_width && max_materials == o.max_materials && max_polygons == o.max_polygons &&
-           max_edges == o.max_edges && edge_order == o.edge_order;
+           max_edges == o.max_edges && edge_order == o.edge_order && smoothing == o.smoothing;
   }
   bool operator!=(const Config& o) const { return !(*this == o); }
 };

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -125,6 +126,25 @@ TEST_P(SizedConfig, ShippedSceneOnItsOwnRtl) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Sized, SizedConfig, ::testing::ValuesIn(sized_configs()), scene_test_name);
+
+// A top without the smoother (Smoothing = 0, as the sized default scene's is) ignores smooth_w_i:
+// the bench refuses a smoothed frame for it before simulating anything, naming the field (prepare()
+// refuses such a scene first; this is a frame changed after preparation). Unsmoothed frames on
+// that top are SizedConfig's above.
+TEST(CosimConfigs, SmoothedFrameRefusedWithoutTheSmoother) {
+  const Config cfg = load_config(WATKINS_SOURCE_DIR "/docs/size/default.gouraud.json");
+  ASSERT_FALSE(cfg.smoothing) << "the default scene never smooths: its sized top has no smoother";
+  PreparedScene p = prepare(load_scene(WATKINS_SOURCE_DIR "/scenes/default.json", shading_options(ShadingMode::Gouraud)), cfg);
+  ASSERT_EQ(p.smooth_w, 0);
+  p.smooth_w = 102;
+  try {
+    run_rtl(p);
+    ADD_FAILURE() << "a smoothed frame ran on a top without the smoother";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()), "RTL: smoothing: frame 0 smooths (smooth_w 102) but its configuration has "
+                                     "smoothing false (the top has no smoother)");
+  }
+}
 
 // Random scenes (tests/support/random_scene) that fit `cfg`, `count` of them from `seed` on.
 std::vector<PreparedScene> random_frames(const Config& cfg, bool phong, std::uint64_t seed, int count) {
