@@ -13,8 +13,11 @@
 // clock in two steps -- the clock it is accepted its depth word is read, the next it is tested
 // and written; the depth word (id included) written the clock before is forwarded, so
 // back-to-back fragments to the same x see each other. frag_ready_o is combinational (low only
-// for a marker waiting on the reader); a marker swaps the buffers while its line's last
-// fragment is still being written, which lands before the reader's first read. Read side: pixel
+// for a marker waiting on the reader) from registers and pixel_ready_i only: the reader's
+// decisions come from per-bank counts of written bits and flags set a step ahead, never from
+// the search (watkins_top puts a registered-ready queue in front all the same); a marker swaps
+// the buffers while its line's last fragment is still being written, which lands before the
+// reader's first read. Read side: pixel
 // from the shade RAM's output register (and registered coverage and background), latency 1,
 // the same cycles as flops.
 // Sparse mode (sparse_i, stable per frame): the reader emits only the covered pixels of a line,
@@ -122,7 +125,7 @@ module scanline_buffer #(
   logic [WAB-1:0]              fw;        // first occupied word
   logic [WIB-1:0]              lb;        // its lowest written bit
   logic [LB-1:0]               nx;
-  logic                        found, more;
+  logic                        found, more;  // the search's own (assertions compare the counts)
   /* verilator lint_off UNUSEDSIGNAL */
   logic [Words*WordBits-1:0]   clr_pad;   // the found pixel, one-hot (its padding is unused)
   /* verilator lint_on UNUSEDSIGNAL */
@@ -169,16 +172,30 @@ module scanline_buffer #(
   logic [LB-1:0]       rd_x;
   logic [AddrBits-1:0] wa, ra;
 
-  assign rd_lastline = rline_q == height_i - 1'b1;
+  // The reader's decisions come from registers, not from the search: frag_ready_o (a marker's
+  // acceptance) depends on rd_last, and a search on that path put the written bits' whole
+  // priority logic in front of every stall enable upstream (the tops' critical path in session
+  // 9). The written bits of each bank are counted as they are set and cleared (rd_cnt_q,
+  // wr_cnt_q: found = one left, more = two; a_cnt_found, a_cnt_more), and the ends of a line
+  // and of the frame are flags set a step ahead (rx_end_q: rx_q is width - 1, a_rx_end;
+  // last_line_q: rline_q is height - 1, a_last_line).
+  localparam int unsigned CB = $clog2(MaxWidth + 1);
+  logic [CB-1:0] rd_cnt_q, wr_cnt_q;
+  logic          rx_end_q, last_line_q;
+  logic          cnt_found, cnt_more;
+  assign cnt_found = rd_cnt_q != '0;
+  assign cnt_more  = rd_cnt_q > CB'(1);
+
+  assign rd_lastline = last_line_q;
   // Full mode: every x. Sparse: the next covered x; an empty line emits nothing unless it is the
   // frame's last (then the terminating beat at width-1).
-  assign rd_x      = sparse_i ? (found ? nx : width_i - 1'b1) : rx_q;
-  assign rd_emit   = !sparse_i || found || rd_lastline;
+  assign rd_x      = sparse_i ? (cnt_found ? nx : width_i - 1'b1) : rx_q;
+  assign rd_emit   = !sparse_i || cnt_found || rd_lastline;
   assign wa        = addr(wsel_q, frag_x_i);
   assign ra        = addr(!wsel_q, rd_x);
   assign rd_step   = rd_busy_q && (!rd_emit || !pixel_valid_o || pixel_ready_i);
   assign rd_load   = rd_step && rd_emit;
-  assign rd_last   = sparse_i ? !more : (rx_q == width_i - 1'b1);
+  assign rd_last   = sparse_i ? !cnt_more : rx_end_q;
   // The marker may swap in the cycle the reader takes its last pixel (it reads the old bank).
   assign eol_ok       = !rd_busy_q || (rd_step && rd_last);
   assign frag_ready_o = !frag_eol_i || eol_ok;
@@ -240,7 +257,25 @@ module scanline_buffer #(
   logic                      covered;          // the pixel the reader takes is written
   assign take = rd_busy_q && (!pixel_valid_o || pixel_ready_i);
   // Sparse: the pixel found is written (none found: the terminating beat is not).
-  assign covered   = sparse_i ? found : rd_written_q[word_of(rx_q)][bit_of(rx_q)];
+  assign covered   = sparse_i ? cnt_found : rd_written_q[word_of(rx_q)][bit_of(rx_q)];
+
+  // The counts: a fragment tested on an unwritten pixel adds one to the write bank's (the swap
+  // clock's lands in the bank it makes the read bank); the reader's take of a covered pixel
+  // removes one from the read bank's.
+  logic t_new;
+  assign t_new = t_valid_q && !t_written;
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      rd_cnt_q <= '0;
+      wr_cnt_q <= '0;
+    end else if (eol_take) begin
+      rd_cnt_q <= wr_cnt_q + CB'(t_new);
+      wr_cnt_q <= '0;
+    end else begin
+      wr_cnt_q <= wr_cnt_q + CB'(t_new);
+      rd_cnt_q <= rd_cnt_q - CB'(take && covered);
+    end
+  end
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
@@ -274,15 +309,23 @@ module scanline_buffer #(
       rd_busy_q     <= 1'b0;
       rx_q          <= '0;
       rline_q       <= '0;
+      rx_end_q      <= 1'b0;
+      last_line_q   <= height_i == LB'(1);  // rline_q 0 (then refreshed while the reader idles)
       pixel_valid_o <= 1'b0;
     end else begin
       t_valid_q  <= frag_take;
       lw_valid_q <= wins;
+      // Between lines rline_q holds: the flag follows it (and a new frame's height_i).
+      if (!rd_busy_q) last_line_q <= rline_q + 1'b1 == height_i;
       if (rd_step) begin
-        rx_q <= rd_x + 1'b1;
+        rx_q     <= rd_x + 1'b1;
+        // Full mode steps rx_q by one: the next is the line's last when this one is its last
+        // but one (sparse mode reads the counts instead).
+        rx_end_q <= rd_x + LB'(2) == width_i;
         if (rd_last) begin
-          rd_busy_q <= 1'b0;
-          rline_q   <= rd_lastline ? '0 : rline_q + 1'b1;
+          rd_busy_q   <= 1'b0;
+          rline_q     <= rd_lastline ? '0 : rline_q + 1'b1;
+          last_line_q <= rd_lastline ? height_i == LB'(1) : rline_q + LB'(2) == height_i;
         end
       end
       if (!pixel_valid_o || pixel_ready_i) pixel_valid_o <= rd_load;
@@ -290,6 +333,7 @@ module scanline_buffer #(
         wsel_q    <= !wsel_q;
         rd_busy_q <= 1'b1;
         rx_q      <= '0;
+        rx_end_q  <= width_i == LB'(1);
       end
     end
   end
@@ -314,6 +358,11 @@ module scanline_buffer #(
   `WATKINS_ASSERT_HOLD(a_out_hold, pixel_valid_o, pixel_ready_i, {pixel_rgb_o, pixel_covered_o,
     pixel_last_o, pixel_x_o, pixel_y_o})
   `WATKINS_ASSERT(a_sparse_covered, rd_load && sparse_i && !(rd_last && rd_lastline) |-> found)
+  // The registered decisions equal what they stand for.
+  `WATKINS_ASSERT(a_cnt_found, sparse_i |-> cnt_found == found)
+  `WATKINS_ASSERT(a_cnt_more, sparse_i |-> cnt_more == more)
+  `WATKINS_ASSERT(a_rx_end, rd_busy_q && !sparse_i |-> rx_end_q == (rx_q == width_i - 1'b1))
+  `WATKINS_ASSERT(a_last_line, rd_busy_q |-> last_line_q == (rline_q == height_i - 1'b1))
 `ifdef WATKINS_ASSERT_ON
   // One-bit probes: the properties sample them, not the whole written vector (Verilator 5.006
   // emits an undeclared loop variable for a sampled vector this wide).

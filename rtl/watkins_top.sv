@@ -1,12 +1,13 @@
 // watkins_top: the Watkins scan-line shading pipeline (model/twins/watkins_top.cpp) from the y-sorted
 // edge-record stream to every pixel of the frame in raster order: active_edge_list
 // (+ edge_incrementer) -> segment_former -> segment_interpolator (span setup, span_reciprocal,
-// stepper) -> [Phong = 1: normalizer -> material table -> phong_shader] -> scanline_buffer.
+// stepper) -> [Phong = 1: normalizer -> material table -> phong_shader] -> fragment queue
+// -> scanline_buffer.
 // Every stage boundary is valid/ready. Phong = 0 (Gouraud): channels 2..4 are R, G, B shades
 // and the fragment's shade goes straight to the depth test. Phong = 1: they are the vertex
 // normal; each fragment's interpolated normal is normalized and shaded by Phong's eq. (3) with
 // its polygon's material (a 2^MaterialIdBits-entry table written through material_*_i between
-// frames) and the frame's light_i / eye_i (sampled with the frame size), adding 32 cycles of
+// frames) and the frame's light_i / eye_i (sampled with the frame size), adding 39 cycles of
 // latency, not throughput: still one fragment per clock, shaded before the depth test.
 // A frame starts with the first beat of its edge stream once the previous frame's last pixel
 // has left and its stream has been read up to its EOF beat; width, height and background are
@@ -328,6 +329,31 @@ module watkins_top #(
                             material_cp_i, material_d_i, material_w_i, material_n_i};
   end
 
+  // ------------------------------------------------------------ fragment queue
+  // Two fragments with a registered ready (stream_fifo): the scanline buffer refuses only a
+  // marker waiting on its reader, and that decision (pixel_ready_i included) would otherwise
+  // reach every stall enable upstream in one clock. Two entries keep one fragment per clock;
+  // latency 1.
+  localparam int unsigned QueueBits = 1 + LB + DepB + PolyIdBits + watkins_pkg::RgbBits;
+  watkins_pkg::rgb_t     q_rgb;
+  logic [LB-1:0]         q_x;
+  logic [DepB-1:0]       q_depth;
+  logic [PolyIdBits-1:0] q_poly;
+  logic                  q_eol, q_valid, q_ready;
+
+  stream_fifo #(
+    .DataBits(QueueBits),
+    .Depth   (2)
+  ) u_frag_queue (
+    .clk_i, .rst_ni,
+    .data_i ({sh_eol, sh_x, sh_depth, sh_poly, sh_rgb}),
+    .valid_i(sh_valid),
+    .ready_o(sh_ready),
+    .data_o ({q_eol, q_x, q_depth, q_poly, q_rgb}),
+    .valid_o(q_valid),
+    .ready_i(q_ready)
+  );
+
   // ------------------------------------------------------------ visibility and pixels
   watkins_pkg::rgb_t sb_rgb;
   logic              sb_covered, sb_last, sb_valid, sb_ready;
@@ -344,13 +370,13 @@ module watkins_top #(
     .background_i   (background_q),
     .sparse_i       (sparse_q && !smooth_on),
     .tie_submission_i(tie_submission_q),
-    .frag_x_i       (sh_x),
-    .frag_depth_i   (sh_depth),
-    .frag_poly_i    (sh_poly),
-    .frag_rgb_i     (sh_rgb),
-    .frag_eol_i     (sh_eol),
-    .frag_valid_i   (sh_valid),
-    .frag_ready_o   (sh_ready),
+    .frag_x_i       (q_x),
+    .frag_depth_i   (q_depth),
+    .frag_poly_i    (q_poly),
+    .frag_rgb_i     (q_rgb),
+    .frag_eol_i     (q_eol),
+    .frag_valid_i   (q_valid),
+    .frag_ready_o   (q_ready),
     .pixel_rgb_o    (sb_rgb),
     .pixel_covered_o(sb_covered),
     .pixel_x_o      (sb_x),

@@ -138,6 +138,9 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
   bool frag_valid = false, frag_eol = false;  // frag_valid_o, frag_eol_o
   // ---- Phong: normalizer -> phong_shader
   StallPipe norm{0, 0, NormalizerStages}, shade{0, 0, ShaderStages};
+  // ---- the fragment queue (stream_fifo) in front of the scanline buffer: each entry's marker flag
+  int q_count = 0;
+  std::array<bool, FragQueueDepth> q_eol{};
   // ---- scanline_buffer reader
   bool rd_busy_q = false;
   int rd_left = 0, rline_q = 0, lines_written = 0;
@@ -151,8 +154,8 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
                            eol_sent_q, next_record, eof_taken, st_valid, st_retire, sf_in_valid,
                            sf_in_emits, seg_valid,
                            s0_valid_q, recip_valid, recip_out, tail_valid, tail_item, fifo[0], fifo[1], fifo[2], fifo[3], fifo_head, fifo_count, step_active,
-                           frag_valid, frag_eol, norm.valid, norm.eol, shade.valid, shade.eol, rd_busy_q,
-                           rline_q, lines_written);
+                           frag_valid, frag_eol, norm.valid, norm.eol, shade.valid, shade.eol, q_count,
+                           q_eol, rd_busy_q, rline_q, lines_written);
   };
   static_assert(InterpFifoDepth == 4, "key() lists the FIFO's words");
 
@@ -164,8 +167,13 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
     const bool eol_ok = !rd_busy_q || rd_last;
     const bool sh_valid = phong ? shade.out_valid() : frag_valid;
     const bool sh_eol = phong ? shade.out_eol() : frag_eol;
-    const bool sh_ready = !sh_eol || eol_ok;
-    const bool eol_fire = sh_valid && sh_eol && sh_ready;
+    // The queue's head goes to the scanline buffer, which refuses only a marker waiting on the
+    // reader; the queue's ready is registered (not full).
+    const bool q_valid = q_count > 0;
+    const bool eol_fire = q_valid && q_eol[0] && eol_ok;
+    const bool q_pop = q_valid && (!q_eol[0] || eol_ok);
+    const bool sh_ready = q_count != FragQueueDepth;
+    const bool q_push = sh_valid && sh_ready;
     bool fr_ready = sh_ready, en_shade = false, en_norm = false;
     if (phong) {
       en_shade = sh_ready || !shade.out_valid();
@@ -244,6 +252,12 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
       rd_busy_q = true;
       rd_left = st.read_steps[std::size_t(lines_written++)];
     }
+    // fragment queue
+    if (q_pop) {
+      for (int i = 0; i + 1 < FragQueueDepth; ++i) q_eol[std::size_t(i)] = q_eol[std::size_t(i) + 1];
+      --q_count;
+    }
+    if (q_push) q_eol[std::size_t(q_count++)] = sh_eol;
     // Phong pipes (each stage's valid shifts on its own enable)
     if (phong) {
       const bool nv = norm.out_valid(), ne = norm.out_eol();

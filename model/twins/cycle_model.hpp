@@ -8,10 +8,10 @@
 // the ping-pong line buffer for the reader), so this is a clocked model of the pipeline's
 // control only — every valid/ready register and counter of active_edge_list, edge_incrementer,
 // segment_former, segment_interpolator (s0, span_reciprocal, sa .. sd, stream_fifo, stepper),
-// [Phong: normalizer, phong_shader] and scanline_buffer — driven by the twins' own streams
-// (walk_scan_lines: each line's active edges with their retire flags, the segment former's
-// pairing, each span's pixel range). No channel arithmetic runs per cycle, so it is exact and
-// far faster than Verilator.
+// [Phong: normalizer, phong_shader], the fragment queue and scanline_buffer — driven by the
+// twins' own streams (walk_scan_lines: each line's active edges with their retire flags, the
+// segment former's pairing, each span's pixel range). No channel arithmetic runs per cycle, so
+// it is exact and far faster than Verilator.
 #pragma once
 
 #include "config.hpp"
@@ -30,6 +30,7 @@ constexpr int NormalizerStages = 14;             // normalizer: squares, sum, rs
 constexpr int ShaderStages = 25;                 // phong_shader: dots (3), cos(s) (3), 8 powers (2 each), 3 out
 constexpr int SmootherStages = fmt::ShadeBits + 6;  // smoother: line read, window, pairs, sums, products, dividend, a divider
                                                     // stage per quotient bit
+constexpr int FragQueueDepth = 2;                // watkins_top's u_frag_queue (registered ready)
 }  // namespace rtl_timing
 
 enum class PixelOutput { FullFrame, Sparse };  // watkins_top's sparse_i = 0 / 1

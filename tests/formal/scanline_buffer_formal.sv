@@ -84,6 +84,8 @@ module scanline_buffer_formal #(
   (* hierconn *) logic          \u_dut.rd_busy_q ;
   (* hierconn *) logic [LB-1:0] \u_dut.rx_q ;
   (* hierconn *) logic [LB-1:0] \u_dut.rline_q ;
+  (* hierconn *) logic          \u_dut.rx_end_q ;
+  (* hierconn *) logic          \u_dut.last_line_q ;
 
   always_comb begin
     assume (width_i >= LB'(1) && width_i <= LB'(MaxWidth) && height_i >= LB'(1));
@@ -103,6 +105,9 @@ module scanline_buffer_formal #(
       assert (\u_dut.rline_q == ny && ey_q < height_i && ex_q < width_i);
       if (\u_dut.rd_busy_q ) assert (\u_dut.rx_q == nx);
       else assert (nx == '0);
+      // The reader's registered decisions: the line's last pixel and the frame's last line.
+      if (\u_dut.rd_busy_q ) assert (\u_dut.rx_end_q == (\u_dut.rx_q == width_i - 1'b1));
+      assert (\u_dut.last_line_q == (\u_dut.rline_q == height_i - 1'b1));
     end
   end
 endmodule
