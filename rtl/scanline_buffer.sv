@@ -22,9 +22,9 @@
 // the same cycles as flops.
 // Sparse mode (sparse_i, stable per frame): the reader emits only the covered pixels of a line,
 // in raster order, one per clock: the lowest written bit of the read bank is the next one (those
-// below the current x are already cleared), found hierarchically (per 32-pixel word: which
-// words hold one, then the first word's lowest bit), and the line ends with its last
-// covered pixel; a line with no covered pixel costs one cycle and emits nothing. The frame's
+// below the current x are already cleared), found hierarchically from registers kept per
+// 32-pixel word (which words hold one and each one's lowest bit), and the line ends with its
+// last covered pixel; a line with no covered pixel costs one cycle and emits nothing. The frame's
 // last beat (pixel_last_o) is the last covered pixel of the last line; when the last line has no
 // covered pixel (in particular when the frame covers none), a terminating beat with
 // pixel_covered_o = 0, background rgb, at (width-1, height-1) carries pixel_last_o instead.
@@ -113,56 +113,54 @@ module scanline_buffer #(
   // needed: the reader clears each pixel it takes and takes them lowest first, and the writer
   // never touches the read bank after the swap (its last fragment lands on the swap clock, when
   // rx_q is 0), so every written bit below rx_q is already clear (a_sparse_below_clear).
-  // Hierarchical (a MaxWidth-bit priority encoder's borrow chain was the clock's limit): per
-  // 32-pixel word, in parallel, whether it holds a written bit, its lowest one (as an index and as
-  // a one-hot mask) and whether it holds two; then the first occupied word, one-hot, selects them.
-  // The one-hot mask clears the pixel taken without decoding its x (clr_pad).
-  // Only sparse mode reads the search: it sits inside `if (sparse_i)`, so full mode keeps it idle
-  // (the same gates: every output is zero when sparse_i is low) and Verilator skips it.
-  logic [Words-1:0]            occ;       // word w holds a written bit
-  logic [Words-1:0]            first;     // one-hot: the first such word
-  logic [Words-1:0]            multi;     // word w holds two or more
-  logic [WAB-1:0]              fw;        // first occupied word
-  logic [WIB-1:0]              lb;        // its lowest written bit
-  logic [LB-1:0]               nx;
-  logic                        found, more;  // the search's own (assertions compare the counts)
-  /* verilator lint_off UNUSEDSIGNAL */
-  logic [Words*WordBits-1:0]   clr_pad;   // the found pixel, one-hot (its padding is unused)
-  /* verilator lint_on UNUSEDSIGNAL */
+  // Hierarchical and from registers (a search over the written bits themselves put a 32-bit
+  // priority encoder, a word-level borrow chain and a mux between the flops and the RAM's read
+  // address: 13 ns on the ECP5, the sized Gouraud top's critical path in session 10): per
+  // 32-pixel word of each bank, whether it holds a written bit (*_occ_q) and its lowest one's
+  // index (*_low_q), kept as the bits change. The write bank's word takes a fragment's bit when
+  // that is lower; the swap hands the write bank's words to the reader; the reader's take clears
+  // its word's lowest bit, and that word's next lowest is found in its own bits with that bit
+  // cleared (each word in parallel, from its registers: a decode and a 32-bit encoder, no carry
+  // chain, no mux; the one-hot first word enables the update). a_rd_words / a_wr_words check
+  // them against the bits.
+  // Only sparse mode reads them on the read side: the read search sits inside `if (sparse_i)`
+  // (full mode keeps it idle and Verilator skips it); full mode empties the read words at each
+  // line's end, when the reader has cleared every bit.
+  logic [Words-1:0]    rd_occ_q, wr_occ_q;
+  (* mem2reg *) logic [WIB-1:0] rd_low_q [Words];
+  (* mem2reg *) logic [WIB-1:0] wr_low_q [Words];
+  logic [Words-1:0]    first;     // one-hot: the read bank's first occupied word
+  logic [WAB-1:0]      fw;        // that word
+  logic [WIB-1:0]      lb;        // its lowest written bit
+  logic [LB-1:0]       nx;
+  logic [WIB-1:0]      next_low [Words];  // each word's lowest bit once its lowest is taken
+  logic [Words-1:0]    next_occ;          // it holds another
+  logic [WordBits-1:0] low_hot  [Words];  // each word's lowest bit, one-hot
 
   always_comb begin
-    logic [WordBits-1:0] bits, wlow;  // a word and its lowest written bit, one-hot
-    logic [WIB-1:0]      wlb;         // that bit's index
-    bits    = '0;
-    wlow    = '0;
-    wlb     = '0;
-    occ     = '0;
-    multi   = '0;
-    first   = '0;
-    fw      = '0;
-    lb      = '0;
-    found   = 1'b0;
-    more    = 1'b0;
-    clr_pad = '0;
+    logic [WordBits-1:0] rest;
+    first = '0;
+    fw    = '0;
+    lb    = '0;
+    rest  = '0;
+    for (int w = 0; w < Words; w++) begin
+      next_low[w] = '0;
+      low_hot[w]  = '0;
+    end
+    next_occ = '0;
     if (sparse_i) begin
+      first = rd_occ_q & ~(rd_occ_q - 1'b1);
       for (int w = 0; w < Words; w++) begin
-        bits     = rd_written_q[w];
-        occ[w]   = |bits;
-        multi[w] = |(bits & (bits - 1'b1));
-      end
-      first = occ & ~(occ - 1'b1);
-      for (int w = 0; w < Words; w++) begin
-        bits = rd_written_q[w];
-        wlow = bits & (~bits + 1'b1);
-        wlb  = '0;
-        for (int i = WordBits - 1; i >= 0; i--) if (bits[i]) wlb = WIB'(i);
         if (first[w]) fw = WAB'(w);
-        lb |= first[w] ? wlb : '0;
-        clr_pad[w*WordBits +: WordBits] = first[w] ? wlow : '0;
+        lb |= first[w] ? rd_low_q[w] : '0;
+        // Decoded by compares, not a shift: yosys's resource sharing merged the words' shifters
+        // (only one word is first) into one behind a mux on the first word's path (22 ns on
+        // the ECP5).
+        for (int i = 0; i < WordBits; i++) low_hot[w][i] = rd_low_q[w] == WIB'(i);
+        rest        = rd_written_q[w] & ~low_hot[w];
+        next_occ[w] = |rest;
+        for (int i = WordBits - 1; i >= 0; i--) if (rest[i]) next_low[w] = WIB'(i);
       end
-      found = |occ;
-      // Another written bit after the found one: two in one word, or two words with one.
-      more  = |multi || |(occ & (occ - 1'b1));
     end
     nx = LB'({fw, lb});
   end
@@ -248,11 +246,11 @@ module scanline_buffer #(
 
   // The written bits' update. Every fragment tested sets its pixel's bit, winner or not (a loser
   // found the bit set already), so the depth test is not on this path. The pixel the reader
-  // takes is cleared: full mode x = rx_q; sparse, the search's one-hot. Both only when the
-  // reader takes a pixel: take is rd_load without the search (full mode emits every step; the
-  // search's one-hot is non-zero only when it found one, when rd_emit holds). Written as
-  // enabled single-bit updates, so a simulator touches one bit per fragment and per pixel
-  // instead of both MaxWidth-bit banks every clock.
+  // takes is cleared: full mode x = rx_q; sparse, the search's {fw, lb} when it found one. Both
+  // only when the reader takes a pixel: take is rd_load without the search (full mode emits
+  // every step; sparse mode emits when it found one, or for the terminating beat, which clears
+  // nothing). Written as enabled single-bit updates, so a simulator touches one bit per
+  // fragment and per pixel instead of both MaxWidth-bit banks every clock.
   logic                      take;
   logic                      covered;          // the pixel the reader takes is written
   assign take = rd_busy_q && (!pixel_valid_o || pixel_ready_i);
@@ -294,10 +292,48 @@ module scanline_buffer #(
     end else begin
       if (t_valid_q) wr_written_q[word_of(t_x_q)][bit_of(t_x_q)] <= 1'b1;
       if (take && sparse_i) begin
+        // By the decoded lowest bit, not an indexed write (see low_hot: shared shifters).
         for (int w = 0; w < Words; w++)
-          rd_written_q[w] <= rd_written_q[w] & ~clr_pad[w*WordBits +: WordBits];
+          if (first[w]) rd_written_q[w] <= rd_written_q[w] & ~low_hot[w];
       end
       if (take && !sparse_i) rd_written_q[word_of(rx_q)][bit_of(rx_q)] <= 1'b0;
+    end
+  end
+
+  // The words' occupancy and lowest bits (the search's registers), following the bits above.
+  logic [WAB-1:0] tw;       // the tested fragment's word and bit
+  logic [WIB-1:0] tb;
+  logic           t_lower;  // its bit becomes its word's lowest in the write bank
+  assign tw      = word_of(t_x_q);
+  assign tb      = bit_of(t_x_q);
+  assign t_lower = !wr_occ_q[tw] || tb < wr_low_q[tw];
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      rd_occ_q <= '0;
+      wr_occ_q <= '0;
+    end else if (eol_take) begin
+      rd_occ_q <= wr_occ_q;
+      wr_occ_q <= '0;
+      for (int w = 0; w < Words; w++) rd_low_q[w] <= wr_low_q[w];
+      if (t_valid_q) begin
+        rd_occ_q[tw] <= 1'b1;
+        if (t_lower) rd_low_q[tw] <= tb;
+      end
+    end else begin
+      if (t_valid_q) begin
+        wr_occ_q[tw] <= 1'b1;
+        if (t_lower) wr_low_q[tw] <= tb;
+      end
+      if (take && sparse_i) begin
+        for (int w = 0; w < Words; w++) begin
+          if (first[w]) begin
+            rd_occ_q[w] <= next_occ[w];
+            rd_low_q[w] <= next_low[w];
+          end
+        end
+      end
+      // Full mode reads the words only through the bits; at the line's end they are all clear.
+      if (rd_step && rd_last && !sparse_i) rd_occ_q <= '0;
     end
   end
 
@@ -319,9 +355,10 @@ module scanline_buffer #(
       if (!rd_busy_q) last_line_q <= rline_q + 1'b1 == height_i;
       if (rd_step) begin
         rx_q     <= rd_x + 1'b1;
-        // Full mode steps rx_q by one: the next is the line's last when this one is its last
-        // but one (sparse mode reads the counts instead).
-        rx_end_q <= rd_x + LB'(2) == width_i;
+        // Full mode steps rx_q by one (rd_x = rx_q): the next is the line's last when this one
+        // is its last but one. From rx_q, not rd_x, so the sparse search is not on its path
+        // (sparse mode reads the counts instead and ignores the flag).
+        rx_end_q <= rx_q + LB'(2) == width_i;
         if (rd_last) begin
           rd_busy_q   <= 1'b0;
           rline_q     <= rd_lastline ? '0 : rline_q + 1'b1;
@@ -357,10 +394,6 @@ module scanline_buffer #(
     frag_rgb_i, frag_eol_i})
   `WATKINS_ASSERT_HOLD(a_out_hold, pixel_valid_o, pixel_ready_i, {pixel_rgb_o, pixel_covered_o,
     pixel_last_o, pixel_x_o, pixel_y_o})
-  `WATKINS_ASSERT(a_sparse_covered, rd_load && sparse_i && !(rd_last && rd_lastline) |-> found)
-  // The registered decisions equal what they stand for.
-  `WATKINS_ASSERT(a_cnt_found, sparse_i |-> cnt_found == found)
-  `WATKINS_ASSERT(a_cnt_more, sparse_i |-> cnt_more == more)
   `WATKINS_ASSERT(a_rx_end, rd_busy_q && !sparse_i |-> rx_end_q == (rx_q == width_i - 1'b1))
   `WATKINS_ASSERT(a_last_line, rd_busy_q |-> last_line_q == (rline_q == height_i - 1'b1))
 `ifdef WATKINS_ASSERT_ON
@@ -374,6 +407,44 @@ module scanline_buffer #(
   logic rd_left /* verilator public_flat_rd */;
   logic t_written_p /* verilator public_flat_rd */;
   logic covered_p /* verilator public_flat_rd */;
+  // The search's reference, from the bits themselves (sparse mode): whether the read bank holds
+  // a written bit (found) or two (more), and whether every word's registers match its bits;
+  // the write bank's words at the swap, when the reader takes them over.
+  logic found /* verilator public_flat_rd */;
+  logic more /* verilator public_flat_rd */;
+  logic rd_words_ok /* verilator public_flat_rd */;
+  logic wr_words_ok /* verilator public_flat_rd */;
+  always_comb begin
+    logic [WordBits-1:0] bits;
+    logic [WIB-1:0]      low;
+    int                  n;
+    bits        = '0;
+    low         = '0;
+    found       = 1'b0;
+    more        = 1'b0;
+    rd_words_ok = 1'b1;
+    wr_words_ok = 1'b1;
+    n           = 0;
+    if (sparse_i) begin
+      for (int w = 0; w < Words; w++) begin
+        bits = rd_written_q[w];
+        low  = '0;
+        for (int i = WordBits - 1; i >= 0; i--) if (bits[i]) low = WIB'(i);
+        if (rd_occ_q[w] != |bits || (|bits && rd_low_q[w] != low)) rd_words_ok = 1'b0;
+        n += $countones(bits);
+      end
+      found = n != 0;
+      more  = n > 1;
+    end
+    if (eol_take) begin
+      for (int w = 0; w < Words; w++) begin
+        bits = wr_written_q[w];
+        low  = '0;
+        for (int i = WordBits - 1; i >= 0; i--) if (bits[i]) low = WIB'(i);
+        if (wr_occ_q[w] != |bits || (|bits && wr_low_q[w] != low)) wr_words_ok = 1'b0;
+      end
+    end
+  end
   localparam int unsigned PB = $clog2(Words * WordBits);  // an x in the padded words
   // Word by word, not as one MaxWidth-bit vector (a simulator rebuilt and shifted that vector on
   // every evaluation of the input-driven logic); only rd_left and ra_written read inputs. A bit
@@ -408,6 +479,12 @@ module scanline_buffer #(
   assign covered_p   = covered;
   assign t_addr_ok   = t_addr_q == addr(wsel_q, t_x_q);
 `endif
+  `WATKINS_ASSERT(a_sparse_covered, rd_load && sparse_i && !(rd_last && rd_lastline) |-> found)
+  // The registered decisions equal what they stand for.
+  `WATKINS_ASSERT(a_cnt_found, sparse_i |-> cnt_found == found)
+  `WATKINS_ASSERT(a_cnt_more, sparse_i |-> cnt_more == more)
+  `WATKINS_ASSERT(a_rd_words, sparse_i |-> rd_words_ok)
+  `WATKINS_ASSERT(a_wr_words, eol_take |-> wr_words_ok)
   // Why the sparse search needs no rx_q compare, and why covered needs no read at ra.
   `WATKINS_ASSERT(a_sparse_below_clear, rd_busy_q && sparse_i |-> !below_dirty)
   `WATKINS_ASSERT(a_covered_is_written, rd_load |-> covered_p == ra_written)
