@@ -259,7 +259,9 @@ module scanline_buffer #(
 
   // The counts: a fragment tested on an unwritten pixel adds one to the write bank's (the swap
   // clock's lands in the bank it makes the read bank); the reader's take of a covered pixel
-  // removes one from the read bank's.
+  // removes one from the read bank's in sparse mode. Full mode reads no count: its bank is empty
+  // at each line's end, and the count is cleared then (counting its takes put the 320-way
+  // written-bit mux on the count's path: 14.9 ns on the ECP5).
   logic t_new;
   assign t_new = t_valid_q && !t_written;
   always_ff @(posedge clk_i) begin
@@ -271,7 +273,8 @@ module scanline_buffer #(
       wr_cnt_q <= '0;
     end else begin
       wr_cnt_q <= wr_cnt_q + CB'(t_new);
-      rd_cnt_q <= rd_cnt_q - CB'(take && covered);
+      if (!sparse_i && rd_step && rd_last) rd_cnt_q <= '0;
+      else rd_cnt_q <= rd_cnt_q - CB'(take && sparse_i && cnt_found);
     end
   end
 
