@@ -6,7 +6,9 @@
 // registered straight from its multiplier block (the final one as partial products split at an
 // 18 x 18 multiplier), its sums, shift and round a stage later each; one global stall
 // (stall_pipe): ready_o = ready_i || !valid_o (combinational from ready_i and the output valid
-// flop only).
+// flop only). Each stage's registers load only when the beat entering it is valid (en && its
+// valid: one LUT, as en alone): a bubble's values are never read, so a simulator need not compute
+// them (most clocks of a frame carry bubbles); a valid beat's values are the same.
 // The null vector (m = 0) gives (0, 0, 0) with null_o set; any m > 0 gives a unit vector.
 `include "watkins_assert.svh"
 
@@ -52,17 +54,29 @@ module normalizer #(
     .en_o     (en)
   );
 
+  // v_q[s]: the beat in stage s is valid (s < Stages - 1: the last one is valid_o), the same flops
+  // as u_pipe's valid_q (synthesis merges the two; kept here so stall_pipe's ports stay as
+  // span_reciprocal uses them). ce[s]: stage s's registers load (the beat entering it, in stage
+  // s - 1 or on the input, is valid).
+  logic [Stages-2:0] v_q;
+  logic [Stages-1:0] ce;
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) v_q <= '0;
+    else if (en) v_q <= {v_q[Stages-3:0], valid_i};
+  end
+  assign ce = {Stages{en}} & {v_q[Stages-2:0], valid_i};
+
   // ---- stage 0: Nx^2, Ny^2, Nz^2, exact, each registered from its multiplier block -------------
   // ---- stage 1: m = Nx^2 + Ny^2 + Nz^2 (the squares and their sum in one clock: 90 MHz) ---------
   for (genvar c = 0; c < 3; c++) begin : g_sq  // a generate block, not an array: see g_n below
     logic signed [NB-1:0] n;
     logic [MBits-1:0]     q;  // <= 2^34: non-negative
     assign n = signed'(normal_i[c*NB +: NB]);
-    always_ff @(posedge clk_i) if (en) q <= unsigned'(MBits'(n) * MBits'(n));  // exact
+    always_ff @(posedge clk_i) if (ce[0]) q <= unsigned'(MBits'(n) * MBits'(n));  // exact
   end
 
   logic [MBits-1:0] m_q;
-  always_ff @(posedge clk_i) if (en) m_q <= g_sq[0].q + g_sq[1].q + g_sq[2].q;
+  always_ff @(posedge clk_i) if (ce[1]) m_q <= g_sq[0].q + g_sq[1].q + g_sq[2].q;
 
   // ---- stages 2..9: y = 1/sqrt(m') with 1/sqrt(m) = y * 2^(j-2) --------------------------------
   logic [RsqrtBits+1:0] y;
@@ -71,6 +85,7 @@ module normalizer #(
   rsqrt_unit u_rsqrt (
     .clk_i  (clk_i),
     .en_i   (en),
+    .hold_i (~v_q[8:1]),  // rsqrt stage k is stage k + 1 here: its beat comes from stage k
     .m_i    (m_q),
     .y_o    (y),
     .j_o    (j),
@@ -84,9 +99,9 @@ module normalizer #(
   for (genvar s = 0; s <= RDelay + 1; s++) begin : g_n
     logic [3*NB-1:0] q;
     if (s == 0) begin : g_in
-      always_ff @(posedge clk_i) if (en) q <= normal_i;
+      always_ff @(posedge clk_i) if (ce[0]) q <= normal_i;
     end else begin : g_shift
-      always_ff @(posedge clk_i) if (en) q <= g_n[s-1].q;
+      always_ff @(posedge clk_i) if (ce[s]) q <= g_n[s-1].q;
     end
   end
 
@@ -111,52 +126,50 @@ module normalizer #(
   localparam int TBits    = ScaledBits - MinShift;       // t, signed
   logic [4:0]                   sh10_q, sh11_q;          // MaxJ - j
   logic                         nul10_q, nul11_q, nul12_q, nul13_q;
-  logic [3*UB-1:0]              unit;
-  always_ff @(posedge clk_i) if (en) begin
+  always_ff @(posedge clk_i) if (ce[10]) begin
     sh10_q  <= 5'(MaxJ) - j;
     nul10_q <= nul;
+  end
+  always_ff @(posedge clk_i) if (ce[11]) begin
     sh11_q  <= sh10_q;
     nul11_q <= nul10_q;
-    nul12_q <= nul11_q;
   end
+  always_ff @(posedge clk_i) if (ce[12]) nul12_q <= nul11_q;
+  always_ff @(posedge clk_i) if (ce[13]) nul13_q <= nul12_q;
 
   for (genvar c = 0; c < 3; c++) begin : g_comp
     logic signed [NB-1:0]         n;
     logic signed [NB+YSplit-1:0]  pl_q;   // N * y[YSplit-1:0]
     logic signed [NB+YHi-1:0]     ph_q;   // N * y[YBits-1:YSplit]
     logic signed [ScaledBits-1:0] p_q;
-    /* verilator lint_off UNUSEDSIGNAL */
-    logic signed [ScaledBits-1:0] ps;     // p >>> MinShift: its top MinShift bits are sign copies
-    /* verilator lint_on UNUSEDSIGNAL */
     logic signed [TBits-1:0]      t_q;
-    logic signed [TBits:0]        r;
+    logic [UB-1:0]                unit_q;
     assign n = signed'(g_n[RDelay+1].q[c*NB +: NB]);
-    always_ff @(posedge clk_i) if (en) begin
+    always_ff @(posedge clk_i) if (ce[10]) begin
       pl_q <= (NB+YSplit)'(n) * signed'((NB+YSplit)'({1'b0, y[YSplit-1:0]}));
       ph_q <= (NB+YHi)'(n) * signed'((NB+YHi)'({1'b0, y[YBits-1:YSplit]}));
-      p_q  <= (ScaledBits'(ph_q) <<< YSplit) + ScaledBits'(pl_q);
-      t_q  <= signed'(ps[TBits-1:0]) >>> sh11_q;
     end
-    assign ps = p_q >>> MinShift;
+    always_ff @(posedge clk_i)
+      if (ce[11]) p_q <= (ScaledBits'(ph_q) <<< YSplit) + ScaledBits'(pl_q);
+    always_ff @(posedge clk_i) if (ce[12]) begin
+      /* verilator lint_off UNUSEDSIGNAL */
+      logic signed [ScaledBits-1:0] ps;  // p >>> MinShift: its top MinShift bits are sign copies
+      /* verilator lint_on UNUSEDSIGNAL */
+      ps = p_q >>> MinShift;
+      t_q <= signed'(ps[TBits-1:0]) >>> sh11_q;
+    end
     // Saturation when r's bits above UB - 1 are not all copies of its sign: bit tests, not
     // compares (a compare would be a second carry chain after the increment).
-    logic fits;
-    always_comb begin
-      r    = ((TBits+1)'(t_q) + (TBits+1)'(1)) >>> 1;
-      fits = r[TBits:UB-1] == '0 || r[TBits:UB-1] == '1;
-      if (fits)           unit[c*UB +: UB] = r[UB-1:0];
-      else if (!r[TBits]) unit[c*UB +: UB] = UB'((1 << (UB - 1)) - 1);
-      else                unit[c*UB +: UB] = UB'(1 << (UB - 1));
+    always_ff @(posedge clk_i) if (ce[13]) begin
+      logic signed [TBits:0] r;
+      r = ((TBits+1)'(t_q) + (TBits+1)'(1)) >>> 1;
+      if (r[TBits:UB-1] == '0 || r[TBits:UB-1] == '1) unit_q <= r[UB-1:0];
+      else if (!r[TBits])                             unit_q <= UB'((1 << (UB - 1)) - 1);
+      else                                            unit_q <= UB'(1 << (UB - 1));
     end
   end
 
-  logic [3*UB-1:0] unit_q;
-  always_ff @(posedge clk_i) if (en) begin
-    unit_q  <= unit;
-    nul13_q <= nul12_q;
-  end
-
-  assign unit_o = unit_q;
+  assign unit_o = {g_comp[2].unit_q, g_comp[1].unit_q, g_comp[0].unit_q};
   assign null_o = nul13_q;
 
   // The payload's hold is checked once, by u_pipe (stall_pipe's a_in_hold and a_out_hold: the

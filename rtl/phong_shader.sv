@@ -5,9 +5,12 @@
 // one global stall (stall_pipe): ready_o = ready_i || !valid_o (combinational from ready_i and the
 // output valid flop only). Every product is registered on its own, a product wider than one
 // 18 x 18 multiplier as partial products, the sums and roundings that use it one stage later
-// (ECP5 MULT18 and iCE40 MAC16 timing). light_i / eye_i are frame
-// constants: L.E is computed from them over four clocks, every clock, so they must be stable from
-// one clock before a frame's first pixel to its last output.
+// (ECP5 MULT18 and iCE40 MAC16 timing). Each stage's registers load only when the beat entering
+// it is valid (en && its valid: one LUT, as en alone): a bubble's values are never read, so a
+// simulator need not compute them (most clocks of a frame carry bubbles); a valid beat's values
+// are the same. light_i / eye_i are frame constants: L.E is computed from them over stages 1 to 4
+// by the valid beats (one register per stage, not per pixel: every pixel in flight has the same
+// value), so they must be stable from a frame's first pixel to its last output.
 `include "watkins_assert.svh"
 
 module phong_shader #(
@@ -46,9 +49,9 @@ module phong_shader #(
   // cos(i)(1-d) as partial products, 5 their sums, 6 cos(s) and f, 7..22 the powers (a product
   // stage and a round stage per bit of n), 23 Cp f and 255 W pow as partial products, 24 their
   // sums, 25 round and saturate.
-  localparam int CosStage = 6;                              // acc_q[0], base_q[0], f_q[0]
+  localparam int CosStage = 6;                              // acc0_q, base0_q, f0_q
   localparam int PowFirst = CosStage + 1;                   // power k: stages PowFirst + 2k, + 2k + 1
-  localparam int PowLast  = CosStage + 2 * ShininessBits;   // 22: acc_q[ShininessBits]
+  localparam int PowLast  = CosStage + 2 * ShininessBits;   // 22: g_pow[ShininessBits-1].acc_q
   localparam int Stages   = PowLast + 3;                    // 25
   // A product wider than an 18 x 18 multiplier is split at bit PSplit of an operand (17: the low
   // part fits the multiplier unsigned, with a zero sign bit), each partial product registered
@@ -73,6 +76,18 @@ module phong_shader #(
     .ready_i,
     .en_o     (en)
   );
+
+  // v_q[i]: the beat in stage i + 1 is valid (i < Stages - 1: the last one is valid_o), the same
+  // flops as u_pipe's valid_q (synthesis merges the two; kept here so stall_pipe's ports stay as
+  // span_reciprocal uses them). ce[i]: stage i + 1's registers load (the beat entering it, in
+  // stage i or on the input, is valid).
+  logic [Stages-2:0] v_q;
+  logic [Stages-1:0] ce;
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) v_q <= '0;
+    else if (en) v_q <= {v_q[Stages-3:0], valid_i};
+  end
+  assign ce = {Stages{en}} & {v_q[Stages-2:0], valid_i};
 
   // The three products of a dot product of two Q2.14 vectors, each exact (28 fraction bits).
   function automatic logic [3*DW-1:0] products3(input logic [3*UB-1:0] a, input logic [3*UB-1:0] b);
@@ -105,51 +120,79 @@ module phong_shader #(
   endfunction
   // (*) hi < 2.0: the register's range, not 1.0 (see model).
 
-  // ---- frame constant: cos(s)'s offset -L.E 2^D plus its rounding half, over four clocks -------
+  // ---- frame constant: cos(s)'s offset -L.E 2^D plus its rounding half, over stages 1 to 4 ------
+  // Loaded by the valid beats like their own registers (not every clock: a simulator would compute
+  // it every clock), but one register per stage: a pixel reads cs_k_q in stage 5, when it holds the
+  // value of the pixel itself or of one behind it, the same for the whole frame. Every frame's
+  // first pixel computes it.
   logic [3*DW-1:0]           le_p_q;
   logic signed [DW-1:0]      le_s_q;
   logic signed [DotBits+1:0] le_q;
   logic signed [CW-1:0]      cs_k_q;
   always_ff @(posedge clk_i) begin
-    le_p_q <= products3(light_i, eye_i);
-    le_s_q <= sum3(le_p_q);
-    le_q   <= round_dot(le_s_q, 1'b1);
-    cs_k_q <= CW'(1 <<< (2 * DotBits - PowBits - 1)) - (CW'(le_q) <<< DotBits);
+    if (ce[0]) le_p_q <= products3(light_i, eye_i);
+    if (ce[1]) le_s_q <= sum3(le_p_q);
+    if (ce[2]) le_q   <= round_dot(le_s_q, 1'b1);
+    if (ce[3]) cs_k_q <= CW'(1 <<< (2 * DotBits - PowBits - 1)) - (CW'(le_q) <<< DotBits);
   end
 
-  // Pixel attributes travel alongside: index s - 1 holds the pixel in stage s (u_pipe.valid_q[s-1]).
-  logic [watkins_pkg::RgbBits-1:0] cp_q [PowLast];  // vectors: yosys 0.23 and struct arrays
-  logic [MaterialBits-1:0]         w_q  [PowLast-1];  // then 255 W: w255_q
-  logic [ShininessBits-1:0]        n_q  [PowLast-1];  // last read by the final power stage
-  logic [MaterialBits-1:0]         d_q  [CosStage-1]; // last read by stage 6
-  always_ff @(posedge clk_i) if (en) begin
-    cp_q[0] <= cp_i;
-    w_q[0]  <= w_i;
-    n_q[0]  <= shininess_i;
-    d_q[0]  <= (d_i > MaterialBits'(1 << MF)) ? MaterialBits'(1 << MF) : d_i;  // d <= 1.0
-    for (int s = 1; s < PowLast; s++) cp_q[s] <= cp_q[s-1];
-    for (int s = 1; s < PowLast - 1; s++) w_q[s] <= w_q[s-1];
-    for (int s = 1; s < PowLast - 1; s++) n_q[s] <= n_q[s-1];
-    for (int s = 1; s < CosStage - 1; s++) d_q[s] <= d_q[s-1];
+  // Pixel attributes travel alongside: g_X[i].q holds the pixel in stage i + 1 (v_q[i]). The
+  // per-stage registers here and below are plain variables of generate blocks, not array
+  // elements: a simulator (Verilator) keeps a pending-write flag and value per array element
+  // written under its own enable and clears them on every evaluation. Same flops.
+  for (genvar i = 0; i < PowLast; i++) begin : g_cp  // Cp: last read by stage 23
+    logic [watkins_pkg::RgbBits-1:0] q;  // a vector: yosys 0.23 and structs
+    if (i == 0) begin : g_in
+      always_ff @(posedge clk_i) if (ce[0]) q <= cp_i;
+    end else begin : g_shift
+      always_ff @(posedge clk_i) if (ce[i]) q <= g_cp[i-1].q;
+    end
+  end
+  for (genvar i = 0; i < PowLast - 1; i++) begin : g_w  // W: then 255 W, w255_q
+    logic [MaterialBits-1:0] q;
+    if (i == 0) begin : g_in
+      always_ff @(posedge clk_i) if (ce[0]) q <= w_i;
+    end else begin : g_shift
+      always_ff @(posedge clk_i) if (ce[i]) q <= g_w[i-1].q;
+    end
+  end
+  for (genvar i = 0; i < PowLast - 1; i++) begin : g_n  // n: last read by the final power stage
+    /* verilator lint_off UNUSEDSIGNAL */
+    logic [ShininessBits-1:0] q;  // the last stage's bits below ShininessBits - 1 are read no more
+    /* verilator lint_on UNUSEDSIGNAL */
+    if (i == 0) begin : g_in
+      always_ff @(posedge clk_i) if (ce[0]) q <= shininess_i;
+    end else begin : g_shift
+      always_ff @(posedge clk_i) if (ce[i]) q <= g_n[i-1].q;
+    end
+  end
+  for (genvar i = 0; i < CosStage - 1; i++) begin : g_d  // d: last read by stage 6
+    logic [MaterialBits-1:0] q;
+    if (i == 0) begin : g_in
+      always_ff @(posedge clk_i)  // d <= 1.0
+        if (ce[0]) q <= (d_i > MaterialBits'(1 << MF)) ? MaterialBits'(1 << MF) : d_i;
+    end else begin : g_shift
+      always_ff @(posedge clk_i) if (ce[i]) q <= g_d[i-1].q;
+    end
   end
 
   // ---- stage 1: the products of N.L and N.E ------------------------------------------------------
   logic [3*DW-1:0] nl_p_q, ne_p_q;
-  always_ff @(posedge clk_i) if (en) begin
+  always_ff @(posedge clk_i) if (ce[0]) begin
     nl_p_q <= products3(normal_i, light_i);
     ne_p_q <= products3(normal_i, eye_i);
   end
 
   // ---- stage 2: N.L and N.E, exact -------------------------------------------------------------
   logic signed [DW-1:0] ndl_q, nde_q;
-  always_ff @(posedge clk_i) if (en) begin
+  always_ff @(posedge clk_i) if (ce[1]) begin
     ndl_q <= sum3(nl_p_q);
     nde_q <= sum3(ne_p_q);
   end
 
   // ---- stage 3: cos(i) >= 0 (i > 90 degrees clamped, Phong p. 313), N.E ------------------
   logic signed [DotBits+1:0] cosi_q, ne_q;
-  always_ff @(posedge clk_i) if (en) begin
+  always_ff @(posedge clk_i) if (ce[2]) begin
     cosi_q <= round_dot(ndl_q, 1'b0);
     ne_q   <= round_dot(nde_q, 1'b1);
   end
@@ -170,11 +213,11 @@ module phong_shader #(
   logic [PSplit+MaterialBits-1:0] fp0_q;                    // c0 (1-d)
   logic [CHi+MaterialBits-1:0]    fp1_q;                    // c1 (1-d)
   logic                           front_q;                  // cos(i) > 0
-  logic [MaterialBits-1:0]        omd;                      // 1 - d, 1.0 = 256
-  assign omd = MaterialBits'(1 << MF) - d_q[2];
   assign {c1, c0} = cosi_q[DotBits:0];
   assign {n1, n0} = ne_q;
-  always_ff @(posedge clk_i) if (en) begin
+  always_ff @(posedge clk_i) if (ce[3]) begin
+    logic [MaterialBits-1:0] omd;                           // 1 - d, 1.0 = 256
+    omd = MaterialBits'(1 << MF) - g_d[2].q;
     cn00_q  <= (2*PSplit)'(c0) * (2*PSplit)'(n0);
     cn01_q  <= signed'((PSplit+NHi+1)'({1'b0, c0})) * (PSplit+NHi+1)'(n1);
     cn10_q  <= (PSplit+CHi)'(c1) * (PSplit+CHi)'(n0);
@@ -188,7 +231,7 @@ module phong_shader #(
   logic signed [CW-1:0] cne_q;
   logic [FW-1:0]        fp_q;
   logic                 front5_q;
-  always_ff @(posedge clk_i) if (en) begin
+  always_ff @(posedge clk_i) if (ce[4]) begin
     cne_q    <= (CW'(cn11_q) <<< (2 * PSplit)) + CW'(cn00_q)
               + (CW'(cn01_q) <<< PSplit) + (CW'(cn10_q) <<< PSplit);
     fp_q     <= FW'(fp0_q) + (FW'(fp1_q) << PSplit);
@@ -198,30 +241,34 @@ module phong_shader #(
   // ---- stage 6: cos(s) = 2 cos(i)(N.E) - L.E in [0, 1] (P bits), f = cos(i)(1-d) + d -----------
   // The clamp to [0, 2^P] and the test cs != 0 read csr's bits (its sign, any bit above P, the
   // bits below P) instead of comparing: a compare is a second carry chain after the add.
-  logic signed [CW-1:0] csr;
-  logic [PowBits:0]     cs;
-  logic                 cs_neg, cs_over, cs_pos;
-  always_comb begin
-    csr     = ((cne_q <<< 1) + cs_k_q) >>> (2 * DotBits - PowBits);
-    cs_neg  = csr[CW-1];
-    cs_over = !cs_neg && (csr[CW-2:PowBits+1] != '0 || (csr[PowBits] && csr[PowBits-1:0] != '0));  // > 2^P
-    cs_pos  = !cs_neg && csr[CW-2:0] != '0;                                                          // > 0
-    if (cs_over)     cs = (PowBits+1)'(1 << PowBits);
-    else if (cs_neg) cs = '0;
-    else             cs = csr[PowBits:0];
-  end
-
   // Power k = 0..ShininessBits-1 (stages PowFirst + 2k and + 2k + 1): acc *= base if bit k of n,
-  // base *= base, the products registered in the first stage, rounded in the second.
-  logic [PowBits:0] acc_q  [ShininessBits+1];
-  logic [PowBits:0] base_q [ShininessBits];
-  logic [FW-1:0]    f_q    [2*ShininessBits+1];  // f_q[j]: stage CosStage + j
-  always_ff @(posedge clk_i) if (en) begin
-    // A pixel facing away (cos(i) = 0) or with cos(s) = 0 starts from acc = 0: specular 0.
-    acc_q[0]  <= (front5_q && cs_pos) ? (PowBits+1)'(1 << PowBits) : '0;  // cs_pos: cs != 0
-    base_q[0] <= cs;
-    f_q[0]    <= fp_q + (FW'(d_q[CosStage-2]) << DotBits);
-    for (int j = 1; j <= 2 * ShininessBits; j++) f_q[j] <= f_q[j-1];
+  // base *= base, the products registered in the first stage, rounded in the second; acc0_q and
+  // base0_q start them (stage 6), g_pow[k].acc_q and g_pow[k].g_base.base_q are their results.
+  logic [PowBits:0] acc0_q, base0_q;
+  logic [FW-1:0]    f0_q;  // f, then g_f[j].q: stage CosStage + j
+  always_ff @(posedge clk_i) begin
+    if (ce[CosStage-1]) begin
+      logic signed [CW-1:0] csr;
+      logic                 cs_neg, cs_over, cs_pos;
+      csr     = ((cne_q <<< 1) + cs_k_q) >>> (2 * DotBits - PowBits);
+      cs_neg  = csr[CW-1];
+      cs_over = !cs_neg && (csr[CW-2:PowBits+1] != '0 || (csr[PowBits] && csr[PowBits-1:0] != '0));  // > 2^P
+      cs_pos  = !cs_neg && csr[CW-2:0] != '0;                                                          // > 0
+      if (cs_over)     base0_q <= (PowBits+1)'(1 << PowBits);
+      else if (cs_neg) base0_q <= '0;
+      else             base0_q <= csr[PowBits:0];
+      // A pixel facing away (cos(i) = 0) or with cos(s) = 0 starts from acc = 0: specular 0.
+      acc0_q <= (front5_q && cs_pos) ? (PowBits+1)'(1 << PowBits) : '0;  // cs_pos: cs != 0
+      f0_q   <= fp_q + (FW'(g_d[CosStage-2].q) << DotBits);
+    end
+  end
+  for (genvar j = 1; j <= 2 * ShininessBits; j++) begin : g_f
+    logic [FW-1:0] q;
+    if (j == 1) begin : g_in
+      always_ff @(posedge clk_i) if (ce[CosStage]) q <= f0_q;
+    end else begin : g_shift
+      always_ff @(posedge clk_i) if (ce[CosStage-1+j]) q <= g_f[j-1].q;
+    end
   end
 
   // The products split at bit PSplit into four partial products, each registered straight from
@@ -230,42 +277,64 @@ module phong_shader #(
   localparam int PB2    = 2 * PowBits + 3;
   localparam int PHi    = PowBits + 1 - PSplit;   // 4
   for (genvar k = 0; k < ShininessBits; k++) begin : g_pow
-    /* verilator lint_off UNUSEDSIGNAL */
-    logic [PB2-1:0] pa, pb;  // products <= 2^2P plus half: only [2P:P] is kept
-    /* verilator lint_on UNUSEDSIGNAL */
-    logic [2*PSplit-1:0]   a00_q, b00_q;          // low x low
-    logic [PSplit+PHi-1:0] a01_q, a10_q, b01_q;   // low x high (b10 = b01: a square)
-    logic [2*PHi-1:0]      a11_q, b11_q;          // high x high
-    logic [PowBits:0]      acc_k_q;               // acc_q[k], for a bit of n that is clear
+    logic [2*PSplit-1:0]   a00_q;                 // low x low
+    logic [PSplit+PHi-1:0] a01_q, a10_q;          // low x high
+    logic [2*PHi-1:0]      a11_q;                 // high x high
+    logic [PowBits:0]      acc_k_q;               // acc in, for a bit of n that is clear
+    logic [PowBits:0]      acc_q;                 // acc out
+    logic [PowBits:0]      acc_in, base_in;
     logic [PSplit-1:0]     x0, y0;
     logic [PHi-1:0]        x1, y1;
-    assign {x1, x0} = acc_q[k];
-    assign {y1, y0} = base_q[k];
-    always_ff @(posedge clk_i) if (en) begin
+    if (k == 0) begin : g_first
+      assign acc_in  = acc0_q;
+      assign base_in = base0_q;
+    end else begin : g_next
+      assign acc_in  = g_pow[k-1].acc_q;
+      assign base_in = g_pow[k-1].g_base.base_q;
+    end
+    assign {x1, x0} = acc_in;
+    assign {y1, y0} = base_in;
+    always_ff @(posedge clk_i) if (ce[PowFirst-1+2*k]) begin
       a00_q   <= (2*PSplit)'(x0) * (2*PSplit)'(y0);
       a01_q   <= (PSplit+PHi)'(x0) * (PSplit+PHi)'(y1);
       a10_q   <= (PSplit+PHi)'(x1) * (PSplit+PHi)'(y0);
       a11_q   <= (2*PHi)'(x1) * (2*PHi)'(y1);
-      b00_q   <= (2*PSplit)'(y0) * (2*PSplit)'(y0);
-      b01_q   <= (PSplit+PHi)'(y0) * (PSplit+PHi)'(y1);
-      b11_q   <= (2*PHi)'(y1) * (2*PHi)'(y1);
-      acc_k_q <= acc_q[k];
+      acc_k_q <= acc_in;
     end
-    assign pa = PB2'({a11_q, a00_q}) + (PB2'(a01_q) << PSplit) + (PB2'(a10_q) << PSplit)
-              + PB2'(1 << (PowBits - 1));
-    assign pb = PB2'({b11_q, b00_q}) + (PB2'(b01_q) << (PSplit + 1)) + PB2'(1 << (PowBits - 1));
-    always_ff @(posedge clk_i) if (en) begin
-      acc_q[k+1] <= n_q[PowFirst + 2 * k - 1][k] ? pa[2*PowBits:PowBits] : acc_k_q;
+    // The round stage: the sums only for the products it keeps (acc's for a set bit of n).
+    always_ff @(posedge clk_i) if (ce[PowFirst+2*k]) begin
+      /* verilator lint_off UNUSEDSIGNAL */
+      logic [PB2-1:0] pa;  // product <= 2^2P plus half: only [2P:P] is kept
+      /* verilator lint_on UNUSEDSIGNAL */
+      pa = PB2'({a11_q, a00_q}) + (PB2'(a01_q) << PSplit) + (PB2'(a10_q) << PSplit)
+         + PB2'(1 << (PowBits - 1));
+      acc_q <= g_n[PowFirst + 2 * k - 1].q[k] ? pa[2*PowBits:PowBits] : acc_k_q;
     end
+    // base^2, for the next power stage only (the last one has none).
     if (k + 1 < ShininessBits) begin : g_base
-      always_ff @(posedge clk_i) if (en) base_q[k+1] <= pb[2*PowBits:PowBits];
+      logic [2*PSplit-1:0]   b00_q;               // low x low
+      logic [PSplit+PHi-1:0] b01_q;               // low x high (b10 = b01: a square)
+      logic [2*PHi-1:0]      b11_q;               // high x high
+      logic [PowBits:0]      base_q;              // base out
+      always_ff @(posedge clk_i) if (ce[PowFirst-1+2*k]) begin
+        b00_q <= (2*PSplit)'(y0) * (2*PSplit)'(y0);
+        b01_q <= (PSplit+PHi)'(y0) * (PSplit+PHi)'(y1);
+        b11_q <= (2*PHi)'(y1) * (2*PHi)'(y1);
+      end
+      always_ff @(posedge clk_i) if (ce[PowFirst+2*k]) begin
+        /* verilator lint_off UNUSEDSIGNAL */
+        logic [PB2-1:0] pb;  // product <= 2^2P plus half: only [2P:P] is kept
+        /* verilator lint_on UNUSEDSIGNAL */
+        pb = PB2'({b11_q, b00_q}) + (PB2'(b01_q) << (PSplit + 1)) + PB2'(1 << (PowBits - 1));
+        base_q <= pb[2*PowBits:PowBits];
+      end
     end
   end
 
   // ---- stage 22 (the last power stage): 255 W, so W pow needs no multiply by 255 after it ----
   logic [MaterialBits+7:0] w255_q;  // 255 W < 2^17: one multiplier block with a PSplit-bit operand
-  always_ff @(posedge clk_i) if (en)
-    w255_q <= ((MaterialBits+8)'(w_q[PowLast-2]) << 8) - (MaterialBits+8)'(w_q[PowLast-2]);
+  always_ff @(posedge clk_i) if (ce[PowLast-1])
+    w255_q <= ((MaterialBits+8)'(g_w[PowLast-2].q) << 8) - (MaterialBits+8)'(g_w[PowLast-2].q);
 
   // ---- stage 23: Cp f per channel and 255 W cos(s)^n, as partial products ----------------------
   // Channel c is byte c of rgb_t (B, G, R for c = 0, 1, 2) in Cp and in the shade alike: the
@@ -273,18 +342,20 @@ module phong_shader #(
   // f (FW bits) and pow (P + 1 bits) are split at PSplit: two multiplier blocks each.
   localparam int FHi = FW - PSplit;            // 16
   localparam int AHi = PowBits + 1 - PSplit;   // 4
-  logic [PSplit+7:0]                df0_q [3];  // Cp f0
-  logic [FHi+7:0]                   df1_q [3];  // Cp f1
+  localparam int DF0 = PSplit + 8;
+  localparam int DF1 = FHi + 8;
+  logic [3*DF0-1:0]                 df0_q;      // Cp f0, channel c at c * DF0 (vectors: see g_cp)
+  logic [3*DF1-1:0]                 df1_q;      // Cp f1
   logic [MaterialBits+8+PSplit-1:0] wa0_q;      // 255 W pow0
   logic [MaterialBits+8+AHi-1:0]    wa1_q;      // 255 W pow1
   logic [FW-1:0]                    fl;
   logic [PowBits:0]                 al;
-  assign fl = f_q[2*ShininessBits];
-  assign al = acc_q[ShininessBits];
-  always_ff @(posedge clk_i) if (en) begin
+  assign fl = g_f[2*ShininessBits].q;
+  assign al = g_pow[ShininessBits-1].acc_q;
+  always_ff @(posedge clk_i) if (ce[PowLast]) begin
     for (int c = 0; c < 3; c++) begin
-      df0_q[c] <= (PSplit+8)'(cp_q[PowLast-1][c*8 +: 8]) * (PSplit+8)'(fl[PSplit-1:0]);
-      df1_q[c] <= (FHi+8)'(cp_q[PowLast-1][c*8 +: 8]) * (FHi+8)'(fl[FW-1:PSplit]);
+      df0_q[c*DF0 +: DF0] <= DF0'(g_cp[PowLast-1].q[c*8 +: 8]) * DF0'(fl[PSplit-1:0]);
+      df1_q[c*DF1 +: DF1] <= DF1'(g_cp[PowLast-1].q[c*8 +: 8]) * DF1'(fl[FW-1:PSplit]);
     end
     wa0_q <= (MaterialBits+8+PSplit)'(w255_q) * (MaterialBits+8+PSplit)'(al[PSplit-1:0]);
     wa1_q <= (MaterialBits+8+AHi)'(w255_q) * (MaterialBits+8+AHi)'(al[PowBits:PSplit]);
@@ -294,19 +365,21 @@ module phong_shader #(
   // The final rounding's half, 2^(D+MF-1), is set in Cp f's sum as a bit above Cp f0 (< 2^(PSplit+8)
   // <= 2^(D+MF-1): an OR, no carry), so stage 25 adds two operands, not three.
   localparam logic [LW-1:0] Half = LW'(1) << (DotBits + MF - 1);
-  logic [LW-1:0] diff2_q [3];  // Cp f plus the rounding half
-  logic [LW-1:0] spec_q;
-  always_ff @(posedge clk_i) if (en) begin
-    for (int c = 0; c < 3; c++) diff2_q[c] <= (LW'(df0_q[c]) | Half) + (LW'(df1_q[c]) << PSplit);
+  logic [3*LW-1:0] diff2_q;  // Cp f plus the rounding half, channel c at c * LW
+  logic [LW-1:0]   spec_q;
+  always_ff @(posedge clk_i) if (ce[PowLast+1]) begin
+    for (int c = 0; c < 3; c++)
+      diff2_q[c*LW +: LW] <= (LW'(df0_q[c*DF0 +: DF0]) | Half)
+                           + (LW'(df1_q[c*DF1 +: DF1]) << PSplit);
     spec_q <= (LW'(wa0_q) + (LW'(wa1_q) << PSplit)) << (DotBits - PowBits);
   end
 
   // ---- stage 25: level = saturate(round(Cp f + 255 W pow)) --------------------------------------
   logic [watkins_pkg::RgbBits-1:0] rgb_q;
-  always_ff @(posedge clk_i) if (en) begin
+  always_ff @(posedge clk_i) if (ce[PowLast+2]) begin
     for (int c = 0; c < 3; c++) begin
       logic [LW-1:0] lvl;
-      lvl = (diff2_q[c] + spec_q) >> (DotBits + MF);  // diff2_q holds the rounding half
+      lvl = (diff2_q[c*LW +: LW] + spec_q) >> (DotBits + MF);  // diff2_q holds the rounding half
       rgb_q[c*8 +: 8] <= (lvl > LW'(255)) ? 8'd255 : lvl[7:0];
     end
   end
