@@ -35,10 +35,15 @@ module normalizer #(
   localparam int Stages     = 2 + RDelay + 4;           // squares, sum, rsqrt, partials, sum, shift, round
   localparam int ScaledBits = NB + RsqrtBits + 3;       // N * y, signed, plus a rounding guard bit
 
-  // Valid, payload and the stall of every stage; the registers below advance on its en.
+  // Valid, payload and the stall of every stage. The payload (the fragment's x, depth, ...) is
+  // written once into a RAM, not shifted through every stage. ce[s]: stage s's registers load
+  // (the stall's en and the beat entering stage s is valid); v_q[s]: the beat in stage s is
+  // valid (the rsqrt unit's holds read stages 1..8).
   logic en;
-  // The payload (the fragment's x, depth, ...) is written once into a RAM, not shifted through
-  // every stage.
+  logic [Stages-1:0] ce;
+  /* verilator lint_off UNUSEDSIGNAL */
+  logic [Stages-1:0] v_q;
+  /* verilator lint_on UNUSEDSIGNAL */
   stall_pipe #(
     .Stages     (Stages),
     .PayloadBits(PayloadBits),
@@ -51,20 +56,11 @@ module normalizer #(
     .payload_o,
     .valid_o,
     .ready_i,
-    .en_o     (en)
+    .en_o     (en),
+    .valid_q_o(v_q),
+    .ce_o     (ce)
   );
 
-  // v_q[s]: the beat in stage s is valid (s < Stages - 1: the last one is valid_o), the same flops
-  // as u_pipe's valid_q (synthesis merges the two; kept here so stall_pipe's ports stay as
-  // span_reciprocal uses them). ce[s]: stage s's registers load (the beat entering it, in stage
-  // s - 1 or on the input, is valid).
-  logic [Stages-2:0] v_q;
-  logic [Stages-1:0] ce;
-  always_ff @(posedge clk_i) begin
-    if (!rst_ni) v_q <= '0;
-    else if (en) v_q <= {v_q[Stages-3:0], valid_i};
-  end
-  assign ce = {Stages{en}} & {v_q[Stages-2:0], valid_i};
 
   // ---- stage 0: Nx^2, Ny^2, Nz^2, exact, each registered from its multiplier block -------------
   // ---- stage 1: m = Nx^2 + Ny^2 + Nz^2 (the squares and their sum in one clock: 90 MHz) ---------

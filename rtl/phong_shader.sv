@@ -58,10 +58,14 @@ module phong_shader #(
   // straight from its block; x y = x1 y 2^PSplit + x0 y (and the same for both operands split).
   localparam int PSplit   = 17;
 
-  // Valid, payload and the stall of every stage; the registers below advance on its en.
-  logic en;
-  // The payload (the fragment's x, depth, ...) is written once into a RAM, not shifted through
-  // every stage.
+  // Valid, payload and the stall of every stage. The payload (the fragment's x, depth, ...) is
+  // written once into a RAM, not shifted through every stage. ce[i]: stage i + 1's registers
+  // load (the stall's en and the beat entering it, in stage i or on the input, is valid).
+  logic [Stages-1:0] ce;
+  /* verilator lint_off UNUSEDSIGNAL */
+  logic              en;        // inside ce
+  logic [Stages-1:0] v_unused;
+  /* verilator lint_on UNUSEDSIGNAL */
   stall_pipe #(
     .Stages     (Stages),
     .PayloadBits(PayloadBits),
@@ -74,20 +78,11 @@ module phong_shader #(
     .payload_o,
     .valid_o,
     .ready_i,
-    .en_o     (en)
+    .en_o     (en),
+    .valid_q_o(v_unused),
+    .ce_o     (ce)
   );
 
-  // v_q[i]: the beat in stage i + 1 is valid (i < Stages - 1: the last one is valid_o), the same
-  // flops as u_pipe's valid_q (synthesis merges the two; kept here so stall_pipe's ports stay as
-  // span_reciprocal uses them). ce[i]: stage i + 1's registers load (the beat entering it, in
-  // stage i or on the input, is valid).
-  logic [Stages-2:0] v_q;
-  logic [Stages-1:0] ce;
-  always_ff @(posedge clk_i) begin
-    if (!rst_ni) v_q <= '0;
-    else if (en) v_q <= {v_q[Stages-3:0], valid_i};
-  end
-  assign ce = {Stages{en}} & {v_q[Stages-2:0], valid_i};
 
   // The three products of a dot product of two Q2.14 vectors, each exact (28 fraction bits).
   function automatic logic [3*DW-1:0] products3(input logic [3*UB-1:0] a, input logic [3*UB-1:0] b);
@@ -136,7 +131,7 @@ module phong_shader #(
     if (ce[3]) cs_k_q <= CW'(1 <<< (2 * DotBits - PowBits - 1)) - (CW'(le_q) <<< DotBits);
   end
 
-  // Pixel attributes travel alongside: g_X[i].q holds the pixel in stage i + 1 (v_q[i]). The
+  // Pixel attributes travel alongside: g_X[i].q holds the pixel in stage i + 1. The
   // per-stage registers here and below are plain variables of generate blocks, not array
   // elements: a simulator (Verilator) keeps a pending-write flag and value per array element
   // written under its own enable and clears them on every evaluation. Same flops.

@@ -34,6 +34,10 @@ module span_reciprocal #(
   // Valid, payload and the stall of every stage; the registers below advance on its en.
   // The payload (a whole span's setup in segment_interpolator) is written once, not shifted
   // through 26 stages of registers.
+  // Every stage advances on en: the per-stage valids and enables are not used here.
+  /* verilator lint_off UNUSEDSIGNAL */
+  logic [Stages-1:0] v_unused, ce_unused;
+  /* verilator lint_on UNUSEDSIGNAL */
   stall_pipe #(
     .Stages     (Stages),
     .PayloadBits(PayloadBits),
@@ -46,7 +50,9 @@ module span_reciprocal #(
     .payload_o,
     .valid_o,
     .ready_i,
-    .en_o     (en)
+    .en_o     (en),
+    .valid_q_o(v_unused),
+    .ce_o     (ce_unused)
   );
 
   // Leading-one detection (stage 0), then normalization (stage 1): dx << (NormBits-1-p) puts

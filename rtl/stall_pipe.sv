@@ -24,12 +24,19 @@ module stall_pipe #(
   output logic [PayloadBits-1:0] payload_o,    // payload_i of the beat leaving the last stage
   output logic                   valid_o,
   input  logic                   ready_i,
-  output logic                   en_o          // every stage advances this clock (the parent's too)
+  output logic                   en_o,         // every stage advances this clock (the parent's too)
+  output logic [Stages-1:0]      valid_q_o,    // the beat in stage s (s + 1 clocks in) is valid
+  output logic [Stages-1:0]      ce_o          // stage s loads: en_o and the beat entering it is valid
 );
   logic [Stages-1:0]      valid_q;
 
   assign en_o    = ready_i || !valid_q[Stages-1];
   assign ready_o = en_o;
+  // Per-stage clock enables for a parent that loads a stage's datapath registers only for a
+  // valid beat (a bubble leaves them as they were: no value a valid beat reads changes, and a
+  // simulator skips the stage). One LUT from en_o's own inputs.
+  assign valid_q_o = valid_q;
+  assign ce_o      = {Stages{en_o}} & ((valid_q << 1) | Stages'(valid_i));
 
   // A shift rather than {valid_q[Stages-2:0], valid_i}, which Stages = 1 would not allow.
   always_ff @(posedge clk_i) begin

@@ -21,7 +21,19 @@ module stall_pipe_formal #(
 
   logic                   ready_o, valid_o, en_o;
   logic [PayloadBits-1:0] payload_o;
+  logic [Stages-1:0]      valid_q_o, ce_o;
   stall_pipe #(.Stages(Stages), .PayloadBits(PayloadBits), .PayloadRam(PayloadRam)) u_dut (.*);
+
+  // The per-stage enables: a stage loads exactly when the pipe advances and the beat entering it
+  // (on the input, or in the stage before) is valid; the last stage's valid is valid_o.
+  for (genvar s = 0; s < Stages; s++) begin : g_ce
+    if (s == 0) begin : g_first
+      always_comb if (rst_ni) assert (ce_o[0] == (en_o && valid_i));
+    end else begin : g_next
+      always_comb if (rst_ni) assert (ce_o[s] == (en_o && valid_q_o[s-1]));
+    end
+  end
+  always_comb if (rst_ni) assert (valid_q_o[Stages-1] == valid_o);
 
   `FORMAL_PAST
   `FORMAL_COUNT(n_in_q, PayloadBits, valid_i, ready_o)
