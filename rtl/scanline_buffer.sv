@@ -106,6 +106,11 @@ module scanline_buffer #(
   function automatic logic [WIB-1:0] bit_of(logic [LB-1:0] x);
     bit_of = x[WIB-1:0];
   endfunction
+  // A word's lowest written bit (0 when it holds none).
+  function automatic logic [WIB-1:0] lowest_bit(logic [WordBits-1:0] bits);
+    lowest_bit = '0;
+    for (int i = WordBits - 1; i >= 0; i--) if (bits[i]) lowest_bit = WIB'(i);
+  endfunction
   /* verilator lint_on UNUSEDSIGNAL */
 
   // ------------------------------------------------------------ read-side search (sparse)
@@ -159,7 +164,7 @@ module scanline_buffer #(
         for (int i = 0; i < WordBits; i++) low_hot[w][i] = rd_low_q[w] == WIB'(i);
         rest        = rd_written_q[w] & ~low_hot[w];
         next_occ[w] = |rest;
-        for (int i = WordBits - 1; i >= 0; i--) if (rest[i]) next_low[w] = WIB'(i);
+        next_low[w] = lowest_bit(rest);
       end
     end
     nx = LB'({fw, lb});
@@ -417,12 +422,12 @@ module scanline_buffer #(
   logic more /* verilator public_flat_rd */;
   logic rd_words_ok /* verilator public_flat_rd */;
   logic wr_words_ok /* verilator public_flat_rd */;
+  // A word's registers against its bits.
+  function automatic logic word_ok(logic occ, logic [WIB-1:0] low, logic [WordBits-1:0] bits);
+    word_ok = occ == |bits && (!(|bits) || low == lowest_bit(bits));
+  endfunction
   always_comb begin
-    logic [WordBits-1:0] bits;
-    logic [WIB-1:0]      low;
-    int                  n;
-    bits        = '0;
-    low         = '0;
+    int n;
     found       = 1'b0;
     more        = 1'b0;
     rd_words_ok = 1'b1;
@@ -430,22 +435,15 @@ module scanline_buffer #(
     n           = 0;
     if (sparse_i) begin
       for (int w = 0; w < Words; w++) begin
-        bits = rd_written_q[w];
-        low  = '0;
-        for (int i = WordBits - 1; i >= 0; i--) if (bits[i]) low = WIB'(i);
-        if (rd_occ_q[w] != |bits || (|bits && rd_low_q[w] != low)) rd_words_ok = 1'b0;
-        n += $countones(bits);
+        if (!word_ok(rd_occ_q[w], rd_low_q[w], rd_written_q[w])) rd_words_ok = 1'b0;
+        n += $countones(rd_written_q[w]);
       end
       found = n != 0;
       more  = n > 1;
     end
     if (eol_take) begin
-      for (int w = 0; w < Words; w++) begin
-        bits = wr_written_q[w];
-        low  = '0;
-        for (int i = WordBits - 1; i >= 0; i--) if (bits[i]) low = WIB'(i);
-        if (wr_occ_q[w] != |bits || (|bits && wr_low_q[w] != low)) wr_words_ok = 1'b0;
-      end
+      for (int w = 0; w < Words; w++)
+        if (!word_ok(wr_occ_q[w], wr_low_q[w], wr_written_q[w])) wr_words_ok = 1'b0;
     end
   end
   localparam int unsigned PB = $clog2(Words * WordBits);  // an x in the padded words
