@@ -37,12 +37,11 @@ module normalizer #(
 
   // Valid, payload and the stall of every stage. The payload (the fragment's x, depth, ...) is
   // written once into a RAM, not shifted through every stage. ce[s]: stage s's registers load
-  // (the stall's en and the beat entering stage s is valid); v_q[s]: the beat in stage s is
-  // valid (the rsqrt unit's holds read stages 1..8).
-  logic en;
+  // (the stall's en and the beat entering stage s is valid); the rsqrt unit's stages take theirs.
   logic [Stages-1:0] ce;
   /* verilator lint_off UNUSEDSIGNAL */
-  logic [Stages-1:0] v_q;
+  logic              en;     // inside ce
+  logic [Stages-1:0] v_unused;
   /* verilator lint_on UNUSEDSIGNAL */
   stall_pipe #(
     .Stages     (Stages),
@@ -57,7 +56,7 @@ module normalizer #(
     .valid_o,
     .ready_i,
     .en_o     (en),
-    .valid_q_o(v_q),
+    .valid_q_o(v_unused),
     .ce_o     (ce)
   );
 
@@ -80,8 +79,7 @@ module normalizer #(
   logic         nul;
   rsqrt_unit u_rsqrt (
     .clk_i  (clk_i),
-    .en_i   (en),
-    .hold_i (~v_q[8:1]),  // rsqrt stage k is stage k + 1 here: its beat comes from stage k
+    .ce_i   (ce[9:2]),  // rsqrt stage k is stage k + 1 here
     .m_i    (m_q),
     .y_o    (y),
     .j_o    (j),

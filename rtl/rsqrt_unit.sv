@@ -4,18 +4,15 @@
 // RsqrtUnit::rsqrt_mant (model/twins/rsqrt_unit.hpp). Latency 8, every stage registered; the
 // seed ROM's output is registered once more before y0^2; the two Newton-Raphson products, wider
 // than an 18 x 18 multiplier, are registered as partial products and summed and rounded a stage
-// later; no handshake: en_i advances every stage at once (the parent owns valid/ready and the
-// stall). hold_i[k] keeps stage k's registers while the rest advance: the parent sets it when the
-// beat entering stage k is a bubble, whose values nobody reads, so a simulator computes valid
-// beats only (a valid beat's values are the same either way). 0 (a unit bench): every stage
-// advances on en_i. Stage k's clock enable en_i && !hold_i[k] is one LUT, as en_i alone was.
+// later; no handshake: ce_i[k] loads stage k (the parent owns valid/ready and the stall, and
+// gives each stage its clock enable: its stall_pipe's ce_o, low for a bubble, whose values nobody
+// reads, so a simulator computes valid beats only; a unit bench may drive all eight together).
 module rsqrt_unit #(
   localparam int MBits     = 2 * watkins_pkg::NormalInBits,  // m = Nx^2 + Ny^2 + Nz^2, exact
   localparam int RsqrtBits = watkins_pkg::RsqrtBits          // F: fraction bits of y
 ) (
   input  logic                 clk_i,
-  input  logic                 en_i,    // advance the whole pipe (global stall when low)
-  input  logic [8:1]           hold_i,  // [k]: stage k keeps its registers (a bubble enters it)
+  input  logic [8:1]           ce_i,    // [k]: stage k's registers load
   input  logic [MBits-1:0]     m_i,     // squared length, 2*FracBits fraction bits
   output logic [RsqrtBits+1:0] y_o,     // 1/sqrt(m'c) with F fraction bits, in [1, 2]; 0 if null_o
   output logic [4:0]           j_o,     // 1/sqrt(m) = y * 2^(j-2); 0 if null_o
@@ -68,10 +65,6 @@ module rsqrt_unit #(
     for (int r = 1 << (IndexBits - 2); r < (1 << IndexBits); r++) seed_rom[r] = seed_fn(r);
   end
 
-  // Stage k's clock enable.
-  logic [8:1] ce;
-  assign ce = {8{en_i}} & ~hold_i;
-
   // The per-stage registers are plain variables (jN_q: stage N's), not arrays: a simulator
   // (Verilator) keeps a pending-write flag and value per written array element and clears them
   // on every evaluation. Same flops. The logic of a stage is computed inside its enabled
@@ -81,7 +74,7 @@ module rsqrt_unit #(
   logic         nul1_q, nul2_q, nul3_q, nul4_q, nul5_q, nul6_q, nul7_q, nul8_q;
 
   // ---- stage 1: even-shift normalization m' = (m << 2j) / 2^MBits in [1/4, 1) -------------
-  always_ff @(posedge clk_i) if (ce[1]) begin
+  always_ff @(posedge clk_i) if (ce_i[1]) begin
     logic [5:0]       lead;
     logic [4:0]       j1;
     /* verilator lint_off UNUSEDSIGNAL */
@@ -101,7 +94,7 @@ module rsqrt_unit #(
   logic [SeedBits:0]    y0_2_q, y0_3_q, y0_4_q, y0_5_q, y0_6_q;
   logic [MantBits:0]    mc2_q, mc3_q, mc4_q;  // m'c = mant + half an ulp: {mant, 1}, W+1 fraction bits
   assign idx = mant_q[MantBits-1 -: IndexBits];
-  always_ff @(posedge clk_i) if (ce[2]) begin
+  always_ff @(posedge clk_i) if (ce_i[2]) begin
     y0_2_q <= seed_rom[idx];
     mc2_q  <= {mant_q, 1'b1};
     j2_q   <= j1_q;
@@ -110,7 +103,7 @@ module rsqrt_unit #(
 
   // ---- stage 3: the seed registered again, so the block RAM's clock-to-out (5.8 ns on the ECP5)
   // and the multiplier are not in one clock (the normalizer's path at 80.7 MHz) ----------------
-  always_ff @(posedge clk_i) if (ce[3]) begin
+  always_ff @(posedge clk_i) if (ce_i[3]) begin
     y0_3_q <= y0_2_q;
     mc3_q  <= mc2_q;
     j3_q   <= j2_q;
@@ -119,7 +112,7 @@ module rsqrt_unit #(
 
   // ---- stage 4: y0^2, exact (2T fraction bits) --------------------------------------------
   logic [2*SeedBits+1:0] y0sq_q;
-  always_ff @(posedge clk_i) if (ce[4]) begin
+  always_ff @(posedge clk_i) if (ce_i[4]) begin
     y0sq_q <= (2*SeedBits+2)'(y0_3_q) * (2*SeedBits+2)'(y0_3_q);
     y0_4_q <= y0_3_q;
     mc4_q  <= mc3_q;
@@ -146,7 +139,7 @@ module rsqrt_unit #(
   logic [AHi+BHi-1:0]    p11_q;
   assign {a1, a0} = mc4_q;
   assign {b1, b0} = y0sq_q;
-  always_ff @(posedge clk_i) if (ce[5]) begin
+  always_ff @(posedge clk_i) if (ce_i[5]) begin
     p00_q  <= (2*PSplit)'(a0) * (2*PSplit)'(b0);
     p01_q  <= (PSplit+BHi)'(a0) * (PSplit+BHi)'(b1);
     p10_q  <= (AHi+PSplit)'(a1) * (AHi+PSplit)'(b0);
@@ -160,7 +153,7 @@ module rsqrt_unit #(
   // The product plus one bit for the rounding add.
   localparam int PW4 = AW + BW + 1;
   logic [NrBits+1:0] u_q;
-  always_ff @(posedge clk_i) if (ce[6]) begin
+  always_ff @(posedge clk_i) if (ce_i[6]) begin
     logic [PW4-1:0] prod4;
     /* verilator lint_off UNUSEDSIGNAL */
     logic [PW4-1:0] t4;  // m'c * y0^2 < 2: the top bits are zero
@@ -179,7 +172,7 @@ module rsqrt_unit #(
   localparam int UHi = UW - PSplit;           // 9
   logic [YW+PSplit-1:0] q0_q;
   logic [YW+UHi-1:0]    q1_q;
-  always_ff @(posedge clk_i) if (ce[7]) begin
+  always_ff @(posedge clk_i) if (ce_i[7]) begin
     q0_q   <= (YW+PSplit)'(y0_6_q) * (YW+PSplit)'(u_q[PSplit-1:0]);
     q1_q   <= (YW+UHi)'(y0_6_q) * (YW+UHi)'(u_q[UW-1:PSplit]);
     j7_q   <= j6_q;
@@ -189,7 +182,7 @@ module rsqrt_unit #(
   // ---- stage 8: y = round(y0 * u / 2), F fraction bits: y <- y (3 - m' y^2) / 2 ------------
   localparam int PW5 = YW + UW + 1;
   logic [RsqrtBits+1:0] y_q;
-  always_ff @(posedge clk_i) if (ce[8]) begin
+  always_ff @(posedge clk_i) if (ce_i[8]) begin
     logic [PW5-1:0] prod5;
     /* verilator lint_off UNUSEDSIGNAL */
     logic [PW5-1:0] y5;  // y <= 2: the top bits are zero

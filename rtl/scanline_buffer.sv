@@ -251,7 +251,7 @@ module scanline_buffer #(
 
   // The written bits' update. Every fragment tested sets its pixel's bit, winner or not (a loser
   // found the bit set already), so the depth test is not on this path. The pixel the reader
-  // takes is cleared: full mode x = rx_q; sparse, the search's {fw, lb} when it found one. Both
+  // takes is cleared: full mode x = rx_q; sparse, the first occupied word's lowest bit. Both
   // only when the reader takes a pixel: take is rd_load without the search (full mode emits
   // every step; sparse mode emits when it found one, or for the terminating beat, which clears
   // nothing). Written as enabled single-bit updates, so a simulator touches one bit per

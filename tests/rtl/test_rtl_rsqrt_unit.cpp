@@ -2,7 +2,7 @@
 // mantissa m' at RsqrtMantBits bits for every even shift j that can hold it (the whole reachable
 // domain of the unit: for j >= 9 the 36-bit m has fewer bits than the mantissa, so only
 // mantissas with zero low bits exist), random bits below the mantissa, m = 0, and random
-// en_i stalls. Every seed-ROM row is read, so the SV table function and the C++ one cannot drift.
+// ce_i stalls (all stages held). Every seed-ROM row is read, so the SV table function and the C++ one cannot drift.
 #include <gtest/gtest.h>
 
 #include <deque>
@@ -28,13 +28,13 @@ struct Bench {
 
   void push(std::uint64_t m) {
     while (stalls.stall()) {  // a held pipe must not move
-      h.dut.en_i = 0;
+      h.dut.ce_i = 0;     // every stage holds
       h.dut.m_i = rng();  // garbage while stalled
       const auto y = h.dut.y_o;
       h.tick();
       if (h.dut.y_o != y) ++bad;
     }
-    h.dut.en_i = 1;
+    h.dut.ce_i = 0xFF;  // every stage loads
     h.dut.m_i = m;
     h.tick();
     pipe.push_back(m);
