@@ -3,18 +3,28 @@
 // same polygon closes it; segments leave in closing order, the end-of-line marker follows them
 // and clears the table (an edge left open draws nothing). A segment's material is its closing
 // edge's (both edges belong to one polygon, so one material).
-// Latency 2: an input register, then the output register; both register valid and data;
-// edge_ready_o = !in_valid_q || seg_ready_i || !seg_valid_o (combinational). The input register
-// keeps, beside the edge, which table entries hold its polygon (one comparator per entry, on the
-// edge as it arrives): so neither the active-edge list's RAM read nor the comparators sit on the
-// path that pairs the edge and updates the table. The table an arriving edge is compared with is
-// the one the edge in the input register leaves behind: that edge writes its polygon into the
-// entry used_q (always, whether it opens or not: only an open entry is ever matched), so for that
-// entry the comparison is with the registered edge's polygon instead.
+// Latency 3: an input register, a pairing register, then the output register; each registers
+// valid and data, and all three move on one enable: edge_ready_o = seg_ready_i || !seg_valid_o
+// (combinational; a bubble inside is not squeezed out while the output is stalled).
+// Each step keeps its clock short (the ECP5 at 125 MHz):
+// - input register: the edge and which table entries hold its polygon (one comparator per entry)
+//   and whether it has the polygon of the edge ahead of it. The table it is compared with is the
+//   one the edge in the pairing register leaves behind (that edge pairs on this clock and writes
+//   its polygon into entry used_q), so for that entry the comparison is with the pairing
+//   register's polygon instead; the edge now in the input register, one ahead, has no entry yet:
+//   its effect is forwarded a step later through the same-polygon flag.
+// - pairing register: the edge's open entry (one-hot or none), whether it closes (the OR of the
+//   36 matches) and the entry's index, all formed from registered compares as the edge moves up:
+//   so the pairing itself (setting or clearing an open bit, the entry counter, the output's valid
+//   and the value RAM's read address) reads only flip-flops.
+// - output register: the opening edge's value read from the table (distributed RAM, index
+//   registered) and the closing edge's.
 // The open table has MaxActiveEdges entries, so it cannot fill: a line carries at most that
 // many edges, so an edge that opens a segment takes the next entry never used on this line (a
-// counter, no search for a free one), and the closing edge's entry index is the OR of the
-// matching entries' indices (one matches at most: no priority search). The channel vector passes through
+// counter, kept binary for the RAM's write address and one-hot for the open bits and compares),
+// and the closing edge's entry index is the OR of the matching entries' indices (one matches at
+// most: no priority search). Every non-marker edge writes its polygon and value into that entry
+// whether it opens or not (only an open entry is ever matched). The channel vector passes through
 // untouched, so only its width matters here.
 `include "watkins_assert.svh"
 
@@ -43,39 +53,49 @@ module segment_former #(
   localparam int unsigned N  = MaxActiveEdges;
   localparam int unsigned IB = (N > 1) ? $clog2(N) : 1;
   localparam int unsigned CntB = $clog2(N + 1);
+  localparam logic [N:0] FirstEntry = {{N{1'b0}}, 1'b1};  // used_oh_q on an empty line
   typedef logic [VectorBits-1:0] chans_t;
 
   logic [N-1:0]          open_q;       // entry holds an unpaired edge
   logic [PolyIdBits-1:0] open_poly_q [N];
   chans_t                            open_value_q [N];
   logic [CntB-1:0]       used_q;       // entries taken on this line (0 .. N), cleared by the marker
+  logic [N:0]            used_oh_q;    // the same count one-hot (bit N: the table is full)
 
-  // The input register: the edge and which entries hold its polygon when it is paired.
-  logic                      in_valid_q, in_eol_q;
+  // The input register: the edge, which entries hold its polygon, and whether the edge ahead of
+  // it (in the pairing register once this one moves up) is a non-marker of the same polygon.
+  logic                      in_valid_q, in_eol_q, in_prev_q;
   logic [PolyIdBits-1:0]     in_poly_q;
   logic [MaterialIdBits-1:0] in_material_q;
   chans_t                    in_value_q;
   logic [N-1:0]              in_same_q;
 
-  logic          out_en, pair, has_free;
-  logic [N-1:0]  match;
-  logic [IB-1:0] free_idx;
+  // The pairing register: the edge, its open entry (one-hot or none), whether it has one, and
+  // that entry's index.
+  logic                      pr_valid_q, pr_eol_q, pr_closes_q;
+  logic [PolyIdBits-1:0]     pr_poly_q;
+  logic [MaterialIdBits-1:0] pr_material_q;
+  chans_t                    pr_value_q;
+  logic [N-1:0]              pr_match_q;
+  logic [IB-1:0]             pr_idx_q;
 
-  assign out_en       = seg_ready_i || !seg_valid_o;
-  assign pair         = in_valid_q && out_en;    // the registered edge is paired this clock
-  assign edge_ready_o = out_en || !in_valid_q;
-  assign match        = in_same_q & open_q;      // its open entry (one-hot or none)
-  assign has_free = used_q != CntB'(N);
-  assign free_idx = IB'(used_q);
+  logic          en, pair, has_free;
+  logic [N-1:0]  found;          // the input register's open entries, the edge ahead aside
 
-  // Which entries hold `poly` once the registered edge is paired: entry used_q takes the
-  // registered edge's polygon. Entries past the line's used ones compare with stale polygons,
-  // but they are not open, and `match` masks them. A function called inside the input
-  // register's `if`, not kept as a signal: the same comparators in hardware, but a simulator
-  // compares only on the clocks that take an edge.
+  assign en           = seg_ready_i || !seg_valid_o;
+  assign pair         = pr_valid_q && en;        // the pairing register's edge is paired this clock
+  assign edge_ready_o = en;
+  assign has_free     = !used_oh_q[N];
+  assign found        = in_same_q & open_q;
+
+  // Which entries hold `poly` once the pairing register's edge is paired: entry used_q takes
+  // that edge's polygon. Entries past the line's used ones compare with stale polygons, but they
+  // are not open, and `found` masks them. A function called inside the input register's `if`,
+  // not kept as a signal: the same comparators in hardware, but a simulator compares only on the
+  // clocks that take an edge.
   function automatic logic [N-1:0] holds(input logic [PolyIdBits-1:0] poly);
     for (int i = 0; i < N; i++)
-      holds[i] = (CntB'(i) == used_q) ? (in_poly_q == poly) : (open_poly_q[i] == poly);
+      holds[i] = used_oh_q[i] ? (pr_poly_q == poly) : (open_poly_q[i] == poly);
   endfunction
   // The matching entry's index, the OR of the matching entries' indices (0 when none matches).
   function automatic logic [IB-1:0] match_index(input logic [N-1:0] m);
@@ -86,33 +106,65 @@ module segment_former #(
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       in_valid_q  <= 1'b0;
+      pr_valid_q  <= 1'b0;
       open_q      <= '0;
       used_q      <= '0;
+      used_oh_q   <= FirstEntry;
       seg_valid_o <= 1'b0;
     end else begin
-      if (edge_ready_o) in_valid_q <= edge_valid_i;
-      if (out_en) seg_valid_o <= pair && (in_eol_q || match != '0);
+      if (en) begin
+        in_valid_q  <= edge_valid_i;
+        pr_valid_q  <= in_valid_q;
+        seg_valid_o <= pr_valid_q && (pr_eol_q || pr_closes_q);
+      end
       if (pair) begin
-        if (in_eol_q) begin
-          open_q <= '0;
-          used_q <= '0;
-        end else if (match != '0) begin
-          open_q <= open_q & ~match;
+        if (pr_eol_q) begin
+          open_q    <= '0;
+          used_q    <= '0;
+          used_oh_q <= FirstEntry;
+        end else if (pr_closes_q) begin
+          open_q <= open_q & ~pr_match_q;
         end else if (has_free) begin
-          open_q[free_idx] <= 1'b1;
-          used_q <= used_q + 1'b1;
+          open_q    <= open_q | used_oh_q[N-1:0];
+          used_q    <= used_q + 1'b1;
+          used_oh_q <= used_oh_q << 1;
         end
       end
     end
   end
 
   always_ff @(posedge clk_i) begin
-    if (edge_valid_i && edge_ready_o) begin
+    if (edge_valid_i && en) begin
       in_poly_q     <= edge_poly_i;
       in_material_q <= edge_material_i;
       in_value_q    <= edge_value_i;
       in_eol_q      <= edge_eol_i;
       in_same_q     <= holds(edge_poly_i);
+      in_prev_q     <= in_valid_q && !in_eol_q && in_poly_q == edge_poly_i;
+    end
+  end
+
+  // The edge moves up as the pairing register's edge pairs. That edge only opens or closes an
+  // entry of its own polygon, so: after a marker nothing is open; with the same polygon (it was
+  // one ahead on arrival, so no compare saw its entry) the edge closes exactly when that one
+  // opens, in the entry that one takes (used_q); otherwise the entries found on arrival.
+  always_ff @(posedge clk_i) begin
+    if (in_valid_q && en) begin
+      pr_poly_q     <= in_poly_q;
+      pr_material_q <= in_material_q;
+      pr_value_q    <= in_value_q;
+      pr_eol_q      <= in_eol_q;
+      if (pr_valid_q && pr_eol_q) begin
+        pr_match_q  <= '0;
+        pr_closes_q <= 1'b0;
+      end else if (in_prev_q) begin
+        pr_match_q  <= pr_closes_q ? '0 : used_oh_q[N-1:0];
+        pr_closes_q <= !pr_closes_q;
+      end else begin
+        pr_match_q  <= found;
+        pr_closes_q <= found != '0;
+      end
+      pr_idx_q <= in_prev_q ? IB'(used_q) : match_index(found);
     end
   end
 
@@ -120,17 +172,16 @@ module segment_former #(
     if (pair) begin
       // Written whether the edge opens or not (an entry past the open ones): the write enable
       // waits for no comparison.
-      if (!in_eol_q && has_free) begin
-        open_poly_q[free_idx]  <= in_poly_q;
-        open_value_q[free_idx] <= in_value_q;
+      if (!pr_eol_q && has_free) begin
+        open_poly_q[IB'(used_q)]  <= pr_poly_q;
+        open_value_q[IB'(used_q)] <= pr_value_q;
       end
-      if (in_eol_q || match != '0) begin
-        seg_e_o    <= open_value_q[match_index(match)];
-        seg_f_o    <= in_value_q;
-        seg_poly_o <= in_poly_q;
-        seg_material_o <= in_material_q;
-        seg_eol_o  <= in_eol_q;
-      end
+      // Loaded on every pairing: the output's valid says whether it is a segment.
+      seg_e_o        <= open_value_q[pr_idx_q];
+      seg_f_o        <= pr_value_q;
+      seg_poly_o     <= pr_poly_q;
+      seg_material_o <= pr_material_q;
+      seg_eol_o      <= pr_eol_q;
     end
   end
 
@@ -138,13 +189,17 @@ module segment_former #(
     edge_value_i, edge_eol_i})
   `WATKINS_ASSERT_HOLD(a_out_hold, seg_valid_o, seg_ready_i, {seg_e_o, seg_f_o, seg_poly_o,
     seg_material_o, seg_eol_o})
-  `WATKINS_ASSERT(a_table_room, pair && !in_eol_q && match == '0 |-> has_free)
+  `WATKINS_ASSERT(a_table_room, pair && !pr_eol_q && !pr_closes_q |-> has_free)
+  `WATKINS_ASSERT(a_used_onehot, used_oh_q == FirstEntry << used_q)
+  `WATKINS_ASSERT(a_prev, in_valid_q && in_prev_q |-> pr_valid_q && !pr_eol_q && pr_poly_q == in_poly_q)
 `ifdef WATKINS_ASSERT_ON
-  // The entries found on arrival are those a search at pairing time would find.
+  // The entries found as the edge moved up are those a search at pairing time would find.
   function automatic logic [N-1:0] open_now(input logic [PolyIdBits-1:0] poly);
     for (int i = 0; i < N; i++) open_now[i] = open_q[i] && open_poly_q[i] == poly;
   endfunction
-  `WATKINS_ASSERT(a_match_forwarded, pair && !in_eol_q |-> match == open_now(in_poly_q))
+  `WATKINS_ASSERT(a_match_forwarded, pair && !pr_eol_q |-> pr_match_q == open_now(pr_poly_q) &&
+    pr_closes_q == (pr_match_q != '0) && (!pr_closes_q || pr_match_q[pr_idx_q]))
 `endif
   `WATKINS_COVER(c_two_open, $countones(open_q) >= 2)
+  `WATKINS_COVER(c_prev_closes, in_valid_q && in_prev_q && !pr_closes_q)
 endmodule

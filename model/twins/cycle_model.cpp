@@ -118,8 +118,10 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
   std::size_t next_record = 0;
   bool eof_taken = false;
   bool st_valid = false, st_retire = false;  // the edge_incrementer's output (st_valid, st_retire)
-  // ---- segment_former: its input register (the edge and whether pairing it emits) and its output
+  // ---- segment_former: its input and pairing registers (the edge and whether pairing it emits)
+  // and its output, all three moved by one enable
   bool sf_in_valid = false, sf_in_emits = false;  // in_valid_q; the edge closes or is a marker
+  bool sf_pr_valid = false, sf_pr_emits = false;  // pr_valid_q; the same for the pairing register
   bool seg_valid = false;                         // seg_valid_o
   // ---- segment_interpolator: s0, span_reciprocal, sa .. sd, FIFO, stepper. Items pass every
   // stage in order, so a stage's item is its position in st.items, counted where it leaves.
@@ -152,7 +154,7 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
   auto key = [&] {
     return std::make_tuple(frame_q, drain_q, line_q, rd_q, cnt_stream, cnt_fill, out_done_q, inc_done_q,
                            eol_sent_q, next_record, eof_taken, st_valid, st_retire, sf_in_valid,
-                           sf_in_emits, seg_valid,
+                           sf_in_emits, sf_pr_valid, sf_pr_emits, seg_valid,
                            s0_valid_q, recip_valid, recip_out, tail_valid, tail_item, fifo[0], fifo[1], fifo[2], fifo[3], fifo_head, fifo_count, step_active,
                            frag_valid, frag_eol, norm.valid, norm.eol, shade.valid, shade.eol, q_count,
                            q_eol, rd_busy_q, rline_q, lines_written);
@@ -199,8 +201,7 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
     const bool rc_valid = (recip_valid >> (RecipStages - 1)) & 1;
     const bool en_recip = tail_en || !rc_valid;
     const bool seg_ready = !s0_valid_q || en_recip;
-    const bool sf_out_en = seg_ready || !seg_valid;
-    const bool sf_ready = sf_out_en || !sf_in_valid;
+    const bool sf_ready = seg_ready || !seg_valid;  // edge_ready_o: the enable of all three registers
     // active-edge list output
     const bool streaming = frame_q && !drain_q && line_q != 0;
     const bool have_edge = streaming && rd_q < cnt_stream;
@@ -295,8 +296,10 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
     if (en_recip) recip_valid = ((recip_valid << 1) | std::uint64_t(s0_valid_q)) & recip_mask;
     if (seg_ready) s0_valid_q = seg_valid;
     // segment former
-    if (sf_out_en) seg_valid = sf_in_valid && sf_in_emits;
     if (sf_ready) {
+      seg_valid = sf_pr_valid && sf_pr_emits;
+      sf_pr_valid = sf_in_valid;
+      sf_pr_emits = sf_in_emits;
       sf_in_valid = ae_fire;
       sf_in_emits = ae_fire && (!have_edge || st.closes[g]);
     }

@@ -1,18 +1,20 @@
 // segment_former_formal: proves rtl/segment_former.sv (3 table entries, 4 polygon ids, 3-bit
 // channel vector) holds valid and its whole output until ready, and emits exactly the segments a
-// reference pairing says, once each, in order. Its input register holds the last edge taken until
-// it is paired, once; the entries it found holding that edge's polygon on arrival are the open
-// ones of the polygon when it is paired. The harness keeps which polygons are open on the line
-// and the vector of each one's opening edge, and pairs the registered edge when the DUT does: an
-// edge of an open polygon (or the end-of-line marker) must come out as the next segment, with
-// the opening edge's vector as e, its own as f (each input edge carries its sequence number as
-// its vector), its polygon, material and marker; any other edge opens its polygon and emits
-// nothing. Segments due minus segments out is seg_valid_o. The environment opens at most 3
-// segments per line (the table's capacity: a line carries at most MaxActiveEdges edges, and an
-// opening edge takes the next entry never used on the line). Induction invariants tie every
-// table entry to the reference: it holds an open polygon with its opening vector, no two entries
-// hold one polygon, as many entries are open as polygons, the entries used on the line are the
-// segments opened on it and no later entry is open.
+// reference pairing says, once each, in order. Its input and pairing registers hold the last two
+// edges taken until each is paired, once; what they carry about the table (the entries found
+// holding the polygon on arrival, the same-polygon flag for the edge ahead, the open entry, its
+// index and whether it closes) is what a search would find when the edge is paired. The harness
+// keeps which polygons are open on the line and the vector of each one's opening edge, and pairs
+// the pairing register's edge when the DUT does: an edge of an open polygon (or the end-of-line
+// marker) must come out as the next segment, with the opening edge's vector as e, its own as f
+// (each input edge carries its sequence number as its vector), its polygon, material and marker;
+// any other edge opens its polygon and emits nothing. Segments due minus segments out is
+// seg_valid_o. The environment opens at most 3 segments per line (the table's capacity: a line
+// carries at most MaxActiveEdges edges, and an opening edge takes the next entry never used on
+// the line). Induction invariants tie every table entry to the reference: it holds an open
+// polygon with its opening vector, no two entries hold one polygon, as many entries are open as
+// polygons, the entries used on the line are the segments opened on it (binary and one-hot) and
+// no later entry is open.
 `include "formal_stream.svh"
 
 module segment_former_formal #(
@@ -46,34 +48,54 @@ module segment_former_formal #(
   `FORMAL_ASSERT_HOLD(out, seg_valid_o, seg_ready_i, {seg_e_o, seg_f_o, seg_poly_o, seg_material_o,
     seg_eol_o})
 
-  // The DUT's input register (hierconn wires: flatten connects them to u_dut's registers). It
-  // must hold the last edge taken, once; the reference pairs that edge when the DUT does.
+  // The DUT's input and pairing registers (hierconn wires: flatten connects them to u_dut's
+  // registers). They must hold the last two edges taken, once each; the reference pairs the
+  // pairing register's edge when the DUT does.
   (* hierconn *) logic                      \u_dut.in_valid_q ;
   (* hierconn *) logic                      \u_dut.in_eol_q ;
+  (* hierconn *) logic                      \u_dut.in_prev_q ;
   (* hierconn *) logic [PolyIdBits-1:0]     \u_dut.in_poly_q ;
   (* hierconn *) logic [MaterialIdBits-1:0] \u_dut.in_material_q ;
   (* hierconn *) logic [VectorBits-1:0]     \u_dut.in_value_q ;
   (* hierconn *) logic [N-1:0]              \u_dut.in_same_q ;
-  logic                      in_valid, in_eol;
+  (* hierconn *) logic                      \u_dut.pr_valid_q ;
+  (* hierconn *) logic                      \u_dut.pr_eol_q ;
+  (* hierconn *) logic                      \u_dut.pr_closes_q ;
+  (* hierconn *) logic [PolyIdBits-1:0]     \u_dut.pr_poly_q ;
+  (* hierconn *) logic [MaterialIdBits-1:0] \u_dut.pr_material_q ;
+  (* hierconn *) logic [VectorBits-1:0]     \u_dut.pr_value_q ;
+  (* hierconn *) logic [N-1:0]              \u_dut.pr_match_q ;
+  (* hierconn *) logic [1:0]                \u_dut.pr_idx_q ;
+  logic                      a_valid, a_eol;      // the input register's edge
+  logic [PolyIdBits-1:0]     a_poly;
+  logic                      in_valid, in_eol;    // the pairing register's edge (paired next)
   logic [PolyIdBits-1:0]     in_poly;
   logic [MaterialIdBits-1:0] in_material;
   logic [VectorBits-1:0]     in_value;
-  assign in_valid    = \u_dut.in_valid_q ;
-  assign in_eol      = \u_dut.in_eol_q ;
-  assign in_poly     = \u_dut.in_poly_q ;
-  assign in_material = \u_dut.in_material_q ;
-  assign in_value    = \u_dut.in_value_q ;
+  assign a_valid     = \u_dut.in_valid_q ;
+  assign a_eol       = \u_dut.in_eol_q ;
+  assign a_poly      = \u_dut.in_poly_q ;
+  assign in_valid    = \u_dut.pr_valid_q ;
+  assign in_eol      = \u_dut.pr_eol_q ;
+  assign in_poly     = \u_dut.pr_poly_q ;
+  assign in_material = \u_dut.pr_material_q ;
+  assign in_value    = \u_dut.pr_value_q ;
 
-  logic                      taken_eol_q;
-  logic [PolyIdBits-1:0]     taken_poly_q;
-  logic [MaterialIdBits-1:0] taken_material_q;
-  logic [VectorBits-1:0]     taken_value_q;
+  // The last two edges taken.
+  logic                      taken_eol_q, taken2_eol_q;
+  logic [PolyIdBits-1:0]     taken_poly_q, taken2_poly_q;
+  logic [MaterialIdBits-1:0] taken_material_q, taken2_material_q;
+  logic [VectorBits-1:0]     taken_value_q, taken2_value_q;
   always_ff @(posedge clk_i) begin
     if (edge_valid_i && edge_ready_o) begin
-      taken_eol_q      <= edge_eol_i;
-      taken_poly_q     <= edge_poly_i;
-      taken_material_q <= edge_material_i;
-      taken_value_q    <= edge_value_i;
+      taken_eol_q       <= edge_eol_i;
+      taken_poly_q      <= edge_poly_i;
+      taken_material_q  <= edge_material_i;
+      taken_value_q     <= edge_value_i;
+      taken2_eol_q      <= taken_eol_q;
+      taken2_poly_q     <= taken_poly_q;
+      taken2_material_q <= taken_material_q;
+      taken2_value_q    <= taken_value_q;
     end
   end
 
@@ -118,20 +140,31 @@ module segment_former_formal #(
       exp_eol_q      <= in_eol;
     end
   end
-  // The open polygons and their count once the registered edge is paired too: what the next
-  // edge taken finds.
-  logic [Polys-1:0] open_after;
-  logic [1:0]       opened_n_after;
+  // The open polygons and their count once the pairing and input registers' edges are paired
+  // too: what the next edge taken finds.
+  logic [Polys-1:0] open_mid, open_after;
+  logic [1:0]       opened_n_mid, opened_n_after;
   always_comb begin
-    open_after     = open_q;
-    opened_n_after = opened_n_q;
+    open_mid     = open_q;
+    opened_n_mid = opened_n_q;
     if (in_valid) begin
       if (in_eol) begin
+        open_mid     = '0;
+        opened_n_mid = '0;
+      end else begin
+        open_mid[in_poly] = !open_q[in_poly];
+        if (!open_q[in_poly]) opened_n_mid = opened_n_q + 1'b1;
+      end
+    end
+    open_after     = open_mid;
+    opened_n_after = opened_n_mid;
+    if (a_valid) begin
+      if (a_eol) begin
         open_after     = '0;
         opened_n_after = '0;
       end else begin
-        open_after[in_poly] = !open_q[in_poly];
-        if (!open_q[in_poly]) opened_n_after = opened_n_q + 1'b1;
+        open_after[a_poly] = !open_mid[a_poly];
+        if (!open_mid[a_poly]) opened_n_after = opened_n_mid + 1'b1;
       end
     end
   end
@@ -144,6 +177,7 @@ module segment_former_formal #(
   // The table (hierconn wires: flatten connects them to u_dut's registers).
   (* hierconn *) logic [N-1:0]          \u_dut.open_q ;
   (* hierconn *) logic [1:0]            \u_dut.used_q ;
+  (* hierconn *) logic [N:0]            \u_dut.used_oh_q ;
   (* hierconn *) logic [PolyIdBits-1:0] \u_dut.open_poly_q[0] ;
   (* hierconn *) logic [PolyIdBits-1:0] \u_dut.open_poly_q[1] ;
   (* hierconn *) logic [PolyIdBits-1:0] \u_dut.open_poly_q[2] ;
@@ -166,18 +200,39 @@ module segment_former_formal #(
       assume (edge_eol_i || open_after[edge_poly_i] || opened_n_after < 2'(N));
     end
     if (rst_ni) begin
-      assert (edge_ready_o == (seg_ready_i || !seg_valid_o || !in_valid));
-      // The input register holds the last edge taken until it is paired, once.
-      assert (VectorBits'(n_in_q - n_pair_q) == VectorBits'(in_valid));
+      assert (edge_ready_o == (seg_ready_i || !seg_valid_o));
+      // The input and pairing registers hold the last two edges taken until each is paired, once.
+      assert (VectorBits'(n_in_q - n_pair_q) == VectorBits'(a_valid) + VectorBits'(in_valid));
+      if (a_valid) begin
+        assert (a_eol == taken_eol_q && a_poly == taken_poly_q
+                && \u_dut.in_material_q == taken_material_q && \u_dut.in_value_q == taken_value_q
+                && \u_dut.in_value_q == VectorBits'(n_in_q - 1'b1));
+        // The edge ahead is the pairing register's: the same-polygon flag compares with it.
+        assert (\u_dut.in_prev_q == (in_valid && !in_eol && in_poly == a_poly));
+        // The entries it found on arrival are the open ones of its polygon now.
+        if (!a_eol)
+          for (int unsigned i = 0; i < N; i++)
+            assert ((\u_dut.in_same_q [i] && \u_dut.open_q [i]) == (\u_dut.open_q [i] && poly[i] == a_poly));
+        // It fits in the table once the edge ahead is paired.
+        assert (a_eol || open_mid[a_poly] || opened_n_mid < 2'(N));
+      end
       if (in_valid) begin
-        assert (in_eol == taken_eol_q && in_poly == taken_poly_q && in_material == taken_material_q
-                && in_value == taken_value_q && in_value == VectorBits'(n_in_q - 1'b1));
+        if (a_valid)
+          assert (in_eol == taken2_eol_q && in_poly == taken2_poly_q
+                  && in_material == taken2_material_q && in_value == taken2_value_q);
+        else
+          assert (in_eol == taken_eol_q && in_poly == taken_poly_q
+                  && in_material == taken_material_q && in_value == taken_value_q);
+        assert (in_value == VectorBits'(n_in_q - 1'b1 - VectorBits'(a_valid)));
         // It fits in the table (the environment's bound, taken when it arrived).
         assert (in_eol || open_q[in_poly] || opened_n_q < 2'(N));
-        // The entries it found on arrival are the open ones of its polygon now.
-        if (!in_eol)
+        // Its open entry, whether it closes and the entry's index are a search's now.
+        if (!in_eol) begin
+          assert (\u_dut.pr_closes_q == open_q[in_poly]);
           for (int unsigned i = 0; i < N; i++)
-            assert ((\u_dut.in_same_q [i] && \u_dut.open_q [i]) == (\u_dut.open_q [i] && poly[i] == in_poly));
+            assert (\u_dut.pr_match_q [i] == (\u_dut.open_q [i] && poly[i] == in_poly));
+          if (\u_dut.pr_closes_q ) assert (\u_dut.pr_match_q [\u_dut.pr_idx_q ]);
+        end
       end
       // Every segment due comes out once, in order, as the reference pairs it.
       assert (VectorBits'(n_due_q - n_out_q) == VectorBits'(seg_valid_o));
@@ -189,6 +244,7 @@ module segment_former_formal #(
       // Induction invariants: the table mirrors the reference.
       assert (count(Polys'(\u_dut.open_q )) == count(open_q));
       assert (\u_dut.used_q == opened_n_q);
+      assert (\u_dut.used_oh_q == {{N{1'b0}}, 1'b1} << \u_dut.used_q );
       for (int unsigned i = 0; i < N; i++) begin
         if (\u_dut.open_q [i]) begin
           assert (i < 32'(\u_dut.used_q ));
