@@ -10,14 +10,19 @@
 // into a RAM of two halves (one per bank, 2^(log2 N + 1) words; one write port, one synchronous
 // read port: block RAM), at the filling bank's append address, and never moved. The order is a
 // list of N small keys (X, id) with each entry's RAM index, for the filling bank only: the
-// insertion compares the key against every entry in parallel and shifts keys and indices. At
-// the swap the indices are copied to the streaming bank's index list (the keys of a streaming
+// insertion compares the key against every entry in parallel and shifts keys and indices, in a
+// pipeline of two clocks after the body's write (key registered; per-entry compare flags
+// registered; shift), still one insertion per clock. At the swap (which waits for that pipeline
+// to empty) the indices are copied to the streaming bank's index list (the keys of a streaming
 // bank are never compared again), which shifts down by one as each edge leaves.
-// Per line: about (active + new edges + 3) cycles when nothing stalls. out_poly_o,
-// out_material_o, out_value_o (and the incrementer's inputs) are the RAM's read register, read
-// with the address of the next clock's entry; out_valid_o and out_eol_o come from registers
-// through a little logic; ready is combinational. An insertion into a full bank drops the edge
-// and sets the sticky overflow_o.
+// Per line: about (active + new edges + 7) cycles when nothing stalls: the swap is decided a clock
+// before it acts, and it waits for the incrementer's two stages and the insertion's two (the
+// last three are not waited for on a line that inserts nothing). The key's multiplexer, the
+// compares and the shift are in separate clocks. out_poly_o, out_material_o, out_value_o are the
+// RAM's read register (read with the address of the next clock's entry), which the incrementer
+// takes through one more register; out_valid_o and out_eol_o come from registers through a
+// little logic; ready is combinational. An insertion into a full bank drops the edge and sets
+// the sticky overflow_o.
 // Widths from the configuration (model/twins/config.hpp): channel vectors of slot words XBits,
 // ZBits, AttrBits (watkins_pkg::slot_lo); polygon, material and edge ids of PolyIdBits,
 // MaterialIdBits and EdgeIdBits; the edge record laid out as watkins_pkg::edge_bits says.
@@ -107,6 +112,13 @@ module active_edge_list #(
   logic [CntB-1:0] rd_q, rd_d;
   logic            out_done_q, inc_done_q, eol_sent_q;
   logic [EdgeIdBits-1:0] id_q;
+  // The sorted insertion's pipeline (below).
+  logic [KB+IB-1:0] key1_q, key2_q;  // {sort key, body index} of the insertion in ord1 / ord2
+  logic             ord1_q, ord2_q;
+  logic [N-1:0]     occ1_q;          // ord1: entry i exists once ord2's key is in (i < key1's index)
+  logic [KB-1:0]    key1_inv_q, key1_free_q, key1_free_inv_q;  // copies of key1_q's key (below)
+  logic [N-1:0]     below_q;         // ord2: entry i of order_q sorts before key2_q
+  logic             key2_before_key1;
 
   // ------------------------------------------------------------ stream out line line_q - 1
   logic   streaming, have_edge, out_fire, inc_valid, inc_ready, inc_fire, advance;
@@ -128,6 +140,10 @@ module active_edge_list #(
   assign advance   = have_edge && (out_done_q || out_fire) && (inc_done_q || inc_fire);
 
   // ------------------------------------------------------------ step to the next line
+  // The entry is registered once more before the incrementer (step_q): the RAM's clock-to-out
+  // (5.8 ns on the ECP5) leaves no room for the incrementer's adders in the same clock.
+  entry_t step_q;
+  logic   step_valid_q, step_ready;
   logic                  st_valid, st_retire;
   logic [VB-1:0]         st_value;
   logic [DB-1:0]         st_slope;
@@ -142,12 +158,12 @@ module active_edge_list #(
     .EdgeOrder  (EdgeOrder)
   ) u_inc (
     .clk_i, .rst_ni,
-    .value_i    (cur_q.value),
-    .slope_i    (cur_q.slope),
-    .remaining_i(cur_q.remaining),
-    .payload_i  ({cur_q.id, cur_q.poly, cur_q.material}),
-    .valid_i    (inc_valid),
-    .ready_o    (inc_ready),
+    .value_i    (step_q.value),
+    .slope_i    (step_q.slope),
+    .remaining_i(step_q.remaining),
+    .payload_i  ({step_q.id, step_q.poly, step_q.material}),
+    .valid_i    (step_valid_q),
+    .ready_o    (step_ready),
     .value_o    (st_value),
     .slope_o    (st_slope),
     .remaining_o(st_remaining),
@@ -157,8 +173,18 @@ module active_edge_list #(
     .ready_i    (1'b1)          // an insertion is always possible (or an overflow)
   );
 
+  assign inc_ready = step_ready || !step_valid_q;
+  always_ff @(posedge clk_i) begin
+    if (inc_fire) step_q <= cur_q;
+  end
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni || (start_i && !frame_q)) step_valid_q <= 1'b0;
+    else if (inc_ready) step_valid_q <= inc_fire;
+  end
+
   // ------------------------------------------------------------ insertion into the other bank
   logic   nsel, ins_step, take_new, drop_late, ins_valid, ins_write, src_done, swap, next_line;
+  logic   swap_now, swap_q, next_line_q;
   logic [KB-1:0] ins_key;
   logic   head_edge;
 
@@ -180,21 +206,18 @@ module active_edge_list #(
   assign ins_key = ins_step ? {st_value[XLo +: XBits] ^ XSign, st_payload[TB-1 -: EdgeIdBits]}
                             : {rec.value[XLo +: XBits] ^ XSign, id_q};
 
-  // Whether the filling bank's entry i (below the count) sorts before the inserted key: one
-  // comparator per entry. Called inside the insertion's `if (ins_write)` below, not kept as a
-  // signal: the same hardware, but a simulator then compares only on the clocks that insert
-  // (about one in twenty) instead of on every evaluation of the input-driven logic.
-  function automatic logic sorts_before(input logic [KB-1:0] key, input logic [CntB-1:0] i,
-                                        input logic [CntB-1:0] count, input logic [KB-1:0] new_key);
-    sorts_before = (i < count) && (key < new_key);
-  endfunction
-
   // Line line_q is complete when line_q - 1 has streamed out (marker sent), its stepped edges
   // are in, and the input holds no more records for line_q.
   assign src_done = (line_q == height_i)
                  || (edge_valid_i && (edge_eof_i || rec.y0 > line_q));
-  assign swap = frame_q && !drain_q && ((line_q == '0) || eol_sent_q) && !st_valid && src_done;
-  assign next_line = swap && (line_q != height_i);  // the filling bank starts to stream
+  // The swap is decided a clock before it acts (swap_q, next_line_q: the compares with line_q
+  // and the input's y0 are then not in front of the swap's fan-out). The condition holds until
+  // then: the stream has sent its marker, nothing is being stepped or inserted, and the input's
+  // head (held, since it is not taken) still belongs to a later line.
+  assign swap_now = frame_q && !drain_q && ((line_q == '0) || eol_sent_q) && !step_valid_q && !st_valid
+                    && !ord1_q && !ord2_q && src_done && !swap_q;
+  assign swap = swap_q;
+  assign next_line = next_line_q;  // the filling bank starts to stream
 
   // The stream's next position and bank: the RAM is read with them, so the entry the stream
   // presents next clock is in the read register then. (Reset and frame start need no case:
@@ -223,8 +246,8 @@ module active_edge_list #(
 
   // Read and write never meet at one word: a write goes to the filling half (!sel_q); a read
   // goes to the streaming half sel_d, which is the filling half only on a swap, and a swap
-  // inserts nothing (a_no_insert_on_swap: it waits for the incrementer to be empty, !st_valid,
-  // and for the input to hold no record of line_q, which take_new needs). An entry written on
+  // inserts nothing (a_no_insert_on_swap: it waits for the incrementer to be empty, !step_valid_q
+  // and !st_valid, and for the input to hold no record of line_q, which take_new needs). An entry written on
   // the clock before the swap is in the RAM when the swap's read happens. So the read port needs
   // neither read-first nor write-first behaviour, and no forwarding.
   logic [AB-1:0] rd_addr, wr_addr;
@@ -253,6 +276,8 @@ module active_edge_list #(
       inc_done_q   <= 1'b0;
       eol_sent_q   <= 1'b0;
       id_q         <= '0;
+      swap_q       <= 1'b0;
+      next_line_q  <= 1'b0;
       if (!rst_ni) begin
         sel_q      <= 1'b0;
         overflow_o <= 1'b0;
@@ -260,6 +285,8 @@ module active_edge_list #(
     end else begin
       sel_q  <= sel_d;
       rd_q   <= rd_d;
+      swap_q      <= swap_now;
+      next_line_q <= swap_now && (line_q != height_i);
       if (advance) begin
         out_done_q <= 1'b0;
         inc_done_q <= 1'b0;
@@ -307,28 +334,87 @@ module active_edge_list #(
     end
   end
 
-  // Sorted insertion of the key and the body's index: entries before the new one stay, the one
-  // at its place takes it, the tail moves up by one. Each entry is assigned in its own block
-  // from its own and its lower neighbour's old value, no loop writes the array: so the simulator
-  // unrolls nothing (Verilator's BLKLOOPINIT at any size). (One array rather than a variable per
-  // entry: Verilator keeps a pending-write flag per written element of an array, but copies a
-  // separate variable in and out of a shadow on every clock, about twice the instructions.)
+  // Sorted insertion of the key and the body's index, pipelined over two clocks after the
+  // insertion is accepted (its body is written then, at index cnt_fill_q), so that no clock holds
+  // the key's multiplexer, a KB-bit compare and the shift together:
+  //   ord1: the key is registered (key1_q);
+  //   ord2: every entry's "sorts before key1_q" flag is registered (below_q), corrected for the
+  //         key ord2 inserts in the same clock, so insertions still go one per clock;
+  //   then: entries before the new one stay, the one at its place takes it, the tail moves up.
+  // A swap waits until both stages are empty (the stream reads order_q's indices), so a line
+  // takes two cycles more than with the insertion in one clock.
+
+  // (X, id) keys are unique, so "not before" means after.
+  assign key2_before_key1 = key2_q[IB +: KB] < key1_q[IB +: KB];
+
+  // key1's key reaches N comparators; four copies, each for a quarter of the entries, shorten
+  // that net (on the ECP5 its routing took 3.5 ns of the clock). The copies differ in structure
+  // (loaded on insertion or on every clock, true or inverted), or yosys merges them back into
+  // one: a free-running copy holds the key on the clocks ord1 is set, as the others do; an
+  // inverted copy compares the other way round (k < K is ~K < ~k).
+  localparam int unsigned Quarter = (N + 3) / 4;
+  function automatic logic entry_before_key1(input logic [KB-1:0] key, input int unsigned i);
+    case (i / Quarter)
+      0:       entry_before_key1 = key < key1_q[IB +: KB];
+      1:       entry_before_key1 = key1_inv_q < ~key;
+      2:       entry_before_key1 = key < key1_free_q;
+      default: entry_before_key1 = key1_free_inv_q < ~key;
+    endcase
+  endfunction
+
+  // below_q for key1_q as order_q will be after ord2's insertion (at the first entry p not before
+  // key2_q): below p the entries stay (their own compare), at p sits key2_q (one compare of the
+  // two keys), above p each entry is its lower neighbour (that neighbour's compare); past key1's
+  // index, no entry (occ1_q, registered with the key, so no count is compared here). One packed
+  // vector in one block, compared only on the clocks ord1 holds a key (a simulator skips the N
+  // comparators otherwise).
+  always_ff @(posedge clk_i) begin
+    if (ord1_q) begin
+      for (int i = 0; i < N; i++) begin
+        if (!ord2_q || below_q[i])
+          below_q[i] <= occ1_q[i] && entry_before_key1(order_q[i][IB +: KB], i);
+        else if (i == 0 || below_q[(i == 0) ? 0 : i - 1])
+          below_q[i] <= occ1_q[i] && key2_before_key1;
+        else
+          below_q[i] <= occ1_q[i] && entry_before_key1(order_q[(i == 0) ? 0 : i - 1][IB +: KB],
+                                                       (i == 0) ? 0 : i - 1);
+      end
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (ins_write) begin
+      key1_q     <= {ins_key, IB'(cnt_fill_q)};
+      key1_inv_q <= ~ins_key;
+      for (int i = 0; i < N; i++) occ1_q[i] <= CntB'(i) < cnt_fill_q;
+    end
+    key1_free_q     <= ins_key;
+    key1_free_inv_q <= ~ins_key;
+    if (ord1_q) key2_q <= key1_q;
+  end
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni || (start_i && !frame_q)) begin
+      ord1_q      <= 1'b0;
+      ord2_q      <= 1'b0;
+    end else begin
+      ord1_q <= ins_write;
+      ord2_q <= ord1_q;
+    end
+  end
+
+  // Each entry is assigned in its own block from its own and its lower neighbour's old value, no
+  // loop writes the array: so the simulator unrolls nothing (Verilator's BLKLOOPINIT at any
+  // size). (One array rather than a variable per entry: Verilator keeps a pending-write flag per
+  // written element of an array, but copies a separate variable in and out of a shadow on every
+  // clock, about twice the instructions.)
   for (genvar i = 0; i < N; i++) begin : g_order
     if (i > 0) begin : g_above
       always_ff @(posedge clk_i) begin
-        if (ins_write) begin
-          if (!sorts_before(order_q[i][IB +: KB], CntB'(i), cnt_fill_q, ins_key)) begin
-            order_q[i] <= sorts_before(order_q[i-1][IB +: KB], CntB'(i - 1), cnt_fill_q, ins_key)
-                          ? {ins_key, IB'(cnt_fill_q)} : order_q[i-1];
-          end
-        end
+        if (ord2_q && !below_q[i]) order_q[i] <= below_q[i-1] ? key2_q : order_q[i-1];
       end
     end else begin : g_bottom
       always_ff @(posedge clk_i) begin
-        if (ins_write) begin
-          if (!sorts_before(order_q[0][IB +: KB], CntB'(0), cnt_fill_q, ins_key))
-            order_q[0] <= {ins_key, IB'(cnt_fill_q)};
-        end
+        if (ord2_q && !below_q[0]) order_q[0] <= key2_q;
       end
     end
   end
@@ -340,6 +426,9 @@ module active_edge_list #(
     out_value_o, out_eol_o})
   `WATKINS_ASSERT(a_no_insert_on_swap, swap |-> !ins_valid)
   `WATKINS_ASSERT(a_no_ram_collision, !(ins_write && rd_addr == wr_addr))
+  // The order pipeline's keys carry consecutive body indices (occ1_q counts order_q's entries).
+  `WATKINS_ASSERT(a_order_index, ord1_q |-> (CntB'(key1_q[IB-1:0]) == cnt_fill_q - CntB'(1)))
+  `WATKINS_ASSERT(a_order_index2, (ord1_q && ord2_q) |-> (key1_q[IB-1:0] == key2_q[IB-1:0] + IB'(1)))
   `WATKINS_COVER(c_overflow, $rose(overflow_o))
   `WATKINS_COVER(c_new_and_stepped, ins_step && frame_q && head_edge && rec.y0 == line_q)
 endmodule

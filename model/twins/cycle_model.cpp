@@ -117,7 +117,10 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
   bool out_done_q = false, inc_done_q = false, eol_sent_q = false;
   std::size_t next_record = 0;
   bool eof_taken = false;
+  bool step_valid = false, step_retire = false;  // the register in front of the incrementer (step_q)
   bool st_valid = false, st_retire = false;  // the edge_incrementer's output (st_valid, st_retire)
+  bool ord1_q = false, ord2_q = false;       // the sorted insertion's two pipeline stages
+  bool swap_q = false;                       // the swap, decided a cycle before it acts
   // ---- segment_former: its input and pairing registers (the edge and whether pairing it emits)
   // and its output, all three moved by one enable
   bool sf_in_valid = false, sf_in_emits = false;  // in_valid_q; the edge closes or is a marker
@@ -153,8 +156,8 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
   // out behind a stalled pipeline, a long span behind full queues).
   auto key = [&] {
     return std::make_tuple(frame_q, drain_q, line_q, rd_q, cnt_stream, cnt_fill, out_done_q, inc_done_q,
-                           eol_sent_q, next_record, eof_taken, st_valid, st_retire, sf_in_valid,
-                           sf_in_emits, sf_pr_valid, sf_pr_emits, seg_valid,
+                           eol_sent_q, next_record, eof_taken, step_valid, step_retire, st_valid, st_retire,
+                           ord1_q, ord2_q, swap_q, sf_in_valid, sf_in_emits, sf_pr_valid, sf_pr_emits, seg_valid,
                            s0_valid_q, recip_valid, recip_out, tail_valid, tail_item, fifo[0], fifo[1], fifo[2], fifo[3], fifo_head, fifo_count, step_active,
                            frag_valid, frag_eol, norm.valid, norm.eol, shade.valid, shade.eol, q_count,
                            q_eol, rd_busy_q, rline_q, lines_written);
@@ -222,7 +225,11 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
     const bool edge_ready = take_new || drop_late || (drain_q && edge_valid);
     const bool ins_valid = ins_step || take_new;
     const bool src_done = line_q == height || (edge_valid && (head_eof || y0 > line_q));
-    const bool swap = live && (line_q == 0 || eol_sent_q) && !st_valid && src_done;
+    // The swap is decided a cycle before it acts (swap_q), once the incrementer's two stages and
+    // the insertion's two are empty.
+    const bool swap_now = live && (line_q == 0 || eol_sent_q) && !step_valid && !st_valid && !ord1_q &&
+                          !ord2_q && src_done && !swap_q;
+    const bool swap = swap_q;
 
     // ================= registers =================
     const bool rd_counts = rd_busy_q && !rd_last;
@@ -304,8 +311,10 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
       sf_in_emits = ae_fire && (!have_edge || st.closes[g]);
     }
     // edge incrementer
-    st_valid = inc_fire;
-    if (inc_fire) st_retire = st.retire[g];
+    st_valid = step_valid;
+    st_retire = step_retire;
+    step_valid = inc_fire;
+    if (inc_fire) step_retire = st.retire[g];
     // active-edge list
     if (advance) {
       ++rd_q;
@@ -321,6 +330,9 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
       last_progress = t;
     }
     if (ins_valid) ++cnt_fill;
+    ord2_q = ord1_q;
+    ord1_q = ins_valid;  // (front_half throws on an overflow, so every insertion is written)
+    swap_q = swap_now;
     if (swap) {
       if (line_q == height) {
         drain_q = true;
