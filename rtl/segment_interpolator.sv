@@ -1,7 +1,8 @@
 // segment_interpolator: span setup for each segment E..F, then one fragment per pixel by alpha
 // stepping, exactly model/twins/segment_interpolator.cpp (setup(), fragment(), step()).
-// Setup pipeline, one segment per clock: s0 (pixel range, clipping, dx, offset, deltas) ->
-// span_reciprocal (26) -> sa (alpha and step partial products) -> sp (their sums) -> sh (their
+// Setup pipeline, one segment per clock: s0 (first pixel centres, dx, offset, deltas) ->
+// span_reciprocal (26) -> sa (pixel range clamped to the screen, empty test, alpha and step
+// partial products, deltas in 17-bit pieces when wider than a MULT18) -> sp (their sums) -> sh (their
 // shifts) -> sb (round, clamp alpha0, saturate steps) -> sc (value partial products) -> sd
 // (their sums with E and the rounding constant: the value E + round(delta*alpha0)) -> FIFO;
 // empty spans are dropped before the FIFO. The stepper emits one fragment per clock from a registered output,
