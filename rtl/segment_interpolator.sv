@@ -494,6 +494,9 @@ module segment_interpolator #(
   logic [DepB-1:0]   depth_d;
   logic [3*8-1:0]    rgb_d;      // {B, G, R} by slot
   logic [3*NB-1:0]   normal_d;   // {Nz, Ny, Nx}
+  logic [2*DepB-1:0] depth_src;  // per source: {FIFO head, stepper}
+  logic [2*3*8-1:0]  rgb_src;
+  logic [2*3*NB-1:0] normal_src;
   for (genvar c = 1; c <= NI; c++) begin : g_frag
     localparam int unsigned W  = watkins_pkg::slot_bits(c, XBits, ZBits, AttrBits);
     localparam int unsigned F  = (c == 1) ? ZFracBits : AttrFracBits;
@@ -502,56 +505,65 @@ module segment_interpolator #(
     // The rounded integer part, and a width that holds it and the level's maximum.
     localparam int unsigned RB = W + 1 - F;
     localparam int unsigned CW = (RB > HiBits + 1) ? RB : HiBits + 1;
-    logic signed [W-1:0] v;
-    /* verilator lint_off UNUSEDSIGNAL */
-    logic signed [W:0]   t;  // fraction bits are rounded away
-    /* verilator lint_on UNUSEDSIGNAL */
-    logic signed [CW-1:0] r;
-    logic [CW-2:0]       mag;  // r without its sign
-    logic [HiBits-1:0]   level;
-    assign v = cur_value[Lo +: W];
     assign next_value[Lo +: W] = cur_value[Lo +: W] + cur_step[Lo +: W];
-    if (F > 0) begin : g_round
-      assign t = $signed({v[W-1], v}) + $signed((W + 1)'(1) << (F - 1));
-    end else begin : g_exact
-      assign t = $signed({v[W-1], v});
-    end
-    assign r = CW'($signed(t[W:F]));
-    // clamp(r, 0, 2^HiBits - 1) from r's bits, not through two compares after the rounding add:
-    // below 0 when the sign is set, above the maximum when a bit above the level's is set.
-    assign mag   = r[CW-2:0];
-    assign level = r[CW-1] ? '0 : (|(mag >> HiBits)) ? {HiBits{1'b1}} : HiBits'(mag);
-    if (c == 1) begin : g_depth
-      assign depth_d = level;
-    end else begin : g_attr
-      assign rgb_d[(c - 2)*8 +: 8] = level;
-      // Normal: FracBits fraction bits out of F.
-      localparam int unsigned FB = watkins_pkg::FracBits;
-      localparam int unsigned NW = (F >= FB) ? W + 1 - (F - FB) : W + (FB - F);  // rescaled width
-      localparam int unsigned SW = (NW > NB) ? NW : NB;                           // compare width
-      logic signed [NW-1:0] n;
-      logic signed [SW-1:0] ns;
-      logic [SW-NB:0]       ns_hi;  // all equal: ns fits NB bits
-      if (F > FB) begin : g_down
-        /* verilator lint_off UNUSEDSIGNAL */
-        logic signed [W:0] tn;
-        /* verilator lint_on UNUSEDSIGNAL */
-        assign tn = $signed({v[W-1], v}) + $signed((W + 1)'(1) << (F - FB - 1));
-        assign n  = tn[W:F-FB];
-      end else if (F == FB) begin : g_same
-        assign n = $signed({v[W-1], v});
-      end else begin : g_up
-        assign n = $signed({v, (FB - F)'(0)});
+    // The readings of both sources, the stepper's registers (s = 0) and the FIFO head (s = 1),
+    // each from its own value; st_active_q picks among the readings, after the rounding add and
+    // the clamp (before them, its fan-out to every value bit and the FIFO's read were in series
+    // with that add: the stepper's longest path).
+    for (genvar s = 0; s < 2; s++) begin : g_src
+      logic signed [W-1:0] v;
+      /* verilator lint_off UNUSEDSIGNAL */
+      logic signed [W:0]   t;  // fraction bits are rounded away
+      /* verilator lint_on UNUSEDSIGNAL */
+      logic signed [CW-1:0] r;
+      logic [CW-2:0]       mag;  // r without its sign
+      logic [HiBits-1:0]   level;
+      assign v = (s == 0) ? st_value_q[Lo +: W] : f_out.value[Lo +: W];
+      if (F > 0) begin : g_round
+        assign t = $signed({v[W-1], v}) + $signed((W + 1)'(1) << (F - 1));
+      end else begin : g_exact
+        assign t = $signed({v[W-1], v});
       end
-      assign ns    = SW'(n);
-      assign ns_hi = ns[SW-1:NB-1];
-      // Saturate to NB bits from the bits above them, not through two compares.
-      assign normal_d[(c - 2)*NB +: NB] =
-          (&ns_hi || ~|ns_hi) ? NB'(ns)
-        : ns[SW-1]            ? NB'(64'd1 << (NB - 1))
-        :                       NB'((64'd1 << (NB - 1)) - 1);
+      assign r = CW'($signed(t[W:F]));
+      // clamp(r, 0, 2^HiBits - 1) from r's bits, not through two compares after the rounding add:
+      // below 0 when the sign is set, above the maximum when a bit above the level's is set.
+      assign mag   = r[CW-2:0];
+      assign level = r[CW-1] ? '0 : (|(mag >> HiBits)) ? {HiBits{1'b1}} : HiBits'(mag);
+      if (c == 1) begin : g_depth
+        assign depth_src[s*DepB +: DepB] = level;
+      end else begin : g_attr
+        assign rgb_src[s*24 + (c - 2)*8 +: 8] = level;
+        // Normal: FracBits fraction bits out of F.
+        localparam int unsigned FB = watkins_pkg::FracBits;
+        localparam int unsigned NW = (F >= FB) ? W + 1 - (F - FB) : W + (FB - F);  // rescaled width
+        localparam int unsigned SW = (NW > NB) ? NW : NB;                           // compare width
+        logic signed [NW-1:0] n;
+        logic signed [SW-1:0] ns;
+        logic [SW-NB:0]       ns_hi;  // all equal: ns fits NB bits
+        if (F > FB) begin : g_down
+          /* verilator lint_off UNUSEDSIGNAL */
+          logic signed [W:0] tn;
+          /* verilator lint_on UNUSEDSIGNAL */
+          assign tn = $signed({v[W-1], v}) + $signed((W + 1)'(1) << (F - FB - 1));
+          assign n  = tn[W:F-FB];
+        end else if (F == FB) begin : g_same
+          assign n = $signed({v[W-1], v});
+        end else begin : g_up
+          assign n = $signed({v, (FB - F)'(0)});
+        end
+        assign ns    = SW'(n);
+        assign ns_hi = ns[SW-1:NB-1];
+        // Saturate to NB bits from the bits above them, not through two compares.
+        assign normal_src[s*3*NB + (c - 2)*NB +: NB] =
+            (&ns_hi || ~|ns_hi) ? NB'(ns)
+          : ns[SW-1]            ? NB'(64'd1 << (NB - 1))
+          :                       NB'((64'd1 << (NB - 1)) - 1);
+      end
     end
   end
+  assign depth_d  = st_active_q ? depth_src[0 +: DepB]   : depth_src[DepB +: DepB];
+  assign rgb_d    = st_active_q ? rgb_src[0 +: 24]       : rgb_src[24 +: 24];
+  assign normal_d = st_active_q ? normal_src[0 +: 3*NB]  : normal_src[3*NB +: 3*NB];
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
