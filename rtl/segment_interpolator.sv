@@ -1,7 +1,8 @@
 // segment_interpolator: span setup for each segment E..F, then one fragment per pixel by alpha
 // stepping, exactly model/twins/segment_interpolator.cpp (setup(), fragment(), step()).
-// Setup pipeline, one segment per clock: s0 (pixel range, clipping, dx, offset, deltas) ->
-// span_reciprocal (26) -> sa (alpha and step partial products) -> sp (their sums) -> sh (their
+// Setup pipeline, one segment per clock: s0 (first pixel centres, dx, offset, deltas) ->
+// span_reciprocal (26) -> sa (pixel range clamped to the screen, empty test, alpha and step
+// partial products, deltas in 17-bit pieces when wider than a MULT18) -> sp (their sums) -> sh (their
 // shifts) -> sb (round, clamp alpha0, saturate steps) -> sc (value partial products) -> sd
 // (their sums with E and the rounding constant: the value E + round(delta*alpha0)) -> FIFO;
 // empty spans are dropped before the FIFO. The stepper emits one fragment per clock from a registered output,
@@ -91,6 +92,20 @@ module segment_interpolator #(
   localparam int unsigned ShSB   = $clog2(ShSMax + 1);
 
   // ---------------------------------------------------------------- s0: range and clipping
+  // s0 -> span_reciprocal: the first centres of X_E and X_F unclamped; sa clamps them and decides
+  // whether the span is empty (span_mid_t), so s0 holds only first_centre's add and the offset's
+  // mux (the clamps and the empty compares after that add were s0's longest path).
+  typedef struct packed {
+    logic                    eol;
+    logic [PolyIdBits-1:0]   poly;
+    logic [MIB-1:0]          material;
+    logic signed [PCB-1:0]   fce;     // first_centre(X_E)
+    logic signed [PCB-1:0]   fcf;     // first_centre(X_F)
+    logic [DxBits-1:0]       offset;  // x_start + 1/2 - X_E >= 0, X units
+    logic [IVB-1:0]          e;       // E's slots Z..
+    logic [IDB-1:0]          delta;   // F - E per slot
+  } span_pre_t;
+  // sa .. sd: the pixel range clamped to the screen.
   typedef struct packed {
     logic                    eol;
     logic                    empty;   // no pixel centre in [X_E, X_F) on screen
@@ -98,10 +113,9 @@ module segment_interpolator #(
     logic [MIB-1:0]          material;
     logic [LB-1:0]           xs;      // first pixel
     logic [LB-1:0]           xe;      // one past the last pixel
-    logic [DxBits-1:0]       offset;  // x_start + 1/2 - X_E >= 0, X units
     logic [IVB-1:0]          e;       // E's slots Z..
     logic [IDB-1:0]          delta;   // F - E per slot
-  } span_pre_t;
+  } span_mid_t;
 
   // First pixel whose centre is at or right of X: ceil(X - 1/2) = (X + 1/2 - 2^-FX) >> FX,
   // sign-extended to PCB bits.
@@ -127,11 +141,7 @@ module segment_interpolator #(
   assign xe_f = seg_f_i[0 +: XBits];
 
   always_comb begin
-    logic signed [PCB-1:0] fce, fcf;
-    // The clamped ends keep LB bits: beyond them the span is empty (decided from fce and fcf).
-    /* verilator lint_off UNUSEDSIGNAL */
-    logic signed [PCB-1:0] xs_full, xe_full;
-    /* verilator lint_on UNUSEDSIGNAL */
+    logic signed [PCB-1:0] fce;
     // The clipped offset h - X_E: offset < dx when the span is not empty, so its top bits are
     // dropped (the difference is exact modulo 2^(DxBits+2)).
     /* verilator lint_off UNUSEDSIGNAL */
@@ -139,17 +149,11 @@ module segment_interpolator #(
     /* verilator lint_on UNUSEDSIGNAL */
     logic [FX-1:0]             frac_h, off_frac;
     fce     = first_centre(xe_e);
-    fcf     = first_centre(xe_f);
-    xs_full = (fce < 0) ? '0 : fce;
-    xe_full = (fcf > $signed(PCB'(width_i))) ? $signed(PCB'(width_i)) : fcf;
     s0_d.eol   = seg_eol_i;
-    // empty = min(fcf, width) <= max(fce, 0), spread into four compares of the unclamped ends
-    // that run side by side (through the clamps it was the block's longest path).
-    s0_d.empty = (fcf <= fce) || (fcf <= 0) || ($signed(PCB'(width_i)) <= fce) || (width_i == '0);
+    s0_d.fce   = fce;
+    s0_d.fcf   = first_centre(xe_f);
     s0_d.poly     = seg_poly_i;
     s0_d.material = seg_material_i;
-    s0_d.xs    = LB'(xs_full);
-    s0_d.xe    = LB'(xe_full);
     // offset = x_start + h - X_E (h = 2^(FX-1)), not through x_start's add and clamp: unclipped
     // (fce >= 0, x_start = fce) fce 2^FX = X_E + h - 1 - ((X_E + h - 1) mod 2^FX), so the offset
     // is 2^FX - 1 - ((X_E + h - 1) mod 2^FX), the complement of an FX-bit sum of X_E's fraction
@@ -227,7 +231,8 @@ module segment_interpolator #(
   localparam int unsigned RHi = RecipBits + 1 - MSplit;                    // recip's high part
   localparam int unsigned AHi = AlphaBits + 1 - MSplit;                    // alpha0's high part
   logic                sa_valid_q, sp_valid_q, sh_valid_q, sb_valid_q, sc_valid_q, sd_valid_q;
-  span_pre_t           sa_span_q, sp_span_q, sh_span_q, sb_span_q, sc_span_q;
+  span_mid_t           sa_span_d;
+  span_mid_t           sa_span_q, sp_span_q, sh_span_q, sb_span_q, sc_span_q;
   logic [ShAB-1:0]     sa_sha_q, sp_sha_q;  // alpha0's shift p + RecipBits - AlphaBits
   logic [ShSB-1:0]     sa_shs_q, sp_shs_q;  // the steps' shift p + RecipBits - FX (> 0)
   logic [2*MSplit-1:0]   sa_pa00_q;           // offset * recip: low x low
@@ -236,9 +241,9 @@ module segment_interpolator #(
   logic [OHi+RHi-1:0]    sa_pa11_q;           // high x high (0 for an offset of MSplit bits)
   logic [APBits-1:0]   sp_pa_q;             // offset * recip, unsigned
   logic [AlphaBits:0]  sb_alpha_q;          // alpha0 in [0, 2^AlphaBits]
-  // offset and delta are spent by the FIFO; keeping one span type is simpler than a third struct.
+  // e and delta are spent by the FIFO; keeping one span type is simpler than a third struct.
   /* verilator lint_off UNUSEDSIGNAL */
-  span_pre_t           sd_span_q;
+  span_mid_t           sd_span_q;
   /* verilator lint_on UNUSEDSIGNAL */
   logic [IVB-1:0]      sb_step_q, sc_step_q, sd_step_q;
   logic [IVB-1:0]      sd_value_q;          // E + round_shift(delta * alpha0, AlphaBits) per slot
@@ -268,9 +273,30 @@ module segment_interpolator #(
   assign sb_ua   = sh_u_q[AlphaBits+1:1];
   assign sb_over = |sh_u_q[APBits:AlphaBits+2] || (sb_ua[AlphaBits] && (|sb_ua[AlphaBits-1:0] || sh_u_q[0]));
 
+  // sa: the pixel range x_start = max(fce, 0), x_end = min(fcf, width), from s0's registered first
+  // centres. The clamped ends keep LB bits: beyond them the span is empty.
+  always_comb begin
+    /* verilator lint_off UNUSEDSIGNAL */
+    logic signed [PCB-1:0] xs_full, xe_full;
+    /* verilator lint_on UNUSEDSIGNAL */
+    xs_full = (rc_span.fce < 0) ? '0 : rc_span.fce;
+    xe_full = (rc_span.fcf > $signed(PCB'(width_i))) ? $signed(PCB'(width_i)) : rc_span.fcf;
+    sa_span_d.eol      = rc_span.eol;
+    // empty = min(fcf, width) <= max(fce, 0), spread into four compares of the unclamped ends
+    // that run side by side (through the clamps it was the block's longest path).
+    sa_span_d.empty    = (rc_span.fcf <= rc_span.fce) || (rc_span.fcf <= 0)
+                      || ($signed(PCB'(width_i)) <= rc_span.fce) || (width_i == '0);
+    sa_span_d.poly     = rc_span.poly;
+    sa_span_d.material = rc_span.material;
+    sa_span_d.xs       = LB'(xs_full);
+    sa_span_d.xe       = LB'(xe_full);
+    sa_span_d.e        = rc_span.e;
+    sa_span_d.delta    = rc_span.delta;
+  end
+
   always_ff @(posedge clk_i) begin
     if (tail_en) begin
-      sa_span_q <= rc_span;
+      sa_span_q <= sa_span_d;
       // Both shifts are known from p alone: computed here, beside the products.
       sa_sha_q  <= ShAB'(rc_p) + ShAB'(RecipBits) - ShAB'(AlphaBits);
       sa_shs_q  <= ShSB'(rc_p) + ShSB'(RecipBits) - ShSB'(FX);
@@ -305,17 +331,49 @@ module segment_interpolator #(
     localparam logic signed [PS-1:0] StepMax = $signed((PS'(1) << (W - 1)) - PS'(1));
     localparam logic signed [PS-1:0] StepMin = -$signed(PS'(1) << (W - 1));
     // The delta (signed, W + 1 bits) times an unsigned low part ({0, x0}: MSplit + 1 bits) and
-    // high part: exact products.
-    localparam int unsigned P0B = W + MSplit + 2;
-    localparam int unsigned P1B = W + RHi + 2;
-    localparam int unsigned V1B = W + AHi + 2;
+    // high part: exact products. A delta wider than a multiplier's signed 18 bits is cut into K
+    // pieces too, MSplit unsigned bits each and a signed top, so every partial product is one
+    // MULT18 registered straight from it (a 43-bit delta times 18 bits was three multipliers and
+    // their LUT adders in one clock, the Phong configuration's longest path).
+    localparam int unsigned K   = (W + 1 <= MSplit + 1) ? 1 : (W + MSplit) / MSplit;  // ceil((W+1)/MSplit)
+    localparam int unsigned DB  = (K == 1) ? W + 1 : MSplit + 1;  // a piece, signed
+    localparam int unsigned Q0B = DB + MSplit + 1;                // piece * low part
+    localparam int unsigned Q1B = DB + RHi + 1;                   // piece * recip's high part
+    localparam int unsigned QV1B = DB + AHi + 1;                  // piece * alpha0's high part
     logic signed [W:0]     d_rc, d_sb;  // the delta leaving the reciprocal, and in sb
-    logic signed [P0B-1:0] ps0_q, pv0_q;
-    logic signed [P1B-1:0] ps1_q;
-    logic signed [V1B-1:0] pv1_q;
+    logic [K*DB-1:0]       d_rc_p, d_sb_p;  // their pieces, piece k at bit MSplit k of the delta
+    logic [K*Q0B-1:0]      ps0_q, pv0_q;
+    logic [K*Q1B-1:0]      ps1_q;
+    logic [K*QV1B-1:0]     pv1_q;
     logic signed [PS-1:0]  ps_q;        // delta * recip, in sp
+    logic signed [PS-1:0]  ps_sum;
+    logic [VS-1:0]         pv_sum;
     assign d_rc = rc_span.delta[Dl +: W + 1];
     assign d_sb = sb_span_q.delta[Dl +: W + 1];
+    for (genvar k = 0; k < K; k++) begin : g_piece
+      if (k == K - 1) begin : g_top
+        assign d_rc_p[k*DB +: DB] = DB'(d_rc >>> (MSplit * k));
+        assign d_sb_p[k*DB +: DB] = DB'(d_sb >>> (MSplit * k));
+      end else begin : g_low
+        assign d_rc_p[k*DB +: DB] = {1'b0, d_rc[MSplit*k +: MSplit]};
+        assign d_sb_p[k*DB +: DB] = {1'b0, d_sb[MSplit*k +: MSplit]};
+      end
+    end
+    // The partial products' sums, modulo the product's word as before.
+    always_comb begin
+      ps_sum = '0;
+      // value = wrap(E + ((pv + 2^(AlphaBits-1)) >> AlphaBits), W) = bits [AlphaBits +: W] of
+      // pv + (E 2^AlphaBits + 2^(AlphaBits-1)): E and the rounding constant are one operand
+      // (their bits do not overlap), added with the partial products in sd, so the FIFO's
+      // input is a register. Sums modulo 2^VS keep those bits.
+      pv_sum = {sc_span_q.e[Lo +: W], 1'b1, (AlphaBits - 1)'(0)};
+      for (int k = 0; k < K; k++) begin
+        ps_sum = ps_sum + (PS'($signed(ps0_q[k*Q0B +: Q0B])) << (MSplit * k))
+                        + (PS'($signed(ps1_q[k*Q1B +: Q1B])) << (MSplit * (k + 1)));
+        pv_sum = pv_sum + (VS'($signed(pv0_q[k*Q0B +: Q0B])) << (MSplit * k))
+                        + (VS'($signed(pv1_q[k*QV1B +: QV1B])) << (MSplit * (k + 1)));
+      end
+    end
     // Shift first, round after, as alpha0: u = {x, 0} >>> s = floor(x / 2^(s-1)) (s > 0), and
     // rs = floor((u + 1) / 2) = (u >>> 1) + u[0]. Saturate from u's high bits: when u >>> 1
     // does not fit W bits, rs saturates to its sign (below the range, + u[0] reaches at most
@@ -327,20 +385,17 @@ module segment_interpolator #(
     assign at_max = !u[W] && &u[W-1:1];
     always_ff @(posedge clk_i) begin
       if (tail_en) begin
-        ps0_q <= P0B'(d_rc * $signed({1'b0, rc_r0}));
-        ps1_q <= P1B'(d_rc * $signed({1'b0, rc_r1}));
-        ps_q  <= PS'(ps0_q) + (PS'(ps1_q) << MSplit);
+        for (int k = 0; k < K; k++) begin
+          ps0_q[k*Q0B +: Q0B]   <= Q0B'($signed(d_rc_p[k*DB +: DB]) * $signed({1'b0, rc_r0}));
+          ps1_q[k*Q1B +: Q1B]   <= Q1B'($signed(d_rc_p[k*DB +: DB]) * $signed({1'b0, rc_r1}));
+          pv0_q[k*Q0B +: Q0B]   <= Q0B'($signed(d_sb_p[k*DB +: DB]) * $signed({1'b0, sb_a0}));
+          pv1_q[k*QV1B +: QV1B] <= QV1B'($signed(d_sb_p[k*DB +: DB]) * $signed({1'b0, sb_a1}));
+        end
+        ps_q  <= ps_sum;
         u     <= $signed({ps_q, 1'b0}) >>> sp_shs_q;
         if (!fits) sb_step_q[Lo +: W] <= u[PS] ? W'(StepMin) : W'(StepMax);
         else sb_step_q[Lo +: W] <= u[W:1] + W'(u[0] && !at_max);
-        pv0_q <= P0B'(d_sb * $signed({1'b0, sb_a0}));
-        pv1_q <= V1B'(d_sb * $signed({1'b0, sb_a1}));
-        // value = wrap(E + ((pv + 2^(AlphaBits-1)) >> AlphaBits), W) = bits [AlphaBits +: W] of
-        // pv + (E 2^AlphaBits + 2^(AlphaBits-1)): E and the rounding constant are one operand
-        // (their bits do not overlap), added with the partial products here, so the FIFO's
-        // input is a register. Sums modulo 2^VS keep those bits.
-        sd_value_q[Lo +: W] <= W'((VS'(pv0_q) + (VS'(pv1_q) << MSplit)
-                                   + {sc_span_q.e[Lo +: W], 1'b1, (AlphaBits - 1)'(0)}) >> AlphaBits);
+        sd_value_q[Lo +: W] <= W'(pv_sum >> AlphaBits);
       end
     end
   end
@@ -439,6 +494,9 @@ module segment_interpolator #(
   logic [DepB-1:0]   depth_d;
   logic [3*8-1:0]    rgb_d;      // {B, G, R} by slot
   logic [3*NB-1:0]   normal_d;   // {Nz, Ny, Nx}
+  logic [2*DepB-1:0] depth_src;  // per source: {FIFO head, stepper}
+  logic [2*3*8-1:0]  rgb_src;
+  logic [2*3*NB-1:0] normal_src;
   for (genvar c = 1; c <= NI; c++) begin : g_frag
     localparam int unsigned W  = watkins_pkg::slot_bits(c, XBits, ZBits, AttrBits);
     localparam int unsigned F  = (c == 1) ? ZFracBits : AttrFracBits;
@@ -447,56 +505,65 @@ module segment_interpolator #(
     // The rounded integer part, and a width that holds it and the level's maximum.
     localparam int unsigned RB = W + 1 - F;
     localparam int unsigned CW = (RB > HiBits + 1) ? RB : HiBits + 1;
-    logic signed [W-1:0] v;
-    /* verilator lint_off UNUSEDSIGNAL */
-    logic signed [W:0]   t;  // fraction bits are rounded away
-    /* verilator lint_on UNUSEDSIGNAL */
-    logic signed [CW-1:0] r;
-    logic [CW-2:0]       mag;  // r without its sign
-    logic [HiBits-1:0]   level;
-    assign v = cur_value[Lo +: W];
     assign next_value[Lo +: W] = cur_value[Lo +: W] + cur_step[Lo +: W];
-    if (F > 0) begin : g_round
-      assign t = $signed({v[W-1], v}) + $signed((W + 1)'(1) << (F - 1));
-    end else begin : g_exact
-      assign t = $signed({v[W-1], v});
-    end
-    assign r = CW'($signed(t[W:F]));
-    // clamp(r, 0, 2^HiBits - 1) from r's bits, not through two compares after the rounding add:
-    // below 0 when the sign is set, above the maximum when a bit above the level's is set.
-    assign mag   = r[CW-2:0];
-    assign level = r[CW-1] ? '0 : (|(mag >> HiBits)) ? {HiBits{1'b1}} : HiBits'(mag);
-    if (c == 1) begin : g_depth
-      assign depth_d = level;
-    end else begin : g_attr
-      assign rgb_d[(c - 2)*8 +: 8] = level;
-      // Normal: FracBits fraction bits out of F.
-      localparam int unsigned FB = watkins_pkg::FracBits;
-      localparam int unsigned NW = (F >= FB) ? W + 1 - (F - FB) : W + (FB - F);  // rescaled width
-      localparam int unsigned SW = (NW > NB) ? NW : NB;                           // compare width
-      logic signed [NW-1:0] n;
-      logic signed [SW-1:0] ns;
-      logic [SW-NB:0]       ns_hi;  // all equal: ns fits NB bits
-      if (F > FB) begin : g_down
-        /* verilator lint_off UNUSEDSIGNAL */
-        logic signed [W:0] tn;
-        /* verilator lint_on UNUSEDSIGNAL */
-        assign tn = $signed({v[W-1], v}) + $signed((W + 1)'(1) << (F - FB - 1));
-        assign n  = tn[W:F-FB];
-      end else if (F == FB) begin : g_same
-        assign n = $signed({v[W-1], v});
-      end else begin : g_up
-        assign n = $signed({v, (FB - F)'(0)});
+    // The readings of both sources, the stepper's registers (s = 0) and the FIFO head (s = 1),
+    // each from its own value; st_active_q picks among the readings, after the rounding add and
+    // the clamp (before them, its fan-out to every value bit and the FIFO's read were in series
+    // with that add: the stepper's longest path).
+    for (genvar s = 0; s < 2; s++) begin : g_src
+      logic signed [W-1:0] v;
+      /* verilator lint_off UNUSEDSIGNAL */
+      logic signed [W:0]   t;  // fraction bits are rounded away
+      /* verilator lint_on UNUSEDSIGNAL */
+      logic signed [CW-1:0] r;
+      logic [CW-2:0]       mag;  // r without its sign
+      logic [HiBits-1:0]   level;
+      assign v = (s == 0) ? st_value_q[Lo +: W] : f_out.value[Lo +: W];
+      if (F > 0) begin : g_round
+        assign t = $signed({v[W-1], v}) + $signed((W + 1)'(1) << (F - 1));
+      end else begin : g_exact
+        assign t = $signed({v[W-1], v});
       end
-      assign ns    = SW'(n);
-      assign ns_hi = ns[SW-1:NB-1];
-      // Saturate to NB bits from the bits above them, not through two compares.
-      assign normal_d[(c - 2)*NB +: NB] =
-          (&ns_hi || ~|ns_hi) ? NB'(ns)
-        : ns[SW-1]            ? NB'(64'd1 << (NB - 1))
-        :                       NB'((64'd1 << (NB - 1)) - 1);
+      assign r = CW'($signed(t[W:F]));
+      // clamp(r, 0, 2^HiBits - 1) from r's bits, not through two compares after the rounding add:
+      // below 0 when the sign is set, above the maximum when a bit above the level's is set.
+      assign mag   = r[CW-2:0];
+      assign level = r[CW-1] ? '0 : (|(mag >> HiBits)) ? {HiBits{1'b1}} : HiBits'(mag);
+      if (c == 1) begin : g_depth
+        assign depth_src[s*DepB +: DepB] = level;
+      end else begin : g_attr
+        assign rgb_src[s*24 + (c - 2)*8 +: 8] = level;
+        // Normal: FracBits fraction bits out of F.
+        localparam int unsigned FB = watkins_pkg::FracBits;
+        localparam int unsigned NW = (F >= FB) ? W + 1 - (F - FB) : W + (FB - F);  // rescaled width
+        localparam int unsigned SW = (NW > NB) ? NW : NB;                           // compare width
+        logic signed [NW-1:0] n;
+        logic signed [SW-1:0] ns;
+        logic [SW-NB:0]       ns_hi;  // all equal: ns fits NB bits
+        if (F > FB) begin : g_down
+          /* verilator lint_off UNUSEDSIGNAL */
+          logic signed [W:0] tn;
+          /* verilator lint_on UNUSEDSIGNAL */
+          assign tn = $signed({v[W-1], v}) + $signed((W + 1)'(1) << (F - FB - 1));
+          assign n  = tn[W:F-FB];
+        end else if (F == FB) begin : g_same
+          assign n = $signed({v[W-1], v});
+        end else begin : g_up
+          assign n = $signed({v, (FB - F)'(0)});
+        end
+        assign ns    = SW'(n);
+        assign ns_hi = ns[SW-1:NB-1];
+        // Saturate to NB bits from the bits above them, not through two compares.
+        assign normal_src[s*3*NB + (c - 2)*NB +: NB] =
+            (&ns_hi || ~|ns_hi) ? NB'(ns)
+          : ns[SW-1]            ? NB'(64'd1 << (NB - 1))
+          :                       NB'((64'd1 << (NB - 1)) - 1);
+      end
     end
   end
+  assign depth_d  = st_active_q ? depth_src[0 +: DepB]   : depth_src[DepB +: DepB];
+  assign rgb_d    = st_active_q ? rgb_src[0 +: 24]       : rgb_src[24 +: 24];
+  assign normal_d = st_active_q ? normal_src[0 +: 3*NB]  : normal_src[3*NB +: 3*NB];
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
