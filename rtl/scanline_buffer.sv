@@ -83,20 +83,23 @@ module scanline_buffer #(
   /* verilator lint_on UNUSEDSIGNAL */
 
   // ------------------------------------------------------------ written bits
-  // Kept by role, not by bank: neither wsel_q (a mux with a fan-out of 2 * MaxWidth) nor the
-  // bank-base adder is on their paths; only the RAM addresses use them. Stored by 32-pixel word
-  // and written by {word, bit}: synthesis decodes the two levels apart (a word enable and a bit
-  // in it, as the sparse search's one-hot does) and a simulator touches one word per update
-  // instead of the whole bank. mem2reg: yosys makes the words flops at once, each word's
-  // writes a case on the word index (as a memory with a port per loop write it mapped them
-  // to 35 % more LUTs). Padding bits of the last word (MaxWidth not a multiple of 32) are
-  // never set: every x written or read is below width_i <= MaxWidth.
+  // Kept by bank, in flops, one flat vector per bank (bank b's word w at bits_q[b][w]): the swap
+  // only flips wsel_q, so no bit's next state depends on the marker (kept by role, each of the
+  // 2 * MaxWidth bits chose between keeping and taking the other bank's at the swap: the marker's
+  // acceptance, deep and combinational, fanned out to all of them -- with the indexed write's
+  // address arithmetic, 17 ns on the ECP5, session 11). A bit is set by the fragment tested in
+  // its bank and cleared by the reader's take in its bank, each through one-hot word and bit
+  // selects (registered for the writer; compares, not shifts, for the reader), so a bit's next
+  // state is one or two LUTs. Readers pick the read bank's words with wsel_q. Stored by 32-pixel
+  // word: the sparse search keeps registers per word, and a simulator updates a word, not a bank.
+  // Padding bits of the last word (MaxWidth not a multiple of 32) are never set: every x written
+  // or read is below width_i <= MaxWidth.
   localparam int unsigned WordBits = 32;
   localparam int unsigned WIB      = $clog2(WordBits);
   localparam int unsigned Words    = (MaxWidth + WordBits - 1) / WordBits;
   localparam int unsigned WAB      = (Words > 1) ? $clog2(Words) : 1;
-  (* mem2reg *) logic [WordBits-1:0] rd_written_q [Words];  // the read bank's
-  (* mem2reg *) logic [WordBits-1:0] wr_written_q [Words];  // the write bank's
+  localparam int unsigned BankBits = Words * WordBits;
+  logic [2*BankBits-1:0] bits_q;  // bank b's word w at [(b * Words + w) * WordBits +: WordBits]
 
   // An x's word and its bit in it (x < MaxWidth: its high bits are zero).
   /* verilator lint_off UNUSEDSIGNAL */
@@ -105,6 +108,14 @@ module scanline_buffer #(
   endfunction
   function automatic logic [WIB-1:0] bit_of(logic [LB-1:0] x);
     bit_of = x[WIB-1:0];
+  endfunction
+  // Bank b's word w (w a constant: a part select; b picks one of two).
+  function automatic logic [WordBits-1:0] bank_word(logic b, int w);
+    bank_word = b ? bits_q[(Words + w) * WordBits +: WordBits] : bits_q[w * WordBits +: WordBits];
+  endfunction
+  // Word w's lowest-bit register in a flat vector of them.
+  function automatic logic [WIB-1:0] low_of(logic [Words*WIB-1:0] v, int w);
+    low_of = v[w * WIB +: WIB];
   endfunction
   // A word's lowest written bit (0 when it holds none).
   function automatic logic [WIB-1:0] lowest_bit(logic [WordBits-1:0] bits);
@@ -132,8 +143,7 @@ module scanline_buffer #(
   // (full mode keeps it idle and Verilator skips it); full mode empties the read words at each
   // line's end, when the reader has cleared every bit.
   logic [Words-1:0]    rd_occ_q, wr_occ_q;
-  (* mem2reg *) logic [WIB-1:0] rd_low_q [Words];
-  (* mem2reg *) logic [WIB-1:0] wr_low_q [Words];
+  logic [Words*WIB-1:0] rd_low_q, wr_low_q;  // word w's at [w * WIB +: WIB] (low_of)
   logic [Words-1:0]    first;     // one-hot: the read bank's first occupied word
   logic [WAB-1:0]      fw;        // that word
   logic [WIB-1:0]      lb;        // its lowest written bit
@@ -157,12 +167,12 @@ module scanline_buffer #(
       first = rd_occ_q & ~(rd_occ_q - 1'b1);
       for (int w = 0; w < Words; w++) begin
         if (first[w]) fw = WAB'(w);
-        lb |= first[w] ? rd_low_q[w] : '0;
+        lb |= first[w] ? low_of(rd_low_q, w) : '0;
         // Decoded by compares, not a shift: yosys's resource sharing merged the words' shifters
         // (only one word is first) into one behind a mux on the first word's path (22 ns on
         // the ECP5).
-        for (int i = 0; i < WordBits; i++) low_hot[w][i] = rd_low_q[w] == WIB'(i);
-        rest        = rd_written_q[w] & ~low_hot[w];
+        for (int i = 0; i < WordBits; i++) low_hot[w][i] = low_of(rd_low_q, w) == WIB'(i);
+        rest        = bank_word(!wsel_q, w) & ~low_hot[w];
         next_occ[w] = |rest;
         next_low[w] = lowest_bit(rest);
       end
@@ -206,14 +216,24 @@ module scanline_buffer #(
   assign frag_take    = frag_valid_i && !frag_eol_i;
   assign eol_take     = frag_valid_i && frag_eol_i && eol_ok;
 
-  // Step 1 (the accepting clock): read the depth word. Step 2: test against it -- or against the
-  // word written the clock before at the same address, which the RAM read did not see yet --
-  // and write. wr_written_q already holds that previous write.
+  // Step 1 (the accepting clock): read the depth word, and take the write bank's word holding
+  // the pixel (with the bit the fragment tested on this clock sets, which lands after it) and
+  // the one-hot selects of the pixel's word and bit. Step 2: test against the depth word -- or
+  // against the word written the clock before at the same address, which the RAM read did not
+  // see yet -- and write; the written bit is the selected word's bit (t_written: a 32-bit
+  // AND-OR of registers, not a 2 * MaxWidth-way mux), and the fragment sets it.
   logic                 t_valid_q, lw_valid_q;
   logic [AddrBits-1:0]  t_addr_q, lw_addr_q;
   /* verilator lint_off UNUSEDSIGNAL */
-  logic [LB-1:0]        t_x_q;     // t_addr_q's x (its bank is wsel_q's: a marker swaps only after); < MaxWidth
+  logic [LB-1:0]        t_x_q;     // t_addr_q's x (its bank is t_bank_q); < MaxWidth
   /* verilator lint_on UNUSEDSIGNAL */
+  logic                 t_bank_q;  // the bank it was accepted into: wsel_q while it is tested (a
+                                   // marker is never accepted between; a copy, so the set and
+                                   // the reader's clear have separate selects)
+  logic [Words-1:0]     t_whot_q;  // its word, one-hot
+  logic [WordBits-1:0]  t_bhot_q;  // its bit in the word, one-hot
+  logic [WordBits-1:0]  t_wword_q; // its bank's word as the test sees it
+  logic [WordBits-1:0]  a_wword;   // the accepted fragment's word in the write bank
   logic                 t_written; // the pixel already has a fragment
   logic [DWB-1:0]       t_word_q, lw_word_q, mem_word_q, old_word;
   logic [DepthBits-1:0] t_depth, old_depth;
@@ -221,11 +241,24 @@ module scanline_buffer #(
   logic [RB-1:0]        t_rgb_q;
   logic                 wins, tie_wins;
 
+  // Selected by compares, word by word (an indexed part select is a 2 * MaxWidth-bit shifter).
+  always_comb begin
+    a_wword = '0;
+    for (int w = 0; w < Words; w++)
+      if (word_of(frag_x_i) == WAB'(w)) a_wword = bank_word(wsel_q, w);
+  end
+
   always_ff @(posedge clk_i) begin
     if (frag_take) mem_word_q <= depth_mem[wa];
     if (frag_take) begin
       t_addr_q <= wa;
       t_x_q    <= frag_x_i;
+      t_bank_q <= wsel_q;
+      for (int w = 0; w < Words; w++) t_whot_q[w] <= word_of(frag_x_i) == WAB'(w);
+      for (int i = 0; i < WordBits; i++) t_bhot_q[i] <= bit_of(frag_x_i) == WIB'(i);
+      // The fragment tested now sets its bit after this clock: seen here if in the same word.
+      t_wword_q <= a_wword | ((t_valid_q && t_bank_q == wsel_q && word_of(t_x_q) == word_of(frag_x_i))
+                              ? t_bhot_q : '0);
       t_word_q <= {frag_poly_i, frag_depth_i};
       t_rgb_q  <= frag_rgb_i;
     end
@@ -239,7 +272,7 @@ module scanline_buffer #(
   // A tie goes to a strictly smaller id only: equal ids (one polygon's own spans) keep the first
   // arrival, as the model does.
   assign tie_wins  = tie_submission_i && t_depth == old_depth && t_poly < old_poly;
-  assign t_written = wr_written_q[word_of(t_x_q)][bit_of(t_x_q)];
+  assign t_written = |(t_wword_q & t_bhot_q);
   assign wins      = t_valid_q && (!t_written || (t_depth < old_depth) || tie_wins);
 
   always_ff @(posedge clk_i) begin
@@ -249,18 +282,33 @@ module scanline_buffer #(
     end
   end
 
-  // The written bits' update. Every fragment tested sets its pixel's bit, winner or not (a loser
-  // found the bit set already), so the depth test is not on this path. The pixel the reader
-  // takes is cleared: full mode x = rx_q; sparse, the first occupied word's lowest bit. Both
-  // only when the reader takes a pixel: take is rd_load without the search (full mode emits
-  // every step; sparse mode emits when it found one, or for the terminating beat, which clears
-  // nothing). Written as enabled single-bit updates, so a simulator touches one bit per
-  // fragment and per pixel instead of both MaxWidth-bit banks every clock.
+  // The written bits' update. Every fragment tested sets its pixel's bit in its bank, winner or
+  // not (a loser found the bit set already), so the depth test is not on this path. The pixel
+  // the reader takes is cleared in the read bank: full mode x = rx_q; sparse, the first occupied
+  // word's lowest bit. Both only when the reader takes a pixel: take is rd_load without the
+  // search (full mode emits every step; sparse mode emits when it found one, or for the
+  // terminating beat, which clears nothing). The tested fragment and the reader are never in
+  // one bank (a_tested_in_write_bank). Only the words touched change (a simulator skips the
+  // rest).
   logic                      take;
   logic                      covered;          // the pixel the reader takes is written
+  logic [WordBits-1:0]       rx_word;          // the read bank's word holding rx_q
+  logic [WordBits-1:0]       rd_clr [Words];   // the bits the reader's take clears, per word
   assign take = rd_busy_q && (!pixel_valid_o || pixel_ready_i);
+  always_comb begin
+    rx_word = '0;
+    for (int w = 0; w < Words; w++) begin
+      if (word_of(rx_q) == WAB'(w)) rx_word = bank_word(!wsel_q, w);
+      rd_clr[w] = '0;
+      if (take) begin
+        if (sparse_i) rd_clr[w] = first[w] ? low_hot[w] : '0;
+        else if (word_of(rx_q) == WAB'(w))
+          for (int i = 0; i < WordBits; i++) rd_clr[w][i] = bit_of(rx_q) == WIB'(i);
+      end
+    end
+  end
   // Sparse: the pixel found is written (none found: the terminating beat is not).
-  assign covered   = sparse_i ? cnt_found : rd_written_q[word_of(rx_q)][bit_of(rx_q)];
+  assign covered   = sparse_i ? cnt_found : rx_word[bit_of(rx_q)];
 
   // The counts: a fragment tested on an unwritten pixel adds one to the write bank's (the swap
   // clock's lands in the bank it makes the read bank); the reader's take of a covered pixel
@@ -285,58 +333,47 @@ module scanline_buffer #(
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
+      bits_q <= '0;
+    end else if (t_valid_q || take) begin
       for (int w = 0; w < Words; w++) begin
-        rd_written_q[w] <= '0;
-        wr_written_q[w] <= '0;
+        if (t_valid_q && t_whot_q[w]) begin
+          if (t_bank_q) bits_q[(Words + w) * WordBits +: WordBits] <= bank_word(1'b1, w) | t_bhot_q;
+          else          bits_q[w * WordBits +: WordBits]           <= bank_word(1'b0, w) | t_bhot_q;
+        end
+        if (wsel_q) bits_q[w * WordBits +: WordBits] <= bank_word(1'b0, w) & ~rd_clr[w];
+        else        bits_q[(Words + w) * WordBits +: WordBits] <= bank_word(1'b1, w) & ~rd_clr[w];
       end
-    end else if (eol_take) begin
-      // The swap exchanges the roles: the line just written (with its last fragment, tested on
-      // this clock) is read next; the line just read is empty by now (a_swap_read_clear).
-      for (int w = 0; w < Words; w++) begin
-        rd_written_q[w] <= wr_written_q[w];
-        wr_written_q[w] <= '0;
-      end
-      if (t_valid_q) rd_written_q[word_of(t_x_q)][bit_of(t_x_q)] <= 1'b1;
-    end else begin
-      if (t_valid_q) wr_written_q[word_of(t_x_q)][bit_of(t_x_q)] <= 1'b1;
-      if (take && sparse_i) begin
-        // By the decoded lowest bit, not an indexed write (see low_hot: shared shifters).
-        for (int w = 0; w < Words; w++)
-          if (first[w]) rd_written_q[w] <= rd_written_q[w] & ~low_hot[w];
-      end
-      if (take && !sparse_i) rd_written_q[word_of(rx_q)][bit_of(rx_q)] <= 1'b0;
     end
   end
 
-  // The words' occupancy and lowest bits (the search's registers), following the bits above.
-  logic [WAB-1:0] tw;       // the tested fragment's word and bit
-  logic [WIB-1:0] tb;
-  logic           t_lower;  // its bit becomes its word's lowest in the write bank
-  assign tw      = word_of(t_x_q);
-  assign tb      = bit_of(t_x_q);
-  assign t_lower = !wr_occ_q[tw] || tb < wr_low_q[tw];
+  // The words' occupancy and lowest bits (the search's registers), kept by role, following the
+  // bits above: a fragment's bit becomes its word's lowest when lower (each word compares its
+  // own; the one-hot word select picks). The swap hands the write bank's words to the reader.
+  logic [WIB-1:0]   tb;        // the tested fragment's bit
+  logic [Words-1:0] t_low;     // it becomes that word's lowest in the write bank
+  assign tb = bit_of(t_x_q);
+  always_comb
+    for (int w = 0; w < Words; w++)
+      t_low[w] = t_valid_q && t_whot_q[w] && (!wr_occ_q[w] || tb < low_of(wr_low_q, w));
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       rd_occ_q <= '0;
       wr_occ_q <= '0;
     end else if (eol_take) begin
-      rd_occ_q <= wr_occ_q;
+      rd_occ_q <= wr_occ_q | (t_valid_q ? t_whot_q : '0);
       wr_occ_q <= '0;
-      for (int w = 0; w < Words; w++) rd_low_q[w] <= wr_low_q[w];
-      if (t_valid_q) begin
-        rd_occ_q[tw] <= 1'b1;
-        if (t_lower) rd_low_q[tw] <= tb;
-      end
+      for (int w = 0; w < Words; w++)
+        rd_low_q[w * WIB +: WIB] <= t_low[w] ? tb : low_of(wr_low_q, w);
     end else begin
       if (t_valid_q) begin
-        wr_occ_q[tw] <= 1'b1;
-        if (t_lower) wr_low_q[tw] <= tb;
+        wr_occ_q <= wr_occ_q | t_whot_q;
+        for (int w = 0; w < Words; w++) if (t_low[w]) wr_low_q[w * WIB +: WIB] <= tb;
       end
       if (take && sparse_i) begin
         for (int w = 0; w < Words; w++) begin
           if (first[w]) begin
-            rd_occ_q[w] <= next_occ[w];
-            rd_low_q[w] <= next_low[w];
+            rd_occ_q[w]              <= next_occ[w];
+            rd_low_q[w * WIB +: WIB] <= next_low[w];
           end
         end
       end
@@ -435,15 +472,15 @@ module scanline_buffer #(
     n           = 0;
     if (sparse_i) begin
       for (int w = 0; w < Words; w++) begin
-        if (!word_ok(rd_occ_q[w], rd_low_q[w], rd_written_q[w])) rd_words_ok = 1'b0;
-        n += $countones(rd_written_q[w]);
+        if (!word_ok(rd_occ_q[w], low_of(rd_low_q, w), bank_word(!wsel_q, w))) rd_words_ok = 1'b0;
+        n += $countones(bank_word(!wsel_q, w));
       end
       found = n != 0;
       more  = n > 1;
     end
     if (eol_take) begin
       for (int w = 0; w < Words; w++)
-        if (!word_ok(wr_occ_q[w], wr_low_q[w], wr_written_q[w])) wr_words_ok = 1'b0;
+        if (!word_ok(wr_occ_q[w], low_of(wr_low_q, w), bank_word(wsel_q, w))) wr_words_ok = 1'b0;
     end
   end
   localparam int unsigned PB = $clog2(Words * WordBits);  // an x in the padded words
@@ -463,9 +500,9 @@ module scanline_buffer #(
     rest_rx     = 1'b0;
     for (int w = 0; w < Words; w++) begin
       below = (rxw > w) ? '1 : (rxw == w) ? ~({WordBits{1'b1}} << rxb) : '0;
-      below_dirty |= |(rd_written_q[w] & below);
-      any_set     |= |rd_written_q[w];
-      rest_rx     |= |(rd_written_q[w] & ~((rpw == w) ? (WordBits'(1) << rpb) : '0));
+      below_dirty |= |(bank_word(!wsel_q, w) & below);
+      any_set     |= |bank_word(!wsel_q, w);
+      rest_rx     |= |(bank_word(!wsel_q, w) & ~((rpw == w) ? (WordBits'(1) << rpb) : '0));
     end
   end
   // After this clock's take: a sparse take clears the lowest written bit, so bits are left iff
@@ -473,12 +510,15 @@ module scanline_buffer #(
   assign rd_left = !take ? any_set : sparse_i ? more : rest_rx;
   always_comb begin
     int raw;
-    raw        = int'(PB'(rd_x)) / WordBits;
-    ra_written = (raw < Words) ? rd_written_q[raw][int'(PB'(rd_x)) % WordBits] : 1'b0;
+    logic [WordBits-1:0] ra_word;
+    raw     = int'(PB'(rd_x)) / WordBits;
+    ra_word = '0;
+    for (int w = 0; w < Words; w++) if (raw == w) ra_word = bank_word(!wsel_q, w);
+    ra_written = ra_word[int'(PB'(rd_x)) % WordBits];
   end
   assign t_written_p = t_written;
   assign covered_p   = covered;
-  assign t_addr_ok   = t_addr_q == addr(wsel_q, t_x_q);
+  assign t_addr_ok   = t_addr_q == addr(wsel_q, t_x_q) && t_bank_q == wsel_q;
 `endif
   `WATKINS_ASSERT(a_sparse_covered, rd_load && sparse_i && !(rd_last && rd_lastline) |-> found)
   // The registered decisions equal what they stand for.
