@@ -10,13 +10,14 @@
 // writer's depth test; shade: the reader), and one written bit per pixel and bank in flops, by x
 // (set by every fragment tested, cleared as the reader takes the pixel; unwritten words are never
 // read as values). Write side: one fragment per
-// clock in two steps -- the clock it is accepted its depth word is read, the next it is tested
-// and written; the depth word (id included) written the clock before is forwarded, so
-// back-to-back fragments to the same x see each other. frag_ready_o is combinational (low only
-// for a marker waiting on the reader) from registers and pixel_ready_i only: the reader's
+// clock in three steps -- the clock it is accepted its depth word is read, the next the RAM's
+// data is registered, the third it is tested and written; the depth words (id included) written
+// the two clocks before are forwarded, so back-to-back fragments to the same x see each other.
+// frag_ready_o is combinational (low only for a marker waiting on the reader, or for one clock
+// behind a fragment in the read step) from registers and pixel_ready_i only: the reader's
 // decisions come from per-bank counts of written bits and flags set a step ahead, never from
 // the search (watkins_top puts a registered-ready queue in front all the same); a marker swaps
-// the buffers while its line's last fragment is still being written, which lands before the
+// the buffers while its line's last fragment is still being tested, which lands before the
 // reader's first read. Read side: pixel
 // from the shade RAM's output register (and registered coverage and background), latency 1,
 // the same cycles as flops.
@@ -118,9 +119,21 @@ module scanline_buffer #(
     low_of = v[w * WIB +: WIB];
   endfunction
   // A word's lowest written bit (0 when it holds none).
+  // Two levels, as a tree (a loop over the 32 bits maps to a priority chain of LUTs, 13 ns on
+  // the ECP5): each byte's lowest bit and whether it holds one, then the lowest byte's.
+  localparam int unsigned Bytes = WordBits / 8;
   function automatic logic [WIB-1:0] lowest_bit(logic [WordBits-1:0] bits);
-    lowest_bit = '0;
-    for (int i = WordBits - 1; i >= 0; i--) if (bits[i]) lowest_bit = WIB'(i);
+    logic [2:0]       in_byte [Bytes];
+    logic [Bytes-1:0] nz;
+    logic [WIB-4:0]   byte_ix;
+    for (int b = 0; b < Bytes; b++) begin
+      nz[b]      = |bits[8 * b +: 8];
+      in_byte[b] = '0;
+      for (int i = 7; i >= 0; i--) if (bits[8 * b + i]) in_byte[b] = 3'(i);
+    end
+    byte_ix = '0;
+    for (int b = Bytes - 1; b >= 0; b--) if (nz[b]) byte_ix = (WIB - 3)'(b);
+    lowest_bit = {byte_ix, in_byte[byte_ix]};
   endfunction
   /* verilator lint_on UNUSEDSIGNAL */
 
@@ -209,64 +222,83 @@ module scanline_buffer #(
   assign rd_step   = rd_busy_q && (!rd_emit || !pixel_valid_o || pixel_ready_i);
   assign rd_load   = rd_step && rd_emit;
   assign rd_last   = sparse_i ? !cnt_more : rx_end_q;
-  // The marker may swap in the cycle the reader takes its last pixel (it reads the old bank).
-  assign eol_ok       = !rd_busy_q || (rd_step && rd_last);
+  // The marker may swap in the cycle the reader takes its last pixel (it reads the old bank),
+  // once its line's last fragment has left the read step (it is tested on the swap clock at the
+  // latest, so it lands before the reader's first read of the bank).
+  assign eol_ok       = !a_valid_q && (!rd_busy_q || (rd_step && rd_last));
   assign frag_ready_o = !frag_eol_i || eol_ok;
   // A fragment is always taken (not through frag_ready_o: that waits on the search's last).
   assign frag_take    = frag_valid_i && !frag_eol_i;
   assign eol_take     = frag_valid_i && frag_eol_i && eol_ok;
 
-  // Step 1 (the accepting clock): read the depth word, and take the write bank's word holding
-  // the pixel (with the bit the fragment tested on this clock sets, which lands after it) and
-  // the one-hot selects of the pixel's word and bit. Step 2: test against the depth word -- or
-  // against the word written the clock before at the same address, which the RAM read did not
-  // see yet -- and write; the written bit is the selected word's bit (t_written: a 32-bit
-  // AND-OR of registers, not a 2 * MaxWidth-way mux), and the fragment sets it.
-  logic                 t_valid_q, lw_valid_q;
-  logic [AddrBits-1:0]  t_addr_q, lw_addr_q;
+  // Three steps, one fragment per clock. Accept: read the depth word (the RAM's read register)
+  // and decode the pixel's word and bit one-hot. Read (a_*): the RAM's data into a register (the
+  // block RAM's clock-to-out alone in the clock: 5.6 ns on the ECP5, too slow to feed the
+  // test), and the write bank's word holding the pixel, with the bit the fragment tested on this
+  // clock sets (it lands after). Test (t_*): against the depth word -- or against the word
+  // written one or two clocks before at the same address, which the RAM read did not see yet
+  // (compared a step ahead) -- and write; the written bit is the registered word's bit
+  // (t_written: a 32-bit AND-OR of registers, not a 2 * MaxWidth-way mux), and the fragment
+  // sets it.
+  logic                 a_valid_q, t_valid_q, lw_valid_q;
+  logic [AddrBits-1:0]  a_addr_q, t_addr_q, lw_addr_q, llw_addr_q;
   /* verilator lint_off UNUSEDSIGNAL */
-  logic [LB-1:0]        t_x_q;     // t_addr_q's x (its bank is t_bank_q); < MaxWidth
+  logic [LB-1:0]        a_x_q, t_x_q;  // their x (bank wsel_q's: a marker waits for the read step); < MaxWidth
   /* verilator lint_on UNUSEDSIGNAL */
-  logic                 t_bank_q;  // the bank it was accepted into: wsel_q while it is tested (a
-                                   // marker is never accepted between; a copy, so the set and
-                                   // the reader's clear have separate selects)
-  logic [Words-1:0]     t_whot_q;  // its word, one-hot
-  logic [WordBits-1:0]  t_bhot_q;  // its bit in the word, one-hot
+  logic                 t_bank_q;  // the tested fragment's bank: wsel_q while it is tested (a
+                                   // marker is never accepted before it is; a copy, so the set
+                                   // and the reader's clear have separate selects)
+  logic [Words-1:0]     a_whot_q, t_whot_q;  // the pixel's word, one-hot
+  logic [WordBits-1:0]  a_bhot_q, t_bhot_q;  // its bit in the word, one-hot
   logic [WordBits-1:0]  t_wword_q; // its bank's word as the test sees it
-  logic [WordBits-1:0]  a_wword;   // the accepted fragment's word in the write bank
+  logic [WordBits-1:0]  a_wword;   // the read step's word in the write bank
+  logic                 t_fw1_q, t_fw2_q;  // the tested address is lw_addr_q's / llw_addr_q's
   logic                 t_written; // the pixel already has a fragment
-  logic [DWB-1:0]       t_word_q, lw_word_q, mem_word_q, old_word;
+  logic [DWB-1:0]       a_word_q, t_word_q, lw_word_q, llw_word_q, mem_word_q, t_mem_q, old_word;
   logic [DepthBits-1:0] t_depth, old_depth;
   logic [PolyIdBits-1:0] t_poly, old_poly;
-  logic [RB-1:0]        t_rgb_q;
+  logic [RB-1:0]        a_rgb_q, t_rgb_q;
   logic                 wins, tie_wins;
 
-  // Selected by compares, word by word (an indexed part select is a 2 * MaxWidth-bit shifter).
+  // Selected by the one-hot word (an indexed part select is a 2 * MaxWidth-bit shifter).
   always_comb begin
     a_wword = '0;
-    for (int w = 0; w < Words; w++)
-      if (word_of(frag_x_i) == WAB'(w)) a_wword = bank_word(wsel_q, w);
+    for (int w = 0; w < Words; w++) a_wword |= a_whot_q[w] ? bank_word(wsel_q, w) : '0;
   end
 
   always_ff @(posedge clk_i) begin
     if (frag_take) mem_word_q <= depth_mem[wa];
     if (frag_take) begin
-      t_addr_q <= wa;
-      t_x_q    <= frag_x_i;
-      t_bank_q <= wsel_q;
-      for (int w = 0; w < Words; w++) t_whot_q[w] <= word_of(frag_x_i) == WAB'(w);
-      for (int i = 0; i < WordBits; i++) t_bhot_q[i] <= bit_of(frag_x_i) == WIB'(i);
-      // The fragment tested now sets its bit after this clock: seen here if in the same word.
-      t_wword_q <= a_wword | ((t_valid_q && t_bank_q == wsel_q && word_of(t_x_q) == word_of(frag_x_i))
-                              ? t_bhot_q : '0);
-      t_word_q <= {frag_poly_i, frag_depth_i};
-      t_rgb_q  <= frag_rgb_i;
+      a_addr_q <= wa;
+      a_x_q    <= frag_x_i;
+      for (int w = 0; w < Words; w++) a_whot_q[w] <= word_of(frag_x_i) == WAB'(w);
+      for (int i = 0; i < WordBits; i++) a_bhot_q[i] <= bit_of(frag_x_i) == WIB'(i);
+      a_word_q <= {frag_poly_i, frag_depth_i};
+      a_rgb_q  <= frag_rgb_i;
     end
-    lw_addr_q <= t_addr_q;
-    lw_word_q <= t_word_q;
+    if (a_valid_q) begin
+      t_addr_q  <= a_addr_q;
+      t_x_q     <= a_x_q;
+      t_bank_q  <= wsel_q;
+      t_whot_q  <= a_whot_q;
+      t_bhot_q  <= a_bhot_q;
+      t_word_q  <= a_word_q;
+      t_rgb_q   <= a_rgb_q;
+      t_mem_q   <= mem_word_q;
+      // The fragment tested now sets its bit after this clock: seen here if in the same word.
+      t_wword_q <= a_wword | ((t_valid_q && (t_whot_q & a_whot_q) != '0) ? t_bhot_q : '0);
+      // Which earlier writes the RAM read missed: the one tested now (lw next clock, if it
+      // wins) and the one written at the end of the last clock (llw next clock).
+      t_fw1_q   <= t_valid_q && t_addr_q == a_addr_q;
+      t_fw2_q   <= lw_valid_q && lw_addr_q == a_addr_q;
+    end
+    lw_addr_q  <= t_addr_q;
+    lw_word_q  <= t_word_q;
+    llw_addr_q <= lw_addr_q;
+    llw_word_q <= lw_word_q;
   end
 
-  assign old_word  = (lw_valid_q && lw_addr_q == t_addr_q) ? lw_word_q : mem_word_q;
+  assign old_word  = (lw_valid_q && t_fw1_q) ? lw_word_q : t_fw2_q ? llw_word_q : t_mem_q;
   assign {t_poly, t_depth}     = t_word_q;
   assign {old_poly, old_depth} = old_word;
   // A tie goes to a strictly smaller id only: equal ids (one polygon's own spans) keep the first
@@ -384,6 +416,7 @@ module scanline_buffer #(
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
+      a_valid_q     <= 1'b0;
       t_valid_q     <= 1'b0;
       lw_valid_q    <= 1'b0;
       wsel_q        <= 1'b0;
@@ -394,8 +427,9 @@ module scanline_buffer #(
       last_line_q   <= height_i == LB'(1);  // rline_q 0 (then refreshed while the reader idles)
       pixel_valid_o <= 1'b0;
     end else begin
-      t_valid_q  <= frag_take;
-      lw_valid_q <= wins;
+      a_valid_q   <= frag_take;
+      t_valid_q   <= a_valid_q;
+      lw_valid_q  <= wins;
       // Between lines rline_q holds: the flag follows it (and a new frame's height_i).
       if (!rd_busy_q) last_line_q <= rline_q + 1'b1 == height_i;
       if (rd_step) begin
@@ -538,8 +572,12 @@ module scanline_buffer #(
   `WATKINS_ASSERT(a_x_in_line, frag_valid_i && !frag_eol_i |-> frag_x_i < width_i)
   `WATKINS_COVER(c_same_x_back_to_back,
     frag_take && $past(frag_take) && frag_x_i == $past(frag_x_i))
-  `WATKINS_COVER(c_forwarded, t_valid_q && lw_valid_q && lw_addr_q == t_addr_q)
+  // The forwarding flags, set a step ahead, are the address compares they stand for.
+  `WATKINS_ASSERT(a_fw1, t_valid_q |-> t_fw1_q == ($past(t_valid_q) && lw_addr_q == t_addr_q))
+  `WATKINS_ASSERT(a_fw2, t_valid_q |-> t_fw2_q == ($past(lw_valid_q) && llw_addr_q == t_addr_q))
+  `WATKINS_COVER(c_forwarded, t_valid_q && lw_valid_q && t_fw1_q)
+  `WATKINS_COVER(c_forwarded2, t_valid_q && t_fw2_q && !(lw_valid_q && t_fw1_q))
   `WATKINS_COVER(c_eol_waits, frag_valid_i && !frag_ready_o)
   `WATKINS_COVER(c_tie_won, t_valid_q && t_written_p && tie_wins)
-  `WATKINS_COVER(c_tie_forwarded, t_valid_q && lw_valid_q && lw_addr_q == t_addr_q && tie_wins)
+  `WATKINS_COVER(c_tie_forwarded, t_valid_q && lw_valid_q && t_fw1_q && tie_wins)
 endmodule
