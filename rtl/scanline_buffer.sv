@@ -138,10 +138,11 @@ module scanline_buffer #(
   /* verilator lint_on UNUSEDSIGNAL */
 
   // ------------------------------------------------------------ read-side search (sparse)
-  // The lowest written bit of the read bank is the next covered pixel. No compare with rx_q is
+  // The lowest written bit of the read bank is the next covered pixel. No compare with an x is
   // needed: the reader clears each pixel it takes and takes them lowest first, and the writer
   // never touches the read bank after the swap (its last fragment lands on the swap clock, when
-  // rx_q is 0), so every written bit below rx_q is already clear (a_sparse_below_clear).
+  // the reader's x is 0), so every written bit below the reader's x is already clear
+  // (a_sparse_below_clear).
   // Hierarchical and from registers (a search over the written bits themselves put a 32-bit
   // priority encoder, a word-level borrow chain and a mux between the flops and the RAM's read
   // address: 13 ns on the ECP5, the sized Gouraud top's critical path in session 10): per
@@ -437,10 +438,10 @@ module scanline_buffer #(
       // Between lines rline_q holds: the flag follows it (and a new frame's height_i).
       if (!rd_busy_q) last_line_q <= rline_q + 1'b1 == height_i;
       if (rd_step) begin
-        rx_q     <= rd_x + 1'b1;
-        // Full mode steps rx_q by one (rd_x = rx_q): the next is the line's last when this one
-        // is its last but one. From rx_q, not rd_x, so the sparse search is not on its path
-        // (sparse mode reads the counts instead and ignores the flag).
+        // Full mode's x (rd_x = rx_q); sparse mode reads neither it nor the flag (an increment
+        // of rd_x put the sparse search on rx_q's path: 12.5 ns on the ECP5). The next is the
+        // line's last when this one is its last but one.
+        rx_q     <= rx_q + 1'b1;
         rx_end_q <= rx_q + LB'(2) == width_i;
         if (rd_last) begin
           rd_busy_q   <= 1'b0;
@@ -526,11 +527,17 @@ module scanline_buffer #(
   // every evaluation of the input-driven logic); only rd_left and ra_written read inputs. A bit
   // past MaxWidth is never written (x < width_i), so the counts below need no mask.
   logic any_set, rest_rx;  // the read bank holds a written bit; one other than rx_q's
+  // Sparse mode: the x after the reader's last (rx_q counts steps only).
+  logic [LB-1:0] sx_q;
+  always_ff @(posedge clk_i) begin
+    if (eol_take) sx_q <= '0;
+    else if (rd_step) sx_q <= rd_x + 1'b1;
+  end
   always_comb begin
     int rxw, rxb, rpw, rpb;
     logic [WordBits-1:0] below;
-    rxw = int'(rx_q) / WordBits;           // below_dirty: the bits below rx_q (all, past the line)
-    rxb = int'(rx_q) % WordBits;
+    rxw = int'(sx_q) / WordBits;           // below_dirty: the bits below sx_q (all, past the line)
+    rxb = int'(sx_q) % WordBits;
     rpw = int'(PB'(rx_q)) / WordBits;      // the bit a dense take clears
     rpb = int'(PB'(rx_q)) % WordBits;
     below_dirty = 1'b0;
