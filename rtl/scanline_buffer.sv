@@ -10,13 +10,14 @@
 // writer's depth test; shade: the reader), and one written bit per pixel and bank in flops, by x
 // (set by every fragment tested, cleared as the reader takes the pixel; unwritten words are never
 // read as values). Write side: one fragment per
-// clock in two steps -- the clock it is accepted its depth word is read, the next it is tested
-// and written; the depth word (id included) written the clock before is forwarded, so
-// back-to-back fragments to the same x see each other. frag_ready_o is combinational (low only
-// for a marker waiting on the reader) from registers and pixel_ready_i only: the reader's
+// clock in three steps -- the clock it is accepted its depth word is read, the next the RAM's
+// data is registered, the third it is tested and written; the depth words (id included) written
+// the two clocks before are forwarded, so back-to-back fragments to the same x see each other.
+// frag_ready_o is combinational (low only for a marker waiting on the reader, or for one clock
+// behind a fragment in the read step) from registers and pixel_ready_i only: the reader's
 // decisions come from per-bank counts of written bits and flags set a step ahead, never from
 // the search (watkins_top puts a registered-ready queue in front all the same); a marker swaps
-// the buffers while its line's last fragment is still being written, which lands before the
+// the buffers while its line's last fragment is still being tested, which lands before the
 // reader's first read. Read side: pixel
 // from the shade RAM's output register (and registered coverage and background), latency 1,
 // the same cycles as flops.
@@ -83,20 +84,23 @@ module scanline_buffer #(
   /* verilator lint_on UNUSEDSIGNAL */
 
   // ------------------------------------------------------------ written bits
-  // Kept by role, not by bank: neither wsel_q (a mux with a fan-out of 2 * MaxWidth) nor the
-  // bank-base adder is on their paths; only the RAM addresses use them. Stored by 32-pixel word
-  // and written by {word, bit}: synthesis decodes the two levels apart (a word enable and a bit
-  // in it, as the sparse search's one-hot does) and a simulator touches one word per update
-  // instead of the whole bank. mem2reg: yosys makes the words flops at once, each word's
-  // writes a case on the word index (as a memory with a port per loop write it mapped them
-  // to 35 % more LUTs). Padding bits of the last word (MaxWidth not a multiple of 32) are
-  // never set: every x written or read is below width_i <= MaxWidth.
+  // Kept by bank, in flops, one flat vector per bank (bank b's word w at bits_q[b][w]): the swap
+  // only flips wsel_q, so no bit's next state depends on the marker (kept by role, each of the
+  // 2 * MaxWidth bits chose between keeping and taking the other bank's at the swap: the marker's
+  // acceptance, deep and combinational, fanned out to all of them -- with the indexed write's
+  // address arithmetic, 17 ns on the ECP5, session 11). A bit is set by the fragment tested in
+  // its bank and cleared by the reader's take in its bank, each through one-hot word and bit
+  // selects (registered for the writer; compares, not shifts, for the reader), so a bit's next
+  // state is one or two LUTs. Readers pick the read bank's words with wsel_q. Stored by 32-pixel
+  // word: the sparse search keeps registers per word, and a simulator updates a word, not a bank.
+  // Padding bits of the last word (MaxWidth not a multiple of 32) are never set: every x written
+  // or read is below width_i <= MaxWidth.
   localparam int unsigned WordBits = 32;
   localparam int unsigned WIB      = $clog2(WordBits);
   localparam int unsigned Words    = (MaxWidth + WordBits - 1) / WordBits;
   localparam int unsigned WAB      = (Words > 1) ? $clog2(Words) : 1;
-  (* mem2reg *) logic [WordBits-1:0] rd_written_q [Words];  // the read bank's
-  (* mem2reg *) logic [WordBits-1:0] wr_written_q [Words];  // the write bank's
+  localparam int unsigned BankBits = Words * WordBits;
+  logic [2*BankBits-1:0] bits_q;  // bank b's word w at [(b * Words + w) * WordBits +: WordBits]
 
   // An x's word and its bit in it (x < MaxWidth: its high bits are zero).
   /* verilator lint_off UNUSEDSIGNAL */
@@ -106,18 +110,39 @@ module scanline_buffer #(
   function automatic logic [WIB-1:0] bit_of(logic [LB-1:0] x);
     bit_of = x[WIB-1:0];
   endfunction
+  // Bank b's word w (w a constant: a part select; b picks one of two).
+  function automatic logic [WordBits-1:0] bank_word(logic b, int w);
+    bank_word = b ? bits_q[(Words + w) * WordBits +: WordBits] : bits_q[w * WordBits +: WordBits];
+  endfunction
+  // Word w's lowest-bit register in a flat vector of them.
+  function automatic logic [WIB-1:0] low_of(logic [Words*WIB-1:0] v, int w);
+    low_of = v[w * WIB +: WIB];
+  endfunction
   // A word's lowest written bit (0 when it holds none).
+  // Two levels, as a tree (a loop over the 32 bits maps to a priority chain of LUTs, 13 ns on
+  // the ECP5): each byte's lowest bit and whether it holds one, then the lowest byte's.
+  localparam int unsigned Bytes = WordBits / 8;
   function automatic logic [WIB-1:0] lowest_bit(logic [WordBits-1:0] bits);
-    lowest_bit = '0;
-    for (int i = WordBits - 1; i >= 0; i--) if (bits[i]) lowest_bit = WIB'(i);
+    logic [2:0]       in_byte [Bytes];
+    logic [Bytes-1:0] nz;
+    logic [WIB-4:0]   byte_ix;
+    for (int b = 0; b < Bytes; b++) begin
+      nz[b]      = |bits[8 * b +: 8];
+      in_byte[b] = '0;
+      for (int i = 7; i >= 0; i--) if (bits[8 * b + i]) in_byte[b] = 3'(i);
+    end
+    byte_ix = '0;
+    for (int b = Bytes - 1; b >= 0; b--) if (nz[b]) byte_ix = (WIB - 3)'(b);
+    lowest_bit = {byte_ix, in_byte[byte_ix]};
   endfunction
   /* verilator lint_on UNUSEDSIGNAL */
 
   // ------------------------------------------------------------ read-side search (sparse)
-  // The lowest written bit of the read bank is the next covered pixel. No compare with rx_q is
+  // The lowest written bit of the read bank is the next covered pixel. No compare with an x is
   // needed: the reader clears each pixel it takes and takes them lowest first, and the writer
   // never touches the read bank after the swap (its last fragment lands on the swap clock, when
-  // rx_q is 0), so every written bit below rx_q is already clear (a_sparse_below_clear).
+  // the reader's x is 0), so every written bit below the reader's x is already clear
+  // (a_sparse_below_clear).
   // Hierarchical and from registers (a search over the written bits themselves put a 32-bit
   // priority encoder, a word-level borrow chain and a mux between the flops and the RAM's read
   // address: 13 ns on the ECP5, the sized Gouraud top's critical path in session 10): per
@@ -132,8 +157,7 @@ module scanline_buffer #(
   // (full mode keeps it idle and Verilator skips it); full mode empties the read words at each
   // line's end, when the reader has cleared every bit.
   logic [Words-1:0]    rd_occ_q, wr_occ_q;
-  (* mem2reg *) logic [WIB-1:0] rd_low_q [Words];
-  (* mem2reg *) logic [WIB-1:0] wr_low_q [Words];
+  logic [Words*WIB-1:0] rd_low_q, wr_low_q;  // word w's at [w * WIB +: WIB] (low_of)
   logic [Words-1:0]    first;     // one-hot: the read bank's first occupied word
   logic [WAB-1:0]      fw;        // that word
   logic [WIB-1:0]      lb;        // its lowest written bit
@@ -157,12 +181,12 @@ module scanline_buffer #(
       first = rd_occ_q & ~(rd_occ_q - 1'b1);
       for (int w = 0; w < Words; w++) begin
         if (first[w]) fw = WAB'(w);
-        lb |= first[w] ? rd_low_q[w] : '0;
+        lb |= first[w] ? low_of(rd_low_q, w) : '0;
         // Decoded by compares, not a shift: yosys's resource sharing merged the words' shifters
         // (only one word is first) into one behind a mux on the first word's path (22 ns on
         // the ECP5).
-        for (int i = 0; i < WordBits; i++) low_hot[w][i] = rd_low_q[w] == WIB'(i);
-        rest        = rd_written_q[w] & ~low_hot[w];
+        for (int i = 0; i < WordBits; i++) low_hot[w][i] = low_of(rd_low_q, w) == WIB'(i);
+        rest        = bank_word(!wsel_q, w) & ~low_hot[w];
         next_occ[w] = |rest;
         next_low[w] = lowest_bit(rest);
       end
@@ -199,48 +223,94 @@ module scanline_buffer #(
   assign rd_step   = rd_busy_q && (!rd_emit || !pixel_valid_o || pixel_ready_i);
   assign rd_load   = rd_step && rd_emit;
   assign rd_last   = sparse_i ? !cnt_more : rx_end_q;
-  // The marker may swap in the cycle the reader takes its last pixel (it reads the old bank).
-  assign eol_ok       = !rd_busy_q || (rd_step && rd_last);
+  // The marker may swap in the cycle the reader takes its last pixel (it reads the old bank),
+  // once its line's last fragment has left the read step (it is tested on the swap clock at the
+  // latest, so it lands before the reader's first read of the bank).
+  assign eol_ok       = !a_valid_q && (!rd_busy_q || (rd_step && rd_last));
   assign frag_ready_o = !frag_eol_i || eol_ok;
   // A fragment is always taken (not through frag_ready_o: that waits on the search's last).
   assign frag_take    = frag_valid_i && !frag_eol_i;
   assign eol_take     = frag_valid_i && frag_eol_i && eol_ok;
 
-  // Step 1 (the accepting clock): read the depth word. Step 2: test against it -- or against the
-  // word written the clock before at the same address, which the RAM read did not see yet --
-  // and write. wr_written_q already holds that previous write.
-  logic                 t_valid_q, lw_valid_q;
-  logic [AddrBits-1:0]  t_addr_q, lw_addr_q;
+  // Three steps, one fragment per clock. Accept: read the depth word (the RAM's read register),
+  // decode the pixel's word and bit one-hot, and take the write bank's word holding the pixel,
+  // with the bits the two fragments ahead set before this one is tested. Read (a_*): the RAM's
+  // data into a register (the block RAM's clock-to-out alone in the clock: 5.6 ns on the ECP5,
+  // too slow to feed the test), and the pixel's written bit from its word (a 32-bit AND-OR of
+  // registers, not a 2 * MaxWidth-way mux). Test (t_*): against the depth word -- or against the
+  // word written one or two clocks before at the same address, which the RAM read did not see
+  // yet (compared a step ahead) -- and write; the fragment sets its written bit.
+  logic                 a_valid_q, t_valid_q, lw_valid_q;
+  logic [AddrBits-1:0]  a_addr_q, t_addr_q, lw_addr_q, llw_addr_q;
   /* verilator lint_off UNUSEDSIGNAL */
-  logic [LB-1:0]        t_x_q;     // t_addr_q's x (its bank is wsel_q's: a marker swaps only after); < MaxWidth
+  logic [LB-1:0]        a_x_q, t_x_q;  // their x (bank wsel_q's: a marker waits for the read step); < MaxWidth
   /* verilator lint_on UNUSEDSIGNAL */
-  logic                 t_written; // the pixel already has a fragment
-  logic [DWB-1:0]       t_word_q, lw_word_q, mem_word_q, old_word;
+  logic                 t_bank_q;  // the tested fragment's bank: wsel_q while it is tested (a
+                                   // marker is never accepted before it is; a copy, so the set
+                                   // and the reader's clear have separate selects)
+  logic [Words-1:0]     a_whot_q, t_whot_q;  // the pixel's word, one-hot
+  logic [WordBits-1:0]  a_bhot_q, t_bhot_q;  // its bit in the word, one-hot
+  logic [WordBits-1:0]  a_wword_q; // its bank's word as the test will see it
+  logic [WordBits-1:0]  acc_word;  // the accepted fragment's word in the write bank, now
+  logic                 t_fw1_q, t_fw2_q;  // the tested address is lw_addr_q's / llw_addr_q's
+  logic                 t_written_q; // the pixel already has a fragment
+  logic [DWB-1:0]       a_word_q, t_word_q, lw_word_q, llw_word_q, mem_word_q, t_mem_q, old_word;
   logic [DepthBits-1:0] t_depth, old_depth;
   logic [PolyIdBits-1:0] t_poly, old_poly;
-  logic [RB-1:0]        t_rgb_q;
+  logic [RB-1:0]        a_rgb_q, t_rgb_q;
   logic                 wins, tie_wins;
+
+  // Selected by the one-hot word (an indexed part select is a 2 * MaxWidth-bit shifter).
+  always_comb begin
+    acc_word = '0;
+    for (int w = 0; w < Words; w++)
+      acc_word |= (word_of(frag_x_i) == WAB'(w)) ? bank_word(wsel_q, w) : '0;
+  end
 
   always_ff @(posedge clk_i) begin
     if (frag_take) mem_word_q <= depth_mem[wa];
     if (frag_take) begin
-      t_addr_q <= wa;
-      t_x_q    <= frag_x_i;
-      t_word_q <= {frag_poly_i, frag_depth_i};
-      t_rgb_q  <= frag_rgb_i;
+      a_addr_q <= wa;
+      a_x_q    <= frag_x_i;
+      for (int w = 0; w < Words; w++) a_whot_q[w] <= word_of(frag_x_i) == WAB'(w);
+      for (int i = 0; i < WordBits; i++) a_bhot_q[i] <= bit_of(frag_x_i) == WIB'(i);
+      a_word_q <= {frag_poly_i, frag_depth_i};
+      a_rgb_q  <= frag_rgb_i;
+      // The fragments tested now and next set their bits after this clock: seen here if in the
+      // same word.
+      a_wword_q <= acc_word
+                   | ((t_valid_q && word_of(t_x_q) == word_of(frag_x_i)) ? t_bhot_q : '0)
+                   | ((a_valid_q && word_of(a_x_q) == word_of(frag_x_i)) ? a_bhot_q : '0);
     end
-    lw_addr_q <= t_addr_q;
-    lw_word_q <= t_word_q;
+    if (a_valid_q) begin
+      t_addr_q  <= a_addr_q;
+      t_x_q     <= a_x_q;
+      t_bank_q  <= wsel_q;
+      t_whot_q  <= a_whot_q;
+      t_bhot_q  <= a_bhot_q;
+      t_word_q  <= a_word_q;
+      t_rgb_q   <= a_rgb_q;
+      t_mem_q   <= mem_word_q;
+      // The fragment tested now sets its bit after this clock: seen here if in the same word.
+      t_written_q <= |(a_wword_q & a_bhot_q);
+      // Which earlier writes the RAM read missed: the one tested now (lw next clock, if it
+      // wins) and the one written at the end of the last clock (llw next clock).
+      t_fw1_q   <= t_valid_q && t_addr_q == a_addr_q;
+      t_fw2_q   <= lw_valid_q && lw_addr_q == a_addr_q;
+    end
+    lw_addr_q  <= t_addr_q;
+    lw_word_q  <= t_word_q;
+    llw_addr_q <= lw_addr_q;
+    llw_word_q <= lw_word_q;
   end
 
-  assign old_word  = (lw_valid_q && lw_addr_q == t_addr_q) ? lw_word_q : mem_word_q;
+  assign old_word  = (lw_valid_q && t_fw1_q) ? lw_word_q : t_fw2_q ? llw_word_q : t_mem_q;
   assign {t_poly, t_depth}     = t_word_q;
   assign {old_poly, old_depth} = old_word;
   // A tie goes to a strictly smaller id only: equal ids (one polygon's own spans) keep the first
   // arrival, as the model does.
   assign tie_wins  = tie_submission_i && t_depth == old_depth && t_poly < old_poly;
-  assign t_written = wr_written_q[word_of(t_x_q)][bit_of(t_x_q)];
-  assign wins      = t_valid_q && (!t_written || (t_depth < old_depth) || tie_wins);
+  assign wins      = t_valid_q && (!t_written_q || (t_depth < old_depth) || tie_wins);
 
   always_ff @(posedge clk_i) begin
     if (wins) begin
@@ -249,18 +319,33 @@ module scanline_buffer #(
     end
   end
 
-  // The written bits' update. Every fragment tested sets its pixel's bit, winner or not (a loser
-  // found the bit set already), so the depth test is not on this path. The pixel the reader
-  // takes is cleared: full mode x = rx_q; sparse, the first occupied word's lowest bit. Both
-  // only when the reader takes a pixel: take is rd_load without the search (full mode emits
-  // every step; sparse mode emits when it found one, or for the terminating beat, which clears
-  // nothing). Written as enabled single-bit updates, so a simulator touches one bit per
-  // fragment and per pixel instead of both MaxWidth-bit banks every clock.
+  // The written bits' update. Every fragment tested sets its pixel's bit in its bank, winner or
+  // not (a loser found the bit set already), so the depth test is not on this path. The pixel
+  // the reader takes is cleared in the read bank: full mode x = rx_q; sparse, the first occupied
+  // word's lowest bit. Both only when the reader takes a pixel: take is rd_load without the
+  // search (full mode emits every step; sparse mode emits when it found one, or for the
+  // terminating beat, which clears nothing). The tested fragment and the reader are never in
+  // one bank (a_tested_in_write_bank). Only the words touched change (a simulator skips the
+  // rest).
   logic                      take;
   logic                      covered;          // the pixel the reader takes is written
+  logic [WordBits-1:0]       rx_word;          // the read bank's word holding rx_q
+  logic [WordBits-1:0]       rd_clr [Words];   // the bits the reader's take clears, per word
   assign take = rd_busy_q && (!pixel_valid_o || pixel_ready_i);
+  always_comb begin
+    rx_word = '0;
+    for (int w = 0; w < Words; w++) begin
+      if (word_of(rx_q) == WAB'(w)) rx_word = bank_word(!wsel_q, w);
+      rd_clr[w] = '0;
+      if (take) begin
+        if (sparse_i) rd_clr[w] = first[w] ? low_hot[w] : '0;
+        else if (word_of(rx_q) == WAB'(w))
+          for (int i = 0; i < WordBits; i++) rd_clr[w][i] = bit_of(rx_q) == WIB'(i);
+      end
+    end
+  end
   // Sparse: the pixel found is written (none found: the terminating beat is not).
-  assign covered   = sparse_i ? cnt_found : rd_written_q[word_of(rx_q)][bit_of(rx_q)];
+  assign covered   = sparse_i ? cnt_found : rx_word[bit_of(rx_q)];
 
   // The counts: a fragment tested on an unwritten pixel adds one to the write bank's (the swap
   // clock's lands in the bank it makes the read bank); the reader's take of a covered pixel
@@ -268,7 +353,7 @@ module scanline_buffer #(
   // at each line's end, and the count is cleared then (counting its takes put the 320-way
   // written-bit mux on the count's path: 14.9 ns on the ECP5).
   logic t_new;
-  assign t_new = t_valid_q && !t_written;
+  assign t_new = t_valid_q && !t_written_q;
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       rd_cnt_q <= '0;
@@ -285,58 +370,47 @@ module scanline_buffer #(
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
+      bits_q <= '0;
+    end else if (t_valid_q || take) begin
       for (int w = 0; w < Words; w++) begin
-        rd_written_q[w] <= '0;
-        wr_written_q[w] <= '0;
+        if (t_valid_q && t_whot_q[w]) begin
+          if (t_bank_q) bits_q[(Words + w) * WordBits +: WordBits] <= bank_word(1'b1, w) | t_bhot_q;
+          else          bits_q[w * WordBits +: WordBits]           <= bank_word(1'b0, w) | t_bhot_q;
+        end
+        if (wsel_q) bits_q[w * WordBits +: WordBits] <= bank_word(1'b0, w) & ~rd_clr[w];
+        else        bits_q[(Words + w) * WordBits +: WordBits] <= bank_word(1'b1, w) & ~rd_clr[w];
       end
-    end else if (eol_take) begin
-      // The swap exchanges the roles: the line just written (with its last fragment, tested on
-      // this clock) is read next; the line just read is empty by now (a_swap_read_clear).
-      for (int w = 0; w < Words; w++) begin
-        rd_written_q[w] <= wr_written_q[w];
-        wr_written_q[w] <= '0;
-      end
-      if (t_valid_q) rd_written_q[word_of(t_x_q)][bit_of(t_x_q)] <= 1'b1;
-    end else begin
-      if (t_valid_q) wr_written_q[word_of(t_x_q)][bit_of(t_x_q)] <= 1'b1;
-      if (take && sparse_i) begin
-        // By the decoded lowest bit, not an indexed write (see low_hot: shared shifters).
-        for (int w = 0; w < Words; w++)
-          if (first[w]) rd_written_q[w] <= rd_written_q[w] & ~low_hot[w];
-      end
-      if (take && !sparse_i) rd_written_q[word_of(rx_q)][bit_of(rx_q)] <= 1'b0;
     end
   end
 
-  // The words' occupancy and lowest bits (the search's registers), following the bits above.
-  logic [WAB-1:0] tw;       // the tested fragment's word and bit
-  logic [WIB-1:0] tb;
-  logic           t_lower;  // its bit becomes its word's lowest in the write bank
-  assign tw      = word_of(t_x_q);
-  assign tb      = bit_of(t_x_q);
-  assign t_lower = !wr_occ_q[tw] || tb < wr_low_q[tw];
+  // The words' occupancy and lowest bits (the search's registers), kept by role, following the
+  // bits above: a fragment's bit becomes its word's lowest when lower (each word compares its
+  // own; the one-hot word select picks). The swap hands the write bank's words to the reader.
+  logic [WIB-1:0]   tb;        // the tested fragment's bit
+  logic [Words-1:0] t_low;     // it becomes that word's lowest in the write bank
+  assign tb = bit_of(t_x_q);
+  always_comb
+    for (int w = 0; w < Words; w++)
+      t_low[w] = t_valid_q && t_whot_q[w] && (!wr_occ_q[w] || tb < low_of(wr_low_q, w));
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       rd_occ_q <= '0;
       wr_occ_q <= '0;
     end else if (eol_take) begin
-      rd_occ_q <= wr_occ_q;
+      rd_occ_q <= wr_occ_q | (t_valid_q ? t_whot_q : '0);
       wr_occ_q <= '0;
-      for (int w = 0; w < Words; w++) rd_low_q[w] <= wr_low_q[w];
-      if (t_valid_q) begin
-        rd_occ_q[tw] <= 1'b1;
-        if (t_lower) rd_low_q[tw] <= tb;
-      end
+      for (int w = 0; w < Words; w++)
+        rd_low_q[w * WIB +: WIB] <= t_low[w] ? tb : low_of(wr_low_q, w);
     end else begin
       if (t_valid_q) begin
-        wr_occ_q[tw] <= 1'b1;
-        if (t_lower) wr_low_q[tw] <= tb;
+        wr_occ_q <= wr_occ_q | t_whot_q;
+        for (int w = 0; w < Words; w++) if (t_low[w]) wr_low_q[w * WIB +: WIB] <= tb;
       end
       if (take && sparse_i) begin
         for (int w = 0; w < Words; w++) begin
           if (first[w]) begin
-            rd_occ_q[w] <= next_occ[w];
-            rd_low_q[w] <= next_low[w];
+            rd_occ_q[w]              <= next_occ[w];
+            rd_low_q[w * WIB +: WIB] <= next_low[w];
           end
         end
       end
@@ -347,6 +421,7 @@ module scanline_buffer #(
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
+      a_valid_q     <= 1'b0;
       t_valid_q     <= 1'b0;
       lw_valid_q    <= 1'b0;
       wsel_q        <= 1'b0;
@@ -357,15 +432,16 @@ module scanline_buffer #(
       last_line_q   <= height_i == LB'(1);  // rline_q 0 (then refreshed while the reader idles)
       pixel_valid_o <= 1'b0;
     end else begin
-      t_valid_q  <= frag_take;
-      lw_valid_q <= wins;
+      a_valid_q   <= frag_take;
+      t_valid_q   <= a_valid_q;
+      lw_valid_q  <= wins;
       // Between lines rline_q holds: the flag follows it (and a new frame's height_i).
       if (!rd_busy_q) last_line_q <= rline_q + 1'b1 == height_i;
       if (rd_step) begin
-        rx_q     <= rd_x + 1'b1;
-        // Full mode steps rx_q by one (rd_x = rx_q): the next is the line's last when this one
-        // is its last but one. From rx_q, not rd_x, so the sparse search is not on its path
-        // (sparse mode reads the counts instead and ignores the flag).
+        // Full mode's x (rd_x = rx_q); sparse mode reads neither it nor the flag (an increment
+        // of rd_x put the sparse search on rx_q's path: 12.5 ns on the ECP5). The next is the
+        // line's last when this one is its last but one.
+        rx_q     <= rx_q + 1'b1;
         rx_end_q <= rx_q + LB'(2) == width_i;
         if (rd_last) begin
           rd_busy_q   <= 1'b0;
@@ -435,15 +511,15 @@ module scanline_buffer #(
     n           = 0;
     if (sparse_i) begin
       for (int w = 0; w < Words; w++) begin
-        if (!word_ok(rd_occ_q[w], rd_low_q[w], rd_written_q[w])) rd_words_ok = 1'b0;
-        n += $countones(rd_written_q[w]);
+        if (!word_ok(rd_occ_q[w], low_of(rd_low_q, w), bank_word(!wsel_q, w))) rd_words_ok = 1'b0;
+        n += $countones(bank_word(!wsel_q, w));
       end
       found = n != 0;
       more  = n > 1;
     end
     if (eol_take) begin
       for (int w = 0; w < Words; w++)
-        if (!word_ok(wr_occ_q[w], wr_low_q[w], wr_written_q[w])) wr_words_ok = 1'b0;
+        if (!word_ok(wr_occ_q[w], low_of(wr_low_q, w), bank_word(wsel_q, w))) wr_words_ok = 1'b0;
     end
   end
   localparam int unsigned PB = $clog2(Words * WordBits);  // an x in the padded words
@@ -451,11 +527,17 @@ module scanline_buffer #(
   // every evaluation of the input-driven logic); only rd_left and ra_written read inputs. A bit
   // past MaxWidth is never written (x < width_i), so the counts below need no mask.
   logic any_set, rest_rx;  // the read bank holds a written bit; one other than rx_q's
+  // Sparse mode: the x after the reader's last (rx_q counts steps only).
+  logic [LB-1:0] sx_q;
+  always_ff @(posedge clk_i) begin
+    if (eol_take) sx_q <= '0;
+    else if (rd_step) sx_q <= rd_x + 1'b1;
+  end
   always_comb begin
     int rxw, rxb, rpw, rpb;
     logic [WordBits-1:0] below;
-    rxw = int'(rx_q) / WordBits;           // below_dirty: the bits below rx_q (all, past the line)
-    rxb = int'(rx_q) % WordBits;
+    rxw = int'(sx_q) / WordBits;           // below_dirty: the bits below sx_q (all, past the line)
+    rxb = int'(sx_q) % WordBits;
     rpw = int'(PB'(rx_q)) / WordBits;      // the bit a dense take clears
     rpb = int'(PB'(rx_q)) % WordBits;
     below_dirty = 1'b0;
@@ -463,9 +545,9 @@ module scanline_buffer #(
     rest_rx     = 1'b0;
     for (int w = 0; w < Words; w++) begin
       below = (rxw > w) ? '1 : (rxw == w) ? ~({WordBits{1'b1}} << rxb) : '0;
-      below_dirty |= |(rd_written_q[w] & below);
-      any_set     |= |rd_written_q[w];
-      rest_rx     |= |(rd_written_q[w] & ~((rpw == w) ? (WordBits'(1) << rpb) : '0));
+      below_dirty |= |(bank_word(!wsel_q, w) & below);
+      any_set     |= |bank_word(!wsel_q, w);
+      rest_rx     |= |(bank_word(!wsel_q, w) & ~((rpw == w) ? (WordBits'(1) << rpb) : '0));
     end
   end
   // After this clock's take: a sparse take clears the lowest written bit, so bits are left iff
@@ -473,12 +555,15 @@ module scanline_buffer #(
   assign rd_left = !take ? any_set : sparse_i ? more : rest_rx;
   always_comb begin
     int raw;
-    raw        = int'(PB'(rd_x)) / WordBits;
-    ra_written = (raw < Words) ? rd_written_q[raw][int'(PB'(rd_x)) % WordBits] : 1'b0;
+    logic [WordBits-1:0] ra_word;
+    raw     = int'(PB'(rd_x)) / WordBits;
+    ra_word = '0;
+    for (int w = 0; w < Words; w++) if (raw == w) ra_word = bank_word(!wsel_q, w);
+    ra_written = ra_word[int'(PB'(rd_x)) % WordBits];
   end
-  assign t_written_p = t_written;
+  assign t_written_p = t_written_q;
   assign covered_p   = covered;
-  assign t_addr_ok   = t_addr_q == addr(wsel_q, t_x_q);
+  assign t_addr_ok   = t_addr_q == addr(wsel_q, t_x_q) && t_bank_q == wsel_q;
 `endif
   `WATKINS_ASSERT(a_sparse_covered, rd_load && sparse_i && !(rd_last && rd_lastline) |-> found)
   // The registered decisions equal what they stand for.
@@ -498,8 +583,12 @@ module scanline_buffer #(
   `WATKINS_ASSERT(a_x_in_line, frag_valid_i && !frag_eol_i |-> frag_x_i < width_i)
   `WATKINS_COVER(c_same_x_back_to_back,
     frag_take && $past(frag_take) && frag_x_i == $past(frag_x_i))
-  `WATKINS_COVER(c_forwarded, t_valid_q && lw_valid_q && lw_addr_q == t_addr_q)
+  // The forwarding flags, set a step ahead, are the address compares they stand for.
+  `WATKINS_ASSERT(a_fw1, t_valid_q |-> t_fw1_q == ($past(t_valid_q) && lw_addr_q == t_addr_q))
+  `WATKINS_ASSERT(a_fw2, t_valid_q |-> t_fw2_q == ($past(lw_valid_q) && llw_addr_q == t_addr_q))
+  `WATKINS_COVER(c_forwarded, t_valid_q && lw_valid_q && t_fw1_q)
+  `WATKINS_COVER(c_forwarded2, t_valid_q && t_fw2_q && !(lw_valid_q && t_fw1_q))
   `WATKINS_COVER(c_eol_waits, frag_valid_i && !frag_ready_o)
   `WATKINS_COVER(c_tie_won, t_valid_q && t_written_p && tie_wins)
-  `WATKINS_COVER(c_tie_forwarded, t_valid_q && lw_valid_q && lw_addr_q == t_addr_q && tie_wins)
+  `WATKINS_COVER(c_tie_forwarded, t_valid_q && lw_valid_q && t_fw1_q && tie_wins)
 endmodule

@@ -146,7 +146,8 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
   // ---- the fragment queue (stream_fifo) in front of the scanline buffer: each entry's marker flag
   int q_count = 0;
   std::array<bool, FragQueueDepth> q_eol{};
-  // ---- scanline_buffer reader
+  // ---- scanline_buffer: a fragment in its read step (a marker waits behind it), the reader
+  bool sb_read_q = false;
   bool rd_busy_q = false;
   int rd_left = 0, rline_q = 0, lines_written = 0;
 
@@ -160,7 +161,7 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
                            ord1_q, ord2_q, swap_q, sf_in_valid, sf_in_emits, sf_pr_valid, sf_pr_emits, seg_valid,
                            s0_valid_q, recip_valid, recip_out, tail_valid, tail_item, fifo[0], fifo[1], fifo[2], fifo[3], fifo_head, fifo_count, step_active,
                            frag_valid, frag_eol, norm.valid, norm.eol, shade.valid, shade.eol, q_count,
-                           q_eol, rd_busy_q, rline_q, lines_written);
+                           q_eol, sb_read_q, rd_busy_q, rline_q, lines_written);
   };
   static_assert(InterpFifoDepth == 4, "key() lists the FIFO's words");
 
@@ -169,7 +170,7 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
   for (long long t = 1;; ++t) {
     // ================= combinational, from the outputs back =================
     const bool rd_last = rd_busy_q && rd_left == 1;
-    const bool eol_ok = !rd_busy_q || rd_last;
+    const bool eol_ok = !sb_read_q && (!rd_busy_q || rd_last);
     const bool sh_valid = phong ? shade.out_valid() : frag_valid;
     const bool sh_eol = phong ? shade.out_eol() : frag_eol;
     // The queue's head goes to the scanline buffer, which refuses only a marker waiting on the
@@ -261,6 +262,7 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
       rd_left = st.read_steps[std::size_t(lines_written++)];
     }
     // fragment queue
+    sb_read_q = q_pop && !q_eol[0];
     if (q_pop) {
       for (int i = 0; i + 1 < FragQueueDepth; ++i) q_eol[std::size_t(i)] = q_eol[std::size_t(i) + 1];
       --q_count;
