@@ -3,8 +3,8 @@
 // of model/twins/normalizer.hpp. m = Nx^2+Ny^2+Nz^2 exact, 1/sqrt(m) by rsqrt_unit (even shift, seed
 // table, one Newton-Raphson step), N * 1/sqrt(m) rounded and saturated to UnitBits.
 // Latency 14, one normal per clock; every stage registers valid and data; every product is
-// registered straight from its multiplier block (the final one as partial products split at an
-// 18 x 18 multiplier), its sums, shift and round a stage later each; one global stall
+// registered in its multiplier block (mul18_reg: on the ECP5 the MULT18X18D's output register;
+// the final one as partial products split at an 18 x 18 multiplier), its sums, shift and round a stage later each; one global stall
 // (stall_pipe): ready_o = ready_i || !valid_o (combinational from ready_i and the output valid
 // flop only). Each stage's registers load only when the beat entering it is valid (en && its
 // valid: one LUT, as en alone): a bubble's values are never read, so a simulator need not compute
@@ -66,8 +66,9 @@ module normalizer #(
   for (genvar c = 0; c < 3; c++) begin : g_sq  // a generate block, not an array: see g_n below
     logic signed [NB-1:0] n;
     logic [MBits-1:0]     q;  // <= 2^34: non-negative
-    assign n = signed'(normal_i[c*NB +: NB]);
-    always_ff @(posedge clk_i) if (ce[0]) q <= unsigned'(MBits'(n) * MBits'(n));  // exact
+    assign n = normal_i[c*NB +: NB];
+    mul18_reg #(.ABits(NB), .BBits(NB), .ASigned(1'b1), .BSigned(1'b1), .PBits(MBits)) u_sq (
+      .clk_i, .ce_i(ce[0]), .a_i(n), .b_i(n), .p_o(q));  // exact
   end
 
   logic [MBits-1:0] m_q;
@@ -139,10 +140,10 @@ module normalizer #(
     logic signed [TBits-1:0]      t_q;
     logic [UB-1:0]                unit_q;
     assign n = signed'(g_n[RDelay+1].q[c*NB +: NB]);
-    always_ff @(posedge clk_i) if (ce[10]) begin
-      pl_q <= (NB+YSplit)'(n) * signed'((NB+YSplit)'({1'b0, y[YSplit-1:0]}));
-      ph_q <= (NB+YHi)'(n) * signed'((NB+YHi)'({1'b0, y[YBits-1:YSplit]}));
-    end
+    mul18_reg #(.ABits(NB), .BBits(YSplit), .ASigned(1'b1), .PBits(NB+YSplit)) u_pl (
+      .clk_i, .ce_i(ce[10]), .a_i(n), .b_i(y[YSplit-1:0]), .p_o(pl_q));
+    mul18_reg #(.ABits(NB), .BBits(YHi), .ASigned(1'b1), .PBits(NB+YHi)) u_ph (
+      .clk_i, .ce_i(ce[10]), .a_i(n), .b_i(y[YBits-1:YSplit]), .p_o(ph_q));
     always_ff @(posedge clk_i)
       if (ce[11]) p_q <= (ScaledBits'(ph_q) <<< YSplit) + ScaledBits'(pl_q);
     always_ff @(posedge clk_i) if (ce[12]) begin

@@ -3,9 +3,10 @@
 // vector, eqs. 4-8), cos(s)^n by square-and-multiply over the 8 bits of n; bit-exact twin of
 // model/twins/phong_shader.hpp. Latency 25, one pixel per clock; every stage registers valid and data;
 // one global stall (stall_pipe): ready_o = ready_i || !valid_o (combinational from ready_i and the
-// output valid flop only). Every product is registered on its own, a product wider than one
-// 18 x 18 multiplier as partial products, the sums and roundings that use it one stage later
-// (ECP5 MULT18 and iCE40 MAC16 timing). Each stage's registers load only when the beat entering
+// output valid flop only). Every product is registered on its own, in its multiplier block
+// (mul18_reg: on the ECP5 the MULT18X18D's output register), a product wider than one 18 x 18
+// multiplier as partial products, the sums and roundings that use it one stage later (ECP5
+// MULT18 and iCE40 MAC16 timing). Each stage's registers load only when the beat entering
 // it is valid (en && its valid: one LUT, as en alone): a bubble's values are never read, so a
 // simulator need not compute them (most clocks of a frame carry bubbles); a valid beat's values
 // are the same. light_i / eye_i are frame constants: L.E is computed from them over stages 1 to 4
@@ -84,16 +85,18 @@ module phong_shader #(
   );
 
 
-  // The three products of a dot product of two Q2.14 vectors, each exact (28 fraction bits).
-  function automatic logic [3*DW-1:0] products3(input logic [3*UB-1:0] a, input logic [3*UB-1:0] b);
-    logic signed [DW-1:0] x, y, p;
-    for (int c = 0; c < 3; c++) begin
-      x = DW'(signed'(a[c*UB +: UB]));  // sign-extended to DW
-      y = DW'(signed'(b[c*UB +: UB]));
-      p = x * y;
-      products3[c*DW +: DW] = p;
-    end
-  endfunction
+  // The three products of each dot product of two Q2.14 vectors, exact (28 fraction bits), each
+  // registered in its multiplier block (mul18_reg): N.L and N.E in stage 1, L.E (frame constant)
+  // alongside. Component c at c * DW.
+  logic [3*DW-1:0] nl_p_q, ne_p_q, le_p_q;
+  for (genvar c = 0; c < 3; c++) begin : g_dot
+    mul18_reg #(.ABits(UB), .BBits(UB), .ASigned(1'b1), .BSigned(1'b1), .PBits(DW)) u_nl (
+      .clk_i, .ce_i(ce[0]), .a_i(normal_i[c*UB +: UB]), .b_i(light_i[c*UB +: UB]), .p_o(nl_p_q[c*DW +: DW]));
+    mul18_reg #(.ABits(UB), .BBits(UB), .ASigned(1'b1), .BSigned(1'b1), .PBits(DW)) u_ne (
+      .clk_i, .ce_i(ce[0]), .a_i(normal_i[c*UB +: UB]), .b_i(eye_i[c*UB +: UB]), .p_o(ne_p_q[c*DW +: DW]));
+    mul18_reg #(.ABits(UB), .BBits(UB), .ASigned(1'b1), .BSigned(1'b1), .PBits(DW)) u_le (
+      .clk_i, .ce_i(ce[0]), .a_i(light_i[c*UB +: UB]), .b_i(eye_i[c*UB +: UB]), .p_o(le_p_q[c*DW +: DW]));
+  end
   function automatic logic signed [DW-1:0] sum3(input logic [3*DW-1:0] p);
     sum3 = signed'(p[0 +: DW]) + signed'(p[DW +: DW]) + signed'(p[2*DW +: DW]);
   endfunction
@@ -120,12 +123,10 @@ module phong_shader #(
   // it every clock), but one register per stage: a pixel reads cs_k_q in stage 5, when it holds the
   // value of the pixel itself or of one behind it, the same for the whole frame. Every frame's
   // first pixel computes it.
-  logic [3*DW-1:0]           le_p_q;
   logic signed [DW-1:0]      le_s_q;
   logic signed [DotBits+1:0] le_q;
   logic signed [CW-1:0]      cs_k_q;
   always_ff @(posedge clk_i) begin
-    if (ce[0]) le_p_q <= products3(light_i, eye_i);
     if (ce[1]) le_s_q <= sum3(le_p_q);
     if (ce[2]) le_q   <= round_dot(le_s_q, 1'b1);
     if (ce[3]) cs_k_q <= CW'(1 <<< (2 * DotBits - PowBits - 1)) - (CW'(le_q) <<< DotBits);
@@ -171,12 +172,7 @@ module phong_shader #(
     end
   end
 
-  // ---- stage 1: the products of N.L and N.E ------------------------------------------------------
-  logic [3*DW-1:0] nl_p_q, ne_p_q;
-  always_ff @(posedge clk_i) if (ce[0]) begin
-    nl_p_q <= products3(normal_i, light_i);
-    ne_p_q <= products3(normal_i, eye_i);
-  end
+  // ---- stage 1: the products of N.L and N.E (g_dot above) ----------------------------------------
 
   // ---- stage 2: N.L and N.E, exact -------------------------------------------------------------
   logic signed [DW-1:0] ndl_q, nde_q;
@@ -208,19 +204,25 @@ module phong_shader #(
   logic [PSplit+MaterialBits-1:0] fp0_q;                    // c0 (1-d)
   logic [CHi+MaterialBits-1:0]    fp1_q;                    // c1 (1-d)
   logic                           front_q;                  // cos(i) > 0
+  logic [MaterialBits-1:0]        omd_q;                    // 1 - d, 1.0 = 256 (stage 3's pixel)
   assign {c1, c0} = cosi_q[DotBits:0];
   assign {n1, n0} = ne_q;
-  always_ff @(posedge clk_i) if (ce[3]) begin
-    logic [MaterialBits-1:0] omd;                           // 1 - d, 1.0 = 256
-    omd = MaterialBits'(1 << MF) - g_d[2].q;
-    cn00_q  <= (2*PSplit)'(c0) * (2*PSplit)'(n0);
-    cn01_q  <= signed'((PSplit+NHi+1)'({1'b0, c0})) * (PSplit+NHi+1)'(n1);
-    cn10_q  <= (PSplit+CHi)'(c1) * (PSplit+CHi)'(n0);
-    cn11_q  <= signed'((CHi+NHi+1)'({1'b0, c1})) * (CHi+NHi+1)'(n1);
-    fp0_q   <= (PSplit+MaterialBits)'(c0) * (PSplit+MaterialBits)'(omd);
-    fp1_q   <= (CHi+MaterialBits)'(c1) * (CHi+MaterialBits)'(omd);
-    front_q <= cosi_q != '0;
-  end
+  // 1 - d registered beside g_d[2] (from the same d), so the subtract is not in front of the
+  // multiplier blocks' setup (10.4 ns on the ECP5: its carry chain and a 4.2 ns route).
+  always_ff @(posedge clk_i) if (ce[2]) omd_q <= MaterialBits'(1 << MF) - g_d[1].q;
+  mul18_reg #(.ABits(PSplit), .BBits(PSplit)) u_cn00 (
+    .clk_i, .ce_i(ce[3]), .a_i(c0), .b_i(n0), .p_o(cn00_q));
+  mul18_reg #(.ABits(PSplit), .BBits(NHi), .BSigned(1'b1), .PBits(PSplit+NHi+1)) u_cn01 (
+    .clk_i, .ce_i(ce[3]), .a_i(c0), .b_i(n1), .p_o(cn01_q));
+  mul18_reg #(.ABits(CHi), .BBits(PSplit)) u_cn10 (
+    .clk_i, .ce_i(ce[3]), .a_i(c1), .b_i(n0), .p_o(cn10_q));
+  mul18_reg #(.ABits(CHi), .BBits(NHi), .BSigned(1'b1), .PBits(CHi+NHi+1)) u_cn11 (
+    .clk_i, .ce_i(ce[3]), .a_i(c1), .b_i(n1), .p_o(cn11_q));
+  mul18_reg #(.ABits(PSplit), .BBits(MaterialBits)) u_fp0 (
+    .clk_i, .ce_i(ce[3]), .a_i(c0), .b_i(omd_q), .p_o(fp0_q));
+  mul18_reg #(.ABits(CHi), .BBits(MaterialBits)) u_fp1 (
+    .clk_i, .ce_i(ce[3]), .a_i(c1), .b_i(omd_q), .p_o(fp1_q));
+  always_ff @(posedge clk_i) if (ce[3]) front_q <= cosi_q != '0;
 
   // ---- stage 5: cos(i)(N.E) and cos(i)(1-d), exact ---------------------------------------------
   logic signed [CW-1:0] cne_q;
@@ -289,13 +291,15 @@ module phong_shader #(
     end
     assign {x1, x0} = acc_in;
     assign {y1, y0} = base_in;
-    always_ff @(posedge clk_i) if (ce[PowFirst-1+2*k]) begin
-      a00_q   <= (2*PSplit)'(x0) * (2*PSplit)'(y0);
-      a01_q   <= (PSplit+PHi)'(x0) * (PSplit+PHi)'(y1);
-      a10_q   <= (PSplit+PHi)'(x1) * (PSplit+PHi)'(y0);
-      a11_q   <= (2*PHi)'(x1) * (2*PHi)'(y1);
-      acc_k_q <= acc_in;
-    end
+    mul18_reg #(.ABits(PSplit), .BBits(PSplit)) u_a00 (
+      .clk_i, .ce_i(ce[PowFirst-1+2*k]), .a_i(x0), .b_i(y0), .p_o(a00_q));
+    mul18_reg #(.ABits(PSplit), .BBits(PHi)) u_a01 (
+      .clk_i, .ce_i(ce[PowFirst-1+2*k]), .a_i(x0), .b_i(y1), .p_o(a01_q));
+    mul18_reg #(.ABits(PHi), .BBits(PSplit)) u_a10 (
+      .clk_i, .ce_i(ce[PowFirst-1+2*k]), .a_i(x1), .b_i(y0), .p_o(a10_q));
+    mul18_reg #(.ABits(PHi), .BBits(PHi)) u_a11 (
+      .clk_i, .ce_i(ce[PowFirst-1+2*k]), .a_i(x1), .b_i(y1), .p_o(a11_q));
+    always_ff @(posedge clk_i) if (ce[PowFirst-1+2*k]) acc_k_q <= acc_in;
     // The round stage: the sums only for the products it keeps (acc's for a set bit of n).
     always_ff @(posedge clk_i) if (ce[PowFirst+2*k]) begin
       /* verilator lint_off UNUSEDSIGNAL */
@@ -311,11 +315,12 @@ module phong_shader #(
       logic [PSplit+PHi-1:0] b01_q;               // low x high (b10 = b01: a square)
       logic [2*PHi-1:0]      b11_q;               // high x high
       logic [PowBits:0]      base_q;              // base out
-      always_ff @(posedge clk_i) if (ce[PowFirst-1+2*k]) begin
-        b00_q <= (2*PSplit)'(y0) * (2*PSplit)'(y0);
-        b01_q <= (PSplit+PHi)'(y0) * (PSplit+PHi)'(y1);
-        b11_q <= (2*PHi)'(y1) * (2*PHi)'(y1);
-      end
+      mul18_reg #(.ABits(PSplit), .BBits(PSplit)) u_b00 (
+        .clk_i, .ce_i(ce[PowFirst-1+2*k]), .a_i(y0), .b_i(y0), .p_o(b00_q));
+      mul18_reg #(.ABits(PSplit), .BBits(PHi)) u_b01 (
+        .clk_i, .ce_i(ce[PowFirst-1+2*k]), .a_i(y0), .b_i(y1), .p_o(b01_q));
+      mul18_reg #(.ABits(PHi), .BBits(PHi)) u_b11 (
+        .clk_i, .ce_i(ce[PowFirst-1+2*k]), .a_i(y1), .b_i(y1), .p_o(b11_q));
       always_ff @(posedge clk_i) if (ce[PowFirst+2*k]) begin
         /* verilator lint_off UNUSEDSIGNAL */
         logic [PB2-1:0] pb;  // product <= 2^2P plus half: only [2P:P] is kept
@@ -347,14 +352,18 @@ module phong_shader #(
   logic [PowBits:0]                 al;
   assign fl = g_f[2*ShininessBits].q;
   assign al = g_pow[ShininessBits-1].acc_q;
-  always_ff @(posedge clk_i) if (ce[PowLast]) begin
-    for (int c = 0; c < 3; c++) begin
-      df0_q[c*DF0 +: DF0] <= DF0'(g_cp[PowLast-1].q[c*8 +: 8]) * DF0'(fl[PSplit-1:0]);
-      df1_q[c*DF1 +: DF1] <= DF1'(g_cp[PowLast-1].q[c*8 +: 8]) * DF1'(fl[FW-1:PSplit]);
-    end
-    wa0_q <= (MaterialBits+8+PSplit)'(w255_q) * (MaterialBits+8+PSplit)'(al[PSplit-1:0]);
-    wa1_q <= (MaterialBits+8+AHi)'(w255_q) * (MaterialBits+8+AHi)'(al[PowBits:PSplit]);
+  for (genvar c = 0; c < 3; c++) begin : g_df
+    mul18_reg #(.ABits(8), .BBits(PSplit)) u_df0 (
+      .clk_i, .ce_i(ce[PowLast]), .a_i(g_cp[PowLast-1].q[c*8 +: 8]), .b_i(fl[PSplit-1:0]),
+      .p_o(df0_q[c*DF0 +: DF0]));
+    mul18_reg #(.ABits(8), .BBits(FHi)) u_df1 (
+      .clk_i, .ce_i(ce[PowLast]), .a_i(g_cp[PowLast-1].q[c*8 +: 8]), .b_i(fl[FW-1:PSplit]),
+      .p_o(df1_q[c*DF1 +: DF1]));
   end
+  mul18_reg #(.ABits(MaterialBits+8), .BBits(PSplit)) u_wa0 (
+    .clk_i, .ce_i(ce[PowLast]), .a_i(w255_q), .b_i(al[PSplit-1:0]), .p_o(wa0_q));
+  mul18_reg #(.ABits(MaterialBits+8), .BBits(AHi)) u_wa1 (
+    .clk_i, .ce_i(ce[PowLast]), .a_i(w255_q), .b_i(al[PowBits:PSplit]), .p_o(wa1_q));
 
   // ---- stage 24: Cp f and 255 W cos(s)^n (white highlight), D + MF fraction bits -------------
   // The final rounding's half, 2^(D+MF-1), is set in Cp f's sum as a bit above Cp f0 (< 2^(PSplit+8)

@@ -2,7 +2,8 @@
 // mechanism for obtaining square roots", Phong 1975 p. 317): even-shift normalization, a 768-row
 // seed table, one Newton-Raphson step. Bit-exact twin of Normalizer::normalize_mantissa and
 // RsqrtUnit::rsqrt_mant (model/twins/rsqrt_unit.hpp). Latency 8, every stage registered; the
-// seed ROM's output is registered once more before y0^2; the two Newton-Raphson products, wider
+// leading-one search (stage 1) and the even shift (stage 2, straight into the seed ROM's address)
+// are a clock apart; the seed ROM's output is registered once more before y0^2; the two Newton-Raphson products, wider
 // than an 18 x 18 multiplier, are registered as partial products and summed and rounded a stage
 // later; no handshake: ce_i[k] loads stage k (the parent owns valid/ready and the stall, and
 // gives each stage its clock enable: its stall_pipe's ce_o, low for a bubble, whose values nobody
@@ -69,34 +70,35 @@ module rsqrt_unit #(
   // (Verilator) keeps a pending-write flag and value per written array element and clears them
   // on every evaluation. Same flops. The logic of a stage is computed inside its enabled
   // always_ff (the same logic in front of the same flops), so a simulator skips it with them.
-  logic [MantBits-1:0] mant_q;
+  logic [MBits-1:0] m1_q;
   logic [4:0]   j1_q, j2_q, j3_q, j4_q, j5_q, j6_q, j7_q, j8_q;
   logic         nul1_q, nul2_q, nul3_q, nul4_q, nul5_q, nul6_q, nul7_q, nul8_q;
 
-  // ---- stage 1: even-shift normalization m' = (m << 2j) / 2^MBits in [1/4, 1) -------------
+  // ---- stage 1: the even shift 2j, j = the number of all-zero bit pairs above m's leading one ---
+  // m' = (m << 2j) / 2^MBits in [1/4, 1). The search alone: the shift waits for stage 2 (search,
+  // j and shift in one clock limited the normalizer at 98.6 MHz on the ECP5).
   always_ff @(posedge clk_i) if (ce_i[1]) begin
-    logic [5:0]       lead;
-    logic [4:0]       j1;
-    /* verilator lint_off UNUSEDSIGNAL */
-    logic [MBits-1:0] shifted;  // only the top W bits are kept (truncation, as the model)
-    /* verilator lint_on UNUSEDSIGNAL */
-    lead = '0;
-    for (int i = 0; i < MBits; i++) if (m_i[i]) lead = 6'(i);
-    j1      = (m_i == '0) ? 5'd0 : 5'((6'(MBits - 1) - lead) >> 1);
-    shifted = m_i << {j1, 1'b0};
-    mant_q <= shifted[MBits-1 -: MantBits];  // 0 for m = 0: reads ROM default 0 below
+    logic [4:0] j1;  // (MBits - 1 - lead) / 2, lead the leading one's index; 0 for m = 0
+    j1 = '0;
+    for (int p = 0; p < MBits / 2; p++) if (m_i[2*p +: 2] != 2'b00) j1 = 5'(MBits / 2 - 1 - p);
+    m1_q   <= m_i;
     j1_q   <= j1;
     nul1_q <= (m_i == '0);
   end
 
-  // ---- stage 2: seed y0 ---------------------------------------------------------------------
-  logic [IndexBits-1:0] idx;
+  // ---- stage 2: the shift m << 2j (only its top W bits are kept: truncation, as the model) and
+  // the seed y0 read at its top P bits: the ROM's address comes from the shift's multiplexers ---
   logic [SeedBits:0]    y0_2_q, y0_3_q, y0_4_q, y0_5_q, y0_6_q;
   logic [MantBits:0]    mc2_q, mc3_q, mc4_q;  // m'c = mant + half an ulp: {mant, 1}, W+1 fraction bits
-  assign idx = mant_q[MantBits-1 -: IndexBits];
   always_ff @(posedge clk_i) if (ce_i[2]) begin
-    y0_2_q <= seed_rom[idx];
-    mc2_q  <= {mant_q, 1'b1};
+    /* verilator lint_off UNUSEDSIGNAL */
+    logic [MBits-1:0] shifted;  // only the top W bits are kept
+    /* verilator lint_on UNUSEDSIGNAL */
+    logic [MantBits-1:0] mant;  // 0 for m = 0: reads ROM default 0 below
+    shifted = m1_q << {j1_q, 1'b0};
+    mant    = shifted[MBits-1 -: MantBits];
+    y0_2_q <= seed_rom[mant[MantBits-1 -: IndexBits]];
+    mc2_q  <= {mant, 1'b1};
     j2_q   <= j1_q;
     nul2_q <= nul1_q;
   end
@@ -112,8 +114,9 @@ module rsqrt_unit #(
 
   // ---- stage 4: y0^2, exact (2T fraction bits) --------------------------------------------
   logic [2*SeedBits+1:0] y0sq_q;
+  mul18_reg #(.ABits(SeedBits+1), .BBits(SeedBits+1)) u_y0sq (
+    .clk_i, .ce_i(ce_i[4]), .a_i(y0_3_q), .b_i(y0_3_q), .p_o(y0sq_q));
   always_ff @(posedge clk_i) if (ce_i[4]) begin
-    y0sq_q <= (2*SeedBits+2)'(y0_3_q) * (2*SeedBits+2)'(y0_3_q);
     y0_4_q <= y0_3_q;
     mc4_q  <= mc3_q;
     j4_q   <= j3_q;
@@ -121,7 +124,7 @@ module rsqrt_unit #(
   end
 
   // The wide products are split at bit PSplit of each operand wider than 18 bits (the low part
-  // fits a multiplier block unsigned), each partial product registered straight from its block:
+  // fits a multiplier block unsigned), each partial product registered in its block (mul18_reg):
   // x y = x1 y1 2^2PSplit + (x1 y0 + x0 y1) 2^PSplit + x0 y0.
   localparam int PSplit = 17;
 
@@ -139,28 +142,35 @@ module rsqrt_unit #(
   logic [AHi+BHi-1:0]    p11_q;
   assign {a1, a0} = mc4_q;
   assign {b1, b0} = y0sq_q;
+  mul18_reg #(.ABits(PSplit), .BBits(PSplit)) u_p00 (
+    .clk_i, .ce_i(ce_i[5]), .a_i(a0), .b_i(b0), .p_o(p00_q));
+  mul18_reg #(.ABits(PSplit), .BBits(BHi)) u_p01 (
+    .clk_i, .ce_i(ce_i[5]), .a_i(a0), .b_i(b1), .p_o(p01_q));
+  mul18_reg #(.ABits(AHi), .BBits(PSplit)) u_p10 (
+    .clk_i, .ce_i(ce_i[5]), .a_i(a1), .b_i(b0), .p_o(p10_q));
+  mul18_reg #(.ABits(AHi), .BBits(BHi)) u_p11 (
+    .clk_i, .ce_i(ce_i[5]), .a_i(a1), .b_i(b1), .p_o(p11_q));
   always_ff @(posedge clk_i) if (ce_i[5]) begin
-    p00_q  <= (2*PSplit)'(a0) * (2*PSplit)'(b0);
-    p01_q  <= (PSplit+BHi)'(a0) * (PSplit+BHi)'(b1);
-    p10_q  <= (AHi+PSplit)'(a1) * (AHi+PSplit)'(b0);
-    p11_q  <= (AHi+BHi)'(a1) * (AHi+BHi)'(b1);
     y0_5_q <= y0_4_q;
     j5_q   <= j4_q;
     nul5_q <= nul4_q;
   end
 
   // ---- stage 6: u = 3 - round(m'c * y0^2), G fraction bits (|m'c y0^2 - 1| < 2^-9) ---------
-  // The product plus one bit for the rounding add.
-  localparam int PW4 = AW + BW + 1;
+  // One sum, one carry chain: with p = m'c y0^2 (Sh4 + G fraction bits) and s = Sh4,
+  // 3 * 2^G - floor((p + 2^(s-1)) / 2^s) = ceil((3 * 2^(G+s) - 2^(s-1) - p) / 2^s)
+  //                                      = floor((3 * 2^(G+s) + 2^(s-1) - 1 - p) / 2^s),
+  // so u is bits [s+G+1:s] of UConst - p (the partial products subtracted in one adder tree; the
+  // product, the rounding add and the subtract from 3 were three carry chains: 109 MHz).
+  localparam int PW4 = (AW + BW + 1 > Sh4 + NrBits + 2) ? AW + BW + 1 : Sh4 + NrBits + 2;
+  localparam logic [PW4-1:0] UConst = (PW4'(3) << (NrBits + Sh4)) + (PW4'(1) << (Sh4 - 1)) - PW4'(1);
   logic [NrBits+1:0] u_q;
   always_ff @(posedge clk_i) if (ce_i[6]) begin
-    logic [PW4-1:0] prod4;
     /* verilator lint_off UNUSEDSIGNAL */
-    logic [PW4-1:0] t4;  // m'c * y0^2 < 2: the top bits are zero
+    logic [PW4-1:0] d4;  // u * 2^s plus the remainder; only bits [s+G+1:s] are kept
     /* verilator lint_on UNUSEDSIGNAL */
-    prod4 = PW4'({p11_q, p00_q}) + (PW4'(p01_q) << PSplit) + (PW4'(p10_q) << PSplit);
-    t4    = (prod4 + (PW4'(1) << (Sh4 - 1))) >> Sh4;
-    u_q    <= (NrBits+2)'(3 << NrBits) - t4[NrBits+1:0];
+    d4 = UConst - PW4'({p11_q, p00_q}) - (PW4'(p01_q) << PSplit) - (PW4'(p10_q) << PSplit);
+    u_q    <= d4[Sh4 +: NrBits+2];
     y0_6_q <= y0_5_q;
     j6_q   <= j5_q;
     nul6_q <= nul5_q;
@@ -172,9 +182,11 @@ module rsqrt_unit #(
   localparam int UHi = UW - PSplit;           // 9
   logic [YW+PSplit-1:0] q0_q;
   logic [YW+UHi-1:0]    q1_q;
+  mul18_reg #(.ABits(YW), .BBits(PSplit)) u_q0 (
+    .clk_i, .ce_i(ce_i[7]), .a_i(y0_6_q), .b_i(u_q[PSplit-1:0]), .p_o(q0_q));
+  mul18_reg #(.ABits(YW), .BBits(UHi)) u_q1 (
+    .clk_i, .ce_i(ce_i[7]), .a_i(y0_6_q), .b_i(u_q[UW-1:PSplit]), .p_o(q1_q));
   always_ff @(posedge clk_i) if (ce_i[7]) begin
-    q0_q   <= (YW+PSplit)'(y0_6_q) * (YW+PSplit)'(u_q[PSplit-1:0]);
-    q1_q   <= (YW+UHi)'(y0_6_q) * (YW+UHi)'(u_q[UW-1:PSplit]);
     j7_q   <= j6_q;
     nul7_q <= nul6_q;
   end

@@ -214,8 +214,9 @@ Rtl find_rtl(const std::string& dir) {
 }
 
 // -defer keeps each module as a syntax tree until something derives it (elaboration of one module).
-std::string read_rtl_command(const Rtl& rtl, bool defer = false) {
-  std::string s = std::string("read_verilog -sv") + (defer ? " -defer" : "") + " -I" + rtl.dir.string();
+// defines: " -DNAME" options (the target's, see synthesize).
+std::string read_rtl_command(const Rtl& rtl, bool defer = false, const std::string& defines = "") {
+  std::string s = std::string("read_verilog -sv") + (defer ? " -defer" : "") + defines + " -I" + rtl.dir.string();
   for (const std::string& f : rtl.files) s += " " + f;
   return s;
 }
@@ -523,8 +524,12 @@ void synthesize(Row& row, const Rtl& rtl, const Target& t, const fs::path& dir, 
   // synth_ice40 / synth_ecp5 to their final check step, whose first command (autoname, cosmetic
   // renaming) is quadratic in yosys 0.23 and alone takes over 10 minutes on a top; the rest of
   // that step is run by hand, and `rename -wire` (linear) names cells after the wires they drive.
+  // ECP5: WATKINS_ECP5 selects the multiplier blocks with their own product register (rtl/mul18_reg.sv
+  // instantiates MULT18X18D, which yosys 0.23 does not infer with registers); the library's
+  // blackboxes are read first so the wrapper's hierarchy check knows the cell.
   std::ostringstream ys;
-  ys << read_rtl_command(rtl) << "\n"
+  if (t.family == Family::Ecp5) ys << "read_verilog -lib +/ecp5/cells_bb.v\n";
+  ys << read_rtl_command(rtl, false, t.family == Family::Ecp5 ? " -DWATKINS_ECP5" : "") << "\n"
      << "read_verilog wrapper.v\n"
      << "hierarchy -check -top " << kWrapper << "\n"
      << t.synth << " -top " << kWrapper << " -run :check\n"
