@@ -72,7 +72,10 @@ module stall_pipe #(
     end
     `WATKINS_ASSERT(a_rd_inc, rd_inc_q == rd_q + 1'b1)
     always_ff @(posedge clk_i) begin
-      if (en_o && valid_i) mem[wr_q] <= payload_i;
+      // Written every clock: slot wr_q holds no beat in flight until wr_q moves past it (a beat
+      // entering is written the clock it enters), so writing it while stalled or empty is
+      // harmless, and the RAM's write enable is no longer the parent's stall signal.
+      mem[wr_q] <= payload_i;
       out_q <= mem[rd_next];  // the oldest beat in flight (the one leaving next)
     end
     assign payload_o = out_q;
