@@ -561,6 +561,11 @@ module segment_interpolator #(
       end
     end
   end
+  // The stepper's next state, the span going on past this pixel, for each source and picked
+  // by st_active_q after the compare (the pick before the add was the Gouraud block's limit).
+  logic st_more, hd_more;
+  assign st_more = (st_x_q + 1'b1 != st_xe_q);
+  assign hd_more = (f_out.xs + 1'b1 != f_out.xe);
   assign depth_d  = st_active_q ? depth_src[0 +: DepB]   : depth_src[DepB +: DepB];
   assign rgb_d    = st_active_q ? rgb_src[0 +: 24]       : rgb_src[24 +: 24];
   assign normal_d = st_active_q ? normal_src[0 +: 3*NB]  : normal_src[3*NB +: 3*NB];
@@ -571,7 +576,7 @@ module segment_interpolator #(
       frag_valid_o <= 1'b0;
     end else begin
       if (out_free) frag_valid_o <= emit_frag || emit_eol;
-      if (emit_frag) st_active_q <= (cur_x + 1'b1 != cur_xe);
+      if (emit_frag) st_active_q <= st_active_q ? st_more : hd_more;
     end
   end
 

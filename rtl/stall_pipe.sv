@@ -53,21 +53,29 @@ module stall_pipe #(
     localparam int unsigned PtrBits = $clog2(Stages + 1);
     localparam int unsigned Depth   = 2 ** PtrBits;
     logic [PayloadBits-1:0] mem [Depth];
-    logic [PtrBits-1:0]     wr_q, rd_q, rd_next;
+    logic [PtrBits-1:0]     wr_q, rd_q, rd_inc_q, rd_next;
     logic [PayloadBits-1:0] out_q;
 
-    assign rd_next = rd_q + PtrBits'(valid_o && ready_i);
+    // rd_q + 1 kept in its own register, so the read address is a 2:1 pick by the handshake
+    // (ready_i is the parent's stall signal, with a large fan-out) and no add follows it.
+    assign rd_next = (valid_o && ready_i) ? rd_inc_q : rd_q;
     always_ff @(posedge clk_i) begin
       if (!rst_ni) begin
-        wr_q <= '0;
-        rd_q <= '0;
+        wr_q     <= '0;
+        rd_q     <= '0;
+        rd_inc_q <= PtrBits'(1);
       end else begin
         if (en_o && valid_i) wr_q <= wr_q + 1'b1;
-        rd_q <= rd_next;
+        rd_q     <= rd_next;
+        rd_inc_q <= rd_next + 1'b1;
       end
     end
+    `WATKINS_ASSERT(a_rd_inc, rd_inc_q == rd_q + 1'b1)
     always_ff @(posedge clk_i) begin
-      if (en_o && valid_i) mem[wr_q] <= payload_i;
+      // Written every clock: slot wr_q holds no beat in flight until wr_q moves past it (a beat
+      // entering is written the clock it enters), so writing it while stalled or empty is
+      // harmless, and the RAM's write enable is no longer the parent's stall signal.
+      mem[wr_q] <= payload_i;
       out_q <= mem[rd_next];  // the oldest beat in flight (the one leaving next)
     end
     assign payload_o = out_q;

@@ -1,6 +1,8 @@
 // stream_fifo: first-in first-out valid/ready buffer of Depth words.
 // Latency 1 (a word written is visible at the head the next cycle); valid_o and data_o come
-// from registers, ready_o = not full (registered); no combinational path from input to output.
+// from registers, ready_o = not full straight from its own flop (room_q, kept equal to
+// cnt_q != Depth: a parent's stall signal built on ready_o starts at a flop, not at a compare of
+// the count); no combinational path from input to output.
 `include "watkins_assert.svh"
 
 module stream_fifo #(
@@ -22,9 +24,10 @@ module stream_fifo #(
   logic [DataBits-1:0] mem_q [Depth];
   logic [PtrBits-1:0]  wr_q, rd_q;
   logic [CntBits-1:0]  cnt_q;
+  logic                room_q;  // cnt_q != Depth
   logic push, pop;
 
-  assign ready_o = (cnt_q != CntBits'(Depth));
+  assign ready_o = room_q;
   assign valid_o = (cnt_q != '0);
   assign data_o  = mem_q[rd_q];
   assign push    = valid_i && ready_o;
@@ -40,11 +43,15 @@ module stream_fifo #(
       wr_q  <= '0;
       rd_q  <= '0;
       cnt_q <= '0;
+      room_q <= 1'b1;
     end else begin
       if (push) wr_q <= next_ptr(wr_q);
       if (pop) rd_q <= next_ptr(rd_q);
       if (push && !pop) cnt_q <= cnt_q + 1'b1;
       else if (pop && !push) cnt_q <= cnt_q - 1'b1;
+      // Full next clock: a push without a pop into the last free slot; a pop frees one.
+      if (push && !pop) room_q <= (cnt_q != CntBits'(Depth - 1));
+      else if (pop && !push) room_q <= 1'b1;
     end
   end
 
@@ -55,5 +62,6 @@ module stream_fifo #(
 
   `WATKINS_ASSERT_HOLD(a_in_hold, valid_i, ready_o, data_i)
   `WATKINS_ASSERT_HOLD(a_out_hold, valid_o, ready_i, data_o)
+  `WATKINS_ASSERT(a_room, room_q == (cnt_q != CntBits'(Depth)))
   `WATKINS_COVER(c_full, !ready_o)
 endmodule

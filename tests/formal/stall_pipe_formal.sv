@@ -54,6 +54,7 @@ module stall_pipe_formal #(
   (* hierconn *) logic [Stages-1:0] \u_dut.valid_q ;
   (* hierconn *) logic [PtrBits-1:0] \u_dut.g_ram.wr_q ;
   (* hierconn *) logic [PtrBits-1:0] \u_dut.g_ram.rd_q ;
+  (* hierconn *) logic [PtrBits-1:0] \u_dut.g_ram.rd_inc_q ;
   (* hierconn *) logic [PayloadBits-1:0] \u_dut.g_ram.out_q ;
   logic [4*PayloadBits-1:0] shift_q;
   logic [8*PayloadBits-1:0] mem;  // Depth <= 8 (Stages = 4 with flops); words 4..7 unused
@@ -66,6 +67,11 @@ module stall_pipe_formal #(
   `FORMAL_WORD(mem, PayloadBits, 1, \u_dut.g_ram.mem[1] )
   `FORMAL_WORD(mem, PayloadBits, 2, \u_dut.g_ram.mem[2] )
   `FORMAL_WORD(mem, PayloadBits, 3, \u_dut.g_ram.mem[3] )
+
+  // rd_q + 1 precomputed (read address picked, not added, by the handshake).
+  if (PayloadRam) begin : g_rd_inc
+    always_comb if (rst_ni) assert (\u_dut.g_ram.rd_inc_q == \u_dut.g_ram.rd_q + 1'b1);
+  end
 
   stall_pipe_checker #(.Stages(Stages), .PayloadBits(PayloadBits), .PayloadRam(PayloadRam)) u_check (
     .clk_i,

@@ -30,6 +30,7 @@ module stream_fifo_formal #(
   `FORMAL_ASSERT_HOLD(out, valid_o, ready_i, data_o)
 
   (* hierconn *) logic [CntBits-1:0]  \u_dut.cnt_q ;
+  (* hierconn *) logic                \u_dut.room_q ;
   (* hierconn *) logic [PtrBits-1:0]  \u_dut.rd_q ;
   (* hierconn *) logic [PtrBits-1:0]  \u_dut.wr_q ;
   (* hierconn *) logic [DataBits-1:0] \u_dut.mem_q[0] ;
@@ -64,6 +65,7 @@ module stream_fifo_formal #(
       assert (ready_o == (occupancy != DataBits'(Depth)));
       // Induction invariants: pointers in range, the write pointer cnt slots after the read
       // pointer, and the k-th occupied slot holds beat n_out + k.
+      assert (\u_dut.room_q == (\u_dut.cnt_q != CntBits'(Depth)));
       assert (32'(\u_dut.rd_q ) < Depth);
       assert (32'(\u_dut.wr_q ) < Depth);
       assert (wrap(32'(\u_dut.rd_q ), 32'(\u_dut.cnt_q )) == 32'(\u_dut.wr_q ));
