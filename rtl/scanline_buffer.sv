@@ -119,15 +119,21 @@ module scanline_buffer #(
     low_of = v[w * WIB +: WIB];
   endfunction
   // A word's lowest written bit (0 when it holds none).
-  // The lowest one isolated by a carry chain (bits & -bits), then its index as WIB ORs of the
-  // one-hot (a loop over the bits maps to a priority chain of LUTs, 13 ns on the ECP5; a
-  // two-level tree of byte encoders cost 2,000 LUT4 more over the 20 words).
+  // Two levels, as a tree (a loop over the 32 bits maps to a priority chain of LUTs, 13 ns on
+  // the ECP5): each byte's lowest bit and whether it holds one, then the lowest byte's.
+  localparam int unsigned Bytes = WordBits / 8;
   function automatic logic [WIB-1:0] lowest_bit(logic [WordBits-1:0] bits);
-    logic [WordBits-1:0] iso;
-    iso        = bits & (~bits + 1'b1);
-    lowest_bit = '0;
-    for (int i = 0; i < WordBits; i++)
-      for (int k = 0; k < WIB; k++) if ((i >> k) % 2 == 1) lowest_bit[k] = lowest_bit[k] | iso[i];
+    logic [2:0]       in_byte [Bytes];
+    logic [Bytes-1:0] nz;
+    logic [WIB-4:0]   byte_ix;
+    for (int b = 0; b < Bytes; b++) begin
+      nz[b]      = |bits[8 * b +: 8];
+      in_byte[b] = '0;
+      for (int i = 7; i >= 0; i--) if (bits[8 * b + i]) in_byte[b] = 3'(i);
+    end
+    byte_ix = '0;
+    for (int b = Bytes - 1; b >= 0; b--) if (nz[b]) byte_ix = (WIB - 3)'(b);
+    lowest_bit = {byte_ix, in_byte[byte_ix]};
   endfunction
   /* verilator lint_on UNUSEDSIGNAL */
 
