@@ -120,7 +120,8 @@ module scanline_buffer #(
   endfunction
   // A word's lowest written bit (0 when it holds none).
   // Two levels, as a tree (a loop over the 32 bits maps to a priority chain of LUTs, 13 ns on
-  // the ECP5): each byte's lowest bit and whether it holds one, then the lowest byte's.
+  // the ECP5; the lowest one isolated by a carry chain, bits & -bits, and encoded by ORs routed at
+  // 76.3 MHz in more LUTs): each byte's lowest bit and whether it holds one, then the lowest byte's.
   localparam int unsigned Bytes = WordBits / 8;
   function automatic logic [WIB-1:0] lowest_bit(logic [WordBits-1:0] bits);
     logic [2:0]       in_byte [Bytes];
