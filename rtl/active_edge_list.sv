@@ -365,12 +365,14 @@ module active_edge_list #(
   // below_q for key1_q as order_q will be after ord2's insertion (at the first entry p not before
   // key2_q): below p the entries stay (their own compare), at p sits key2_q (one compare of the
   // two keys), above p each entry is its lower neighbour (that neighbour's compare); past key1's
-  // index, no entry (occ1_q, registered with the key, so no count is compared here). One packed
-  // vector in one block, compared only on the clocks ord1 holds a key (a simulator skips the N
-  // comparators otherwise).
-  always_ff @(posedge clk_i) begin
-    if (ord1_q) begin
-      for (int i = 0; i < N; i++) begin
+  // index, no entry (occ1_q, registered with the key, so no count is compared here). Each flag
+  // in its own block (a generate loop, not a procedural loop: Verilator 5.006 does not unroll a
+  // loop of more than 64 iterations, and its non-blocking writes to the vector inside such a loop
+  // went wrong at 68 entries -- the curved-edge top), compared only on the clocks ord1 holds a
+  // key (a simulator skips the N comparators otherwise).
+  for (genvar i = 0; i < N; i++) begin : g_below
+    always_ff @(posedge clk_i) begin
+      if (ord1_q) begin
         if (!ord2_q || below_q[i])
           below_q[i] <= occ1_q[i] && entry_before_key1(order_q[i][IB +: KB], i);
         else if (i == 0 || below_q[(i == 0) ? 0 : i - 1])

@@ -4,7 +4,7 @@
 // one, and the pixels owed are the reader's (the rest of its line, plus the beat on the output);
 // every beat carries the next position expected (x = 0..width-1, then the next line, y wrapping at
 // height) and pixel_last_o exactly on the frame's last pixel. Fragments are never refused; a marker
-// waits only while the reader is busy. Frame settings (width 1..MaxWidth, height >= 1, full mode)
+// waits only while the reader is busy or a fragment is in the write side's read step. Frame settings (width 1..MaxWidth, height >= 1, full mode)
 // are constant; fragments are anywhere in the line, any depth, polygon and shade, either tie rule;
 // the shades themselves (the depth test) are the unit bench's business.
 `include "formal_stream.svh"
@@ -82,6 +82,7 @@ module scanline_buffer_formal #(
   end
 
   (* hierconn *) logic          \u_dut.rd_busy_q ;
+  (* hierconn *) logic          \u_dut.a_valid_q ;
   (* hierconn *) logic [LB-1:0] \u_dut.rx_q ;
   (* hierconn *) logic [LB-1:0] \u_dut.rline_q ;
   (* hierconn *) logic          \u_dut.rx_end_q ;
@@ -98,8 +99,9 @@ module scanline_buffer_formal #(
       assert (32'(owed_q) == (\u_dut.rd_busy_q ? 32'(width_i - \u_dut.rx_q ) : 0)
                              + 32'(pixel_valid_o));
       assert (owed_q <= 4'(MaxWidth + 1));
-      // A fragment is always taken; a marker waits only while the reader owes the previous line.
-      assert (frag_ready_o || (frag_eol_i && \u_dut.rd_busy_q ));
+      // A fragment is always taken; a marker waits only while the reader owes the previous line,
+      // or for one clock behind a fragment in the write side's read step.
+      assert (frag_ready_o || (frag_eol_i && (\u_dut.rd_busy_q || \u_dut.a_valid_q )));
       // Induction invariants: the reader is at the next position (at x = 0 between lines) and
       // the position is inside the frame.
       assert (\u_dut.rline_q == ny && ey_q < height_i && ex_q < width_i);
