@@ -114,14 +114,24 @@ module scanline_buffer #(
   function automatic logic [WordBits-1:0] bank_word(logic b, int w);
     bank_word = b ? bits_q[(Words + w) * WordBits +: WordBits] : bits_q[w * WordBits +: WordBits];
   endfunction
-  // Word w's lowest-bit register in a flat vector of them.
-  function automatic logic [WIB-1:0] low_of(logic [Words*WIB-1:0] v, int w);
-    low_of = v[w * WIB +: WIB];
+  // Bank b's word wi, selected by compares (one-hot), not an indexed part select (a
+  // 2 * MaxWidth-bit shifter); a single loop, which a simulator unrolls.
+  function automatic logic [WordBits-1:0] word_at(logic b, logic [WAB-1:0] wi);
+    word_at = '0;
+    for (int w = 0; w < Words; w++) word_at |= (wi == WAB'(w)) ? bank_word(b, w) : '0;
+  endfunction
+  // Whether bank b's pixel x is written.
+  function automatic logic written_at(logic b, logic [LB-1:0] x);
+    logic [WordBits-1:0] word;
+    word       = word_at(b, word_of(x));
+    written_at = word[bit_of(x)];
   endfunction
   // A word's lowest written bit (0 when it holds none).
   // Two levels, as a tree (a loop over the 32 bits maps to a priority chain of LUTs, 13 ns on
   // the ECP5; the lowest one isolated by a carry chain, bits & -bits, and encoded by ORs routed at
   // 76.3 MHz in more LUTs): each byte's lowest bit and whether it holds one, then the lowest byte's.
+  // Single loops, not nested: Verilator 5.006 unrolls a loop whose body holds another loop only
+  // below its statement limit, and a loop left rolled indexes the vectors at run time.
   localparam int unsigned Bytes = WordBits / 8;
   function automatic logic [WIB-1:0] lowest_bit(logic [WordBits-1:0] bits);
     logic [2:0]       in_byte [Bytes];
@@ -130,8 +140,9 @@ module scanline_buffer #(
     for (int b = 0; b < Bytes; b++) begin
       nz[b]      = |bits[8 * b +: 8];
       in_byte[b] = '0;
-      for (int i = 7; i >= 0; i--) if (bits[8 * b + i]) in_byte[b] = 3'(i);
     end
+    // Downwards, so each byte keeps its lowest set bit.
+    for (int i = WordBits - 1; i >= 0; i--) if (bits[i]) in_byte[i / 8] = 3'(i % 8);
     byte_ix = '0;
     for (int b = Bytes - 1; b >= 0; b--) if (nz[b]) byte_ix = (WIB - 3)'(b);
     lowest_bit = {byte_ix, in_byte[byte_ix]};
@@ -158,41 +169,54 @@ module scanline_buffer #(
   // (full mode keeps it idle and Verilator skips it); full mode empties the read words at each
   // line's end, when the reader has cleared every bit.
   logic [Words-1:0]    rd_occ_q, wr_occ_q;
-  logic [Words*WIB-1:0] rd_low_q, wr_low_q;  // word w's at [w * WIB +: WIB] (low_of)
+  logic [Words*WIB-1:0] rd_low_q, wr_low_q;  // word w's at [w * WIB +: WIB]
   logic [Words-1:0]    first;     // one-hot: the read bank's first occupied word
   logic [WAB-1:0]      fw;        // that word
   logic [WIB-1:0]      lb;        // its lowest written bit
   logic [LB-1:0]       nx;
-  logic [WIB-1:0]      next_low [Words];  // each word's lowest bit once its lowest is taken
-  logic [Words-1:0]    next_occ;          // it holds another
-  logic [WordBits-1:0] low_hot  [Words];  // each word's lowest bit, one-hot
+  logic [Words*WIB-1:0]      next_low;  // each word's lowest bit once its lowest is taken
+  logic [Words-1:0]          next_occ;  // it holds another
+  logic [Words*WordBits-1:0] low_hot;   // each word's lowest bit, one-hot (word w's at w * WordBits)
 
   always_comb begin
-    logic [WordBits-1:0] rest;
     first = '0;
     fw    = '0;
     lb    = '0;
-    rest  = '0;
-    for (int w = 0; w < Words; w++) begin
-      next_low[w] = '0;
-      low_hot[w]  = '0;
-    end
-    next_occ = '0;
     if (sparse_i) begin
       first = rd_occ_q & ~(rd_occ_q - 1'b1);
       for (int w = 0; w < Words; w++) begin
         if (first[w]) fw = WAB'(w);
-        lb |= first[w] ? low_of(rd_low_q, w) : '0;
-        // Decoded by compares, not a shift: yosys's resource sharing merged the words' shifters
-        // (only one word is first) into one behind a mux on the first word's path (22 ns on
-        // the ECP5).
-        for (int i = 0; i < WordBits; i++) low_hot[w][i] = low_of(rd_low_q, w) == WIB'(i);
-        rest        = bank_word(!wsel_q, w) & ~low_hot[w];
-        next_occ[w] = |rest;
-        next_low[w] = lowest_bit(rest);
+        lb |= first[w] ? rd_low_q[w * WIB +: WIB] : '0;
       end
     end
     nx = LB'({fw, lb});
+  end
+  // Each word's next lowest, all words in parallel, a block per word writing its own slices (a
+  // loop over the words holding the loop over the bits was left rolled by Verilator 5.006, every
+  // word's vectors then indexed at run time; continuous assigns out of the block would be
+  // evaluated on every clock in full mode too).
+  for (genvar w = 0; w < Words; w++) begin : g_next
+    always_comb begin
+      logic [WordBits-1:0] hot, rest;
+      logic [WIB-1:0]      low;
+      hot  = '0;
+      rest = '0;
+      low  = '0;
+      low_hot[w * WordBits +: WordBits] = '0;
+      next_occ[w]                       = 1'b0;
+      next_low[w * WIB +: WIB]          = '0;
+      if (sparse_i) begin
+        low = rd_low_q[w * WIB +: WIB];
+        // Decoded by compares, not a shift: yosys's resource sharing merged the words' shifters
+        // (only one word is first) into one behind a mux on the first word's path (22 ns on
+        // the ECP5).
+        for (int i = 0; i < WordBits; i++) hot[i] = low == WIB'(i);
+        rest = bank_word(!wsel_q, w) & ~hot;
+        low_hot[w * WordBits +: WordBits] = hot;
+        next_occ[w]                       = |rest;
+        next_low[w * WIB +: WIB]          = lowest_bit(rest);
+      end
+    end
   end
 
   // ------------------------------------------------------------ write side
@@ -252,7 +276,6 @@ module scanline_buffer #(
   logic [Words-1:0]     a_whot_q, t_whot_q;  // the pixel's word, one-hot
   logic [WordBits-1:0]  a_bhot_q, t_bhot_q;  // its bit in the word, one-hot
   logic [WordBits-1:0]  a_wword_q; // its bank's word as the test will see it
-  logic [WordBits-1:0]  acc_word;  // the accepted fragment's word in the write bank, now
   logic                 t_fw1_q, t_fw2_q;  // the tested address is lw_addr_q's / llw_addr_q's
   logic                 t_written_q; // the pixel already has a fragment
   logic [DWB-1:0]       a_word_q, t_word_q, lw_word_q, llw_word_q, mem_word_q, t_mem_q, old_word;
@@ -260,13 +283,6 @@ module scanline_buffer #(
   logic [PolyIdBits-1:0] t_poly, old_poly;
   logic [RB-1:0]        a_rgb_q, t_rgb_q;
   logic                 wins, tie_wins;
-
-  // Selected by the one-hot word (an indexed part select is a 2 * MaxWidth-bit shifter).
-  always_comb begin
-    acc_word = '0;
-    for (int w = 0; w < Words; w++)
-      acc_word |= (word_of(frag_x_i) == WAB'(w)) ? bank_word(wsel_q, w) : '0;
-  end
 
   always_ff @(posedge clk_i) begin
     if (frag_take) mem_word_q <= depth_mem[wa];
@@ -279,7 +295,7 @@ module scanline_buffer #(
       a_rgb_q  <= frag_rgb_i;
       // The fragments tested now and next set their bits after this clock: seen here if in the
       // same word.
-      a_wword_q <= acc_word
+      a_wword_q <= word_at(wsel_q, word_of(frag_x_i))
                    | ((t_valid_q && word_of(t_x_q) == word_of(frag_x_i)) ? t_bhot_q : '0)
                    | ((a_valid_q && word_of(a_x_q) == word_of(frag_x_i)) ? a_bhot_q : '0);
     end
@@ -329,24 +345,11 @@ module scanline_buffer #(
   // one bank (a_tested_in_write_bank). Only the words touched change (a simulator skips the
   // rest).
   logic                      take;
-  logic                      covered;          // the pixel the reader takes is written
-  logic [WordBits-1:0]       rx_word;          // the read bank's word holding rx_q
-  logic [WordBits-1:0]       rd_clr [Words];   // the bits the reader's take clears, per word
+  logic [WAB-1:0]            rx_w;             // rx_q's word
+  logic [WordBits-1:0]       rx_hot;           // rx_q's bit in its word, one-hot
   assign take = rd_busy_q && (!pixel_valid_o || pixel_ready_i);
-  always_comb begin
-    rx_word = '0;
-    for (int w = 0; w < Words; w++) begin
-      if (word_of(rx_q) == WAB'(w)) rx_word = bank_word(!wsel_q, w);
-      rd_clr[w] = '0;
-      if (take) begin
-        if (sparse_i) rd_clr[w] = first[w] ? low_hot[w] : '0;
-        else if (word_of(rx_q) == WAB'(w))
-          for (int i = 0; i < WordBits; i++) rd_clr[w][i] = bit_of(rx_q) == WIB'(i);
-      end
-    end
-  end
-  // Sparse: the pixel found is written (none found: the terminating beat is not).
-  assign covered   = sparse_i ? cnt_found : rx_word[bit_of(rx_q)];
+  assign rx_w = word_of(rx_q);
+  always_comb for (int i = 0; i < WordBits; i++) rx_hot[i] = bit_of(rx_q) == WIB'(i);
 
   // The counts: a fragment tested on an unwritten pixel adds one to the write bank's (the swap
   // clock's lands in the bank it makes the read bank); the reader's take of a covered pixel
@@ -369,18 +372,28 @@ module scanline_buffer #(
     end
   end
 
+  // Written as the set and the clear of one word each, under their enables (a simulator
+  // evaluates neither on the clocks without them).
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       bits_q <= '0;
-    end else if (t_valid_q || take) begin
-      for (int w = 0; w < Words; w++) begin
-        if (t_valid_q && t_whot_q[w]) begin
-          if (t_bank_q) bits_q[(Words + w) * WordBits +: WordBits] <= bank_word(1'b1, w) | t_bhot_q;
-          else          bits_q[w * WordBits +: WordBits]           <= bank_word(1'b0, w) | t_bhot_q;
-        end
-        if (wsel_q) bits_q[w * WordBits +: WordBits] <= bank_word(1'b0, w) & ~rd_clr[w];
-        else        bits_q[(Words + w) * WordBits +: WordBits] <= bank_word(1'b1, w) & ~rd_clr[w];
-      end
+    end else begin
+      if (t_valid_q)
+        for (int w = 0; w < Words; w++)
+          if (t_whot_q[w]) begin
+            if (t_bank_q) bits_q[(Words + w) * WordBits +: WordBits] <= bank_word(1'b1, w) | t_bhot_q;
+            else          bits_q[w * WordBits +: WordBits]           <= bank_word(1'b0, w) | t_bhot_q;
+          end
+      if (take)
+        for (int w = 0; w < Words; w++)
+          if (sparse_i ? first[w] : rx_w == WAB'(w)) begin
+            if (wsel_q)
+              bits_q[w * WordBits +: WordBits] <= bank_word(1'b0, w)
+                & ~(sparse_i ? low_hot[w * WordBits +: WordBits] : rx_hot);
+            else
+              bits_q[(Words + w) * WordBits +: WordBits] <= bank_word(1'b1, w)
+                & ~(sparse_i ? low_hot[w * WordBits +: WordBits] : rx_hot);
+          end
     end
   end
 
@@ -390,9 +403,12 @@ module scanline_buffer #(
   logic [WIB-1:0]   tb;        // the tested fragment's bit
   logic [Words-1:0] t_low;     // it becomes that word's lowest in the write bank
   assign tb = bit_of(t_x_q);
-  always_comb
-    for (int w = 0; w < Words; w++)
-      t_low[w] = t_valid_q && t_whot_q[w] && (!wr_occ_q[w] || tb < low_of(wr_low_q, w));
+  always_comb begin
+    t_low = '0;
+    if (t_valid_q)
+      for (int w = 0; w < Words; w++)
+        t_low[w] = t_whot_q[w] && (!wr_occ_q[w] || tb < wr_low_q[w * WIB +: WIB]);
+  end
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       rd_occ_q <= '0;
@@ -401,7 +417,7 @@ module scanline_buffer #(
       rd_occ_q <= wr_occ_q | (t_valid_q ? t_whot_q : '0);
       wr_occ_q <= '0;
       for (int w = 0; w < Words; w++)
-        rd_low_q[w * WIB +: WIB] <= t_low[w] ? tb : low_of(wr_low_q, w);
+        rd_low_q[w * WIB +: WIB] <= t_low[w] ? tb : wr_low_q[w * WIB +: WIB];
     end else begin
       if (t_valid_q) begin
         wr_occ_q <= wr_occ_q | t_whot_q;
@@ -411,7 +427,7 @@ module scanline_buffer #(
         for (int w = 0; w < Words; w++) begin
           if (first[w]) begin
             rd_occ_q[w]              <= next_occ[w];
-            rd_low_q[w * WIB +: WIB] <= next_low[w];
+            rd_low_q[w * WIB +: WIB] <= next_low[w * WIB +: WIB];
           end
         end
       end
@@ -467,7 +483,8 @@ module scanline_buffer #(
     if (rd_load) begin
       rgb_rd_q        <= rgb_mem[ra];
       background_q    <= background_i;
-      pixel_covered_o <= covered;
+      // Sparse: the pixel found is written (none found: the terminating beat is not).
+      pixel_covered_o <= sparse_i ? cnt_found : written_at(!wsel_q, rx_q);
       pixel_x_o       <= rd_x;
       pixel_y_o       <= rline_q;
       pixel_last_o    <= rd_last && rd_lastline;
@@ -512,7 +529,7 @@ module scanline_buffer #(
     n           = 0;
     if (sparse_i) begin
       for (int w = 0; w < Words; w++) begin
-        if (!word_ok(rd_occ_q[w], low_of(rd_low_q, w), bank_word(!wsel_q, w))) rd_words_ok = 1'b0;
+        if (!word_ok(rd_occ_q[w], rd_low_q[w * WIB +: WIB], bank_word(!wsel_q, w))) rd_words_ok = 1'b0;
         n += $countones(bank_word(!wsel_q, w));
       end
       found = n != 0;
@@ -520,7 +537,7 @@ module scanline_buffer #(
     end
     if (eol_take) begin
       for (int w = 0; w < Words; w++)
-        if (!word_ok(wr_occ_q[w], low_of(wr_low_q, w), bank_word(wsel_q, w))) wr_words_ok = 1'b0;
+        if (!word_ok(wr_occ_q[w], wr_low_q[w * WIB +: WIB], bank_word(wsel_q, w))) wr_words_ok = 1'b0;
     end
   end
   localparam int unsigned PB = $clog2(Words * WordBits);  // an x in the padded words
@@ -563,7 +580,7 @@ module scanline_buffer #(
     ra_written = ra_word[int'(PB'(rd_x)) % WordBits];
   end
   assign t_written_p = t_written_q;
-  assign covered_p   = covered;
+  assign covered_p   = sparse_i ? cnt_found : written_at(!wsel_q, rx_q);
   assign t_addr_ok   = t_addr_q == addr(wsel_q, t_x_q) && t_bank_q == wsel_q;
 `endif
   `WATKINS_ASSERT(a_sparse_covered, rd_load && sparse_i && !(rd_last && rd_lastline) |-> found)
