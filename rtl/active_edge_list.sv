@@ -20,7 +20,8 @@
 // are not waited for on a line that inserts nothing). The key's multiplexer, the compares and
 // the shift are in separate clocks. The stream reads the RAM one entry ahead: out_q (a fabric
 // register) holds the entry presented, the RAM's read register the one after it, so every path
-// from the RAM (5.6-5.8 ns clock-to-out on the ECP5) ends at out_q with no logic between.
+// from the RAM (5.6-5.8 ns clock-to-out on the ECP5) ends at out_q, through at most its
+// enable's multiplexer (one LUT4 on the ECP5).
 // out_poly_o, out_material_o, out_value_o are out_q, which the incrementer also takes;
 // out_valid_o and out_eol_o come from registers through a little logic; ready is
 // combinational. An insertion into a full bank drops the edge and sets the sticky overflow_o.
@@ -272,7 +273,7 @@ module active_edge_list #(
   always_ff @(posedge clk_i) begin
     ram_q <= body_mem[rd_addr];
   end
-  // out_q takes the read register only: the RAM's clock-to-out ends here, at a clock enable.
+  // out_q takes the read register only: the RAM's clock-to-out ends here, behind the enable.
   always_ff @(posedge clk_i) begin
     if (advance || swap_q) out_q <= ram_q;
   end
