@@ -15,14 +15,16 @@
 // registered; shift), still one insertion per clock. At the swap (which waits for that pipeline
 // to empty) the indices are copied to the streaming bank's index list (the keys of a streaming
 // bank are never compared again), which shifts down by one as each edge leaves.
-// Per line: about (active + new edges + 7) cycles when nothing stalls: the swap is decided a clock
-// before it acts, and it waits for the incrementer's two stages and the insertion's two (the
-// last three are not waited for on a line that inserts nothing). The key's multiplexer, the
-// compares and the shift are in separate clocks. out_poly_o, out_material_o, out_value_o are the
-// RAM's read register (read with the address of the next clock's entry), which the incrementer
-// takes through one more register; out_valid_o and out_eol_o come from registers through a
-// little logic; ready is combinational. An insertion into a full bank drops the edge and sets
-// the sticky overflow_o.
+// Per line: about (active + new edges + 6) cycles when nothing stalls: the swap is decided a clock
+// before it acts, and it waits for the incrementer's stage and the insertion's two (the last two
+// are not waited for on a line that inserts nothing). The key's multiplexer, the compares and
+// the shift are in separate clocks. The stream reads the RAM one entry ahead: out_q (a fabric
+// register) holds the entry presented, the RAM's read register the one after it, so every path
+// from the RAM (5.6-5.8 ns clock-to-out on the ECP5) ends at out_q, through at most its
+// enable's multiplexer (one LUT4 on the ECP5).
+// out_poly_o, out_material_o, out_value_o are out_q, which the incrementer also takes;
+// out_valid_o and out_eol_o come from registers through a little logic; ready is
+// combinational. An insertion into a full bank drops the edge and sets the sticky overflow_o.
 // Widths from the configuration (model/twins/config.hpp): channel vectors of slot words XBits,
 // ZBits, AttrBits (watkins_pkg::slot_lo); polygon, material and edge ids of PolyIdBits,
 // MaterialIdBits and EdgeIdBits; the edge record laid out as watkins_pkg::edge_bits says.
@@ -104,7 +106,7 @@ module active_edge_list #(
   // don't care).
   logic [KB+IB-1:0] order_q [N];
   // The streaming bank's order from the entry at rd_q on: g_sidx[i].q below.
-  logic [IB-1:0]   rd_head;      // the streaming bank's body index read next clock
+  logic [IB-1:0]   rd_head;      // the body index the RAM reads this clock (bank: rd_addr)
   logic [CntB-1:0] cnt_stream_q, cnt_fill_q;
   logic            sel_q, sel_d; // bank (RAM half) streamed for line line_q - 1; the other fills
   logic            frame_q, drain_q;
@@ -122,16 +124,23 @@ module active_edge_list #(
 
   // ------------------------------------------------------------ stream out line line_q - 1
   logic   streaming, have_edge, out_fire, inc_valid, inc_ready, inc_fire, advance;
-  entry_t cur_q;  // the RAM's read register: the entry at rd_q of the streaming bank
+  // streaming and have_edge as registers (their compares of line_q and of rd_q with the count
+  // were in front of advance, whose fan-out is the index list's, rd_q's and out_q's enables):
+  // streaming_q = frame_q && !drain_q && line_q != 0, have_edge_q = streaming_q && rd_q <
+  // cnt_stream_q (a_streaming, a_have_edge).
+  logic   streaming_q, have_edge_q;
+  entry_t out_q;  // the entry at rd_q of the streaming bank (a fabric register)
+  entry_t ram_q;  // the RAM's read register: the entry at rd_q + 1 (past the count: don't care)
+  logic   pre;    // the stream is done (or not begun): the RAM reads the filling bank's head
 
-  assign streaming = frame_q && !drain_q && (line_q != '0);
-  assign have_edge = streaming && (rd_q < cnt_stream_q);
+  assign streaming = streaming_q;
+  assign have_edge = have_edge_q;
 
   assign out_valid_o = (have_edge && !out_done_q) || (streaming && !have_edge && !eol_sent_q);
   assign out_eol_o   = !have_edge;
-  assign out_poly_o  = cur_q.poly;
-  assign out_material_o = cur_q.material;
-  assign out_value_o = cur_q.value;
+  assign out_poly_o  = out_q.poly;
+  assign out_material_o = out_q.material;
+  assign out_value_o = out_q.value;
   assign out_fire    = out_valid_o && out_ready_i;
 
   // Fork to the segment former and the incrementer: each side takes the edge once.
@@ -140,10 +149,8 @@ module active_edge_list #(
   assign advance   = have_edge && (out_done_q || out_fire) && (inc_done_q || inc_fire);
 
   // ------------------------------------------------------------ step to the next line
-  // The entry is registered once more before the incrementer (step_q): the RAM's clock-to-out
-  // (5.8 ns on the ECP5) leaves no room for the incrementer's adders in the same clock.
-  entry_t step_q;
-  logic   step_valid_q, step_ready;
+  // The incrementer takes out_q, a fabric register (the RAM's clock-to-out, 5.8 ns on the ECP5,
+  // leaves no room for its adders in the same clock), and is always ready (its ready_i is high).
   logic                  st_valid, st_retire;
   logic [VB-1:0]         st_value;
   logic [DB-1:0]         st_slope;
@@ -158,12 +165,12 @@ module active_edge_list #(
     .EdgeOrder  (EdgeOrder)
   ) u_inc (
     .clk_i, .rst_ni,
-    .value_i    (step_q.value),
-    .slope_i    (step_q.slope),
-    .remaining_i(step_q.remaining),
-    .payload_i  ({step_q.id, step_q.poly, step_q.material}),
-    .valid_i    (step_valid_q),
-    .ready_o    (step_ready),
+    .value_i    (out_q.value),
+    .slope_i    (out_q.slope),
+    .remaining_i(out_q.remaining),
+    .payload_i  ({out_q.id, out_q.poly, out_q.material}),
+    .valid_i    (inc_valid),
+    .ready_o    (inc_ready),
     .value_o    (st_value),
     .slope_o    (st_slope),
     .remaining_o(st_remaining),
@@ -173,14 +180,6 @@ module active_edge_list #(
     .ready_i    (1'b1)          // an insertion is always possible (or an overflow)
   );
 
-  assign inc_ready = step_ready || !step_valid_q;
-  always_ff @(posedge clk_i) begin
-    if (inc_fire) step_q <= cur_q;
-  end
-  always_ff @(posedge clk_i) begin
-    if (!rst_ni || (start_i && !frame_q)) step_valid_q <= 1'b0;
-    else if (inc_ready) step_valid_q <= inc_fire;
-  end
 
   // ------------------------------------------------------------ insertion into the other bank
   logic   nsel, ins_step, take_new, drop_late, ins_valid, ins_write, src_done, swap, next_line;
@@ -214,44 +213,57 @@ module active_edge_list #(
   // and the input's y0 are then not in front of the swap's fan-out). The condition holds until
   // then: the stream has sent its marker, nothing is being stepped or inserted, and the input's
   // head (held, since it is not taken) still belongs to a later line.
-  assign swap_now = frame_q && !drain_q && ((line_q == '0) || eol_sent_q) && !step_valid_q && !st_valid
-                    && !ord1_q && !ord2_q && src_done && !swap_q;
+  assign swap_now = frame_q && !drain_q && pre && !st_valid && !ord1_q && !ord2_q && src_done && !swap_q;
   assign swap = swap_q;
   assign next_line = next_line_q;  // the filling bank starts to stream
 
-  // The stream's next position and bank: the RAM is read with them, so the entry the stream
-  // presents next clock is in the read register then. (Reset and frame start need no case:
-  // nothing streams before the frame's first swap, which reads afresh.) Only the next head
-  // index is combinational; the index list itself is updated in its register's always_ff, so a
-  // simulator neither copies nor shifts the N-entry list on every evaluation.
-  logic [IB-1:0] second;  // the index after the head (none for a one-entry list: the shift's zero)
-  if (N > 1) begin : g_second
-    assign second = g_sidx[1].q;
-  end else begin : g_no_second
-    assign second = '0;
+  // The stream reads one entry ahead of out_q. While it streams, the RAM reads the entry after
+  // the next clock's out_q: rd_q + 2 on an advance (out_q takes the read register's rd_q + 1),
+  // else rd_q + 1 again. Once the line has sent its marker (pre, registered), the RAM reads the
+  // filling bank's head instead: the first entry on every clock, so on the clock the swap is
+  // decided (no insertion pending then: order_q is final) it reads the new line's first entry,
+  // which out_q takes on the swap; the swap's clock reads the second. So the first edge of a
+  // line is presented on the clock after the swap, as when the RAM fed the outputs directly.
+  // (Reset and frame start need no case: nothing streams before the frame's first swap.) Only
+  // the index read is combinational; the index list itself is updated in its register's
+  // always_ff, so a simulator neither copies nor shifts the N-entry list on every evaluation.
+  logic [IB-1:0] sidx1, sidx2, order1;  // g_sidx[1], g_sidx[2], order_q[1] (zero past the list)
+  if (N > 1) begin : g_one
+    assign sidx1  = g_sidx[1].q;
+    assign order1 = order_q[1][IB-1:0];
+  end else begin : g_no_one
+    assign sidx1  = '0;
+    assign order1 = '0;
   end
+  if (N > 2) begin : g_two
+    assign sidx2 = g_sidx[2].q;
+  end else begin : g_no_two
+    assign sidx2 = '0;
+  end
+  assign pre = !streaming_q || eol_sent_q;  // in a live frame: line_q == 0 or the marker sent
   always_comb begin
-    sel_d   = sel_q;
-    rd_d    = rd_q;
-    rd_head = g_sidx[0].q;
+    sel_d = sel_q;
+    rd_d  = rd_q;
     if (next_line) begin
-      sel_d   = nsel;
-      rd_d    = '0;
-      rd_head = order_q[0][IB-1:0];
+      sel_d = nsel;
+      rd_d  = '0;
     end else if (advance) begin
-      rd_d    = rd_q + 1'b1;
-      rd_head = second;
+      rd_d  = rd_q + 1'b1;
     end
+    if (pre) rd_head = swap_q ? order1 : order_q[0][IB-1:0];
+    else     rd_head = advance ? sidx2 : sidx1;
   end
 
-  // Read and write never meet at one word: a write goes to the filling half (!sel_q); a read
-  // goes to the streaming half sel_d, which is the filling half only on a swap, and a swap
-  // inserts nothing (a_no_insert_on_swap: it waits for the incrementer to be empty, !step_valid_q
-  // and !st_valid, and for the input to hold no record of line_q, which take_new needs). An entry written on
-  // the clock before the swap is in the RAM when the swap's read happens. So the read port needs
+  // A read whose word reaches out_q never meets a write: while the stream is on (!pre) reads go
+  // to the streaming half (sel_q), writes to the filling half (!sel_q). With pre, reads go to
+  // the filling half too, and may meet an insertion's write; but the reads out_q takes are the
+  // ones on the clock the swap is decided (swap_now) and on the swap's own clock (swap_q), and
+  // neither inserts (a_no_insert_on_swap: the swap waits for the incrementer to be empty,
+  // !st_valid, and for the input to hold no record of line_q, which take_new needs). An entry
+  // written on the clock before is in the RAM when that read happens. So the read port needs
   // neither read-first nor write-first behaviour, and no forwarding.
   logic [AB-1:0] rd_addr, wr_addr;
-  assign rd_addr = {sel_d, rd_head};
+  assign rd_addr = {sel_q ^ pre, rd_head};
   assign wr_addr = {nsel, IB'(cnt_fill_q)};
 
   always_ff @(posedge clk_i) begin
@@ -259,7 +271,11 @@ module active_edge_list #(
                                                  : {rec.n, id_q, rec.poly, rec.material, rec.value, rec.slope};
   end
   always_ff @(posedge clk_i) begin
-    cur_q <= body_mem[rd_addr];
+    ram_q <= body_mem[rd_addr];
+  end
+  // out_q takes the read register only: the RAM's clock-to-out ends here, behind the enable.
+  always_ff @(posedge clk_i) begin
+    if (advance || swap_q) out_q <= ram_q;
   end
 
   always_ff @(posedge clk_i) begin
@@ -278,6 +294,8 @@ module active_edge_list #(
       id_q         <= '0;
       swap_q       <= 1'b0;
       next_line_q  <= 1'b0;
+      streaming_q  <= 1'b0;
+      have_edge_q  <= 1'b0;
       if (!rst_ni) begin
         sel_q      <= 1'b0;
         overflow_o <= 1'b0;
@@ -300,7 +318,12 @@ module active_edge_list #(
         if (!ins_write) overflow_o <= 1'b1;
         else cnt_fill_q <= cnt_fill_q + 1'b1;
       end
+      // The stream's last edge leaves; a swap (no edge streams then) starts the next line, whose
+      // count is the filling bank's, or the drain.
+      if (advance && rd_q + 1'b1 == cnt_stream_q) have_edge_q <= 1'b0;
       if (swap) begin
+        streaming_q <= next_line;
+        have_edge_q <= next_line && (cnt_fill_q != '0);
         if (!next_line) begin
           drain_q <= 1'b1;  // read the rest of the stream up to its EOF beat
         end else begin
@@ -388,11 +411,16 @@ module active_edge_list #(
     if (ins_write) begin
       key1_q     <= {ins_key, IB'(cnt_fill_q)};
       key1_inv_q <= ~ins_key;
-      for (int i = 0; i < N; i++) occ1_q[i] <= CntB'(i) < cnt_fill_q;
     end
     key1_free_q     <= ins_key;
     key1_free_inv_q <= ~ins_key;
     if (ord1_q) key2_q <= key1_q;
+  end
+  // Each flag in its own block (no procedural loop of N iterations, as g_below).
+  for (genvar i = 0; i < N; i++) begin : g_occ
+    always_ff @(posedge clk_i) begin
+      if (ins_write) occ1_q[i] <= CntB'(i) < cnt_fill_q;
+    end
   end
   always_ff @(posedge clk_i) begin
     if (!rst_ni || (start_i && !frame_q)) begin
@@ -426,8 +454,22 @@ module active_edge_list #(
   `WATKINS_ASSERT_HOLD(a_in_hold, edge_valid_i, edge_ready_o, {edge_i, edge_eof_i})
   `WATKINS_ASSERT_HOLD(a_out_hold, out_valid_o, out_ready_i, {out_poly_o, out_material_o,
     out_value_o, out_eol_o})
-  `WATKINS_ASSERT(a_no_insert_on_swap, swap |-> !ins_valid)
-  `WATKINS_ASSERT(a_no_ram_collision, !(ins_write && rd_addr == wr_addr))
+  `WATKINS_ASSERT(a_no_insert_on_swap, (swap || swap_now) |-> !ins_valid)
+  // Reads that reach out_q: every read while streaming, the reads on swap_now and swap.
+  `WATKINS_ASSERT(a_no_ram_collision, (ins_write && rd_addr == wr_addr) |-> (pre && !swap_now && !swap))
+  // The read ahead: out_q holds the entry at rd_q, the RAM's read register the one after it.
+`ifdef WATKINS_ASSERT_ON
+  logic [AB-1:0] chk_out_addr, chk_ram_addr;
+  logic [EB-1:0] chk_out_word, chk_ram_word;
+  assign chk_out_addr = {sel_q, g_sidx[0].q};
+  assign chk_ram_addr = {sel_q, sidx1};
+  assign chk_out_word = body_mem[chk_out_addr];
+  assign chk_ram_word = body_mem[chk_ram_addr];
+`endif
+  `WATKINS_ASSERT(a_streaming, streaming_q == (frame_q && !drain_q && (line_q != '0)))
+  `WATKINS_ASSERT(a_have_edge, have_edge_q == (streaming_q && (rd_q < cnt_stream_q)))
+  `WATKINS_ASSERT(a_out_entry, have_edge |-> (out_q == chk_out_word))
+  `WATKINS_ASSERT(a_ram_entry, (have_edge && !pre && rd_q + 1'b1 < cnt_stream_q) |-> (ram_q == chk_ram_word))
   // The order pipeline's keys carry consecutive body indices (occ1_q counts order_q's entries).
   `WATKINS_ASSERT(a_order_index, ord1_q |-> (CntB'(key1_q[IB-1:0]) == cnt_fill_q - CntB'(1)))
   `WATKINS_ASSERT(a_order_index2, (ord1_q && ord2_q) |-> (key1_q[IB-1:0] == key2_q[IB-1:0] + IB'(1)))

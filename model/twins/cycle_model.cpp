@@ -117,7 +117,6 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
   bool out_done_q = false, inc_done_q = false, eol_sent_q = false;
   std::size_t next_record = 0;
   bool eof_taken = false;
-  bool step_valid = false, step_retire = false;  // the register in front of the incrementer (step_q)
   bool st_valid = false, st_retire = false;  // the edge_incrementer's output (st_valid, st_retire)
   bool ord1_q = false, ord2_q = false;       // the sorted insertion's two pipeline stages
   bool swap_q = false;                       // the swap, decided a cycle before it acts
@@ -157,7 +156,7 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
   // out behind a stalled pipeline, a long span behind full queues).
   auto key = [&] {
     return std::make_tuple(frame_q, drain_q, line_q, rd_q, cnt_stream, cnt_fill, out_done_q, inc_done_q,
-                           eol_sent_q, next_record, eof_taken, step_valid, step_retire, st_valid, st_retire,
+                           eol_sent_q, next_record, eof_taken, st_valid, st_retire,
                            ord1_q, ord2_q, swap_q, sf_in_valid, sf_in_emits, sf_pr_valid, sf_pr_emits, seg_valid,
                            s0_valid_q, recip_valid, recip_out, tail_valid, tail_item, fifo[0], fifo[1], fifo[2], fifo[3], fifo_head, fifo_count, step_active,
                            frag_valid, frag_eol, norm.valid, norm.eol, shade.valid, shade.eol, q_count,
@@ -226,9 +225,10 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
     const bool edge_ready = take_new || drop_late || (drain_q && edge_valid);
     const bool ins_valid = ins_step || take_new;
     const bool src_done = line_q == height || (edge_valid && (head_eof || y0 > line_q));
-    // The swap is decided a cycle before it acts (swap_q), once the incrementer's two stages and
-    // the insertion's two are empty.
-    const bool swap_now = live && (line_q == 0 || eol_sent_q) && !step_valid && !st_valid && !ord1_q &&
+    // The swap is decided a cycle before it acts (swap_q), once the incrementer's stage and the
+    // insertion's two are empty. (The stream's read ahead costs no cycle: the RAM reads the next
+    // line's first entry on the clock the swap is decided.)
+    const bool swap_now = live && (line_q == 0 || eol_sent_q) && !st_valid && !ord1_q &&
                           !ord2_q && src_done && !swap_q;
     const bool swap = swap_q;
 
@@ -312,11 +312,9 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
       sf_in_valid = ae_fire;
       sf_in_emits = ae_fire && (!have_edge || st.closes[g]);
     }
-    // edge incrementer
-    st_valid = step_valid;
-    st_retire = step_retire;
-    step_valid = inc_fire;
-    if (inc_fire) step_retire = st.retire[g];
+    // edge incrementer (it takes the list's output register)
+    st_valid = inc_fire;
+    if (inc_fire) st_retire = st.retire[g];
     // active-edge list
     if (advance) {
       ++rd_q;

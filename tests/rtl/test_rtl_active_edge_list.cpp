@@ -50,7 +50,7 @@ using Line = std::vector<OutEdge>;
 struct Expect {
   std::vector<Line> lines, unbounded;
   int ov_line = -1;  // first line where the capacity-N list refused an edge
-  long long ideal_cycles = 0;  // sum over lines of (active + new + 7)
+  long long ideal_cycles = 0;  // sum over lines of (active + new + 6)
 };
 
 Line to_line(const ActiveEdgeList& a) {
@@ -74,7 +74,7 @@ Expect model(const EdgeFrame& f) {
     }
     x.lines.push_back(to_line(a));
     x.unbounded.push_back(to_line(u));
-    x.ideal_cycles += a.size() + fresh + 7;
+    x.ideal_cycles += a.size() + fresh + 6;
     a.advance();
     u.advance();
   }
@@ -354,7 +354,7 @@ struct Ael {
     auto u = [](std::uint64_t v) { return static_cast<unsigned long long>(v); };
     std::printf("%s: %llu frames (%llu overflowing), %llu lines (%llu empty, %llu full), %llu edge records in,"
                 " %llu active edges checked (%llu equal-X neighbours, %llu order changes), %llu cycles"
-                " (%.2f x active+new+7 per line)\n",
+                " (%.2f x active+new+6 per line)\n",
                 name, u(tot.frames), u(tot.overflow_frames), u(tot.lines), u(tot.empty_lines), u(tot.full_lines),
                 u(tot.records_in), u(tot.edges_out), u(tot.ties), u(tot.crossings), u(tot.cycles),
                 tot.ideal ? double(tot.cycles) / double(tot.ideal) : 0.0);
@@ -558,7 +558,7 @@ TEST(RtlActiveEdgeList, RandomFramesFullRate) {
     a.frame(random_frame(a.rng, 1 + static_cast<int>(a.rng() % 40), static_cast<int>(a.rng() % (3 * N)), v, N, false), 0, 0);
   }
   a.report("active_edge_list full rate");
-  // About (active + new edges + 7) cycles per line when nothing stalls (rtl/active_edge_list.sv).
+  // About (active + new edges + 6) cycles per line when nothing stalls (rtl/active_edge_list.sv).
   EXPECT_LT(double(a.tot.cycles), 1.25 * double(a.tot.ideal) + 4.0 * double(a.tot.frames));
 }
 
