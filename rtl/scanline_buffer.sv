@@ -120,11 +120,14 @@ module scanline_buffer #(
     word_at = '0;
     for (int w = 0; w < Words; w++) word_at |= (wi == WAB'(w)) ? bank_word(b, w) : '0;
   endfunction
-  // Whether bank b's pixel x is written.
-  function automatic logic written_at(logic b, logic [LB-1:0] x);
-    logic [WordBits-1:0] word;
-    word       = word_at(b, word_of(x));
-    written_at = word[bit_of(x)];
+  // Bank b's word selected by a one-hot vector.
+  function automatic logic [WordBits-1:0] word_at_hot(logic b, logic [Words-1:0] hot);
+    word_at_hot = '0;
+    for (int w = 0; w < Words; w++) word_at_hot |= hot[w] ? bank_word(b, w) : '0;
+  endfunction
+  // The lowest set bit of a vector of word flags, one-hot.
+  function automatic logic [Words-1:0] lowest_word(logic [Words-1:0] occ);
+    lowest_word = occ & ~(occ - 1'b1);
   endfunction
   // A word's lowest written bit (0 when it holds none).
   // Two levels, as a tree (a loop over the 32 bits maps to a priority chain of LUTs, 13 ns on
@@ -170,7 +173,7 @@ module scanline_buffer #(
   // line's end, when the reader has cleared every bit.
   logic [Words-1:0]    rd_occ_q, wr_occ_q;
   logic [Words*WIB-1:0] rd_low_q, wr_low_q;  // word w's at [w * WIB +: WIB]
-  logic [Words-1:0]    first;     // one-hot: the read bank's first occupied word
+  logic [Words-1:0]    first_q;   // one-hot: the read bank's first occupied word (a_first)
   logic [WAB-1:0]      fw;        // that word
   logic [WIB-1:0]      lb;        // its lowest written bit
   logic [LB-1:0]       nx;
@@ -179,14 +182,12 @@ module scanline_buffer #(
   logic [Words*WordBits-1:0] low_hot;   // each word's lowest bit, one-hot (word w's at w * WordBits)
 
   always_comb begin
-    first = '0;
     fw    = '0;
     lb    = '0;
     if (sparse_i) begin
-      first = rd_occ_q & ~(rd_occ_q - 1'b1);
       for (int w = 0; w < Words; w++) begin
-        if (first[w]) fw = WAB'(w);
-        lb |= first[w] ? rd_low_q[w * WIB +: WIB] : '0;
+        if (first_q[w]) fw = WAB'(w);
+        lb |= first_q[w] ? rd_low_q[w * WIB +: WIB] : '0;
       end
     end
     nx = LB'({fw, lb});
@@ -345,11 +346,29 @@ module scanline_buffer #(
   // one bank (a_tested_in_write_bank). Only the words touched change (a simulator skips the
   // rest).
   logic                      take;
-  logic [WAB-1:0]            rx_w;             // rx_q's word
-  logic [WordBits-1:0]       rx_hot;           // rx_q's bit in its word, one-hot
   assign take = rd_busy_q && (!pixel_valid_o || pixel_ready_i);
-  assign rx_w = word_of(rx_q);
-  always_comb for (int i = 0; i < WordBits; i++) rx_hot[i] = bit_of(rx_q) == WIB'(i);
+
+  // Full mode's reader, a step ahead (the covered bit from a 320-way read of the written bits
+  // was the block's critical path, 11.6 ns on the ECP5): rx_q's bit and word one-hot, stepped
+  // with it, and the read bank's word holding rx_q, loaded as the reader enters the word. The
+  // read bank does not change under the reader but for the bits it clears behind it: the writer
+  // never touches it after the swap, whose clock's tested fragment is forwarded into word 0.
+  logic [WordBits-1:0] rx_hot_q;   // rx_q's bit in its word, one-hot (a_rx_hot)
+  logic [Words-1:0]    rx_whot_q;  // rx_q's word, one-hot
+  logic [WordBits-1:0] rx_word_q;  // that word of the read bank, from x = rx_q up (a_covered_is_written)
+  always_ff @(posedge clk_i) begin
+    if (eol_take) begin
+      rx_hot_q  <= WordBits'(1);
+      rx_whot_q <= Words'(1);
+      rx_word_q <= bank_word(wsel_q, 0) | ((t_valid_q && t_whot_q[0]) ? t_bhot_q : '0);
+    end else if (rd_step) begin
+      rx_hot_q <= {rx_hot_q[WordBits-2:0], rx_hot_q[WordBits-1]};
+      if (rx_hot_q[WordBits-1]) begin
+        rx_whot_q <= rx_whot_q << 1;
+        rx_word_q <= word_at_hot(!wsel_q, rx_whot_q << 1);
+      end
+    end
+  end
 
   // The counts: a fragment tested on an unwritten pixel adds one to the write bank's (the swap
   // clock's lands in the bank it makes the read bank); the reader's take of a covered pixel
@@ -386,13 +405,13 @@ module scanline_buffer #(
           end
       if (take)
         for (int w = 0; w < Words; w++)
-          if (sparse_i ? first[w] : rx_w == WAB'(w)) begin
+          if (sparse_i ? first_q[w] : rx_whot_q[w]) begin
             if (wsel_q)
               bits_q[w * WordBits +: WordBits] <= bank_word(1'b0, w)
-                & ~(sparse_i ? low_hot[w * WordBits +: WordBits] : rx_hot);
+                & ~(sparse_i ? low_hot[w * WordBits +: WordBits] : rx_hot_q);
             else
               bits_q[(Words + w) * WordBits +: WordBits] <= bank_word(1'b1, w)
-                & ~(sparse_i ? low_hot[w * WordBits +: WordBits] : rx_hot);
+                & ~(sparse_i ? low_hot[w * WordBits +: WordBits] : rx_hot_q);
           end
     end
   end
@@ -409,12 +428,17 @@ module scanline_buffer #(
       for (int w = 0; w < Words; w++)
         t_low[w] = t_whot_q[w] && (!wr_occ_q[w] || tb < wr_low_q[w * WIB +: WIB]);
   end
+  // first_q follows rd_occ_q's lowest word: the swap's, or when the reader's take empties the
+  // first word, the next occupied one (a borrow over the words from registers into one register;
+  // computed where it was used, it was the block's other 11.6 ns path).
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       rd_occ_q <= '0;
       wr_occ_q <= '0;
+      first_q  <= '0;
     end else if (eol_take) begin
       rd_occ_q <= wr_occ_q | (t_valid_q ? t_whot_q : '0);
+      first_q  <= lowest_word(wr_occ_q | (t_valid_q ? t_whot_q : '0));
       wr_occ_q <= '0;
       for (int w = 0; w < Words; w++)
         rd_low_q[w * WIB +: WIB] <= t_low[w] ? tb : wr_low_q[w * WIB +: WIB];
@@ -424,15 +448,19 @@ module scanline_buffer #(
         for (int w = 0; w < Words; w++) if (t_low[w]) wr_low_q[w * WIB +: WIB] <= tb;
       end
       if (take && sparse_i) begin
+        if (!(|(first_q & next_occ))) first_q <= lowest_word(rd_occ_q & ~first_q);
         for (int w = 0; w < Words; w++) begin
-          if (first[w]) begin
+          if (first_q[w]) begin
             rd_occ_q[w]              <= next_occ[w];
             rd_low_q[w * WIB +: WIB] <= next_low[w * WIB +: WIB];
           end
         end
       end
       // Full mode reads the words only through the bits; at the line's end they are all clear.
-      if (rd_step && rd_last && !sparse_i) rd_occ_q <= '0;
+      if (rd_step && rd_last && !sparse_i) begin
+        rd_occ_q <= '0;
+        first_q  <= '0;
+      end
     end
   end
 
@@ -484,7 +512,7 @@ module scanline_buffer #(
       rgb_rd_q        <= rgb_mem[ra];
       background_q    <= background_i;
       // Sparse: the pixel found is written (none found: the terminating beat is not).
-      pixel_covered_o <= sparse_i ? cnt_found : written_at(!wsel_q, rx_q);
+      pixel_covered_o <= sparse_i ? cnt_found : |(rx_word_q & rx_hot_q);
       pixel_x_o       <= rd_x;
       pixel_y_o       <= rline_q;
       pixel_last_o    <= rd_last && rd_lastline;
@@ -580,12 +608,15 @@ module scanline_buffer #(
     ra_written = ra_word[int'(PB'(rd_x)) % WordBits];
   end
   assign t_written_p = t_written_q;
-  assign covered_p   = sparse_i ? cnt_found : written_at(!wsel_q, rx_q);
+  assign covered_p   = sparse_i ? cnt_found : |(rx_word_q & rx_hot_q);
   assign t_addr_ok   = t_addr_q == addr(wsel_q, t_x_q) && t_bank_q == wsel_q;
 `endif
   `WATKINS_ASSERT(a_sparse_covered, rd_load && sparse_i && !(rd_last && rd_lastline) |-> found)
   // The registered decisions equal what they stand for.
   `WATKINS_ASSERT(a_cnt_found, sparse_i |-> cnt_found == found)
+  `WATKINS_ASSERT(a_first, first_q == (rd_occ_q & ~(rd_occ_q - 1'b1)))
+  `WATKINS_ASSERT(a_rx_hot, rd_busy_q && !sparse_i |->
+    rx_hot_q == (WordBits'(1) << bit_of(rx_q)) && rx_whot_q == (Words'(1) << word_of(rx_q)))
   `WATKINS_ASSERT(a_cnt_more, sparse_i |-> cnt_more == more)
   `WATKINS_ASSERT(a_rd_words, sparse_i |-> rd_words_ok)
   `WATKINS_ASSERT(a_wr_words, eol_take |-> wr_words_ok)
