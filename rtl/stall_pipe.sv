@@ -6,7 +6,8 @@
 // squeezed out while the output waits).
 // PayloadRam = 0: the payload (not reset) shifts through a register per stage. PayloadRam = 1
 // (Stages >= 2): the payload is written once into a small RAM as it enters and read out in
-// order (the pipe never reorders), synchronous read one clock ahead into payload_o's register:
+// order (the pipe never reorders), synchronous read one clock ahead into payload_o's register
+// (written while a beat is offered, read while one is in the last stage but one):
 // a wide payload costs one RAM word per beat in flight instead of Stages registers, and maps to
 // block RAM (SB_RAM40_4K, DP16KD). Same latency and values either way.
 `include "watkins_assert.svh"
@@ -71,12 +72,17 @@ module stall_pipe #(
       end
     end
     `WATKINS_ASSERT(a_rd_inc, rd_inc_q == rd_q + 1'b1)
+    // Written whenever a beat is offered (valid_i), stalled or not: slot wr_q holds no beat in
+    // flight until wr_q moves past it (a beat entering is written the clock it enters), so
+    // writing it while stalled is harmless, and the RAM's write enable is a valid, not the
+    // parent's stall signal. Read only when a beat is in the last stage but one: out_q must
+    // hold the payload of a beat in the last stage, which is either the one it already holds
+    // (rd_next = rd_q while that beat waits, and its slot is not written) or the beat arriving
+    // from the stage before. A simulator then copies the (wide) payload only for the clocks a
+    // beat passes, not every clock.
     always_ff @(posedge clk_i) begin
-      // Written every clock: slot wr_q holds no beat in flight until wr_q moves past it (a beat
-      // entering is written the clock it enters), so writing it while stalled or empty is
-      // harmless, and the RAM's write enable is no longer the parent's stall signal.
-      mem[wr_q] <= payload_i;
-      out_q <= mem[rd_next];  // the oldest beat in flight (the one leaving next)
+      if (valid_i) mem[wr_q] <= payload_i;
+      if (valid_q[Stages-2]) out_q <= mem[rd_next];  // the oldest beat in flight (leaving next)
     end
     assign payload_o = out_q;
   end else begin : g_shift
