@@ -132,6 +132,7 @@ module segment_interpolator #(
   endfunction
 
   logic                 s0_valid_q, s0_ready, s0_load;
+  logic                 rc_valid, tail_en;  // the reciprocal's output valid, the tail's stall
   span_pre_t            s0_q;
   logic [DxBits-1:0]    s0_dx_q;
   logic signed [XBits-1:0] xe_e, xe_f;  // X of E and F
@@ -140,7 +141,9 @@ module segment_interpolator #(
   assign xe_f = seg_f_i[0 +: XBits];
 
   assign seg_ready_o = !s0_valid_q || s0_ready;
-  assign s0_load     = seg_ready_o && seg_valid_i;
+  // seg_ready_o && seg_valid_i written out from tail_en (s0_ready = tail_en || !rc_valid): one
+  // LUT after tail_en to s0's clock enables, not one after each of s0_ready and seg_ready_o.
+  assign s0_load     = seg_valid_i && (!s0_valid_q || !rc_valid || tail_en);
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) s0_valid_q <= 1'b0;
@@ -193,7 +196,6 @@ module segment_interpolator #(
   end
 
   // ---------------------------------------------------------------- reciprocal
-  logic               rc_valid, tail_en;
   logic [RecipBits:0] rc_recip;
   logic [ExpBits-1:0] rc_p;
   span_pre_t          rc_span;
