@@ -9,7 +9,10 @@
 // taking a span's first pixel straight from the FIFO head, so consecutive spans (even of one
 // pixel) leave no bubble and a span's setup hides behind the previous spans' pixels.
 // Latency segment -> first fragment: 35 cycles. All stage outputs registered; ready is
-// combinational through the setup stages (one stall signal), registered at the FIFO.
+// combinational through the setup stages (one stall signal), registered at the FIFO. A setup
+// stage's registers load only for a valid beat (the stall and the valid entering the stage), and
+// their values are computed inside that enable: a simulator evaluates the setup only on the
+// clocks a span passes (issue 11), the hardware is the same flops and logic.
 // End-of-line markers pass through in order. Each fragment carries its segment's polygon id
 // (the scanline_buffer's equal-depth rule) and material id, and both readings of the three
 // attribute channels: frag_rgb_o (Gouraud shade levels) and frag_normal_o (Phong normal, the
@@ -128,44 +131,53 @@ module segment_interpolator #(
     first_centre = PCB'($signed(t[XBits:FX]));
   endfunction
 
-  logic                 s0_valid_q, s0_ready;
+  logic                 s0_valid_q, s0_ready, s0_load;
+  logic                 rc_valid, tail_en;  // the reciprocal's output valid, the tail's stall
   span_pre_t            s0_q;
   logic [DxBits-1:0]    s0_dx_q;
-  span_pre_t            s0_d;
-  logic [DxBits-1:0]    s0_dx_d;
   logic signed [XBits-1:0] xe_e, xe_f;  // X of E and F
-  logic [IVB-1:0]       s0_e_d;
-  logic [IDB-1:0]       s0_delta_d;
 
   assign xe_e = seg_e_i[0 +: XBits];
   assign xe_f = seg_f_i[0 +: XBits];
 
-  always_comb begin
-    logic signed [PCB-1:0] fce;
-    // The clipped offset h - X_E: offset < dx when the span is not empty, so its top bits are
-    // dropped (the difference is exact modulo 2^(DxBits+2)).
-    /* verilator lint_off UNUSEDSIGNAL */
-    logic signed [DxBits+1:0]  off_clip;
-    /* verilator lint_on UNUSEDSIGNAL */
-    logic [FX-1:0]             frac_h, off_frac;
-    fce     = first_centre(xe_e);
-    s0_d.eol   = seg_eol_i;
-    s0_d.fce   = fce;
-    s0_d.fcf   = first_centre(xe_f);
-    s0_d.poly     = seg_poly_i;
-    s0_d.material = seg_material_i;
-    // offset = x_start + h - X_E (h = 2^(FX-1)), not through x_start's add and clamp: unclipped
-    // (fce >= 0, x_start = fce) fce 2^FX = X_E + h - 1 - ((X_E + h - 1) mod 2^FX), so the offset
-    // is 2^FX - 1 - ((X_E + h - 1) mod 2^FX), the complement of an FX-bit sum of X_E's fraction
-    // bits; clipped (fce < 0, x_start = 0) it is h - X_E. Both run beside fce's sign. A span
-    // whose fce is beyond LB bits is empty, so x_start's truncation never mattered here.
-    frac_h      = xe_e[FX-1:0] + FX'((1 << (FX - 1)) - 1);
-    off_clip    = $signed((DxBits + 2)'(1 << (FX - 1))) - $signed({{3{xe_e[XBits-1]}}, xe_e});
-    off_frac    = ~frac_h;
-    s0_d.offset = fce[PCB-1] ? DxBits'(off_clip) : DxBits'(off_frac);
-    s0_dx_d     = DxBits'($signed({xe_f[XBits-1], xe_f}) - $signed({xe_e[XBits-1], xe_e}));
-    s0_d.e      = s0_e_d;
-    s0_d.delta  = s0_delta_d;
+  assign seg_ready_o = !s0_valid_q || s0_ready;
+  // seg_ready_o && seg_valid_i written out from tail_en (s0_ready = tail_en || !rc_valid): one
+  // LUT after tail_en to s0's clock enables, not one after each of s0_ready and seg_ready_o.
+  assign s0_load     = seg_valid_i && (!s0_valid_q || !rc_valid || tail_en);
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) s0_valid_q <= 1'b0;
+    else if (seg_ready_o) s0_valid_q <= seg_valid_i;
+  end
+  // s0's values are computed inside its registers' enable (a segment arriving), not in an
+  // always_comb that only feeds them: the same logic, which a simulator then evaluates only on
+  // the clocks a segment arrives, not on every clock.
+  always_ff @(posedge clk_i) begin
+    if (s0_load) begin : s0_set
+      logic signed [PCB-1:0] fce;
+      // The clipped offset h - X_E: offset < dx when the span is not empty, so its top bits are
+      // dropped (the difference is exact modulo 2^(DxBits+2)).
+      /* verilator lint_off UNUSEDSIGNAL */
+      logic signed [DxBits+1:0]  off_clip;
+      /* verilator lint_on UNUSEDSIGNAL */
+      logic [FX-1:0]             frac_h, off_frac;
+      fce = first_centre(xe_e);
+      // offset = x_start + h - X_E (h = 2^(FX-1)), not through x_start's add and clamp: unclipped
+      // (fce >= 0, x_start = fce) fce 2^FX = X_E + h - 1 - ((X_E + h - 1) mod 2^FX), so the offset
+      // is 2^FX - 1 - ((X_E + h - 1) mod 2^FX), the complement of an FX-bit sum of X_E's fraction
+      // bits; clipped (fce < 0, x_start = 0) it is h - X_E. Both run beside fce's sign. A span
+      // whose fce is beyond LB bits is empty, so x_start's truncation never mattered here.
+      frac_h   = xe_e[FX-1:0] + FX'((1 << (FX - 1)) - 1);
+      off_clip = $signed((DxBits + 2)'(1 << (FX - 1))) - $signed({{3{xe_e[XBits-1]}}, xe_e});
+      off_frac = ~frac_h;
+      s0_q.eol      <= seg_eol_i;
+      s0_q.fce      <= fce;
+      s0_q.fcf      <= first_centre(xe_f);
+      s0_q.poly     <= seg_poly_i;
+      s0_q.material <= seg_material_i;
+      s0_q.offset   <= fce[PCB-1] ? DxBits'(off_clip) : DxBits'(off_frac);
+      s0_dx_q       <= DxBits'($signed({xe_f[XBits-1], xe_f}) - $signed({xe_e[XBits-1], xe_e}));
+    end
   end
 
   // Per slot: E's value and the delta F - E, one bit wider than the slot's word.
@@ -174,28 +186,16 @@ module segment_interpolator #(
     localparam int unsigned In = watkins_pkg::slot_lo(c, XBits, ZBits, AttrBits);
     localparam int unsigned Lo = ilo(c, ZBits, AttrBits);
     localparam int unsigned Dl = ilo(c, ZD, AD);
-    logic signed [W-1:0] ev, fv;
-    assign ev = seg_e_i[In +: W];
-    assign fv = seg_f_i[In +: W];
-    assign s0_e_d[Lo +: W]         = ev;
-    assign s0_delta_d[Dl +: W + 1] = $signed({fv[W-1], fv}) - $signed({ev[W-1], ev});
-  end
-
-  assign seg_ready_o = !s0_valid_q || s0_ready;
-
-  always_ff @(posedge clk_i) begin
-    if (!rst_ni) s0_valid_q <= 1'b0;
-    else if (seg_ready_o) s0_valid_q <= seg_valid_i;
-  end
-  always_ff @(posedge clk_i) begin
-    if (seg_ready_o && seg_valid_i) begin
-      s0_q    <= s0_d;
-      s0_dx_q <= s0_dx_d;
+    always_ff @(posedge clk_i) begin
+      if (s0_load) begin
+        s0_q.e[Lo +: W]         <= seg_e_i[In +: W];
+        s0_q.delta[Dl +: W + 1] <= $signed({seg_f_i[In+W-1], seg_f_i[In +: W]})
+                                 - $signed({seg_e_i[In+W-1], seg_e_i[In +: W]});
+      end
     end
   end
 
   // ---------------------------------------------------------------- reciprocal
-  logic               rc_valid, tail_en;
   logic [RecipBits:0] rc_recip;
   logic [ExpBits-1:0] rc_p;
   span_pre_t          rc_span;
@@ -231,7 +231,6 @@ module segment_interpolator #(
   localparam int unsigned RHi = RecipBits + 1 - MSplit;                    // recip's high part
   localparam int unsigned AHi = AlphaBits + 1 - MSplit;                    // alpha0's high part
   logic                sa_valid_q, sp_valid_q, sh_valid_q, sb_valid_q, sc_valid_q, sd_valid_q;
-  span_mid_t           sa_span_d;
   span_mid_t           sa_span_q, sp_span_q, sh_span_q, sb_span_q, sc_span_q;
   logic [ShAB-1:0]     sa_sha_q, sp_sha_q;  // alpha0's shift p + RecipBits - AlphaBits
   logic [ShSB-1:0]     sa_shs_q, sp_shs_q;  // the steps' shift p + RecipBits - FX (> 0)
@@ -268,35 +267,39 @@ module segment_interpolator #(
   // The shift has its own stage (sh): shift, increment and clamp in one clock were the block's
   // longest path.
   logic [APBits:0]    sh_u_q;
-  logic [AlphaBits:0] sb_ua;   // floor(x / 2^s), when it is below 2^(AlphaBits + 1)
-  logic               sb_over; // ra > 2^AlphaBits
-  assign sb_ua   = sh_u_q[AlphaBits+1:1];
-  assign sb_over = |sh_u_q[APBits:AlphaBits+2] || (sb_ua[AlphaBits] && (|sb_ua[AlphaBits-1:0] || sh_u_q[0]));
 
-  // sa: the pixel range x_start = max(fce, 0), x_end = min(fcf, width), from s0's registered first
-  // centres. The clamped ends keep LB bits: beyond them the span is empty.
-  always_comb begin
-    /* verilator lint_off UNUSEDSIGNAL */
-    logic signed [PCB-1:0] xs_full, xe_full;
-    /* verilator lint_on UNUSEDSIGNAL */
-    xs_full = (rc_span.fce < 0) ? '0 : rc_span.fce;
-    xe_full = (rc_span.fcf > $signed(PCB'(width_i))) ? $signed(PCB'(width_i)) : rc_span.fcf;
-    sa_span_d.eol      = rc_span.eol;
-    // empty = min(fcf, width) <= max(fce, 0), spread into four compares of the unclamped ends
-    // that run side by side (through the clamps it was the block's longest path).
-    sa_span_d.empty    = (rc_span.fcf <= rc_span.fce) || (rc_span.fcf <= 0)
-                      || ($signed(PCB'(width_i)) <= rc_span.fce) || (width_i == '0);
-    sa_span_d.poly     = rc_span.poly;
-    sa_span_d.material = rc_span.material;
-    sa_span_d.xs       = LB'(xs_full);
-    sa_span_d.xe       = LB'(xe_full);
-    sa_span_d.e        = rc_span.e;
-    sa_span_d.delta    = rc_span.delta;
-  end
+  // Each tail stage loads only for a valid beat: the stall (tail_en) and the valid entering it,
+  // as the reciprocal's stages do (stall_pipe's ce_o). A bubble leaves a stage's registers as
+  // they were (nobody reads a bubble's values), and a simulator evaluates a stage's products
+  // and sums, computed inside its enable, only on the clocks a span passes. Same flops.
+  logic sa_ce, sp_ce, sh_ce, sb_ce, sc_ce, sd_ce;
+  assign sa_ce = tail_en && rc_valid;
+  assign sp_ce = tail_en && sa_valid_q;
+  assign sh_ce = tail_en && sp_valid_q;
+  assign sb_ce = tail_en && sh_valid_q;
+  assign sc_ce = tail_en && sb_valid_q;
+  assign sd_ce = tail_en && sc_valid_q;
 
   always_ff @(posedge clk_i) begin
-    if (tail_en) begin
-      sa_span_q <= sa_span_d;
+    if (sa_ce) begin : sa_set
+      // sa: the pixel range x_start = max(fce, 0), x_end = min(fcf, width), from s0's registered
+      // first centres. The clamped ends keep LB bits: beyond them the span is empty.
+      /* verilator lint_off UNUSEDSIGNAL */
+      logic signed [PCB-1:0] xs_full, xe_full;
+      /* verilator lint_on UNUSEDSIGNAL */
+      xs_full = (rc_span.fce < 0) ? '0 : rc_span.fce;
+      xe_full = (rc_span.fcf > $signed(PCB'(width_i))) ? $signed(PCB'(width_i)) : rc_span.fcf;
+      sa_span_q.eol      <= rc_span.eol;
+      // empty = min(fcf, width) <= max(fce, 0), spread into four compares of the unclamped ends
+      // that run side by side (through the clamps it was the block's longest path).
+      sa_span_q.empty    <= (rc_span.fcf <= rc_span.fce) || (rc_span.fcf <= 0)
+                         || ($signed(PCB'(width_i)) <= rc_span.fce) || (width_i == '0);
+      sa_span_q.poly     <= rc_span.poly;
+      sa_span_q.material <= rc_span.material;
+      sa_span_q.xs       <= LB'(xs_full);
+      sa_span_q.xe       <= LB'(xe_full);
+      sa_span_q.e        <= rc_span.e;
+      sa_span_q.delta    <= rc_span.delta;
       // Both shifts are known from p alone: computed here, beside the products.
       sa_sha_q  <= ShAB'(rc_p) + ShAB'(RecipBits) - ShAB'(AlphaBits);
       sa_shs_q  <= ShSB'(rc_p) + ShSB'(RecipBits) - ShSB'(FX);
@@ -304,17 +307,31 @@ module segment_interpolator #(
       sa_pa01_q <= (MSplit+RHi)'(rc_o0) * (MSplit+RHi)'(rc_r1);
       sa_pa10_q <= (OHi+MSplit)'(rc_o1) * (OHi+MSplit)'(rc_r0);
       sa_pa11_q <= (OHi+RHi)'(rc_o1) * (OHi+RHi)'(rc_r1);
+    end
+    if (sp_ce) begin
       sp_span_q <= sa_span_q;
       sp_sha_q  <= sa_sha_q;
       sp_shs_q  <= sa_shs_q;
       sp_pa_q   <= APBits'({sa_pa11_q, sa_pa00_q}) + (APBits'(sa_pa01_q) << MSplit)
                  + (APBits'(sa_pa10_q) << MSplit);
+    end
+    if (sh_ce) begin
       sh_span_q <= sp_span_q;
       sh_u_q    <= {sp_pa_q, 1'b0} >> sp_sha_q;
-      sb_span_q <= sh_span_q;
-      sb_alpha_q <= sb_over ? (AlphaBits + 1)'(1 << AlphaBits) : sb_ua + (AlphaBits + 1)'(sh_u_q[0]);
+    end
+    if (sb_ce) begin : sb_set
+      logic [AlphaBits:0] ua;    // floor(x / 2^s), when it is below 2^(AlphaBits + 1)
+      logic               over;  // ra > 2^AlphaBits
+      ua   = sh_u_q[AlphaBits+1:1];
+      over = |sh_u_q[APBits:AlphaBits+2] || (ua[AlphaBits] && (|ua[AlphaBits-1:0] || sh_u_q[0]));
+      sb_span_q  <= sh_span_q;
+      sb_alpha_q <= over ? (AlphaBits + 1)'(1 << AlphaBits) : ua + (AlphaBits + 1)'(sh_u_q[0]);
+    end
+    if (sc_ce) begin
       sc_span_q <= sb_span_q;
       sc_step_q <= sb_step_q;
+    end
+    if (sd_ce) begin
       sd_span_q <= sc_span_q;
       sd_step_q <= sc_step_q;
     end
@@ -340,62 +357,75 @@ module segment_interpolator #(
     localparam int unsigned Q0B = DB + MSplit + 1;                // piece * low part
     localparam int unsigned Q1B = DB + RHi + 1;                   // piece * recip's high part
     localparam int unsigned QV1B = DB + AHi + 1;                  // piece * alpha0's high part
-    logic signed [W:0]     d_rc, d_sb;  // the delta leaving the reciprocal, and in sb
-    logic [K*DB-1:0]       d_rc_p, d_sb_p;  // their pieces, piece k at bit MSplit k of the delta
+    localparam int unsigned XB  = MSplit * K + 1;                 // a delta sign-extended to K pieces
     logic [K*Q0B-1:0]      ps0_q, pv0_q;
     logic [K*Q1B-1:0]      ps1_q;
     logic [K*QV1B-1:0]     pv1_q;
     logic signed [PS-1:0]  ps_q;        // delta * recip, in sp
-    logic signed [PS-1:0]  ps_sum;
-    logic [VS-1:0]         pv_sum;
-    assign d_rc = rc_span.delta[Dl +: W + 1];
-    assign d_sb = sb_span_q.delta[Dl +: W + 1];
-    for (genvar k = 0; k < K; k++) begin : g_piece
-      if (k == K - 1) begin : g_top
-        assign d_rc_p[k*DB +: DB] = DB'(d_rc >>> (MSplit * k));
-        assign d_sb_p[k*DB +: DB] = DB'(d_sb >>> (MSplit * k));
-      end else begin : g_low
-        assign d_rc_p[k*DB +: DB] = {1'b0, d_rc[MSplit*k +: MSplit]};
-        assign d_sb_p[k*DB +: DB] = {1'b0, d_sb[MSplit*k +: MSplit]};
-      end
-    end
-    // The partial products' sums, modulo the product's word as before.
-    always_comb begin
-      ps_sum = '0;
-      // value = wrap(E + ((pv + 2^(AlphaBits-1)) >> AlphaBits), W) = bits [AlphaBits +: W] of
-      // pv + (E 2^AlphaBits + 2^(AlphaBits-1)): E and the rounding constant are one operand
-      // (their bits do not overlap), added with the partial products in sd, so the FIFO's
-      // input is a register. Sums modulo 2^VS keep those bits.
-      pv_sum = {sc_span_q.e[Lo +: W], 1'b1, (AlphaBits - 1)'(0)};
-      for (int k = 0; k < K; k++) begin
-        ps_sum = ps_sum + (PS'($signed(ps0_q[k*Q0B +: Q0B])) << (MSplit * k))
-                        + (PS'($signed(ps1_q[k*Q1B +: Q1B])) << (MSplit * (k + 1)));
-        pv_sum = pv_sum + (VS'($signed(pv0_q[k*Q0B +: Q0B])) << (MSplit * k))
-                        + (VS'($signed(pv1_q[k*QV1B +: QV1B])) << (MSplit * (k + 1)));
-      end
-    end
     // Shift first, round after, as alpha0: u = {x, 0} >>> s = floor(x / 2^(s-1)) (s > 0), and
     // rs = floor((u + 1) / 2) = (u >>> 1) + u[0]. Saturate from u's high bits: when u >>> 1
     // does not fit W bits, rs saturates to its sign (below the range, + u[0] reaches at most
     // StepMin); when it fits, only StepMax + 1 leaves the range, so the increment is skipped
     // there. The W-bit increment runs beside the tests, not before them.
     logic signed [PS:0] u;              // in sh
-    logic               fits, at_max;
-    assign fits   = &u[PS:W] || ~|u[PS:W];
-    assign at_max = !u[W] && &u[W-1:1];
+    // Every value below is computed inside its stage's enable (sa_ce .. sd_ce), not in an
+    // always_comb or assign that only feeds it: the same logic, evaluated by a simulator only
+    // when a span passes.
     always_ff @(posedge clk_i) begin
-      if (tail_en) begin
+      if (sa_ce) begin : sa_prod
+        // The delta leaving the reciprocal; piece k at bit MSplit k (the top one signed).
+        logic signed [XB-1:0] d;
+        logic signed [DB-1:0] pc;
+        d = XB'($signed(rc_span.delta[Dl +: W + 1]));
         for (int k = 0; k < K; k++) begin
-          ps0_q[k*Q0B +: Q0B]   <= Q0B'($signed(d_rc_p[k*DB +: DB]) * $signed({1'b0, rc_r0}));
-          ps1_q[k*Q1B +: Q1B]   <= Q1B'($signed(d_rc_p[k*DB +: DB]) * $signed({1'b0, rc_r1}));
-          pv0_q[k*Q0B +: Q0B]   <= Q0B'($signed(d_sb_p[k*DB +: DB]) * $signed({1'b0, sb_a0}));
-          pv1_q[k*QV1B +: QV1B] <= QV1B'($signed(d_sb_p[k*DB +: DB]) * $signed({1'b0, sb_a1}));
+          pc = (k == K - 1) ? DB'(d >>> (MSplit * k)) : DB'({1'b0, d[MSplit*k +: MSplit]});
+          ps0_q[k*Q0B +: Q0B] <= Q0B'(pc * $signed({1'b0, rc_r0}));
+          ps1_q[k*Q1B +: Q1B] <= Q1B'(pc * $signed({1'b0, rc_r1}));
         end
-        ps_q  <= ps_sum;
-        u     <= $signed({ps_q, 1'b0}) >>> sp_shs_q;
+      end
+      if (sp_ce) begin : sp_sum
+        // The partial products' sum, modulo the product's word as before.
+        logic signed [PS-1:0] sum;
+        sum = '0;
+        for (int k = 0; k < K; k++) begin
+          sum = sum + (PS'($signed(ps0_q[k*Q0B +: Q0B])) << (MSplit * k))
+                    + (PS'($signed(ps1_q[k*Q1B +: Q1B])) << (MSplit * (k + 1)));
+        end
+        ps_q <= sum;
+      end
+      if (sh_ce) u <= $signed({ps_q, 1'b0}) >>> sp_shs_q;
+      if (sb_ce) begin : sb_sat
+        logic fits, at_max;
+        fits   = &u[PS:W] || ~|u[PS:W];
+        at_max = !u[W] && &u[W-1:1];
         if (!fits) sb_step_q[Lo +: W] <= u[PS] ? W'(StepMin) : W'(StepMax);
         else sb_step_q[Lo +: W] <= u[W:1] + W'(u[0] && !at_max);
-        sd_value_q[Lo +: W] <= W'(pv_sum >> AlphaBits);
+      end
+      if (sc_ce) begin : sc_prod
+        // The delta in sb, cut the same way.
+        logic signed [XB-1:0] d;
+        logic signed [DB-1:0] pc;
+        d = XB'($signed(sb_span_q.delta[Dl +: W + 1]));
+        for (int k = 0; k < K; k++) begin
+          pc = (k == K - 1) ? DB'(d >>> (MSplit * k)) : DB'({1'b0, d[MSplit*k +: MSplit]});
+          pv0_q[k*Q0B +: Q0B]   <= Q0B'(pc * $signed({1'b0, sb_a0}));
+          pv1_q[k*QV1B +: QV1B] <= QV1B'(pc * $signed({1'b0, sb_a1}));
+        end
+      end
+      if (sd_ce) begin : sd_sum
+        // value = wrap(E + ((pv + 2^(AlphaBits-1)) >> AlphaBits), W) = bits [AlphaBits +: W] of
+        // pv + (E 2^AlphaBits + 2^(AlphaBits-1)): E and the rounding constant are one operand
+        // (their bits do not overlap), added with the partial products in sd, so the FIFO's
+        // input is a register. Sums modulo 2^VS keep those bits.
+        /* verilator lint_off UNUSEDSIGNAL */
+        logic [VS-1:0] sum;
+        /* verilator lint_on UNUSEDSIGNAL */
+        sum = {sc_span_q.e[Lo +: W], 1'b1, (AlphaBits - 1)'(0)};
+        for (int k = 0; k < K; k++) begin
+          sum = sum + (VS'($signed(pv0_q[k*Q0B +: Q0B])) << (MSplit * k))
+                    + (VS'($signed(pv1_q[k*QV1B +: QV1B])) << (MSplit * (k + 1)));
+        end
+        sd_value_q[Lo +: W] <= W'(sum >> AlphaBits);
       end
     end
   end

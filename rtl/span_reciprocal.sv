@@ -5,7 +5,7 @@
 // then a restoring divider whose first stage takes quotient bits R and R-1 (both decided by m
 // alone) and whose R-1 further stages take one bit each. Latency R+2 = 26 cycles. Every stage
 // is registered; one global stall (ready_o = ready_i || !valid_o, stall_pipe) holds the whole
-// pipe. payload_i travels alongside, so the caller keeps its span data in step with the quotient:
+// pipe, and a stage's registers load only for a valid beat (stall_pipe's ce_o). payload_i travels alongside, so the caller keeps its span data in step with the quotient:
 // kept in a RAM (stall_pipe PayloadRam), only the quotient's own registers are per stage.
 `include "watkins_assert.svh"
 
@@ -29,14 +29,18 @@ module span_reciprocal #(
 );
   localparam int unsigned Stages = RecipBits + 2;  // detect, normalize, R quotient stages (R+1 bits)
 
-  logic en;
+  // ce[k]: stage k loads, the pipe advances (en) and the beat entering stage k is valid. A
+  // bubble leaves a stage's registers as they were: nobody reads a bubble's quotient, and a
+  // simulator then evaluates a stage's divider step only for the few clocks a span passes
+  // (most clocks the pipe holds bubbles). Same flops; only their clock enables differ.
+  logic [Stages-1:0] ce;
 
-  // Valid, payload and the stall of every stage; the registers below advance on its en.
+  // Valid, payload and the stall of every stage; the registers below advance on their ce.
   // The payload (a whole span's setup in segment_interpolator) is written once, not shifted
   // through 26 stages of registers.
-  // Every stage advances on en: the per-stage valids and enables are not used here.
   /* verilator lint_off UNUSEDSIGNAL */
-  logic [Stages-1:0] v_unused, ce_unused;
+  logic [Stages-1:0] v_unused;
+  logic              en;  // the pipe advances: read by tests/formal's probes, not here
   /* verilator lint_on UNUSEDSIGNAL */
   stall_pipe #(
     .Stages     (Stages),
@@ -52,7 +56,7 @@ module span_reciprocal #(
     .ready_i,
     .en_o     (en),
     .valid_q_o(v_unused),
-    .ce_o     (ce_unused)
+    .ce_o     (ce)
   );
 
   // Leading-one detection (stage 0), then normalization (stage 1): dx << (NormBits-1-p) puts
@@ -62,18 +66,29 @@ module span_reciprocal #(
   localparam int unsigned NormBits = (DxBits > RecipBits) ? DxBits : RecipBits;
   localparam int unsigned ShBits   = $clog2(NormBits);
   // The shift NormBits - 1 - p comes out of the encoder beside p, not from a subtract after it.
-  logic [ExpBits-1:0] lead;
-  logic [ShBits-1:0]  lead_sh;
-  always_comb begin
+  // A function called inside stage 0's enable, not an always_comb: a simulator evaluates it only
+  // when a span enters (the same encoder).
+  function automatic logic [ExpBits+ShBits-1:0] lead_of(logic [DxBits-1:0] dx);  // {p, shift}
+    logic [ExpBits-1:0] lead;
+    logic [ShBits-1:0]  lead_sh;
     lead    = '0;
     lead_sh = ShBits'(NormBits - 1);
     for (int i = 0; i < DxBits; i++) begin
-      if (dx_i[i]) begin
+      if (dx[i]) begin
         lead    = ExpBits'(i);
         lead_sh = ShBits'(NormBits - 1 - i);
       end
     end
-  end
+    lead_of = {lead, lead_sh};
+  endfunction
+  // One restoring step: {quotient bit, next partial remainder} from a remainder < m.
+  function automatic logic [RecipBits:0] div_step(logic [RecipBits-1:0] rem,
+                                                  logic [RecipBits-1:0] m);
+    logic [RecipBits:0] twice;
+    twice    = {rem, 1'b0};
+    div_step = (twice >= {1'b0, m}) ? {1'b1, RecipBits'(twice - {1'b0, m})}
+                                    : {1'b0, RecipBits'(twice)};
+  endfunction
 
   // Quotient bit R-k+1 in stage k >= 3, bits R and R-1 in stage 2: the numerator 2^(2R-1) has
   // contributed 2^(R-2) to the partial remainder before bit R (smaller than m, so every higher
@@ -96,44 +111,34 @@ module span_reciprocal #(
     logic [ExpBits-1:0]   p_q;
     if (k == 0) begin : g_lead
       always_ff @(posedge clk_i) begin
-        if (en) begin
-          dx_q <= dx_i;
-          sh_q <= lead_sh;
-          p_q  <= lead;
+        if (ce[0]) begin
+          dx_q         <= dx_i;
+          {p_q, sh_q}  <= lead_of(dx_i);
         end
       end
     end else if (k == 1) begin : g_norm
       // Only the top R bits of the normalized width matter (the model truncates the rest).
-      /* verilator lint_off UNUSEDSIGNAL */
-      logic [NormBits-1:0] norm;
-      /* verilator lint_on UNUSEDSIGNAL */
-      assign norm = NormBits'(g_stage[0].dx_q) << g_stage[0].sh_q;
       always_ff @(posedge clk_i) begin
-        if (en) begin
-          m_q <= norm[NormBits-1 -: RecipBits];
+        if (ce[1]) begin
+          m_q <= RecipBits'((NormBits'(g_stage[0].dx_q) << g_stage[0].sh_q) >> (NormBits - RecipBits));
           p_q <= g_stage[0].p_q;
         end
       end
     end else if (k == 2) begin : g_top
-      logic top;  // quotient bit R: m = 2^(R-1)
-      assign top = ~|g_stage[1].m_q[RecipBits-2:0];
+      // Quotient bit R is m = 2^(R-1): m's low bits all clear.
       always_ff @(posedge clk_i) begin
-        if (en) begin
-          rem_q <= top ? '0 : RecipBits'(-g_stage[1].m_q);
-          quo_q <= {(RecipBits - 1)'(0), top, !top};
+        if (ce[2]) begin
+          rem_q <= (|g_stage[1].m_q[RecipBits-2:0]) ? RecipBits'(-g_stage[1].m_q) : '0;
+          quo_q <= {(RecipBits - 1)'(0), ~|g_stage[1].m_q[RecipBits-2:0], |g_stage[1].m_q[RecipBits-2:0]};
           m_q   <= g_stage[1].m_q;
           p_q   <= g_stage[1].p_q;
         end
       end
     end else begin : g_bit
-      logic [RecipBits:0] twice;
-      logic               ge;
-      assign twice = {g_stage[k-1].rem_q, 1'b0};
-      assign ge    = (twice >= {1'b0, g_stage[k-1].m_q});
       always_ff @(posedge clk_i) begin
-        if (en) begin
-          rem_q <= ge ? RecipBits'(twice - {1'b0, g_stage[k-1].m_q}) : RecipBits'(twice);
-          quo_q <= {g_stage[k-1].quo_q[RecipBits-1:0], ge};
+        if (ce[k]) begin
+          {quo_q, rem_q} <= {g_stage[k-1].quo_q[RecipBits-1:0],
+                             div_step(g_stage[k-1].rem_q, g_stage[k-1].m_q)};
           m_q   <= g_stage[k-1].m_q;
           p_q   <= g_stage[k-1].p_q;
         end

@@ -6,7 +6,8 @@
 // squeezed out while the output waits).
 // PayloadRam = 0: the payload (not reset) shifts through a register per stage. PayloadRam = 1
 // (Stages >= 2): the payload is written once into a small RAM as it enters and read out in
-// order (the pipe never reorders), synchronous read one clock ahead into payload_o's register:
+// order (the pipe never reorders), synchronous read one clock ahead into payload_o's register
+// (written while a beat is offered, read as a beat enters the last stage):
 // a wide payload costs one RAM word per beat in flight instead of Stages registers, and maps to
 // block RAM (SB_RAM40_4K, DP16KD). Same latency and values either way.
 `include "watkins_assert.svh"
@@ -53,10 +54,10 @@ module stall_pipe #(
     localparam int unsigned PtrBits = $clog2(Stages + 1);
     localparam int unsigned Depth   = 2 ** PtrBits;
     logic [PayloadBits-1:0] mem [Depth];
-    logic [PtrBits-1:0]     wr_q, rd_q, rd_inc_q, rd_next;
+    logic [PtrBits-1:0]     wr_q, rd_q, rd_inc_q, rd_next, rd_addr;
     logic [PayloadBits-1:0] out_q;
 
-    // rd_q + 1 kept in its own register, so the read address is a 2:1 pick by the handshake
+    // rd_q + 1 kept in its own register, so the next read pointer is a 2:1 pick by the handshake
     // (ready_i is the parent's stall signal, with a large fan-out) and no add follows it.
     assign rd_next = (valid_o && ready_i) ? rd_inc_q : rd_q;
     always_ff @(posedge clk_i) begin
@@ -71,12 +72,18 @@ module stall_pipe #(
       end
     end
     `WATKINS_ASSERT(a_rd_inc, rd_inc_q == rd_q + 1'b1)
+    // Written whenever a beat is offered (valid_i), stalled or not: slot wr_q holds no beat in
+    // flight until wr_q moves past it (a beat entering is written the clock it enters), so
+    // writing it while stalled is harmless, and the RAM's write enable is a valid, not the
+    // parent's stall signal. out_q loads as the last stage does (ce_o[Stages-1]: the pipe
+    // advances and a beat is in the stage before), with that beat's word: rd_q + 1 when a beat
+    // leaves the last stage (it does whenever the pipe advances with valid_o), else rd_q. The
+    // read address is thus picked by a flop (valid_o), and the stall reaches out_q's enable
+    // only; a simulator copies the (wide) payload only for the clocks a beat arrives.
+    assign rd_addr = valid_o ? rd_inc_q : rd_q;
     always_ff @(posedge clk_i) begin
-      // Written every clock: slot wr_q holds no beat in flight until wr_q moves past it (a beat
-      // entering is written the clock it enters), so writing it while stalled or empty is
-      // harmless, and the RAM's write enable is no longer the parent's stall signal.
-      mem[wr_q] <= payload_i;
-      out_q <= mem[rd_next];  // the oldest beat in flight (the one leaving next)
+      if (valid_i) mem[wr_q] <= payload_i;
+      if (ce_o[Stages-1]) out_q <= mem[rd_addr];  // the beat arriving in the last stage
     end
     assign payload_o = out_q;
   end else begin : g_shift

@@ -64,8 +64,11 @@ module stall_pipe_checker #(
       if (PayloadRam) begin
         // The pointers count beats in and out as the tags do.
         assert (wr_q_i == PtrBits'(n_in_i) && rd_q_i == PtrBits'(n_out_i));
-        // The oldest beat past stage 0 was written at least a clock before out_q was loaded.
-        if ((valid_q_i >> 1) != '0) assert (out_q_i == n_out_i);
+        // The beat in the last stage: out_q was loaded with it as it left the stage before (its
+        // word written at least a clock earlier), and is not reloaded but with the same word while
+        // it waits. (out_q is read only while a beat is in the last stage but one: a beat further
+        // back is not in it yet.)
+        if (valid_q_i[Stages-1]) assert (out_q_i == n_out_i);
       end
     end
   end
