@@ -402,7 +402,9 @@ module segment_interpolator #(
         else sb_step_q[Lo +: W] <= u[W:1] + W'(u[0] && !at_max);
       end
       if (sc_ce) begin : sc_prod
-        // The delta in sb, cut the same way.
+        // The delta in sb, cut the same way (written out here too: as a function of the piece
+        // index shared by both blocks, yosys 0.23 kept the index a run-time shift -- 8,805 ->
+        // 9,721 LUT4 and 94.9 -> 85.8 MHz alone at docs/size/default.phong.json).
         logic signed [XB-1:0] d;
         logic signed [DB-1:0] pc;
         d = XB'($signed(sb_span_q.delta[Dl +: W + 1]));
