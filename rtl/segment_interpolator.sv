@@ -2,8 +2,9 @@
 // stepping, exactly model/twins/segment_interpolator.cpp (setup(), fragment(), step()).
 // Setup pipeline, one segment per clock: s0 (first pixel centres, dx, offset, deltas) ->
 // span_reciprocal (26) -> sa (pixel range clamped to the screen, empty test, alpha and step
-// partial products, deltas in 17-bit pieces when wider than a MULT18) -> sp (their sums) -> sh (their
-// shifts) -> sb (round, clamp alpha0, saturate steps) -> sc (value partial products) -> sd
+// partial products, deltas in 17-bit pieces when wider than a MULT18, each product in its
+// multiplier block's register) -> sp (their sums) -> sh (their shifts) -> sb (round, clamp
+// alpha0, saturate steps) -> sc (value partial products, in their blocks' registers too) -> sd
 // (their sums with E and the rounding constant: the value E + round(delta*alpha0)) -> FIFO;
 // empty spans are dropped before the FIFO. The stepper emits one fragment per clock from a registered output,
 // taking a span's first pixel straight from the FIFO head, so consecutive spans (even of one
@@ -222,7 +223,7 @@ module segment_interpolator #(
   // (round_shift by 0 is exact) and the steps. sc: delta * alpha0 as partial products. sd: the
   // values.
   // Every product wider than a multiplier block is split at bit MSplit of each operand too wide
-  // for one, each partial product registered straight from its block and the partial products
+  // for one, each partial product registered in its block (mul18_reg) and the partial products
   // summed a stage later (a product and its adder tree in one clock limited the block):
   // x y = x0 y0 + (x0 y1 + x1 y0) 2^MSplit + x1 y1 2^(2 MSplit), the sums taken modulo the
   // product's word as before. recip and alpha0 are unsigned, so their halves are too.
@@ -250,14 +251,12 @@ module segment_interpolator #(
   logic [MSplit-1:0] rc_r0, sb_a0;  // recip's and alpha0's low parts
   logic [RHi-1:0]    rc_r1;
   logic [AHi-1:0]    sb_a1;
-  logic [MSplit-1:0] rc_o0;         // offset's
-  logic [OHi-1:0]    rc_o1;
+  logic [MSplit-1:0] rc_o0;         // offset's low part (its high part in g_pa_hi)
   assign rc_r0 = MSplit'(rc_recip);
   assign rc_r1 = RHi'(rc_recip >> MSplit);
   assign sb_a0 = MSplit'(sb_alpha_q);
   assign sb_a1 = AHi'(sb_alpha_q >> MSplit);
   assign rc_o0 = MSplit'(rc_span.offset);
-  assign rc_o1 = OHi'(rc_span.offset >> MSplit);
 
   // alpha0 shifts first and rounds after: round_shift(x, s) = (floor(2x / 2^s) + 1) / 2, so the
   // shifter takes the product straight from its register (u = {x, 0} >> s, also exact for s = 0)
@@ -279,6 +278,27 @@ module segment_interpolator #(
   assign sb_ce = tail_en && sh_valid_q;
   assign sc_ce = tail_en && sb_valid_q;
   assign sd_ce = tail_en && sc_valid_q;
+
+  // offset * recip's partial products, each in its multiplier block's own register (mul18_reg:
+  // the MULT18X18D's output register on the ECP5): a product is then the block's setup, not a
+  // route into the block, the block and a route out of it in one clock (the sized Phong top's
+  // 112 MULT18 spread its setup multipliers far from their fabric registers: 18.6 ns at 4d2bd2c).
+  mul18_reg #(.ABits(MSplit), .BBits(MSplit)) u_pa00 (
+    .clk_i, .ce_i(sa_ce), .a_i(rc_o0), .b_i(rc_r0), .p_o(sa_pa00_q));
+  mul18_reg #(.ABits(MSplit), .BBits(RHi)) u_pa01 (
+    .clk_i, .ce_i(sa_ce), .a_i(rc_o0), .b_i(rc_r1), .p_o(sa_pa01_q));
+  if (DxBits > MSplit) begin : g_pa_hi
+    logic [OHi-1:0] rc_o1;
+    assign rc_o1 = OHi'(rc_span.offset >> MSplit);
+    mul18_reg #(.ABits(OHi), .BBits(MSplit)) u_pa10 (
+      .clk_i, .ce_i(sa_ce), .a_i(rc_o1), .b_i(rc_r0), .p_o(sa_pa10_q));
+    mul18_reg #(.ABits(OHi), .BBits(RHi)) u_pa11 (
+      .clk_i, .ce_i(sa_ce), .a_i(rc_o1), .b_i(rc_r1), .p_o(sa_pa11_q));
+  end else begin : g_pa_lo
+    // The offset fits its low part: no multiplier block for a zero high part.
+    assign sa_pa10_q = '0;
+    assign sa_pa11_q = '0;
+  end
 
   always_ff @(posedge clk_i) begin
     if (sa_ce) begin : sa_set
@@ -303,10 +323,6 @@ module segment_interpolator #(
       // Both shifts are known from p alone: computed here, beside the products.
       sa_sha_q  <= ShAB'(rc_p) + ShAB'(RecipBits) - ShAB'(AlphaBits);
       sa_shs_q  <= ShSB'(rc_p) + ShSB'(RecipBits) - ShSB'(FX);
-      sa_pa00_q <= (2*MSplit)'(rc_o0) * (2*MSplit)'(rc_r0);
-      sa_pa01_q <= (MSplit+RHi)'(rc_o0) * (MSplit+RHi)'(rc_r1);
-      sa_pa10_q <= (OHi+MSplit)'(rc_o1) * (OHi+MSplit)'(rc_r0);
-      sa_pa11_q <= (OHi+RHi)'(rc_o1) * (OHi+RHi)'(rc_r1);
     end
     if (sp_ce) begin
       sp_span_q <= sa_span_q;
@@ -357,10 +373,29 @@ module segment_interpolator #(
     localparam int unsigned Q0B = DB + MSplit + 1;                // piece * low part
     localparam int unsigned Q1B = DB + RHi + 1;                   // piece * recip's high part
     localparam int unsigned QV1B = DB + AHi + 1;                  // piece * alpha0's high part
-    localparam int unsigned XB  = MSplit * K + 1;                 // a delta sign-extended to K pieces
+    localparam int unsigned TW  = W + 1 - MSplit * (K - 1);       // the top piece's bits
     logic [K*Q0B-1:0]      ps0_q, pv0_q;
     logic [K*Q1B-1:0]      ps1_q;
     logic [K*QV1B-1:0]     pv1_q;
+    // Piece k of the delta at bit MSplit k: MSplit unsigned bits, the top one TW signed bits (the
+    // multiplier sign-extends it). sa takes the delta leaving the reciprocal, sc the delta in sb;
+    // each partial product is one mul18_reg, registered in its block (see u_pa00).
+    for (genvar k = 0; k < K; k++) begin : g_piece
+      localparam bit          Top = (k == K - 1);
+      localparam int unsigned PB  = Top ? TW : MSplit;
+      mul18_reg #(.ABits(PB), .ASigned(Top), .BBits(MSplit), .PBits(Q0B)) u_ps0 (
+        .clk_i, .ce_i(sa_ce), .a_i(rc_span.delta[Dl + MSplit*k +: PB]), .b_i(rc_r0),
+        .p_o(ps0_q[k*Q0B +: Q0B]));
+      mul18_reg #(.ABits(PB), .ASigned(Top), .BBits(RHi), .PBits(Q1B)) u_ps1 (
+        .clk_i, .ce_i(sa_ce), .a_i(rc_span.delta[Dl + MSplit*k +: PB]), .b_i(rc_r1),
+        .p_o(ps1_q[k*Q1B +: Q1B]));
+      mul18_reg #(.ABits(PB), .ASigned(Top), .BBits(MSplit), .PBits(Q0B)) u_pv0 (
+        .clk_i, .ce_i(sc_ce), .a_i(sb_span_q.delta[Dl + MSplit*k +: PB]), .b_i(sb_a0),
+        .p_o(pv0_q[k*Q0B +: Q0B]));
+      mul18_reg #(.ABits(PB), .ASigned(Top), .BBits(AHi), .PBits(QV1B)) u_pv1 (
+        .clk_i, .ce_i(sc_ce), .a_i(sb_span_q.delta[Dl + MSplit*k +: PB]), .b_i(sb_a1),
+        .p_o(pv1_q[k*QV1B +: QV1B]));
+    end
     logic signed [PS-1:0]  ps_q;        // delta * recip, in sp
     // Shift first, round after, as alpha0: u = {x, 0} >>> s = floor(x / 2^(s-1)) (s > 0), and
     // rs = floor((u + 1) / 2) = (u >>> 1) + u[0]. Saturate from u's high bits: when u >>> 1
@@ -372,17 +407,6 @@ module segment_interpolator #(
     // always_comb or assign that only feeds it: the same logic, evaluated by a simulator only
     // when a span passes.
     always_ff @(posedge clk_i) begin
-      if (sa_ce) begin : sa_prod
-        // The delta leaving the reciprocal; piece k at bit MSplit k (the top one signed).
-        logic signed [XB-1:0] d;
-        logic signed [DB-1:0] pc;
-        d = XB'($signed(rc_span.delta[Dl +: W + 1]));
-        for (int k = 0; k < K; k++) begin
-          pc = (k == K - 1) ? DB'(d >>> (MSplit * k)) : DB'({1'b0, d[MSplit*k +: MSplit]});
-          ps0_q[k*Q0B +: Q0B] <= Q0B'(pc * $signed({1'b0, rc_r0}));
-          ps1_q[k*Q1B +: Q1B] <= Q1B'(pc * $signed({1'b0, rc_r1}));
-        end
-      end
       if (sp_ce) begin : sp_sum
         // The partial products' sum, modulo the product's word as before.
         logic signed [PS-1:0] sum;
@@ -400,19 +424,6 @@ module segment_interpolator #(
         at_max = !u[W] && &u[W-1:1];
         if (!fits) sb_step_q[Lo +: W] <= u[PS] ? W'(StepMin) : W'(StepMax);
         else sb_step_q[Lo +: W] <= u[W:1] + W'(u[0] && !at_max);
-      end
-      if (sc_ce) begin : sc_prod
-        // The delta in sb, cut the same way (written out here too: as a function of the piece
-        // index shared by both blocks, yosys 0.23 kept the index a run-time shift -- 8,805 ->
-        // 9,721 LUT4 and 94.9 -> 85.8 MHz alone at docs/size/default.phong.json).
-        logic signed [XB-1:0] d;
-        logic signed [DB-1:0] pc;
-        d = XB'($signed(sb_span_q.delta[Dl +: W + 1]));
-        for (int k = 0; k < K; k++) begin
-          pc = (k == K - 1) ? DB'(d >>> (MSplit * k)) : DB'({1'b0, d[MSplit*k +: MSplit]});
-          pv0_q[k*Q0B +: Q0B]   <= Q0B'(pc * $signed({1'b0, sb_a0}));
-          pv1_q[k*QV1B +: QV1B] <= QV1B'(pc * $signed({1'b0, sb_a1}));
-        end
       end
       if (sd_ce) begin : sd_sum
         // value = wrap(E + ((pv + 2^(AlphaBits-1)) >> AlphaBits), W) = bits [AlphaBits +: W] of
