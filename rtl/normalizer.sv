@@ -6,7 +6,7 @@
 // registered in its multiplier block (mul18_reg: on the ECP5 the MULT18X18D's output register;
 // the final one as partial products split at an 18 x 18 multiplier), its sums, shift and round a stage later each; one global stall
 // (stall_pipe): ready_o = ready_i || !valid_o (combinational from ready_i and the output valid
-// flop only). Each stage's registers load only when the beat entering it is valid (en && its
+// flop only; with LookAhead a flop loaded a clock ahead from ready_next_i). Each stage's registers load only when the beat entering it is valid (en && its
 // valid: one LUT, as en alone): a bubble's values are never read, so a simulator need not compute
 // them (most clocks of a frame carry bubbles); a valid beat's values are the same.
 // The null vector (m = 0) gives (0, 0, 0) with null_o set; any m > 0 gives a unit vector.
@@ -14,6 +14,7 @@
 
 module normalizer #(
   parameter int PayloadBits = 1,                              // carried alongside (pixel x, ...)
+  parameter bit LookAhead   = 1'b0,                           // stall_pipe's: ready from a flop
   localparam int NB = watkins_pkg::NormalInBits,
   localparam int UB = watkins_pkg::UnitBits
 ) (
@@ -27,7 +28,9 @@ module normalizer #(
   output logic                   null_o,     // input was (0, 0, 0); unit_o is (0, 0, 0)
   output logic [PayloadBits-1:0] payload_o,
   output logic                   valid_o,
-  input  logic                   ready_i
+  input  logic                   ready_i,
+  input  logic                   ready_next_i,  // LookAhead: ready_i on the next clock
+  output logic                   ready_next_o   // ready_o on the next clock (from ready_next_i)
 );
   localparam int MBits      = 2 * NB;                   // 36: m < 3 * 2^34
   localparam int RsqrtBits  = watkins_pkg::RsqrtBits;   // F below: fraction bits of y
@@ -46,7 +49,8 @@ module normalizer #(
   stall_pipe #(
     .Stages     (Stages),
     .PayloadBits(PayloadBits),
-    .PayloadRam (1'b1)
+    .PayloadRam (1'b1),
+    .LookAhead  (LookAhead)
   ) u_pipe (
     .clk_i, .rst_ni,
     .payload_i,
@@ -55,6 +59,8 @@ module normalizer #(
     .payload_o,
     .valid_o,
     .ready_i,
+    .ready_next_i,
+    .en_next_o(ready_next_o),
     .en_o     (en),
     .valid_q_o(v_unused),
     .ce_o     (ce)

@@ -3,7 +3,7 @@
 // vector, eqs. 4-8), cos(s)^n by square-and-multiply over the 8 bits of n; bit-exact twin of
 // model/twins/phong_shader.hpp. Latency 25, one pixel per clock; every stage registers valid and data;
 // one global stall (stall_pipe): ready_o = ready_i || !valid_o (combinational from ready_i and the
-// output valid flop only). Every product is registered on its own, in its multiplier block
+// output valid flop only; with LookAhead a flop loaded a clock ahead from ready_next_i). Every product is registered on its own, in its multiplier block
 // (mul18_reg: on the ECP5 the MULT18X18D's output register), a product wider than one 18 x 18
 // multiplier as partial products, the sums and roundings that use it one stage later (ECP5
 // MULT18 and iCE40 MAC16 timing). Each stage's registers load only when the beat entering
@@ -16,6 +16,7 @@
 
 module phong_shader #(
   parameter int PayloadBits    = 1,                           // carried alongside (pixel x, ...)
+  parameter bit LookAhead      = 1'b0,                        // stall_pipe's: ready from a flop
   localparam int UB            = watkins_pkg::UnitBits,
   localparam int MaterialBits  = watkins_pkg::MaterialBits,
   localparam int ShininessBits = watkins_pkg::ShininessBits   // also the number of power stages
@@ -35,7 +36,9 @@ module phong_shader #(
   output watkins_pkg::rgb_t        rgb_o,        // shade, 8-bit levels, saturated
   output logic [PayloadBits-1:0]   payload_o,
   output logic                     valid_o,
-  input  logic                     ready_i
+  input  logic                     ready_i,
+  input  logic                     ready_next_i, // LookAhead: ready_i on the next clock
+  output logic                     ready_next_o  // ready_o on the next clock (from ready_next_i)
 );
   // The comments write the two Phong formats as the model's formulas do: D and P.
   localparam int UF       = watkins_pkg::UnitFracBits;      // 14
@@ -70,7 +73,8 @@ module phong_shader #(
   stall_pipe #(
     .Stages     (Stages),
     .PayloadBits(PayloadBits),
-    .PayloadRam (1'b1)
+    .PayloadRam (1'b1),
+    .LookAhead  (LookAhead)
   ) u_pipe (
     .clk_i, .rst_ni,
     .payload_i,
@@ -79,6 +83,8 @@ module phong_shader #(
     .payload_o,
     .valid_o,
     .ready_i,
+    .ready_next_i,
+    .en_next_o(ready_next_o),
     .en_o     (en),
     .valid_q_o(v_unused),
     .ce_o     (ce)

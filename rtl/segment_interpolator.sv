@@ -474,6 +474,9 @@ module segment_interpolator #(
 
   span_t          f_in, f_out;
   logic           f_in_valid, f_in_ready, f_out_valid, f_out_ready;
+  /* verilator lint_off UNUSEDSIGNAL */
+  logic           f_in_ready_next;  // the tail's stall is combinational (tail_en): no lookahead
+  /* verilator lint_on UNUSEDSIGNAL */
   logic           sd_keep;
 
   always_comb begin
@@ -499,6 +502,7 @@ module segment_interpolator #(
     .data_i (f_in),
     .valid_i(f_in_valid),
     .ready_o(f_in_ready),
+    .ready_next_o(f_in_ready_next),
     .data_o (f_out),
     .valid_o(f_out_valid),
     .ready_i(f_out_ready)

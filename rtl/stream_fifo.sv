@@ -2,7 +2,9 @@
 // Latency 1 (a word written is visible at the head the next cycle); valid_o and data_o come
 // from registers, ready_o = not full straight from its own flop (room_q, kept equal to
 // cnt_q != Depth: a parent's stall signal built on ready_o starts at a flop, not at a compare of
-// the count); no combinational path from input to output.
+// the count); no combinational path from input to output. ready_next_o is ready_o on the next
+// clock (room_q's next value), for a producer whose own ready is a flop loaded a clock ahead
+// (stall_pipe's LookAhead).
 `include "watkins_assert.svh"
 
 module stream_fifo #(
@@ -14,6 +16,7 @@ module stream_fifo #(
   input  logic [DataBits-1:0] data_i,   // word to store
   input  logic                valid_i,
   output logic                ready_o,  // a slot is free
+  output logic                ready_next_o,  // ready_o on the next clock
   output logic [DataBits-1:0] data_o,   // oldest word
   output logic                valid_o,  // the FIFO holds a word
   input  logic                ready_i
@@ -32,6 +35,9 @@ module stream_fifo #(
   assign data_o  = mem_q[rd_q];
   assign push    = valid_i && ready_o;
   assign pop     = valid_o && ready_i;
+  // Full next clock: a push without a pop into the last free slot; a pop frees one.
+  assign ready_next_o = (push && !pop) ? cnt_q != CntBits'(Depth - 1)
+                      : (pop && !push) ? 1'b1 : room_q;
 
   // Pointers wrap at Depth, which need not be a power of two.
   function automatic logic [PtrBits-1:0] next_ptr(logic [PtrBits-1:0] p);
@@ -49,9 +55,7 @@ module stream_fifo #(
       if (pop) rd_q <= next_ptr(rd_q);
       if (push && !pop) cnt_q <= cnt_q + 1'b1;
       else if (pop && !push) cnt_q <= cnt_q - 1'b1;
-      // Full next clock: a push without a pop into the last free slot; a pop frees one.
-      if (push && !pop) room_q <= (cnt_q != CntBits'(Depth - 1));
-      else if (pop && !push) room_q <= 1'b1;
+      room_q <= ready_next_o;
     end
   end
 

@@ -18,9 +18,10 @@ module normalizer_formal #(
   input  logic [3*NB-1:0]        normal_i,
   input  logic [PayloadBits-1:0] payload_i,
   input  logic                   valid_i,
-  input  logic                   ready_i
+  input  logic                   ready_i,
+  input  logic                   ready_next_i  // unused: the DUT's LookAhead is 0
 );
-  logic                   ready_o, valid_o;
+  logic                   ready_o, valid_o, ready_next_o;
   logic [3*UB-1:0]        unit_o;
   logic                   null_o;
   logic [PayloadBits-1:0] payload_o;

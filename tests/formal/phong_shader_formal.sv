@@ -25,9 +25,10 @@ module phong_shader_formal #(
   input  logic [SB-1:0]          shininess_i,
   input  logic [PayloadBits-1:0] payload_i,
   input  logic                   valid_i,
-  input  logic                   ready_i
+  input  logic                   ready_i,
+  input  logic                   ready_next_i  // unused: the DUT's LookAhead is 0
 );
-  logic                   ready_o, valid_o;
+  logic                   ready_o, valid_o, ready_next_o;
   watkins_pkg::rgb_t      rgb_o;
   logic [PayloadBits-1:0] payload_o;
   phong_shader #(.PayloadBits(PayloadBits)) u_dut (.*);

@@ -2,27 +2,31 @@
 // PayloadRam: the words probed below) holds valid and payload until ready, passes every beat
 // once, in order, unchanged, keeps ready_o = en_o = ready_i || !valid_o, and holds at most Stages
 // beats. Each input beat carries its sequence number as payload; stall_pipe_checker ties the
-// stages to it.
+// stages to it. LookAhead: the environment gives ready_i a clock ahead (ready_next_i), and the
+// enable flop must equal ready_i || !valid_o on every clock.
 `include "formal_stream.svh"
 
 module stall_pipe_formal #(
   parameter int unsigned Stages      = 3,
   parameter int unsigned PayloadBits = 3,     // > log2(Stages + 1)
-  parameter bit          PayloadRam  = 1'b0
+  parameter bit          PayloadRam  = 1'b0,
+  parameter bit          LookAhead   = 1'b0
 ) (
   input  logic                   clk_i,
   input  logic                   rst_ni,
   input  logic [PayloadBits-1:0] payload_i,
   input  logic                   valid_i,
-  input  logic                   ready_i
+  input  logic                   ready_i,
+  input  logic                   ready_next_i
 );
   localparam int unsigned PtrBits = $clog2(Stages + 1);
   localparam int unsigned Depth   = 2 ** PtrBits;
 
-  logic                   ready_o, valid_o, en_o;
+  logic                   ready_o, valid_o, en_o, en_next_o;
   logic [PayloadBits-1:0] payload_o;
   logic [Stages-1:0]      valid_q_o, ce_o;
-  stall_pipe #(.Stages(Stages), .PayloadBits(PayloadBits), .PayloadRam(PayloadRam)) u_dut (.*);
+  stall_pipe #(.Stages(Stages), .PayloadBits(PayloadBits), .PayloadRam(PayloadRam),
+               .LookAhead(LookAhead)) u_dut (.*);
 
   // The per-stage enables: a stage loads exactly when the pipe advances and the beat entering it
   // (on the input, or in the stage before) is valid; the last stage's valid is valid_o.
@@ -36,6 +40,10 @@ module stall_pipe_formal #(
   always_comb if (rst_ni) assert (valid_q_o[Stages-1] == valid_o);
 
   `FORMAL_PAST
+  // LookAhead: ready_i is what ready_next_i said a clock before.
+  logic ready_next_q;
+  always_ff @(posedge clk_i) ready_next_q <= ready_next_i;
+  always_comb if (LookAhead && past_q) assume (ready_i == ready_next_q);
   `FORMAL_COUNT(n_in_q, PayloadBits, valid_i, ready_o)
   `FORMAL_COUNT(n_out_q, PayloadBits, valid_o, ready_i)
   `FORMAL_ASSUME_HOLD(in, valid_i, ready_o, payload_i)

@@ -19,7 +19,7 @@ module stream_fifo_formal #(
   localparam int unsigned PtrBits = (Depth > 1) ? $clog2(Depth) : 1;
   localparam int unsigned CntBits = $clog2(Depth + 1);
 
-  logic                ready_o, valid_o;
+  logic                ready_o, valid_o, ready_next_o;
   logic [DataBits-1:0] data_o;
   stream_fifo #(.DataBits(DataBits), .Depth(Depth)) u_dut (.*);
 
@@ -28,6 +28,10 @@ module stream_fifo_formal #(
   `FORMAL_COUNT(n_out_q, DataBits, valid_o, ready_i)
   `FORMAL_ASSUME_HOLD(in, valid_i, ready_o, data_i)
   `FORMAL_ASSERT_HOLD(out, valid_o, ready_i, data_o)
+  // ready_next_o is the next clock's ready_o (unless a reset comes between).
+  logic ready_next_q;
+  always_ff @(posedge clk_i) ready_next_q <= rst_ni ? ready_next_o : 1'b1;
+  always_comb if (past_q && rst_ni) assert (ready_o == ready_next_q);
 
   (* hierconn *) logic [CntBits-1:0]  \u_dut.cnt_q ;
   (* hierconn *) logic                \u_dut.room_q ;
