@@ -1,8 +1,8 @@
 // watkins_top: the Watkins scan-line shading pipeline (model/twins/watkins_top.cpp) from the y-sorted
 // edge-record stream to every pixel of the frame in raster order: active_edge_list
-// (+ edge_incrementer) -> segment_former -> segment_interpolator (span setup, span_reciprocal,
-// stepper) -> [Phong = 1: normalizer -> material table -> phong_shader] -> fragment queue
-// -> scanline_buffer.
+// (+ edge_incrementer) -> segment_former -> segment skid (registered ready) ->
+// segment_interpolator (span setup, span_reciprocal, stepper) -> [Phong = 1: normalizer ->
+// material table -> phong_shader] -> fragment queue -> scanline_buffer.
 // Every stage boundary is valid/ready. Phong = 0 (Gouraud): channels 2..4 are R, G, B shades
 // and the fragment's shade goes straight to the depth test. Phong = 1: they are the vertex
 // normal; each fragment's interpolated normal is normalized and shaded by Phong's eq. (3) with
@@ -197,6 +197,30 @@ module watkins_top #(
     .seg_ready_i (sg_ready)
   );
 
+  // ------------------------------------------------------------ segment skid
+  // A registered ready between the segment former and the interpolator (stream_skid, latency 0):
+  // the interpolator's stall (its FIFO's room -> setup stall -> s0) ends at the skid's flops
+  // instead of running on through the segment former's enable into the active-edge list's
+  // stream advance and body-RAM read address (the sized Gouraud top's critical path in session
+  // 12). A segment refused by s0 waits in the skid; the former sees it refused a clock later.
+  localparam int unsigned SkidBits = 2 * VB + PolyIdBits + MIB + 1;
+  logic [VB-1:0]         sk_e, sk_f;
+  logic [PolyIdBits-1:0] sk_poly;
+  logic [MIB-1:0]        sk_material;
+  logic                  sk_eol, sk_valid, sk_ready;
+
+  stream_skid #(
+    .DataBits(SkidBits)
+  ) u_segment_skid (
+    .clk_i, .rst_ni,
+    .data_i ({sg_e, sg_f, sg_poly, sg_material, sg_eol}),
+    .valid_i(sg_valid),
+    .ready_o(sg_ready),
+    .data_o ({sk_e, sk_f, sk_poly, sk_material, sk_eol}),
+    .valid_o(sk_valid),
+    .ready_i(sk_ready)
+  );
+
   // ------------------------------------------------------------ fragments
   logic [LB-1:0]                     fr_x     /*verilator public_flat_rd*/;
   logic [DepB-1:0]                   fr_depth /*verilator public_flat_rd*/;
@@ -221,13 +245,13 @@ module watkins_top #(
   ) u_segment_interpolator (
     .clk_i, .rst_ni,
     .width_i     (width_q),
-    .seg_e_i     (sg_e),
-    .seg_f_i     (sg_f),
-    .seg_poly_i  (sg_poly),
-    .seg_material_i(sg_material),
-    .seg_eol_i   (sg_eol),
-    .seg_valid_i (sg_valid),
-    .seg_ready_o (sg_ready),
+    .seg_e_i     (sk_e),
+    .seg_f_i     (sk_f),
+    .seg_poly_i  (sk_poly),
+    .seg_material_i(sk_material),
+    .seg_eol_i   (sk_eol),
+    .seg_valid_i (sk_valid),
+    .seg_ready_o (sk_ready),
     .frag_x_o    (fr_x),
     .frag_depth_o(fr_depth),
     .frag_rgb_o  (fr_rgb),

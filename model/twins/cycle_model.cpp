@@ -125,6 +125,8 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
   bool sf_in_valid = false, sf_in_emits = false;  // in_valid_q; the edge closes or is a marker
   bool sf_pr_valid = false, sf_pr_emits = false;  // pr_valid_q; the same for the pairing register
   bool seg_valid = false;                         // seg_valid_o
+  // ---- watkins_top's segment skid (stream_skid): its slot holds a segment s0 refused
+  bool skid_full = false;
   // ---- segment_interpolator: s0, span_reciprocal, sa .. sd, FIFO, stepper. Items pass every
   // stage in order, so a stage's item is its position in st.items, counted where it leaves.
   bool s0_valid_q = false;
@@ -158,7 +160,7 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
     return std::make_tuple(frame_q, drain_q, line_q, rd_q, cnt_stream, cnt_fill, out_done_q, inc_done_q,
                            eol_sent_q, next_record, eof_taken, st_valid, st_retire,
                            ord1_q, ord2_q, swap_q, sf_in_valid, sf_in_emits, sf_pr_valid, sf_pr_emits, seg_valid,
-                           s0_valid_q, recip_valid, recip_out, tail_valid, tail_item, fifo[0], fifo[1], fifo[2], fifo[3], fifo_head, fifo_count, step_active,
+                           skid_full, s0_valid_q, recip_valid, recip_out, tail_valid, tail_item, fifo[0], fifo[1], fifo[2], fifo[3], fifo_head, fifo_count, step_active,
                            frag_valid, frag_eol, norm.valid, norm.eol, shade.valid, shade.eol, q_count,
                            q_eol, sb_read_q, rd_busy_q, rline_q, lines_written);
   };
@@ -200,11 +202,13 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
     const bool fifo_ready = fifo_count != InterpFifoDepth;
     const bool push = sc_valid && sc_keep && fifo_ready;
     const bool tail_en = !sc_valid || !sc_keep || fifo_ready;
-    // reciprocal, s0, segment former
+    // reciprocal, s0, segment skid, segment former
     const bool rc_valid = (recip_valid >> (RecipStages - 1)) & 1;
     const bool en_recip = tail_en || !rc_valid;
-    const bool seg_ready = !s0_valid_q || en_recip;
-    const bool sf_ready = seg_ready || !seg_valid;  // edge_ready_o: the enable of all three registers
+    const bool seg_ready = !s0_valid_q || en_recip;  // the interpolator's seg_ready_o
+    const bool sk_valid = skid_full || seg_valid;    // the skid passes the former's segment when empty
+    // edge_ready_o, the enable of all three registers: the skid's ready is its empty slot (a flop)
+    const bool sf_ready = !skid_full || !seg_valid;
     // active-edge list output
     const bool streaming = frame_q && !drain_q && line_q != 0;
     const bool have_edge = streaming && rd_q < cnt_stream;
@@ -303,7 +307,8 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
       if (rc_valid) tail_item[0] = recip_out++;
     }
     if (en_recip) recip_valid = ((recip_valid << 1) | std::uint64_t(s0_valid_q)) & recip_mask;
-    if (seg_ready) s0_valid_q = seg_valid;
+    if (seg_ready) s0_valid_q = sk_valid;
+    skid_full = sk_valid && !seg_ready;
     // segment former
     if (sf_ready) {
       seg_valid = sf_pr_valid && sf_pr_emits;

@@ -7,11 +7,11 @@
 // for the segment former, spans queue in the interpolator's FIFO, an end-of-line marker waits at
 // the ping-pong line buffer for the reader), so this is a clocked model of the pipeline's
 // control only — every valid/ready register and counter of active_edge_list, edge_incrementer,
-// segment_former, segment_interpolator (s0, span_reciprocal, sa .. sd, stream_fifo, stepper),
-// [Phong: normalizer, phong_shader], the fragment queue and scanline_buffer — driven by the
-// twins' own streams (walk_scan_lines: each line's active edges with their retire flags, the
-// segment former's pairing, each span's pixel range). No channel arithmetic runs per cycle, so
-// it is exact and far faster than Verilator.
+// segment_former, the segment skid (stream_skid), segment_interpolator (s0, span_reciprocal,
+// sa .. sd, stream_fifo, stepper), [Phong: normalizer, phong_shader], the fragment queue and
+// scanline_buffer — driven by the twins' own streams (walk_scan_lines: each line's active edges
+// with their retire flags, the segment former's pairing, each span's pixel range). No channel
+// arithmetic runs per cycle, so it is exact and far faster than Verilator.
 #pragma once
 
 #include "config.hpp"
