@@ -166,19 +166,25 @@ module scanline_buffer #(
   // that is lower; the swap hands the write bank's words to the reader; the reader's take clears
   // its word's lowest bit, and that word's next lowest is found in its own bits with that bit
   // cleared (each word in parallel, from its registers: a decode and a 32-bit encoder, no carry
-  // chain, no mux; the one-hot first word enables the update). a_rd_words / a_wr_words check
-  // them against the bits.
+  // chain, no mux; the one-hot first word enables the update). Whether the first word holds
+  // another bit after the take -- which decides the next first word -- is a register too
+  // (rd_more_q: two or more), kept from a count of each word's written bits (*_wcnt_q: a take
+  // leaves two or more when there were three); found from the bits it was the block's longest
+  // path (`rd_low_q` -> decode -> 32-bit OR -> `first_q`, 10.6 ns on the ECP5). a_rd_words /
+  // a_wr_words check them all against the bits.
   // Only sparse mode reads them on the read side: the read search sits inside `if (sparse_i)`
   // (full mode keeps it idle and Verilator skips it); full mode empties the read words at each
   // line's end, when the reader has cleared every bit.
   logic [Words-1:0]    rd_occ_q, wr_occ_q;
   logic [Words*WIB-1:0] rd_low_q, wr_low_q;  // word w's at [w * WIB +: WIB]
   logic [Words-1:0]    first_q;   // one-hot: the read bank's first occupied word (a_first)
+  localparam int unsigned WCB = $clog2(WordBits + 1);
+  logic [Words*WCB-1:0] rd_wcnt_q, wr_wcnt_q;  // word w's written bits, counted, at [w * WCB +: WCB]
+  logic [Words-1:0]    rd_more_q; // the read bank's word w holds two or more
   logic [WAB-1:0]      fw;        // that word
   logic [WIB-1:0]      lb;        // its lowest written bit
   logic [LB-1:0]       nx;
   logic [Words*WIB-1:0]      next_low;  // each word's lowest bit once its lowest is taken
-  logic [Words-1:0]          next_occ;  // it holds another
   logic [Words*WordBits-1:0] low_hot;   // each word's lowest bit, one-hot (word w's at w * WordBits)
 
   always_comb begin
@@ -204,7 +210,6 @@ module scanline_buffer #(
       rest = '0;
       low  = '0;
       low_hot[w * WordBits +: WordBits] = '0;
-      next_occ[w]                       = 1'b0;
       next_low[w * WIB +: WIB]          = '0;
       if (sparse_i) begin
         low = rd_low_q[w * WIB +: WIB];
@@ -214,7 +219,6 @@ module scanline_buffer #(
         for (int i = 0; i < WordBits; i++) hot[i] = low == WIB'(i);
         rest = bank_word(!wsel_q, w) & ~hot;
         low_hot[w * WordBits +: WordBits] = hot;
-        next_occ[w]                       = |rest;
         next_low[w * WIB +: WIB]          = lowest_bit(rest);
       end
     end
@@ -429,37 +433,55 @@ module scanline_buffer #(
         t_low[w] = t_whot_q[w] && (!wr_occ_q[w] || tb < wr_low_q[w * WIB +: WIB]);
   end
   // first_q follows rd_occ_q's lowest word: the swap's, or when the reader's take empties the
-  // first word, the next occupied one (a borrow over the words from registers into one register;
-  // computed where it was used, it was the block's other 11.6 ns path).
+  // first word (it held one bit: !rd_more_q), the next occupied one (a borrow over the words from
+  // registers into one register; computed where it was used, it was the block's other 11.6 ns
+  // path). A fragment tested on an unwritten pixel (t_new) adds one to its word's count.
+  logic [Words-1:0] t_inc;  // the tested fragment's word gains a bit
+  assign t_inc = t_new ? t_whot_q : '0;
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
-      rd_occ_q <= '0;
-      wr_occ_q <= '0;
-      first_q  <= '0;
+      rd_occ_q  <= '0;
+      wr_occ_q  <= '0;
+      first_q   <= '0;
+      rd_more_q <= '0;
+      rd_wcnt_q <= '0;
+      wr_wcnt_q <= '0;
     end else if (eol_take) begin
       rd_occ_q <= wr_occ_q | (t_valid_q ? t_whot_q : '0);
       first_q  <= lowest_word(wr_occ_q | (t_valid_q ? t_whot_q : '0));
       wr_occ_q <= '0;
-      for (int w = 0; w < Words; w++)
-        rd_low_q[w * WIB +: WIB] <= t_low[w] ? tb : wr_low_q[w * WIB +: WIB];
+      for (int w = 0; w < Words; w++) begin
+        rd_low_q[w * WIB +: WIB]  <= t_low[w] ? tb : wr_low_q[w * WIB +: WIB];
+        rd_wcnt_q[w * WCB +: WCB] <= wr_wcnt_q[w * WCB +: WCB] + WCB'(t_inc[w]);
+        rd_more_q[w]              <= wr_wcnt_q[w * WCB +: WCB] > WCB'(1)
+                                  || (wr_occ_q[w] && t_inc[w]);
+      end
+      wr_wcnt_q <= '0;
     end else begin
       if (t_valid_q) begin
         wr_occ_q <= wr_occ_q | t_whot_q;
-        for (int w = 0; w < Words; w++) if (t_low[w]) wr_low_q[w * WIB +: WIB] <= tb;
+        for (int w = 0; w < Words; w++) begin
+          if (t_low[w]) wr_low_q[w * WIB +: WIB] <= tb;
+          if (t_inc[w]) wr_wcnt_q[w * WCB +: WCB] <= wr_wcnt_q[w * WCB +: WCB] + 1'b1;
+        end
       end
       if (take && sparse_i) begin
-        if (!(|(first_q & next_occ))) first_q <= lowest_word(rd_occ_q & ~first_q);
+        if (!(|(first_q & rd_more_q))) first_q <= lowest_word(rd_occ_q & ~first_q);
         for (int w = 0; w < Words; w++) begin
           if (first_q[w]) begin
-            rd_occ_q[w]              <= next_occ[w];
-            rd_low_q[w * WIB +: WIB] <= next_low[w * WIB +: WIB];
+            rd_occ_q[w]               <= rd_more_q[w];
+            rd_more_q[w]              <= rd_wcnt_q[w * WCB +: WCB] > WCB'(2);
+            rd_wcnt_q[w * WCB +: WCB] <= rd_wcnt_q[w * WCB +: WCB] - 1'b1;
+            rd_low_q[w * WIB +: WIB]  <= next_low[w * WIB +: WIB];
           end
         end
       end
       // Full mode reads the words only through the bits; at the line's end they are all clear.
       if (rd_step && rd_last && !sparse_i) begin
-        rd_occ_q <= '0;
-        first_q  <= '0;
+        rd_occ_q  <= '0;
+        first_q   <= '0;
+        rd_more_q <= '0;
+        rd_wcnt_q <= '0;
       end
     end
   end
@@ -545,8 +567,10 @@ module scanline_buffer #(
   logic rd_words_ok /* verilator public_flat_rd */;
   logic wr_words_ok /* verilator public_flat_rd */;
   // A word's registers against its bits.
-  function automatic logic word_ok(logic occ, logic [WIB-1:0] low, logic [WordBits-1:0] bits);
-    word_ok = occ == |bits && (!(|bits) || low == lowest_bit(bits));
+  function automatic logic word_ok(logic occ, logic [WIB-1:0] low, logic [WCB-1:0] cnt,
+                                   logic [WordBits-1:0] bits);
+    word_ok = occ == |bits && (!(|bits) || low == lowest_bit(bits))
+           && 32'(cnt) == 32'($countones(bits));
   endfunction
   always_comb begin
     int n;
@@ -557,7 +581,8 @@ module scanline_buffer #(
     n           = 0;
     if (sparse_i) begin
       for (int w = 0; w < Words; w++) begin
-        if (!word_ok(rd_occ_q[w], rd_low_q[w * WIB +: WIB], bank_word(!wsel_q, w))) rd_words_ok = 1'b0;
+        if (!word_ok(rd_occ_q[w], rd_low_q[w * WIB +: WIB], rd_wcnt_q[w * WCB +: WCB], bank_word(!wsel_q, w))
+            || rd_more_q[w] != ($countones(bank_word(!wsel_q, w)) > 1)) rd_words_ok = 1'b0;
         n += $countones(bank_word(!wsel_q, w));
       end
       found = n != 0;
@@ -565,7 +590,8 @@ module scanline_buffer #(
     end
     if (eol_take) begin
       for (int w = 0; w < Words; w++)
-        if (!word_ok(wr_occ_q[w], wr_low_q[w * WIB +: WIB], bank_word(wsel_q, w))) wr_words_ok = 1'b0;
+        if (!word_ok(wr_occ_q[w], wr_low_q[w * WIB +: WIB], wr_wcnt_q[w * WCB +: WCB], bank_word(wsel_q, w)))
+          wr_words_ok = 1'b0;
     end
   end
   localparam int unsigned PB = $clog2(Words * WordBits);  // an x in the padded words
