@@ -233,26 +233,26 @@ module scanline_buffer #(
   // acceptance) depends on rd_last, and a search on that path put the written bits' whole
   // priority logic in front of every stall enable upstream (the tops' critical path in session
   // 9). The written bits of each bank are counted as they are set and cleared (rd_cnt_q,
-  // wr_cnt_q: found = one left, more = two; a_cnt_found, a_cnt_more), and the ends of a line
-  // and of the frame are flags set a step ahead (rx_end_q: rx_q is width - 1, a_rx_end;
-  // last_line_q: rline_q is height - 1, a_last_line).
+  // wr_cnt_q); whether the read bank holds one (cnt_found_q) and two (cnt_more_q) are registers
+  // kept beside its count (a_cnt_found, a_cnt_more: compared from the count, they were the
+  // block's longest path, rd_cnt_q -> rd_last -> rd_step -> last_line_q, 10.7 ns on the ECP5);
+  // the ends of a line and of the frame are flags set a step ahead (rx_end_q: rx_q is
+  // width - 1, a_rx_end; last_line_q: rline_q is height - 1, a_last_line).
   localparam int unsigned CB = $clog2(MaxWidth + 1);
   logic [CB-1:0] rd_cnt_q, wr_cnt_q;
   logic          rx_end_q, last_line_q;
-  logic          cnt_found, cnt_more;
-  assign cnt_found = rd_cnt_q != '0;
-  assign cnt_more  = rd_cnt_q > CB'(1);
+  logic          cnt_found_q, cnt_more_q;  // rd_cnt_q > 0, rd_cnt_q > 1
 
   assign rd_lastline = last_line_q;
   // Full mode: every x. Sparse: the next covered x; an empty line emits nothing unless it is the
   // frame's last (then the terminating beat at width-1).
-  assign rd_x      = sparse_i ? (cnt_found ? nx : width_i - 1'b1) : rx_q;
-  assign rd_emit   = !sparse_i || cnt_found || rd_lastline;
+  assign rd_x      = sparse_i ? (cnt_found_q ? nx : width_i - 1'b1) : rx_q;
+  assign rd_emit   = !sparse_i || cnt_found_q || rd_lastline;
   assign wa        = addr(wsel_q, frag_x_i);
   assign ra        = addr(!wsel_q, rd_x);
   assign rd_step   = rd_busy_q && (!rd_emit || !pixel_valid_o || pixel_ready_i);
   assign rd_load   = rd_step && rd_emit;
-  assign rd_last   = sparse_i ? !cnt_more : rx_end_q;
+  assign rd_last   = sparse_i ? !cnt_more_q : rx_end_q;
   // The marker may swap in the cycle the reader takes its last pixel (it reads the old bank),
   // once its line's last fragment has left the read step (it is tested on the swap clock at the
   // latest, so it lands before the reader's first read of the bank).
@@ -383,15 +383,26 @@ module scanline_buffer #(
   assign t_new = t_valid_q && !t_written_q;
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
-      rd_cnt_q <= '0;
-      wr_cnt_q <= '0;
+      rd_cnt_q  <= '0;
+      wr_cnt_q  <= '0;
+      cnt_found_q <= 1'b0;
+      cnt_more_q  <= 1'b0;
     end else if (eol_take) begin
-      rd_cnt_q <= wr_cnt_q + CB'(t_new);
-      wr_cnt_q <= '0;
+      rd_cnt_q  <= wr_cnt_q + CB'(t_new);
+      cnt_found_q <= wr_cnt_q != '0 || t_new;
+      cnt_more_q  <= wr_cnt_q > CB'(1) || (wr_cnt_q == CB'(1) && t_new);
+      wr_cnt_q  <= '0;
     end else begin
       wr_cnt_q <= wr_cnt_q + CB'(t_new);
-      if (!sparse_i && rd_step && rd_last) rd_cnt_q <= '0;
-      else rd_cnt_q <= rd_cnt_q - CB'(take && sparse_i && cnt_found);
+      if (!sparse_i && rd_step && rd_last) begin
+        rd_cnt_q  <= '0;
+        cnt_found_q <= 1'b0;
+        cnt_more_q  <= 1'b0;
+      end else if (take && sparse_i && cnt_found_q) begin
+        rd_cnt_q  <= rd_cnt_q - 1'b1;
+        cnt_found_q <= cnt_more_q;
+        cnt_more_q  <= rd_cnt_q > CB'(2);
+      end
     end
   end
 
@@ -534,7 +545,7 @@ module scanline_buffer #(
       rgb_rd_q        <= rgb_mem[ra];
       background_q    <= background_i;
       // Sparse: the pixel found is written (none found: the terminating beat is not).
-      pixel_covered_o <= sparse_i ? cnt_found : |(rx_word_q & rx_hot_q);
+      pixel_covered_o <= sparse_i ? cnt_found_q : |(rx_word_q & rx_hot_q);
       pixel_x_o       <= rd_x;
       pixel_y_o       <= rline_q;
       pixel_last_o    <= rd_last && rd_lastline;
@@ -634,16 +645,16 @@ module scanline_buffer #(
     ra_written = ra_word[int'(PB'(rd_x)) % WordBits];
   end
   assign t_written_p = t_written_q;
-  assign covered_p   = sparse_i ? cnt_found : |(rx_word_q & rx_hot_q);
+  assign covered_p   = sparse_i ? cnt_found_q : |(rx_word_q & rx_hot_q);
   assign t_addr_ok   = t_addr_q == addr(wsel_q, t_x_q) && t_bank_q == wsel_q;
 `endif
   `WATKINS_ASSERT(a_sparse_covered, rd_load && sparse_i && !(rd_last && rd_lastline) |-> found)
   // The registered decisions equal what they stand for.
-  `WATKINS_ASSERT(a_cnt_found, sparse_i |-> cnt_found == found)
+  `WATKINS_ASSERT(a_cnt_found, sparse_i |-> cnt_found_q == found)
   `WATKINS_ASSERT(a_first, first_q == (rd_occ_q & ~(rd_occ_q - 1'b1)))
   `WATKINS_ASSERT(a_rx_hot, rd_busy_q && !sparse_i |->
     rx_hot_q == (WordBits'(1) << bit_of(rx_q)) && rx_whot_q == (Words'(1) << word_of(rx_q)))
-  `WATKINS_ASSERT(a_cnt_more, sparse_i |-> cnt_more == more)
+  `WATKINS_ASSERT(a_cnt_more, sparse_i |-> cnt_more_q == more)
   `WATKINS_ASSERT(a_rd_words, sparse_i |-> rd_words_ok)
   `WATKINS_ASSERT(a_wr_words, eol_take |-> wr_words_ok)
   // Why the sparse search needs no rx_q compare, and why covered needs no read at ra.
