@@ -179,7 +179,7 @@ module scanline_buffer #(
   logic [Words*WIB-1:0] rd_low_q, wr_low_q;  // word w's at [w * WIB +: WIB]
   logic [Words-1:0]    first_q;   // one-hot: the read bank's first occupied word (a_first)
   localparam int unsigned WCB = $clog2(WordBits + 1);
-  logic [Words*WCB-1:0] rd_wcnt_q, wr_wcnt_q;  // word w's written bits, counted, at [w * WCB +: WCB]
+  logic [Words*WCB-1:0] rd_wcnt_q, wr_wcnt_q;  // word w's written bits, counted (at w * WCB)
   logic [Words-1:0]    rd_more_q; // the read bank's word w holds two or more
   logic [WAB-1:0]      fw;        // that word
   logic [WIB-1:0]      lb;        // its lowest written bit
@@ -592,7 +592,8 @@ module scanline_buffer #(
     n           = 0;
     if (sparse_i) begin
       for (int w = 0; w < Words; w++) begin
-        if (!word_ok(rd_occ_q[w], rd_low_q[w * WIB +: WIB], rd_wcnt_q[w * WCB +: WCB], bank_word(!wsel_q, w))
+        if (!word_ok(rd_occ_q[w], rd_low_q[w * WIB +: WIB], rd_wcnt_q[w * WCB +: WCB],
+                     bank_word(!wsel_q, w))
             || rd_more_q[w] != ($countones(bank_word(!wsel_q, w)) > 1)) rd_words_ok = 1'b0;
         n += $countones(bank_word(!wsel_q, w));
       end
@@ -601,8 +602,8 @@ module scanline_buffer #(
     end
     if (eol_take) begin
       for (int w = 0; w < Words; w++)
-        if (!word_ok(wr_occ_q[w], wr_low_q[w * WIB +: WIB], wr_wcnt_q[w * WCB +: WCB], bank_word(wsel_q, w)))
-          wr_words_ok = 1'b0;
+        if (!word_ok(wr_occ_q[w], wr_low_q[w * WIB +: WIB], wr_wcnt_q[w * WCB +: WCB],
+                     bank_word(wsel_q, w))) wr_words_ok = 1'b0;
     end
   end
   localparam int unsigned PB = $clog2(Words * WordBits);  // an x in the padded words
