@@ -166,19 +166,25 @@ module scanline_buffer #(
   // that is lower; the swap hands the write bank's words to the reader; the reader's take clears
   // its word's lowest bit, and that word's next lowest is found in its own bits with that bit
   // cleared (each word in parallel, from its registers: a decode and a 32-bit encoder, no carry
-  // chain, no mux; the one-hot first word enables the update). a_rd_words / a_wr_words check
-  // them against the bits.
+  // chain, no mux; the one-hot first word enables the update). Whether the first word holds
+  // another bit after the take -- which decides the next first word -- is a register too
+  // (rd_more_q: two or more), kept from a count of each word's written bits (*_wcnt_q: a take
+  // leaves two or more when there were three); found from the bits it was the block's longest
+  // path (`rd_low_q` -> decode -> 32-bit OR -> `first_q`, 10.6 ns on the ECP5). a_rd_words /
+  // a_wr_words check them all against the bits.
   // Only sparse mode reads them on the read side: the read search sits inside `if (sparse_i)`
   // (full mode keeps it idle and Verilator skips it); full mode empties the read words at each
   // line's end, when the reader has cleared every bit.
   logic [Words-1:0]    rd_occ_q, wr_occ_q;
   logic [Words*WIB-1:0] rd_low_q, wr_low_q;  // word w's at [w * WIB +: WIB]
   logic [Words-1:0]    first_q;   // one-hot: the read bank's first occupied word (a_first)
+  localparam int unsigned WCB = $clog2(WordBits + 1);
+  logic [Words*WCB-1:0] rd_wcnt_q, wr_wcnt_q;  // word w's written bits, counted (at w * WCB)
+  logic [Words-1:0]    rd_more_q; // the read bank's word w holds two or more
   logic [WAB-1:0]      fw;        // that word
   logic [WIB-1:0]      lb;        // its lowest written bit
   logic [LB-1:0]       nx;
   logic [Words*WIB-1:0]      next_low;  // each word's lowest bit once its lowest is taken
-  logic [Words-1:0]          next_occ;  // it holds another
   logic [Words*WordBits-1:0] low_hot;   // each word's lowest bit, one-hot (word w's at w * WordBits)
 
   always_comb begin
@@ -204,7 +210,6 @@ module scanline_buffer #(
       rest = '0;
       low  = '0;
       low_hot[w * WordBits +: WordBits] = '0;
-      next_occ[w]                       = 1'b0;
       next_low[w * WIB +: WIB]          = '0;
       if (sparse_i) begin
         low = rd_low_q[w * WIB +: WIB];
@@ -214,7 +219,6 @@ module scanline_buffer #(
         for (int i = 0; i < WordBits; i++) hot[i] = low == WIB'(i);
         rest = bank_word(!wsel_q, w) & ~hot;
         low_hot[w * WordBits +: WordBits] = hot;
-        next_occ[w]                       = |rest;
         next_low[w * WIB +: WIB]          = lowest_bit(rest);
       end
     end
@@ -229,26 +233,26 @@ module scanline_buffer #(
   // acceptance) depends on rd_last, and a search on that path put the written bits' whole
   // priority logic in front of every stall enable upstream (the tops' critical path in session
   // 9). The written bits of each bank are counted as they are set and cleared (rd_cnt_q,
-  // wr_cnt_q: found = one left, more = two; a_cnt_found, a_cnt_more), and the ends of a line
-  // and of the frame are flags set a step ahead (rx_end_q: rx_q is width - 1, a_rx_end;
-  // last_line_q: rline_q is height - 1, a_last_line).
+  // wr_cnt_q); whether the read bank holds one (cnt_found_q) and two (cnt_more_q) are registers
+  // kept beside its count (a_cnt_found, a_cnt_more: compared from the count, they were the
+  // block's longest path, rd_cnt_q -> rd_last -> rd_step -> last_line_q, 10.7 ns on the ECP5);
+  // the ends of a line and of the frame are flags set a step ahead (rx_end_q: rx_q is
+  // width - 1, a_rx_end; last_line_q: rline_q is height - 1, a_last_line).
   localparam int unsigned CB = $clog2(MaxWidth + 1);
   logic [CB-1:0] rd_cnt_q, wr_cnt_q;
   logic          rx_end_q, last_line_q;
-  logic          cnt_found, cnt_more;
-  assign cnt_found = rd_cnt_q != '0;
-  assign cnt_more  = rd_cnt_q > CB'(1);
+  logic          cnt_found_q, cnt_more_q;  // rd_cnt_q > 0, rd_cnt_q > 1
 
   assign rd_lastline = last_line_q;
   // Full mode: every x. Sparse: the next covered x; an empty line emits nothing unless it is the
   // frame's last (then the terminating beat at width-1).
-  assign rd_x      = sparse_i ? (cnt_found ? nx : width_i - 1'b1) : rx_q;
-  assign rd_emit   = !sparse_i || cnt_found || rd_lastline;
+  assign rd_x      = sparse_i ? (cnt_found_q ? nx : width_i - 1'b1) : rx_q;
+  assign rd_emit   = !sparse_i || cnt_found_q || rd_lastline;
   assign wa        = addr(wsel_q, frag_x_i);
   assign ra        = addr(!wsel_q, rd_x);
   assign rd_step   = rd_busy_q && (!rd_emit || !pixel_valid_o || pixel_ready_i);
   assign rd_load   = rd_step && rd_emit;
-  assign rd_last   = sparse_i ? !cnt_more : rx_end_q;
+  assign rd_last   = sparse_i ? !cnt_more_q : rx_end_q;
   // The marker may swap in the cycle the reader takes its last pixel (it reads the old bank),
   // once its line's last fragment has left the read step (it is tested on the swap clock at the
   // latest, so it lands before the reader's first read of the bank).
@@ -379,15 +383,26 @@ module scanline_buffer #(
   assign t_new = t_valid_q && !t_written_q;
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
-      rd_cnt_q <= '0;
-      wr_cnt_q <= '0;
+      rd_cnt_q  <= '0;
+      wr_cnt_q  <= '0;
+      cnt_found_q <= 1'b0;
+      cnt_more_q  <= 1'b0;
     end else if (eol_take) begin
-      rd_cnt_q <= wr_cnt_q + CB'(t_new);
-      wr_cnt_q <= '0;
+      rd_cnt_q  <= wr_cnt_q + CB'(t_new);
+      cnt_found_q <= wr_cnt_q != '0 || t_new;
+      cnt_more_q  <= wr_cnt_q > CB'(1) || (wr_cnt_q == CB'(1) && t_new);
+      wr_cnt_q  <= '0;
     end else begin
       wr_cnt_q <= wr_cnt_q + CB'(t_new);
-      if (!sparse_i && rd_step && rd_last) rd_cnt_q <= '0;
-      else rd_cnt_q <= rd_cnt_q - CB'(take && sparse_i && cnt_found);
+      if (!sparse_i && rd_step && rd_last) begin
+        rd_cnt_q  <= '0;
+        cnt_found_q <= 1'b0;
+        cnt_more_q  <= 1'b0;
+      end else if (take && sparse_i && cnt_found_q) begin
+        rd_cnt_q  <= rd_cnt_q - 1'b1;
+        cnt_found_q <= cnt_more_q;
+        cnt_more_q  <= rd_cnt_q > CB'(2);
+      end
     end
   end
 
@@ -429,37 +444,55 @@ module scanline_buffer #(
         t_low[w] = t_whot_q[w] && (!wr_occ_q[w] || tb < wr_low_q[w * WIB +: WIB]);
   end
   // first_q follows rd_occ_q's lowest word: the swap's, or when the reader's take empties the
-  // first word, the next occupied one (a borrow over the words from registers into one register;
-  // computed where it was used, it was the block's other 11.6 ns path).
+  // first word (it held one bit: !rd_more_q), the next occupied one (a borrow over the words from
+  // registers into one register; computed where it was used, it was the block's other 11.6 ns
+  // path). A fragment tested on an unwritten pixel (t_new) adds one to its word's count.
+  logic [Words-1:0] t_inc;  // the tested fragment's word gains a bit
+  assign t_inc = t_new ? t_whot_q : '0;
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
-      rd_occ_q <= '0;
-      wr_occ_q <= '0;
-      first_q  <= '0;
+      rd_occ_q  <= '0;
+      wr_occ_q  <= '0;
+      first_q   <= '0;
+      rd_more_q <= '0;
+      rd_wcnt_q <= '0;
+      wr_wcnt_q <= '0;
     end else if (eol_take) begin
       rd_occ_q <= wr_occ_q | (t_valid_q ? t_whot_q : '0);
       first_q  <= lowest_word(wr_occ_q | (t_valid_q ? t_whot_q : '0));
       wr_occ_q <= '0;
-      for (int w = 0; w < Words; w++)
-        rd_low_q[w * WIB +: WIB] <= t_low[w] ? tb : wr_low_q[w * WIB +: WIB];
+      for (int w = 0; w < Words; w++) begin
+        rd_low_q[w * WIB +: WIB]  <= t_low[w] ? tb : wr_low_q[w * WIB +: WIB];
+        rd_wcnt_q[w * WCB +: WCB] <= wr_wcnt_q[w * WCB +: WCB] + WCB'(t_inc[w]);
+        rd_more_q[w]              <= wr_wcnt_q[w * WCB +: WCB] > WCB'(1)
+                                  || (wr_occ_q[w] && t_inc[w]);
+      end
+      wr_wcnt_q <= '0;
     end else begin
       if (t_valid_q) begin
         wr_occ_q <= wr_occ_q | t_whot_q;
-        for (int w = 0; w < Words; w++) if (t_low[w]) wr_low_q[w * WIB +: WIB] <= tb;
+        for (int w = 0; w < Words; w++) begin
+          if (t_low[w]) wr_low_q[w * WIB +: WIB] <= tb;
+          if (t_inc[w]) wr_wcnt_q[w * WCB +: WCB] <= wr_wcnt_q[w * WCB +: WCB] + 1'b1;
+        end
       end
       if (take && sparse_i) begin
-        if (!(|(first_q & next_occ))) first_q <= lowest_word(rd_occ_q & ~first_q);
+        if (!(|(first_q & rd_more_q))) first_q <= lowest_word(rd_occ_q & ~first_q);
         for (int w = 0; w < Words; w++) begin
           if (first_q[w]) begin
-            rd_occ_q[w]              <= next_occ[w];
-            rd_low_q[w * WIB +: WIB] <= next_low[w * WIB +: WIB];
+            rd_occ_q[w]               <= rd_more_q[w];
+            rd_more_q[w]              <= rd_wcnt_q[w * WCB +: WCB] > WCB'(2);
+            rd_wcnt_q[w * WCB +: WCB] <= rd_wcnt_q[w * WCB +: WCB] - 1'b1;
+            rd_low_q[w * WIB +: WIB]  <= next_low[w * WIB +: WIB];
           end
         end
       end
       // Full mode reads the words only through the bits; at the line's end they are all clear.
       if (rd_step && rd_last && !sparse_i) begin
-        rd_occ_q <= '0;
-        first_q  <= '0;
+        rd_occ_q  <= '0;
+        first_q   <= '0;
+        rd_more_q <= '0;
+        rd_wcnt_q <= '0;
       end
     end
   end
@@ -512,7 +545,7 @@ module scanline_buffer #(
       rgb_rd_q        <= rgb_mem[ra];
       background_q    <= background_i;
       // Sparse: the pixel found is written (none found: the terminating beat is not).
-      pixel_covered_o <= sparse_i ? cnt_found : |(rx_word_q & rx_hot_q);
+      pixel_covered_o <= sparse_i ? cnt_found_q : |(rx_word_q & rx_hot_q);
       pixel_x_o       <= rd_x;
       pixel_y_o       <= rline_q;
       pixel_last_o    <= rd_last && rd_lastline;
@@ -545,8 +578,10 @@ module scanline_buffer #(
   logic rd_words_ok /* verilator public_flat_rd */;
   logic wr_words_ok /* verilator public_flat_rd */;
   // A word's registers against its bits.
-  function automatic logic word_ok(logic occ, logic [WIB-1:0] low, logic [WordBits-1:0] bits);
-    word_ok = occ == |bits && (!(|bits) || low == lowest_bit(bits));
+  function automatic logic word_ok(logic occ, logic [WIB-1:0] low, logic [WCB-1:0] cnt,
+                                   logic [WordBits-1:0] bits);
+    word_ok = occ == |bits && (!(|bits) || low == lowest_bit(bits))
+           && 32'(cnt) == 32'($countones(bits));
   endfunction
   always_comb begin
     int n;
@@ -557,7 +592,9 @@ module scanline_buffer #(
     n           = 0;
     if (sparse_i) begin
       for (int w = 0; w < Words; w++) begin
-        if (!word_ok(rd_occ_q[w], rd_low_q[w * WIB +: WIB], bank_word(!wsel_q, w))) rd_words_ok = 1'b0;
+        if (!word_ok(rd_occ_q[w], rd_low_q[w * WIB +: WIB], rd_wcnt_q[w * WCB +: WCB],
+                     bank_word(!wsel_q, w))
+            || rd_more_q[w] != ($countones(bank_word(!wsel_q, w)) > 1)) rd_words_ok = 1'b0;
         n += $countones(bank_word(!wsel_q, w));
       end
       found = n != 0;
@@ -565,7 +602,8 @@ module scanline_buffer #(
     end
     if (eol_take) begin
       for (int w = 0; w < Words; w++)
-        if (!word_ok(wr_occ_q[w], wr_low_q[w * WIB +: WIB], bank_word(wsel_q, w))) wr_words_ok = 1'b0;
+        if (!word_ok(wr_occ_q[w], wr_low_q[w * WIB +: WIB], wr_wcnt_q[w * WCB +: WCB],
+                     bank_word(wsel_q, w))) wr_words_ok = 1'b0;
     end
   end
   localparam int unsigned PB = $clog2(Words * WordBits);  // an x in the padded words
@@ -608,16 +646,16 @@ module scanline_buffer #(
     ra_written = ra_word[int'(PB'(rd_x)) % WordBits];
   end
   assign t_written_p = t_written_q;
-  assign covered_p   = sparse_i ? cnt_found : |(rx_word_q & rx_hot_q);
+  assign covered_p   = sparse_i ? cnt_found_q : |(rx_word_q & rx_hot_q);
   assign t_addr_ok   = t_addr_q == addr(wsel_q, t_x_q) && t_bank_q == wsel_q;
 `endif
   `WATKINS_ASSERT(a_sparse_covered, rd_load && sparse_i && !(rd_last && rd_lastline) |-> found)
   // The registered decisions equal what they stand for.
-  `WATKINS_ASSERT(a_cnt_found, sparse_i |-> cnt_found == found)
+  `WATKINS_ASSERT(a_cnt_found, sparse_i |-> cnt_found_q == found)
   `WATKINS_ASSERT(a_first, first_q == (rd_occ_q & ~(rd_occ_q - 1'b1)))
   `WATKINS_ASSERT(a_rx_hot, rd_busy_q && !sparse_i |->
     rx_hot_q == (WordBits'(1) << bit_of(rx_q)) && rx_whot_q == (Words'(1) << word_of(rx_q)))
-  `WATKINS_ASSERT(a_cnt_more, sparse_i |-> cnt_more == more)
+  `WATKINS_ASSERT(a_cnt_more, sparse_i |-> cnt_more_q == more)
   `WATKINS_ASSERT(a_rd_words, sparse_i |-> rd_words_ok)
   `WATKINS_ASSERT(a_wr_words, eol_take |-> wr_words_ok)
   // Why the sparse search needs no rx_q compare, and why covered needs no read at ra.
