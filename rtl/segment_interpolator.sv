@@ -9,8 +9,8 @@
 // empty spans are dropped before the FIFO. The stepper emits one fragment per clock from a registered output,
 // taking a span's first pixel straight from the FIFO head, so consecutive spans (even of one
 // pixel) leave no bubble and a span's setup hides behind the previous spans' pixels.
-// Latency segment -> first fragment: 35 cycles. All stage outputs registered; ready is
-// combinational through the setup stages (one stall signal), registered at the FIFO. A setup
+// Latency segment -> first fragment: 35 cycles. All stage outputs registered; the setup stages'
+// one stall signal (tail_en) is a flop, loaded a clock ahead from the FIFO's next ready. A setup
 // stage's registers load only for a valid beat (the stall and the valid entering the stage), and
 // their values are computed inside that enable: a simulator evaluates the setup only on the
 // clocks a span passes (issue 11), the hardware is the same flops and logic.
@@ -474,10 +474,9 @@ module segment_interpolator #(
 
   span_t          f_in, f_out;
   logic           f_in_valid, f_in_ready, f_out_valid, f_out_ready;
-  /* verilator lint_off UNUSEDSIGNAL */
-  logic           f_in_ready_next;  // the tail's stall is combinational (tail_en): no lookahead
-  /* verilator lint_on UNUSEDSIGNAL */
+  logic           f_in_ready_next;  // f_in_ready on the next clock
   logic           sd_keep;
+  logic           tail_en_q, tail_en_next;
 
   always_comb begin
     f_in.eol      = sd_span_q.eol;
@@ -492,7 +491,19 @@ module segment_interpolator #(
   // Empty spans produce nothing and are dropped here; markers always go through.
   assign sd_keep    = sd_span_q.eol || !sd_span_q.empty;
   assign f_in_valid = sd_valid_q && sd_keep;
-  assign tail_en    = !sd_valid_q || !sd_keep || f_in_ready;
+  // tail_en = !sd_valid_q || !sd_keep || f_in_ready is a flop loaded a clock ahead (a_tail_en):
+  // sd's valid and keep on the next clock (sc's when the tail advances), the FIFO's next ready.
+  // From its compare it reached the reciprocal's and s0's clock enables across the block (the
+  // sized Gouraud top's critical path at 0129076: `sd_valid_q` -> `tail_en` -> 4.5 ns route ->
+  // `s0_ready` -> `s0_load` -> s0's enables, 12.0 ns, 10.6 of it routing).
+  // A stall means sd holds a kept beat, which stays: then only the FIFO's ready decides.
+  assign tail_en_next = f_in_ready_next
+                     || (tail_en && (!sc_valid_q || !(sc_span_q.eol || !sc_span_q.empty)));
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) tail_en_q <= 1'b1;  // sd empty
+    else tail_en_q <= tail_en_next;
+  end
+  assign tail_en    = tail_en_q;
 
   stream_fifo #(
     .DataBits($bits(f_in)),
@@ -656,4 +667,5 @@ module segment_interpolator #(
   `WATKINS_ASSERT(a_x_on_screen, frag_valid_o && !frag_eol_o |-> frag_x_o < width_i)
   `WATKINS_COVER(c_back_to_back_spans, emit_frag && from_head && frag_valid_o && !frag_eol_o)
   `WATKINS_COVER(c_empty_dropped, sd_valid_q && !sd_keep)
+  `WATKINS_ASSERT(a_tail_en, tail_en == (!sd_valid_q || !sd_keep || f_in_ready))
 endmodule
