@@ -64,12 +64,12 @@ module mul18_reg #(
   if (!ASigned && !BSigned) begin : g_u
     always_ff @(posedge clk_i) if (ce_i) p_q <= PBits'(a_i) * PBits'(b_i);
   end else begin : g_s
-    // Each operand one bit wider, its sign bit a copy of its top bit or 0, multiplied signed.
-    logic signed [ABits:0] ax;
-    logic signed [BBits:0] bx;
-    assign ax = signed'({ASigned & a_i[ABits-1], a_i});
-    assign bx = signed'({BSigned & b_i[BBits-1], b_i});
-    always_ff @(posedge clk_i) if (ce_i) p_q <= PBits'(ax * bx);
+    // Each operand one bit wider, its sign bit a copy of its top bit or 0, multiplied signed;
+    // extended inside the enable, not by continuous assigns, which Verilator evaluates on every
+    // clock (the tops hold dozens of these since the interpolator's products use it).
+    always_ff @(posedge clk_i)
+      if (ce_i) p_q <= PBits'($signed({ASigned & a_i[ABits-1], a_i})
+                              * $signed({BSigned & b_i[BBits-1], b_i}));
   end
   assign p_o = p_q;
 `endif
