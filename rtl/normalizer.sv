@@ -3,10 +3,11 @@
 // of model/twins/normalizer.hpp. m = Nx^2+Ny^2+Nz^2 exact, 1/sqrt(m) by rsqrt_unit (even shift, seed
 // table, one Newton-Raphson step), N * 1/sqrt(m) rounded and saturated to UnitBits.
 // Latency 14, one normal per clock; every stage registers valid and data; every product is
-// registered in its multiplier block (mul18_reg: on the ECP5 the MULT18X18D's output register;
-// the final one as partial products split at an 18 x 18 multiplier), its sums, shift and round a stage later each; one global stall
-// (stall_pipe): ready_o = ready_i || !valid_o (combinational from ready_i and the output valid
-// flop only; with LookAhead a flop loaded a clock ahead from ready_next_i). Each stage's registers load only when the beat entering it is valid (en && its
+// registered in its multiplier block (mul18_reg: on the ECP5 the MULT18X18D's output register; the
+// final one as partial products split at an 18 x 18 multiplier), its sums, shift and round a stage
+// later each; one global stall (stall_pipe): ready_o = ready_i || !valid_o (combinational from
+// ready_i and the output valid flop only; with LookAhead a flop loaded a clock ahead from
+// ready_next_i). Each stage's registers load only when the beat entering it is valid (en && its
 // valid: one LUT, as en alone): a bubble's values are never read, so a simulator need not compute
 // them (most clocks of a frame carry bubbles); a valid beat's values are the same.
 // The null vector (m = 0) gives (0, 0, 0) with null_o set; any m > 0 gives a unit vector.

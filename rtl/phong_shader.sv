@@ -1,17 +1,18 @@
 // phong_shader: Phong's shading rule S = Cp [cos(i)(1-d) + d] + W cos(s)^n (Phong 1975 eq. 3)
 // per pixel, light and eye at infinity, cos(s) = R.E = 2(N.L)(N.E) - L.E (Phong's reflected
 // vector, eqs. 4-8), cos(s)^n by square-and-multiply over the 8 bits of n; bit-exact twin of
-// model/twins/phong_shader.hpp. Latency 25, one pixel per clock; every stage registers valid and data;
-// one global stall (stall_pipe): ready_o = ready_i || !valid_o (combinational from ready_i and the
-// output valid flop only; with LookAhead a flop loaded a clock ahead from ready_next_i). Every product is registered on its own, in its multiplier block
-// (mul18_reg: on the ECP5 the MULT18X18D's output register), a product wider than one 18 x 18
-// multiplier as partial products, the sums and roundings that use it one stage later (ECP5
-// MULT18 and iCE40 MAC16 timing). Each stage's registers load only when the beat entering
-// it is valid (en && its valid: one LUT, as en alone): a bubble's values are never read, so a
-// simulator need not compute them (most clocks of a frame carry bubbles); a valid beat's values
-// are the same. light_i / eye_i are frame constants: L.E is computed from them over stages 1 to 4
-// by the valid beats (one register per stage, not per pixel: every pixel in flight has the same
-// value), so they must be stable from a frame's first pixel to its last output.
+// model/twins/phong_shader.hpp. Latency 25, one pixel per clock; every stage registers valid and
+// data; one global stall (stall_pipe): ready_o = ready_i || !valid_o (combinational from ready_i
+// and the output valid flop only; with LookAhead a flop loaded a clock ahead from ready_next_i).
+// Every product is registered on its own, in its multiplier block (mul18_reg: on the ECP5 the
+// MULT18X18D's output register), a product wider than one 18 x 18 multiplier as partial products,
+// the sums and roundings that use it one stage later (ECP5 MULT18 and iCE40 MAC16 timing). Each
+// stage's registers load only when the beat entering it is valid (en && its valid: one LUT, as en
+// alone): a bubble's values are never read, so a simulator need not compute them (most clocks of a
+// frame carry bubbles); a valid beat's values are the same. light_i / eye_i are frame constants:
+// L.E is computed from them over stages 1 to 4 by the valid beats (one register per stage, not per
+// pixel: every pixel in flight has the same value), so they must be stable from a frame's first
+// pixel to its last output.
 `include "watkins_assert.svh"
 
 module phong_shader #(

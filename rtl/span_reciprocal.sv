@@ -41,7 +41,7 @@ module span_reciprocal #(
   /* verilator lint_off UNUSEDSIGNAL */
   logic [Stages-1:0] v_unused;
   logic              en;  // the pipe advances: read by tests/formal's probes, not here
-  logic              en_next_unused;  // the consumer (the interpolator's tail) has no lookahead
+  logic              en_next_unused;  // its enable stays combinational: one LUT from two flops
   /* verilator lint_on UNUSEDSIGNAL */
   stall_pipe #(
     .Stages     (Stages),
@@ -56,7 +56,7 @@ module span_reciprocal #(
     .valid_o,
     .ready_i,
     .ready_next_i(1'b0),
-    .en_next_o(en_next_unused),
+    .en_next_o   (en_next_unused),
     .en_o     (en),
     .valid_q_o(v_unused),
     .ce_o     (ce)

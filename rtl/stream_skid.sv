@@ -9,7 +9,8 @@
 // stall that fills the slot, the clock the slot drains (cycle model: model/twins/cycle_model.cpp).
 // No value twin: it moves no value.
 // The skid register loads on every clock it is empty and a beat is offered (valid_i, not
-// ready_i): its enable reads flops only, and a simulator copies the word only on offered beats.
+// ready_i): its enable reads full_q and the producer's valid, which is a flop in watkins_top
+// (segment_former's seg_valid_o), and a simulator copies the word only on offered beats.
 `include "watkins_assert.svh"
 
 module stream_skid #(

@@ -371,7 +371,9 @@ module watkins_top #(
   // Two fragments with a registered ready (stream_fifo): the scanline buffer refuses only a
   // marker waiting on its reader, and that decision (pixel_ready_i included) would otherwise
   // reach every stall enable upstream in one clock. Two entries keep one fragment per clock;
-  // latency 1.
+  // latency 1. In the Phong top the queue's next ready (ready_next_o, from the buffer's ready)
+  // does reach the shader's and the normalizer's LookAhead enable flops, as their D input:
+  // a path into two flops, not through every enable (not the critical path at 084a177).
   localparam int unsigned QueueBits = 1 + LB + DepB + PolyIdBits + watkins_pkg::RgbBits;
   watkins_pkg::rgb_t     q_rgb;
   logic [LB-1:0]         q_x;

@@ -26,7 +26,7 @@ module phong_shader_formal #(
   input  logic [PayloadBits-1:0] payload_i,
   input  logic                   valid_i,
   input  logic                   ready_i,
-  input  logic                   ready_next_i  // unused: the DUT's LookAhead is 0
+  input  logic                   ready_next_i  // LookAhead is 0: only ready_next_o reads it (unchecked)
 );
   logic                   ready_o, valid_o, ready_next_o;
   watkins_pkg::rgb_t      rgb_o;
