@@ -6,28 +6,18 @@
 // infer: its multiplier is then the product's setup inside the block, not a block between two
 // fabric flip-flops with a route on each side (10.6 ns, 3.9 of them the block, in the shader at
 // 94 MHz). Everywhere else (Verilator, the formal proofs, lint, iCE40) the same register in RTL.
-// An operand may be a slice of a wider input (a = a_i[ALo +: ABits]): a parent passes a whole
-// register, which Verilator connects as it is, where a slice in the port connection would be a
-// continuous assign copied on every clock (459 instructions a cycle in the Gouraud top for the
-// interpolator's span-setup products, most clocks carrying no span).
 module mul18_reg #(
   parameter int ABits   = 18,             // <= 18
   parameter int BBits   = 18,             // <= 18
   parameter bit ASigned = 1'b0,           // a is two's complement
   parameter bit BSigned = 1'b0,           // b is two's complement
-  parameter int PBits   = ABits + BBits,  // <= 36: the product's low bits
-  parameter int AWidth  = ABits,          // a_i's width; a = a_i[ALo +: ABits]
-  parameter int ALo     = 0,
-  parameter int BWidth  = BBits,          // b_i's width; b = b_i[BLo +: BBits]
-  parameter int BLo     = 0
+  parameter int PBits   = ABits + BBits   // <= 36: the product's low bits
 ) (
-  input  logic              clk_i,
-  input  logic              ce_i,   // the product register loads
-  /* verilator lint_off UNUSEDSIGNAL */
-  input  logic [AWidth-1:0] a_i,    // bits outside the operand's slice are not read
-  input  logic [BWidth-1:0] b_i,
-  /* verilator lint_on UNUSEDSIGNAL */
-  output logic [PBits-1:0]  p_o     // a * b, registered
+  input  logic             clk_i,
+  input  logic             ce_i,   // the product register loads
+  input  logic [ABits-1:0] a_i,
+  input  logic [BBits-1:0] b_i,
+  output logic [PBits-1:0] p_o     // a * b, registered
 );
 `ifdef WATKINS_ECP5
   logic [17:0] a18, b18;  // the operands extended to the block's 18 bits
@@ -35,14 +25,14 @@ module mul18_reg #(
   logic [35:0] p36;       // bits above PBits are not kept
   /* verilator lint_on UNUSEDSIGNAL */
   if (ASigned) begin : g_as
-    assign a18 = 18'(signed'(a_i[ALo +: ABits]));
+    assign a18 = 18'(signed'(a_i));
   end else begin : g_au
-    assign a18 = 18'(a_i[ALo +: ABits]);
+    assign a18 = 18'(a_i);
   end
   if (BSigned) begin : g_bs
-    assign b18 = 18'(signed'(b_i[BLo +: BBits]));
+    assign b18 = 18'(signed'(b_i));
   end else begin : g_bu
-    assign b18 = 18'(b_i[BLo +: BBits]);
+    assign b18 = 18'(b_i);
   end
   MULT18X18D #(
     .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0"),
@@ -72,15 +62,14 @@ module mul18_reg #(
 `else
   logic [PBits-1:0] p_q;
   if (!ASigned && !BSigned) begin : g_u
-    always_ff @(posedge clk_i)
-      if (ce_i) p_q <= PBits'(a_i[ALo +: ABits]) * PBits'(b_i[BLo +: BBits]);
+    always_ff @(posedge clk_i) if (ce_i) p_q <= PBits'(a_i) * PBits'(b_i);
   end else begin : g_s
     // Each operand one bit wider, its sign bit a copy of its top bit or 0, multiplied signed;
     // extended inside the enable, not by continuous assigns, which Verilator evaluates on every
     // clock (the tops hold dozens of these since the interpolator's products use it).
     always_ff @(posedge clk_i)
-      if (ce_i) p_q <= PBits'($signed({ASigned & a_i[ALo+ABits-1], a_i[ALo +: ABits]})
-                              * $signed({BSigned & b_i[BLo+BBits-1], b_i[BLo +: BBits]}));
+      if (ce_i) p_q <= PBits'($signed({ASigned & a_i[ABits-1], a_i})
+                              * $signed({BSigned & b_i[BBits-1], b_i}));
   end
   assign p_o = p_q;
 `endif

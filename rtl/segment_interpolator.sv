@@ -248,11 +248,15 @@ module segment_interpolator #(
   logic [IVB-1:0]      sb_step_q, sc_step_q, sd_step_q;
   logic [IVB-1:0]      sd_value_q;          // E + round_shift(delta * alpha0, AlphaBits) per slot
 
-  // The multipliers take whole registers and their operands' bit positions (mul18_reg's ALo,
-  // BLo): recip's and alpha0's low parts at 0, high parts at MSplit; in the span structs, delta
-  // is the last member (bit 0) and the offset sits above e and delta (a_span_layout).
-  localparam int unsigned OffLo = IDB + IVB;                            // rc_span's offset
-  localparam int unsigned OLoB  = (DxBits < MSplit) ? DxBits : MSplit;  // offset's low part
+  logic [MSplit-1:0] rc_r0, sb_a0;  // recip's and alpha0's low parts
+  logic [RHi-1:0]    rc_r1;
+  logic [AHi-1:0]    sb_a1;
+  logic [MSplit-1:0] rc_o0;         // offset's low part (its high part in g_pa_hi)
+  assign rc_r0 = MSplit'(rc_recip);
+  assign rc_r1 = RHi'(rc_recip >> MSplit);
+  assign sb_a0 = MSplit'(sb_alpha_q);
+  assign sb_a1 = AHi'(sb_alpha_q >> MSplit);
+  assign rc_o0 = MSplit'(rc_span.offset);
 
   // alpha0 shifts first and rounds after: round_shift(x, s) = (floor(2x / 2^s) + 1) / 2, so the
   // shifter takes the product straight from its register (u = {x, 0} >> s, also exact for s = 0)
@@ -279,20 +283,17 @@ module segment_interpolator #(
   // the MULT18X18D's output register on the ECP5): a product is then the block's setup, not a
   // route into the block, the block and a route out of it in one clock (the sized Phong top's
   // 112 MULT18 spread its setup multipliers far from their fabric registers: 18.6 ns at 4d2bd2c).
-  localparam int unsigned SpanB = $bits(rc_span), RecB = RecipBits + 1, MidB = $bits(sb_span_q);
-  mul18_reg #(.ABits(OLoB), .BBits(MSplit), .PBits(2 * MSplit), .AWidth(SpanB), .ALo(OffLo),
-              .BWidth(RecB)) u_pa00 (
-    .clk_i, .ce_i(sa_ce), .a_i(rc_span), .b_i(rc_recip), .p_o(sa_pa00_q));
-  mul18_reg #(.ABits(OLoB), .BBits(RHi), .PBits(MSplit + RHi), .AWidth(SpanB), .ALo(OffLo),
-              .BWidth(RecB), .BLo(MSplit)) u_pa01 (
-    .clk_i, .ce_i(sa_ce), .a_i(rc_span), .b_i(rc_recip), .p_o(sa_pa01_q));
+  mul18_reg #(.ABits(MSplit), .BBits(MSplit)) u_pa00 (
+    .clk_i, .ce_i(sa_ce), .a_i(rc_o0), .b_i(rc_r0), .p_o(sa_pa00_q));
+  mul18_reg #(.ABits(MSplit), .BBits(RHi)) u_pa01 (
+    .clk_i, .ce_i(sa_ce), .a_i(rc_o0), .b_i(rc_r1), .p_o(sa_pa01_q));
   if (DxBits > MSplit) begin : g_pa_hi
-    mul18_reg #(.ABits(OHi), .BBits(MSplit), .AWidth(SpanB), .ALo(OffLo + MSplit),
-                .BWidth(RecB)) u_pa10 (
-      .clk_i, .ce_i(sa_ce), .a_i(rc_span), .b_i(rc_recip), .p_o(sa_pa10_q));
-    mul18_reg #(.ABits(OHi), .BBits(RHi), .AWidth(SpanB), .ALo(OffLo + MSplit),
-                .BWidth(RecB), .BLo(MSplit)) u_pa11 (
-      .clk_i, .ce_i(sa_ce), .a_i(rc_span), .b_i(rc_recip), .p_o(sa_pa11_q));
+    logic [OHi-1:0] rc_o1;
+    assign rc_o1 = OHi'(rc_span.offset >> MSplit);
+    mul18_reg #(.ABits(OHi), .BBits(MSplit)) u_pa10 (
+      .clk_i, .ce_i(sa_ce), .a_i(rc_o1), .b_i(rc_r0), .p_o(sa_pa10_q));
+    mul18_reg #(.ABits(OHi), .BBits(RHi)) u_pa11 (
+      .clk_i, .ce_i(sa_ce), .a_i(rc_o1), .b_i(rc_r1), .p_o(sa_pa11_q));
   end else begin : g_pa_lo
     // The offset fits its low part: no multiplier block for a zero high part.
     assign sa_pa10_q = '0;
@@ -382,19 +383,18 @@ module segment_interpolator #(
     for (genvar k = 0; k < K; k++) begin : g_piece
       localparam bit          Top = (k == K - 1);
       localparam int unsigned PB  = Top ? TW : MSplit;
-      localparam int unsigned ALo = Dl + MSplit * k;  // in delta, so in the span structs
-      mul18_reg #(.ABits(PB), .ASigned(Top), .BBits(MSplit), .PBits(Q0B), .AWidth(SpanB),
-                  .ALo(ALo), .BWidth(RecB)) u_ps0 (
-        .clk_i, .ce_i(sa_ce), .a_i(rc_span), .b_i(rc_recip), .p_o(ps0_q[k*Q0B +: Q0B]));
-      mul18_reg #(.ABits(PB), .ASigned(Top), .BBits(RHi), .PBits(Q1B), .AWidth(SpanB),
-                  .ALo(ALo), .BWidth(RecB), .BLo(MSplit)) u_ps1 (
-        .clk_i, .ce_i(sa_ce), .a_i(rc_span), .b_i(rc_recip), .p_o(ps1_q[k*Q1B +: Q1B]));
-      mul18_reg #(.ABits(PB), .ASigned(Top), .BBits(MSplit), .PBits(Q0B), .AWidth(MidB),
-                  .ALo(ALo), .BWidth(AlphaBits + 1)) u_pv0 (
-        .clk_i, .ce_i(sc_ce), .a_i(sb_span_q), .b_i(sb_alpha_q), .p_o(pv0_q[k*Q0B +: Q0B]));
-      mul18_reg #(.ABits(PB), .ASigned(Top), .BBits(AHi), .PBits(QV1B), .AWidth(MidB),
-                  .ALo(ALo), .BWidth(AlphaBits + 1), .BLo(MSplit)) u_pv1 (
-        .clk_i, .ce_i(sc_ce), .a_i(sb_span_q), .b_i(sb_alpha_q), .p_o(pv1_q[k*QV1B +: QV1B]));
+      mul18_reg #(.ABits(PB), .ASigned(Top), .BBits(MSplit), .PBits(Q0B)) u_ps0 (
+        .clk_i, .ce_i(sa_ce), .a_i(rc_span.delta[Dl + MSplit*k +: PB]), .b_i(rc_r0),
+        .p_o(ps0_q[k*Q0B +: Q0B]));
+      mul18_reg #(.ABits(PB), .ASigned(Top), .BBits(RHi), .PBits(Q1B)) u_ps1 (
+        .clk_i, .ce_i(sa_ce), .a_i(rc_span.delta[Dl + MSplit*k +: PB]), .b_i(rc_r1),
+        .p_o(ps1_q[k*Q1B +: Q1B]));
+      mul18_reg #(.ABits(PB), .ASigned(Top), .BBits(MSplit), .PBits(Q0B)) u_pv0 (
+        .clk_i, .ce_i(sc_ce), .a_i(sb_span_q.delta[Dl + MSplit*k +: PB]), .b_i(sb_a0),
+        .p_o(pv0_q[k*Q0B +: Q0B]));
+      mul18_reg #(.ABits(PB), .ASigned(Top), .BBits(AHi), .PBits(QV1B)) u_pv1 (
+        .clk_i, .ce_i(sc_ce), .a_i(sb_span_q.delta[Dl + MSplit*k +: PB]), .b_i(sb_a1),
+        .p_o(pv1_q[k*QV1B +: QV1B]));
     end
     logic signed [PS-1:0]  ps_q;        // delta * recip, in sp
     // Shift first, round after, as alpha0: u = {x, 0} >>> s = floor(x / 2^(s-1)) (s > 0), and
@@ -667,8 +667,5 @@ module segment_interpolator #(
   `WATKINS_ASSERT(a_x_on_screen, frag_valid_o && !frag_eol_o |-> frag_x_o < width_i)
   `WATKINS_COVER(c_back_to_back_spans, emit_frag && from_head && frag_valid_o && !frag_eol_o)
   `WATKINS_COVER(c_empty_dropped, sd_valid_q && !sd_keep)
-  // The multipliers' operand positions in the span structs (OffLo, delta at bit 0).
-  `WATKINS_ASSERT(a_span_layout, rc_span[OffLo +: DxBits] == rc_span.offset
-    && rc_span[IDB-1:0] == rc_span.delta && sb_span_q[IDB-1:0] == sb_span_q.delta)
   `WATKINS_ASSERT(a_tail_en, tail_en == (!sd_valid_q || !sd_keep || f_in_ready))
 endmodule
