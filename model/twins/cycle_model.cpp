@@ -133,10 +133,11 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
   std::uint64_t recip_valid = 0;
   const std::uint64_t recip_mask = (std::uint64_t{1} << RecipStages) - 1;
   std::size_t recip_out = 0;  // items that left the reciprocal
-  // The setup stages after the reciprocal (sa .. sc), all enabled by tail_en; the last is sc.
+  // The setup stages after the reciprocal (sa, sp, sh, sb, sc, sd), all enabled by tail_en; the
+  // last is sd.
   std::array<bool, InterpTailStages> tail_valid{};
   std::array<std::size_t, InterpTailStages> tail_item{};
-  constexpr int Sc = InterpTailStages - 1;
+  constexpr int Sd = InterpTailStages - 1;
   std::size_t fifo[InterpFifoDepth] = {};
   int fifo_head = 0, fifo_count = 0;
   bool step_active = false;
@@ -195,18 +196,20 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
     const bool emit_frag = out_free && (step_active || from_head);
     const bool emit_eol = out_free && !step_active && head_valid && head.eol;
     const bool pop = emit_eol || (emit_frag && from_head);
-    // sc -> FIFO
-    const bool sc_valid = tail_valid[Sc];
-    const Streams::Item& sc = st.items[sc_valid ? tail_item[Sc] : 0];
-    const bool sc_keep = sc.eol || sc.pixels > 0;
+    // sd -> FIFO (the RTL's sd_valid_q, sd_keep; its tail_en is a flop loaded a clock ahead,
+    // a_tail_en: the same value as computed here)
+    const bool sd_valid = tail_valid[Sd];
+    const Streams::Item& sd = st.items[sd_valid ? tail_item[Sd] : 0];
+    const bool sd_keep = sd.eol || sd.pixels > 0;
     const bool fifo_ready = fifo_count != InterpFifoDepth;
-    const bool push = sc_valid && sc_keep && fifo_ready;
-    const bool tail_en = !sc_valid || !sc_keep || fifo_ready;
+    const bool push = sd_valid && sd_keep && fifo_ready;
+    const bool tail_en = !sd_valid || !sd_keep || fifo_ready;
     // reciprocal, s0, segment skid, segment former
     const bool rc_valid = (recip_valid >> (RecipStages - 1)) & 1;
     const bool en_recip = tail_en || !rc_valid;
     const bool seg_ready = !s0_valid_q || en_recip;  // the interpolator's seg_ready_o
-    const bool sk_valid = skid_full || seg_valid;    // the skid passes the former's segment when empty
+    // The skid passes the former's segment when its slot is empty.
+    const bool sk_valid = skid_full || seg_valid;
     // edge_ready_o, the enable of all three registers: the skid's ready is its empty slot (a flop)
     const bool sf_ready = !skid_full || !seg_valid;
     // active-edge list output
@@ -294,12 +297,12 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
       --fifo_count;
     }
     if (push) {
-      fifo[(fifo_head + fifo_count) % InterpFifoDepth] = tail_item[Sc];
+      fifo[(fifo_head + fifo_count) % InterpFifoDepth] = tail_item[Sd];
       ++fifo_count;
     }
-    // sa -> ... -> sc, reciprocal, s0
+    // sa -> ... -> sd, reciprocal, s0
     if (tail_en) {
-      for (int s = Sc; s > 0; --s) {
+      for (int s = Sd; s > 0; --s) {
         tail_valid[s] = tail_valid[s - 1];
         tail_item[s] = tail_item[s - 1];
       }
