@@ -425,8 +425,10 @@ module segment_interpolator #(
     // Shift first, round after, as alpha0: u = {x, 0} >>> s = floor(x / 2^(s-1)) (s > 0), and
     // rs = floor((u + 1) / 2) = (u >>> 1) + u[0]. Saturate from u's high bits: when u >>> 1
     // does not fit W bits, rs saturates to its sign (below the range, + u[0] reaches at most
-    // StepMin); when it fits, only StepMax + 1 leaves the range, so the increment is skipped
-    // there. The W-bit increment runs beside the tests, not before them.
+    // StepMin); when it fits, only StepMax + 1 leaves the range, so StepMax is picked there. The
+    // W-bit increment (by u[0] alone) runs beside the tests, which pick among it and the bounds:
+    // the test for StepMax in the increment's carry-in was the Phong block's longest path
+    // (u_q -> at_max -> the carry chain -> sc_step_q, 10.3 ns).
     logic signed [PS:0] u_q;            // in sb
     // Every value below is computed inside its stage's enable (sa_ce .. sd_ce), not in an
     // always_comb or assign that only feeds it: the same logic, evaluated by a simulator only
@@ -442,10 +444,13 @@ module segment_interpolator #(
       if (sb_ce) u_q <= $signed({ps_q, 1'b0}) >>> sh_shs_q;
       if (sc_ce) begin : sc_sat
         logic fits, at_max;
+        logic [W-1:0] inc;
         fits   = &u_q[PS:W] || ~|u_q[PS:W];
-        at_max = !u_q[W] && &u_q[W-1:1];
+        at_max = !u_q[W] && &u_q[W-1:1];  // u >>> 1 = StepMax: the increment would leave the range
+        inc    = u_q[W:1] + W'(u_q[0]);
         if (!fits) sc_step_q[Lo +: W] <= u_q[PS] ? W'(StepMin) : W'(StepMax);
-        else sc_step_q[Lo +: W] <= u_q[W:1] + W'(u_q[0] && !at_max);
+        else if (at_max) sc_step_q[Lo +: W] <= W'(StepMax);
+        else sc_step_q[Lo +: W] <= inc;
       end
       if (sd_ce) begin : sd_sum
         // value = wrap(E + ((pv + 2^(AlphaBits-1)) >> AlphaBits), W) = bits [AlphaBits +: W] of
