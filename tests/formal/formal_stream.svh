@@ -133,4 +133,40 @@
   `FORMAL_WORD(mem, PayloadBits, 30, \u_dut.u_pipe.g_ram.mem[30] ) \
   `FORMAL_WORD(mem, PayloadBits, 31, \u_dut.u_pipe.g_ram.mem[31] )
 
+// Depth = 64 (a pipe of 32 to 63 stages): words 32..63 as well.
+`define FORMAL_RAM_PIPE_WORDS_64 \
+  `FORMAL_RAM_PIPE_WORDS_32 \
+  `FORMAL_WORD(mem, PayloadBits, 32, \u_dut.u_pipe.g_ram.mem[32] ) \
+  `FORMAL_WORD(mem, PayloadBits, 33, \u_dut.u_pipe.g_ram.mem[33] ) \
+  `FORMAL_WORD(mem, PayloadBits, 34, \u_dut.u_pipe.g_ram.mem[34] ) \
+  `FORMAL_WORD(mem, PayloadBits, 35, \u_dut.u_pipe.g_ram.mem[35] ) \
+  `FORMAL_WORD(mem, PayloadBits, 36, \u_dut.u_pipe.g_ram.mem[36] ) \
+  `FORMAL_WORD(mem, PayloadBits, 37, \u_dut.u_pipe.g_ram.mem[37] ) \
+  `FORMAL_WORD(mem, PayloadBits, 38, \u_dut.u_pipe.g_ram.mem[38] ) \
+  `FORMAL_WORD(mem, PayloadBits, 39, \u_dut.u_pipe.g_ram.mem[39] ) \
+  `FORMAL_WORD(mem, PayloadBits, 40, \u_dut.u_pipe.g_ram.mem[40] ) \
+  `FORMAL_WORD(mem, PayloadBits, 41, \u_dut.u_pipe.g_ram.mem[41] ) \
+  `FORMAL_WORD(mem, PayloadBits, 42, \u_dut.u_pipe.g_ram.mem[42] ) \
+  `FORMAL_WORD(mem, PayloadBits, 43, \u_dut.u_pipe.g_ram.mem[43] ) \
+  `FORMAL_WORD(mem, PayloadBits, 44, \u_dut.u_pipe.g_ram.mem[44] ) \
+  `FORMAL_WORD(mem, PayloadBits, 45, \u_dut.u_pipe.g_ram.mem[45] ) \
+  `FORMAL_WORD(mem, PayloadBits, 46, \u_dut.u_pipe.g_ram.mem[46] ) \
+  `FORMAL_WORD(mem, PayloadBits, 47, \u_dut.u_pipe.g_ram.mem[47] ) \
+  `FORMAL_WORD(mem, PayloadBits, 48, \u_dut.u_pipe.g_ram.mem[48] ) \
+  `FORMAL_WORD(mem, PayloadBits, 49, \u_dut.u_pipe.g_ram.mem[49] ) \
+  `FORMAL_WORD(mem, PayloadBits, 50, \u_dut.u_pipe.g_ram.mem[50] ) \
+  `FORMAL_WORD(mem, PayloadBits, 51, \u_dut.u_pipe.g_ram.mem[51] ) \
+  `FORMAL_WORD(mem, PayloadBits, 52, \u_dut.u_pipe.g_ram.mem[52] ) \
+  `FORMAL_WORD(mem, PayloadBits, 53, \u_dut.u_pipe.g_ram.mem[53] ) \
+  `FORMAL_WORD(mem, PayloadBits, 54, \u_dut.u_pipe.g_ram.mem[54] ) \
+  `FORMAL_WORD(mem, PayloadBits, 55, \u_dut.u_pipe.g_ram.mem[55] ) \
+  `FORMAL_WORD(mem, PayloadBits, 56, \u_dut.u_pipe.g_ram.mem[56] ) \
+  `FORMAL_WORD(mem, PayloadBits, 57, \u_dut.u_pipe.g_ram.mem[57] ) \
+  `FORMAL_WORD(mem, PayloadBits, 58, \u_dut.u_pipe.g_ram.mem[58] ) \
+  `FORMAL_WORD(mem, PayloadBits, 59, \u_dut.u_pipe.g_ram.mem[59] ) \
+  `FORMAL_WORD(mem, PayloadBits, 60, \u_dut.u_pipe.g_ram.mem[60] ) \
+  `FORMAL_WORD(mem, PayloadBits, 61, \u_dut.u_pipe.g_ram.mem[61] ) \
+  `FORMAL_WORD(mem, PayloadBits, 62, \u_dut.u_pipe.g_ram.mem[62] ) \
+  `FORMAL_WORD(mem, PayloadBits, 63, \u_dut.u_pipe.g_ram.mem[63] )
+
 `endif

@@ -1,16 +1,16 @@
-// phong_shader_formal: proves rtl/phong_shader.sv (25 stages, a 5-bit payload) holds valid and its
+// phong_shader_formal: proves rtl/phong_shader.sv (33 stages, a 6-bit payload) holds valid and its
 // shade until ready, passes every beat once, in order, with its payload unchanged (each input beat
 // carries its sequence number as payload), keeps ready_o = ready_i || !valid_o and holds at most
-// 25 beats. stall_pipe_checker ties the payload RAM of its u_pipe to the tags in flight; the
+// 33 beats. stall_pipe_checker ties the payload RAM of its u_pipe to the tags in flight; the
 // shading datapath, light and eye are free (values are the unit benches' business).
 `include "formal_stream.svh"
 
 module phong_shader_formal #(
-  parameter int unsigned PayloadBits = 5,  // the tag: >= log2 of the RAM depth
+  parameter int unsigned PayloadBits = 6,  // the tag: >= log2 of the RAM depth
   localparam int unsigned UB      = watkins_pkg::UnitBits,
   localparam int unsigned MB      = watkins_pkg::MaterialBits,
   localparam int unsigned SB      = watkins_pkg::ShininessBits,
-  localparam int unsigned Stages  = 6 + 2 * SB + 3,  // phong_shader's pipe: dots, cos(s), powers, output
+  localparam int unsigned Stages  = 6 + 3 * SB + 3,  // phong_shader's pipe: dots, cos(s), powers, output
   localparam int unsigned PtrBits = $clog2(Stages + 1),
   localparam int unsigned Depth   = 2 ** PtrBits
 ) (
@@ -43,7 +43,7 @@ module phong_shader_formal #(
 
   // The internals of u_pipe (stall_pipe with PayloadRam) and the stall.
   `FORMAL_RAM_PIPE_PROBES
-  `FORMAL_RAM_PIPE_WORDS_32
+  `FORMAL_RAM_PIPE_WORDS_64
 
   `FORMAL_RAM_PIPE_CHECK
 endmodule
