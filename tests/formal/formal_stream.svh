@@ -75,11 +75,15 @@
   (* hierconn *) logic [Stages-1:0]      \u_dut.u_pipe.valid_q ; \
   (* hierconn *) logic [PtrBits-1:0]     \u_dut.u_pipe.g_ram.wr_q ; \
   (* hierconn *) logic [PtrBits-1:0]     \u_dut.u_pipe.g_ram.rd_q ; \
+  (* hierconn *) logic [PtrBits-1:0]     \u_dut.u_pipe.g_ram.rd_inc_q ; \
   (* hierconn *) logic [PayloadBits-1:0] \u_dut.u_pipe.g_ram.out_q ; \
   logic [Depth*PayloadBits-1:0] mem;
 
-// stall_pipe_checker over those probes: the tags in flight, stage by stage.
+// stall_pipe_checker over those probes: the tags in flight, stage by stage. rd_inc_q = rd_q + 1
+// (as stall_pipe_formal states it): without it the read address a clock ahead is free in the
+// induction step, which then needs length 2 (twice the SAT problem).
 `define FORMAL_RAM_PIPE_CHECK \
+  always_comb if (rst_ni) assert (\u_dut.u_pipe.g_ram.rd_inc_q == \u_dut.u_pipe.g_ram.rd_q + 1'b1); \
   stall_pipe_checker #(.Stages(Stages), .PayloadBits(PayloadBits), .PayloadRam(1'b1)) u_check ( \
     .clk_i, \
     .rst_ni, \
