@@ -13,6 +13,13 @@
   always_ff @(posedge clk_i) past_q <= 1'b1; \
   always_comb if (!past_q) assume (!rst_ni);
 
+// A LookAhead consumer (stall_pipe's LookAhead = 1): ready_i is what ready_next_i said a clock
+// before. ahead: the harness's LookAhead parameter (0: ready_next_i is unconstrained and unread).
+`define FORMAL_READY_AHEAD(ahead) \
+  logic ready_next_q; \
+  always_ff @(posedge clk_i) ready_next_q <= ready_next_i; \
+  always_comb if ((ahead) && past_q) assume (ready_i == ready_next_q);
+
 // The environment obeys valid/ready on an input stream: a beat offered and not taken is offered
 // again the next clock, unchanged (unless a reset came in between). Written with explicit
 // registers and an immediate assume in always_comb, so it constrains the same clock it speaks of:
