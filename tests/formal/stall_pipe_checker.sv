@@ -9,7 +9,7 @@
 // the counters, so the SAT problem has no chain across the stages (session 14: the former
 // invariants, each valid stage's tag against the nearest valid stage above and below, a
 // 33-deep mux chain, and each valid stage's RAM word, Stages x Depth checks, left the 33-stage
-// shader's proof open after 2,400 s; these close it in about a minute of CPU). With them
+// shader's proof open after 2,400 s; these close it in half a minute of CPU). With them
 // `sat -tempinduct` closes at length 1 whatever the stall pattern; without them a stall long
 // enough hides any corrupt state.
 module stall_pipe_checker #(
