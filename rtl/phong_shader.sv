@@ -1,7 +1,7 @@
 // phong_shader: Phong's shading rule S = Cp [cos(i)(1-d) + d] + W cos(s)^n (Phong 1975 eq. 3)
 // per pixel, light and eye at infinity, cos(s) = R.E = 2(N.L)(N.E) - L.E (Phong's reflected
 // vector, eqs. 4-8), cos(s)^n by square-and-multiply over the 8 bits of n; bit-exact twin of
-// model/twins/phong_shader.hpp. Latency 25, one pixel per clock; every stage registers valid and
+// model/twins/phong_shader.hpp. Latency 33, one pixel per clock; every stage registers valid and
 // data; one global stall (stall_pipe): ready_o = ready_i || !valid_o (combinational from ready_i
 // and the output valid flop only; with LookAhead a flop loaded a clock ahead from ready_next_i).
 // Every product is registered on its own, in its multiplier block (mul18_reg: on the ECP5 the
@@ -51,13 +51,14 @@ module phong_shader #(
   localparam int FW       = DotBits + MF + 1;               // f = cos(i)(1-d) + d <= 1
   localparam int LW       = FW + 8 + 2;                     // a level at D + MF fraction bits, plus sum
   // Stages: 1 the dot products' six products, 2 their sums, 3 round, 4 cos(i)(N.E) and
-  // cos(i)(1-d) as partial products, 5 their sums, 6 cos(s) and f, 7..22 the powers (a product
-  // stage and a round stage per bit of n), 23 Cp f and 255 W pow as partial products, 24 their
-  // sums, 25 round and saturate.
+  // cos(i)(1-d) as partial products, 5 their sums, 6 cos(s) and f, 7..30 the powers (a product
+  // stage, a copy stage and a round stage per bit of n), 31 Cp f and 255 W pow as partial
+  // products, 32 their sums, 33 round and saturate.
   localparam int CosStage = 6;                              // acc0_q, base0_q, f0_q
-  localparam int PowFirst = CosStage + 1;                   // power k: stages PowFirst + 2k, + 2k + 1
-  localparam int PowLast  = CosStage + 2 * ShininessBits;   // 22: g_pow[ShininessBits-1].acc_q
-  localparam int Stages   = PowLast + 3;                    // 25
+  localparam int PowStages = 3;                             // a power's product, copy, round
+  localparam int PowFirst = CosStage + 1;                   // power k: stages PowFirst + 3k .. + 3k + 2
+  localparam int PowLast  = CosStage + PowStages * ShininessBits;  // 30: g_pow[ShininessBits-1].acc_q
+  localparam int Stages   = PowLast + 3;                    // 33
   // A product wider than an 18 x 18 multiplier is split at bit PSplit of an operand (17: the low
   // part fits the multiplier unsigned, with a zero sign bit), each partial product registered
   // straight from its block; x y = x1 y 2^PSplit + x0 y (and the same for both operands split).
@@ -143,7 +144,7 @@ module phong_shader #(
   // per-stage registers here and below are plain variables of generate blocks, not array
   // elements: a simulator (Verilator) keeps a pending-write flag and value per array element
   // written under its own enable and clears them on every evaluation. Same flops.
-  for (genvar i = 0; i < PowLast; i++) begin : g_cp  // Cp: last read by stage 23
+  for (genvar i = 0; i < PowLast; i++) begin : g_cp  // Cp: last read by stage 31
     logic [watkins_pkg::RgbBits-1:0] q;  // a vector: yosys 0.23 and structs
     if (i == 0) begin : g_in
       always_ff @(posedge clk_i) if (ce[0]) q <= cp_i;
@@ -245,9 +246,10 @@ module phong_shader #(
   // ---- stage 6: cos(s) = 2 cos(i)(N.E) - L.E in [0, 1] (P bits), f = cos(i)(1-d) + d -----------
   // The clamp to [0, 2^P] and the test cs != 0 read csr's bits (its sign, any bit above P, the
   // bits below P) instead of comparing: a compare is a second carry chain after the add.
-  // Power k = 0..ShininessBits-1 (stages PowFirst + 2k and + 2k + 1): acc *= base if bit k of n,
-  // base *= base, the products registered in the first stage, rounded in the second; acc0_q and
-  // base0_q start them (stage 6), g_pow[k].acc_q and g_pow[k].g_base.base_q are their results.
+  // Power k = 0..ShininessBits-1 (stages PowFirst + 3k to + 3k + 2): acc *= base if bit k of n,
+  // base *= base, the products registered in the first stage, again in the second, rounded in
+  // the third; acc0_q and base0_q start them (stage 6), g_pow[k].acc_q and
+  // g_pow[k].g_base.base_q are their results.
   logic [PowBits:0] acc0_q, base0_q;
   logic [FW-1:0]    f0_q;  // f, then g_f[j].q: stage CosStage + j
   always_ff @(posedge clk_i) begin
@@ -266,7 +268,7 @@ module phong_shader #(
       f0_q   <= fp_q + (FW'(g_d[CosStage-2].q) << DotBits);
     end
   end
-  for (genvar j = 1; j <= 2 * ShininessBits; j++) begin : g_f
+  for (genvar j = 1; j <= PowLast - CosStage; j++) begin : g_f
     logic [FW-1:0] q;
     if (j == 1) begin : g_in
       always_ff @(posedge clk_i) if (ce[CosStage]) q <= f0_q;
@@ -299,22 +301,35 @@ module phong_shader #(
     assign {x1, x0} = acc_in;
     assign {y1, y0} = base_in;
     mul18_reg #(.ABits(PSplit), .BBits(PSplit)) u_a00 (
-      .clk_i, .ce_i(ce[PowFirst-1+2*k]), .a_i(x0), .b_i(y0), .p_o(a00_q));
+      .clk_i, .ce_i(ce[PowFirst-1+PowStages*k]), .a_i(x0), .b_i(y0), .p_o(a00_q));
     mul18_reg #(.ABits(PSplit), .BBits(PHi)) u_a01 (
-      .clk_i, .ce_i(ce[PowFirst-1+2*k]), .a_i(x0), .b_i(y1), .p_o(a01_q));
+      .clk_i, .ce_i(ce[PowFirst-1+PowStages*k]), .a_i(x0), .b_i(y1), .p_o(a01_q));
     mul18_reg #(.ABits(PHi), .BBits(PSplit)) u_a10 (
-      .clk_i, .ce_i(ce[PowFirst-1+2*k]), .a_i(x1), .b_i(y0), .p_o(a10_q));
+      .clk_i, .ce_i(ce[PowFirst-1+PowStages*k]), .a_i(x1), .b_i(y0), .p_o(a10_q));
     mul18_reg #(.ABits(PHi), .BBits(PHi)) u_a11 (
-      .clk_i, .ce_i(ce[PowFirst-1+2*k]), .a_i(x1), .b_i(y1), .p_o(a11_q));
-    always_ff @(posedge clk_i) if (ce[PowFirst-1+2*k]) acc_k_q <= acc_in;
+      .clk_i, .ce_i(ce[PowFirst-1+PowStages*k]), .a_i(x1), .b_i(y1), .p_o(a11_q));
+    always_ff @(posedge clk_i) if (ce[PowFirst-1+PowStages*k]) acc_k_q <= acc_in;
     // The round stage: the sums only for the products it keeps (acc's for a set bit of n).
-    always_ff @(posedge clk_i) if (ce[PowFirst+2*k]) begin
+    // The copy stage: the multiplier blocks' outputs registered again in the fabric, so the
+    // route from a block (up to 4.8 ns on the ECP5) is not in front of the round stage's adders.
+    logic [2*PSplit-1:0]   a00c_q;
+    logic [PSplit+PHi-1:0] a01c_q, a10c_q;
+    logic [2*PHi-1:0]      a11c_q;
+    logic [PowBits:0]      acc_kc_q;
+    always_ff @(posedge clk_i) if (ce[PowFirst+PowStages*k]) begin
+      a00c_q   <= a00_q;
+      a01c_q   <= a01_q;
+      a10c_q   <= a10_q;
+      a11c_q   <= a11_q;
+      acc_kc_q <= acc_k_q;
+    end
+    always_ff @(posedge clk_i) if (ce[PowFirst+PowStages*k+1]) begin
       /* verilator lint_off UNUSEDSIGNAL */
       logic [PB2-1:0] pa;  // product <= 2^2P plus half: only [2P:P] is kept
       /* verilator lint_on UNUSEDSIGNAL */
-      pa = PB2'({a11_q, a00_q}) + (PB2'(a01_q) << PSplit) + (PB2'(a10_q) << PSplit)
+      pa = PB2'({a11c_q, a00c_q}) + (PB2'(a01c_q) << PSplit) + (PB2'(a10c_q) << PSplit)
          + PB2'(1 << (PowBits - 1));
-      acc_q <= g_n[PowFirst + 2 * k - 1].q[k] ? pa[2*PowBits:PowBits] : acc_k_q;
+      acc_q <= g_n[PowFirst + PowStages * k].q[k] ? pa[2*PowBits:PowBits] : acc_kc_q;
     end
     // base^2, for the next power stage only (the last one has none).
     if (k + 1 < ShininessBits) begin : g_base
@@ -323,27 +338,35 @@ module phong_shader #(
       logic [2*PHi-1:0]      b11_q;               // high x high
       logic [PowBits:0]      base_q;              // base out
       mul18_reg #(.ABits(PSplit), .BBits(PSplit)) u_b00 (
-        .clk_i, .ce_i(ce[PowFirst-1+2*k]), .a_i(y0), .b_i(y0), .p_o(b00_q));
+        .clk_i, .ce_i(ce[PowFirst-1+PowStages*k]), .a_i(y0), .b_i(y0), .p_o(b00_q));
       mul18_reg #(.ABits(PSplit), .BBits(PHi)) u_b01 (
-        .clk_i, .ce_i(ce[PowFirst-1+2*k]), .a_i(y0), .b_i(y1), .p_o(b01_q));
+        .clk_i, .ce_i(ce[PowFirst-1+PowStages*k]), .a_i(y0), .b_i(y1), .p_o(b01_q));
       mul18_reg #(.ABits(PHi), .BBits(PHi)) u_b11 (
-        .clk_i, .ce_i(ce[PowFirst-1+2*k]), .a_i(y1), .b_i(y1), .p_o(b11_q));
-      always_ff @(posedge clk_i) if (ce[PowFirst+2*k]) begin
+        .clk_i, .ce_i(ce[PowFirst-1+PowStages*k]), .a_i(y1), .b_i(y1), .p_o(b11_q));
+      logic [2*PSplit-1:0]   b00c_q;
+      logic [PSplit+PHi-1:0] b01c_q;
+      logic [2*PHi-1:0]      b11c_q;
+      always_ff @(posedge clk_i) if (ce[PowFirst+PowStages*k]) begin
+        b00c_q <= b00_q;
+        b01c_q <= b01_q;
+        b11c_q <= b11_q;
+      end
+      always_ff @(posedge clk_i) if (ce[PowFirst+PowStages*k+1]) begin
         /* verilator lint_off UNUSEDSIGNAL */
         logic [PB2-1:0] pb;  // product <= 2^2P plus half: only [2P:P] is kept
         /* verilator lint_on UNUSEDSIGNAL */
-        pb = PB2'({b11_q, b00_q}) + (PB2'(b01_q) << (PSplit + 1)) + PB2'(1 << (PowBits - 1));
+        pb = PB2'({b11c_q, b00c_q}) + (PB2'(b01c_q) << (PSplit + 1)) + PB2'(1 << (PowBits - 1));
         base_q <= pb[2*PowBits:PowBits];
       end
     end
   end
 
-  // ---- stage 22 (the last power stage): 255 W, so W pow needs no multiply by 255 after it ----
+  // ---- stage 30 (the last power stage): 255 W, so W pow needs no multiply by 255 after it ----
   logic [MaterialBits+7:0] w255_q;  // 255 W < 2^17: one multiplier block with a PSplit-bit operand
   always_ff @(posedge clk_i) if (ce[PowLast-1])
     w255_q <= ((MaterialBits+8)'(g_w[PowLast-2].q) << 8) - (MaterialBits+8)'(g_w[PowLast-2].q);
 
-  // ---- stage 23: Cp f per channel and 255 W cos(s)^n, as partial products ----------------------
+  // ---- stage 31: Cp f per channel and 255 W cos(s)^n, as partial products ----------------------
   // Channel c is byte c of rgb_t (B, G, R for c = 0, 1, 2) in Cp and in the shade alike: the
   // three channels are computed the same way, so the loop need not know which is which.
   // f (FW bits) and pow (P + 1 bits) are split at PSplit: two multiplier blocks each.
@@ -357,7 +380,7 @@ module phong_shader #(
   logic [MaterialBits+8+AHi-1:0]    wa1_q;      // 255 W pow1
   logic [FW-1:0]                    fl;
   logic [PowBits:0]                 al;
-  assign fl = g_f[2*ShininessBits].q;
+  assign fl = g_f[PowLast-CosStage].q;
   assign al = g_pow[ShininessBits-1].acc_q;
   for (genvar c = 0; c < 3; c++) begin : g_df
     mul18_reg #(.ABits(8), .BBits(PSplit)) u_df0 (
@@ -372,9 +395,9 @@ module phong_shader #(
   mul18_reg #(.ABits(MaterialBits+8), .BBits(AHi)) u_wa1 (
     .clk_i, .ce_i(ce[PowLast]), .a_i(w255_q), .b_i(al[PowBits:PSplit]), .p_o(wa1_q));
 
-  // ---- stage 24: Cp f and 255 W cos(s)^n (white highlight), D + MF fraction bits -------------
+  // ---- stage 32: Cp f and 255 W cos(s)^n (white highlight), D + MF fraction bits -------------
   // The final rounding's half, 2^(D+MF-1), is set in Cp f's sum as a bit above Cp f0 (< 2^(PSplit+8)
-  // <= 2^(D+MF-1): an OR, no carry), so stage 25 adds two operands, not three.
+  // <= 2^(D+MF-1): an OR, no carry), so stage 33 adds two operands, not three.
   localparam logic [LW-1:0] Half = LW'(1) << (DotBits + MF - 1);
   logic [3*LW-1:0] diff2_q;  // Cp f plus the rounding half, channel c at c * LW
   logic [LW-1:0]   spec_q;
@@ -385,7 +408,7 @@ module phong_shader #(
     spec_q <= (LW'(wa0_q) + (LW'(wa1_q) << PSplit)) << (DotBits - PowBits);
   end
 
-  // ---- stage 25: level = saturate(round(Cp f + 255 W pow)) --------------------------------------
+  // ---- stage 33: level = saturate(round(Cp f + 255 W pow)) --------------------------------------
   logic [watkins_pkg::RgbBits-1:0] rgb_q;
   always_ff @(posedge clk_i) if (ce[PowLast+2]) begin
     for (int c = 0; c < 3; c++) begin

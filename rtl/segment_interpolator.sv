@@ -1,16 +1,17 @@
 // segment_interpolator: span setup for each segment E..F, then one fragment per pixel by alpha
 // stepping, exactly model/twins/segment_interpolator.cpp (setup(), fragment(), step()).
 // Setup pipeline, one segment per clock: s0 (first pixel centres, dx, offset, deltas) ->
-// span_reciprocal (26) -> sa (pixel range clamped to the screen, empty test, alpha and step
-// partial products, deltas in 17-bit pieces when wider than a MULT18, each product in its
-// multiplier block's register) -> sp (alpha0's sum; each delta piece's pair of step partial
-// products added) -> sh (alpha0's shift; the steps' sums of their pieces) -> sb (round, clamp
+// span_reciprocal (26) -> sa (alpha and step partial products, deltas in 17-bit pieces when
+// wider than a MULT18, each product in its multiplier block's register) -> sp (alpha0's sum;
+// each delta piece's pair of step partial products added; the pixel range clamped to the screen,
+// the empty test) -> sh (alpha0's shift; the steps' sums of their pieces) -> sb (round, clamp
 // alpha0; the steps' shifts) -> sc (value partial products, in their blocks' registers too; the
 // steps saturated) -> sv (each delta piece's pair of value partial products added) -> sd (the
 // pieces' sums with E and the rounding constant: the value E + round(delta*alpha0)) -> FIFO;
-// empty spans are dropped before the FIFO. The stepper emits one fragment per clock from a registered output,
-// taking a span's first pixel straight from the FIFO head, so consecutive spans (even of one
-// pixel) leave no bubble and a span's setup hides behind the previous spans' pixels.
+// empty spans are dropped before the FIFO. The stepper emits one fragment per clock from a
+// registered output, taking a span's first pixel straight from the FIFO head, so consecutive
+// spans (even of one pixel) leave no bubble and a span's setup hides behind the previous spans'
+// pixels.
 // Latency segment -> first fragment: 36 cycles. All stage outputs registered; the setup stages'
 // one stall signal (tail_en) is a flop, loaded a clock ahead from the FIFO's next ready. A setup
 // stage's registers load only for a valid beat (the stall and the valid entering the stage), and
@@ -98,9 +99,11 @@ module segment_interpolator #(
   localparam int unsigned ShSB   = $clog2(ShSMax + 1);
 
   // ---------------------------------------------------------------- s0: range and clipping
-  // s0 -> span_reciprocal: the first centres of X_E and X_F unclamped; sa clamps them and decides
-  // whether the span is empty (span_mid_t), so s0 holds only first_centre's add and the offset's
-  // mux (the clamps and the empty compares after that add were s0's longest path).
+  // s0 -> span_reciprocal -> sa: the first centres of X_E and X_F unclamped; sp clamps them and
+  // decides whether the span is empty (span_mid_t), so s0 holds only first_centre's add and the
+  // offset's mux (the clamps and the empty compares after that add were s0's longest path), and
+  // sa only copies the span out of the reciprocal's payload RAM (after the RAM's output register
+  // and its route they were the sized Gouraud top's longest path, 11.5 ns at 084a177).
   typedef struct packed {
     logic                    eol;
     logic [PolyIdBits-1:0]   poly;
@@ -111,7 +114,7 @@ module segment_interpolator #(
     logic [IVB-1:0]          e;       // E's slots Z..
     logic [IDB-1:0]          delta;   // F - E per slot
   } span_pre_t;
-  // sa .. sd: the pixel range clamped to the screen.
+  // sp .. sd: the pixel range clamped to the screen.
   typedef struct packed {
     logic                    eol;
     logic                    empty;   // no pixel centre in [X_E, X_F) on screen
@@ -240,7 +243,11 @@ module segment_interpolator #(
   localparam int unsigned RHi = RecipBits + 1 - MSplit;                    // recip's high part
   localparam int unsigned AHi = AlphaBits + 1 - MSplit;                    // alpha0's high part
   logic                sa_valid_q, sp_valid_q, sh_valid_q, sb_valid_q, sc_valid_q, sd_valid_q;
-  span_mid_t           sa_span_q, sp_span_q, sh_span_q, sb_span_q, sc_span_q;
+  // sa's copy of the span leaving the reciprocal (its offset is read there, by the products).
+  /* verilator lint_off UNUSEDSIGNAL */
+  span_pre_t           sa_span_q;
+  /* verilator lint_on UNUSEDSIGNAL */
+  span_mid_t           sp_span_q, sh_span_q, sb_span_q, sc_span_q;
   logic                sv_valid_q;
   span_mid_t           sv_span_q;
   logic [ShAB-1:0]     sa_sha_q, sp_sha_q;  // alpha0's shift p + RecipBits - AlphaBits
@@ -313,30 +320,31 @@ module segment_interpolator #(
 
   always_ff @(posedge clk_i) begin
     if (sa_ce) begin : sa_set
-      // sa: the pixel range x_start = max(fce, 0), x_end = min(fcf, width), from s0's registered
-      // first centres. The clamped ends keep LB bits: beyond them the span is empty.
-      /* verilator lint_off UNUSEDSIGNAL */
-      logic signed [PCB-1:0] xs_full, xe_full;
-      /* verilator lint_on UNUSEDSIGNAL */
-      xs_full = (rc_span.fce < 0) ? '0 : rc_span.fce;
-      xe_full = (rc_span.fcf > $signed(PCB'(width_i))) ? $signed(PCB'(width_i)) : rc_span.fcf;
-      sa_span_q.eol      <= rc_span.eol;
-      // empty = min(fcf, width) <= max(fce, 0), spread into four compares of the unclamped ends
-      // that run side by side (through the clamps it was the block's longest path).
-      sa_span_q.empty    <= (rc_span.fcf <= rc_span.fce) || (rc_span.fcf <= 0)
-                         || ($signed(PCB'(width_i)) <= rc_span.fce) || (width_i == '0);
-      sa_span_q.poly     <= rc_span.poly;
-      sa_span_q.material <= rc_span.material;
-      sa_span_q.xs       <= LB'(xs_full);
-      sa_span_q.xe       <= LB'(xe_full);
-      sa_span_q.e        <= rc_span.e;
-      sa_span_q.delta    <= rc_span.delta;
+      sa_span_q <= rc_span;
       // Both shifts are known from p alone: computed here, beside the products.
       sa_sha_q  <= ShAB'(rc_p) + ShAB'(RecipBits) - ShAB'(AlphaBits);
       sa_shs_q  <= ShSB'(rc_p) + ShSB'(RecipBits) - ShSB'(FX);
     end
-    if (sp_ce) begin
-      sp_span_q <= sa_span_q;
+    if (sp_ce) begin : sp_set
+      // sp: the pixel range x_start = max(fce, 0), x_end = min(fcf, width), from sa's copy of
+      // the span. The clamped ends keep LB bits: beyond them the span is empty.
+      /* verilator lint_off UNUSEDSIGNAL */
+      logic signed [PCB-1:0] xs_full, xe_full;
+      /* verilator lint_on UNUSEDSIGNAL */
+      xs_full = (sa_span_q.fce < 0) ? '0 : sa_span_q.fce;
+      xe_full = (sa_span_q.fcf > $signed(PCB'(width_i))) ? $signed(PCB'(width_i))
+                                                         : sa_span_q.fcf;
+      sp_span_q.eol      <= sa_span_q.eol;
+      // empty = min(fcf, width) <= max(fce, 0), spread into four compares of the unclamped ends
+      // that run side by side (through the clamps it was the block's longest path).
+      sp_span_q.empty    <= (sa_span_q.fcf <= sa_span_q.fce) || (sa_span_q.fcf <= 0)
+                         || ($signed(PCB'(width_i)) <= sa_span_q.fce) || (width_i == '0);
+      sp_span_q.poly     <= sa_span_q.poly;
+      sp_span_q.material <= sa_span_q.material;
+      sp_span_q.xs       <= LB'(xs_full);
+      sp_span_q.xe       <= LB'(xe_full);
+      sp_span_q.e        <= sa_span_q.e;
+      sp_span_q.delta    <= sa_span_q.delta;
       sp_sha_q  <= sa_sha_q;
       sp_shs_q  <= sa_shs_q;
       sp_pa_q   <= APBits'({sa_pa11_q, sa_pa00_q}) + (APBits'(sa_pa01_q) << MSplit)

@@ -27,7 +27,7 @@ constexpr int RecipStages = fmt::RecipBits + 2;  // span_reciprocal: normalize +
 constexpr int InterpFifoDepth = 4;               // segment_interpolator's FifoDepth
 constexpr int InterpTailStages = 7;              // segment_interpolator: sa, sp, sh, sb, sc, sv, sd after the reciprocal
 constexpr int NormalizerStages = 14;             // normalizer: squares, sum, rsqrt_unit (8), partial products, sum, shift, round
-constexpr int ShaderStages = 25;                 // phong_shader: dots (3), cos(s) (3), 8 powers (2 each), 3 out
+constexpr int ShaderStages = 33;                 // phong_shader: dots (3), cos(s) (3), 8 powers (3 each), 3 out
 constexpr int SmootherStages = fmt::ShadeBits + 6;  // smoother: line read, window, pairs, sums, products, dividend, a divider
                                                     // stage per quotient bit
 constexpr int FragQueueDepth = 2;                // watkins_top's u_frag_queue (registered ready)

@@ -13,6 +13,13 @@
   always_ff @(posedge clk_i) past_q <= 1'b1; \
   always_comb if (!past_q) assume (!rst_ni);
 
+// A LookAhead consumer (stall_pipe's LookAhead = 1): ready_i is what ready_next_i said a clock
+// before. ahead: the harness's LookAhead parameter (0: ready_next_i is unconstrained and unread).
+`define FORMAL_READY_AHEAD(ahead) \
+  logic ready_next_q; \
+  always_ff @(posedge clk_i) ready_next_q <= ready_next_i; \
+  always_comb if ((ahead) && past_q) assume (ready_i == ready_next_q);
+
 // The environment obeys valid/ready on an input stream: a beat offered and not taken is offered
 // again the next clock, unchanged (unless a reset came in between). Written with explicit
 // registers and an immediate assume in always_comb, so it constrains the same clock it speaks of:
@@ -75,11 +82,15 @@
   (* hierconn *) logic [Stages-1:0]      \u_dut.u_pipe.valid_q ; \
   (* hierconn *) logic [PtrBits-1:0]     \u_dut.u_pipe.g_ram.wr_q ; \
   (* hierconn *) logic [PtrBits-1:0]     \u_dut.u_pipe.g_ram.rd_q ; \
+  (* hierconn *) logic [PtrBits-1:0]     \u_dut.u_pipe.g_ram.rd_inc_q ; \
   (* hierconn *) logic [PayloadBits-1:0] \u_dut.u_pipe.g_ram.out_q ; \
   logic [Depth*PayloadBits-1:0] mem;
 
-// stall_pipe_checker over those probes: the tags in flight, stage by stage.
+// stall_pipe_checker over those probes: the tags in flight, stage by stage. rd_inc_q = rd_q + 1
+// (as stall_pipe_formal states it): without it the read address a clock ahead is free in the
+// induction step, which then needs length 2 (twice the SAT problem).
 `define FORMAL_RAM_PIPE_CHECK \
+  always_comb if (rst_ni) assert (\u_dut.u_pipe.g_ram.rd_inc_q == \u_dut.u_pipe.g_ram.rd_q + 1'b1); \
   stall_pipe_checker #(.Stages(Stages), .PayloadBits(PayloadBits), .PayloadRam(1'b1)) u_check ( \
     .clk_i, \
     .rst_ni, \
@@ -132,5 +143,41 @@
   `FORMAL_WORD(mem, PayloadBits, 29, \u_dut.u_pipe.g_ram.mem[29] ) \
   `FORMAL_WORD(mem, PayloadBits, 30, \u_dut.u_pipe.g_ram.mem[30] ) \
   `FORMAL_WORD(mem, PayloadBits, 31, \u_dut.u_pipe.g_ram.mem[31] )
+
+// Depth = 64 (a pipe of 32 to 63 stages): words 32..63 as well.
+`define FORMAL_RAM_PIPE_WORDS_64 \
+  `FORMAL_RAM_PIPE_WORDS_32 \
+  `FORMAL_WORD(mem, PayloadBits, 32, \u_dut.u_pipe.g_ram.mem[32] ) \
+  `FORMAL_WORD(mem, PayloadBits, 33, \u_dut.u_pipe.g_ram.mem[33] ) \
+  `FORMAL_WORD(mem, PayloadBits, 34, \u_dut.u_pipe.g_ram.mem[34] ) \
+  `FORMAL_WORD(mem, PayloadBits, 35, \u_dut.u_pipe.g_ram.mem[35] ) \
+  `FORMAL_WORD(mem, PayloadBits, 36, \u_dut.u_pipe.g_ram.mem[36] ) \
+  `FORMAL_WORD(mem, PayloadBits, 37, \u_dut.u_pipe.g_ram.mem[37] ) \
+  `FORMAL_WORD(mem, PayloadBits, 38, \u_dut.u_pipe.g_ram.mem[38] ) \
+  `FORMAL_WORD(mem, PayloadBits, 39, \u_dut.u_pipe.g_ram.mem[39] ) \
+  `FORMAL_WORD(mem, PayloadBits, 40, \u_dut.u_pipe.g_ram.mem[40] ) \
+  `FORMAL_WORD(mem, PayloadBits, 41, \u_dut.u_pipe.g_ram.mem[41] ) \
+  `FORMAL_WORD(mem, PayloadBits, 42, \u_dut.u_pipe.g_ram.mem[42] ) \
+  `FORMAL_WORD(mem, PayloadBits, 43, \u_dut.u_pipe.g_ram.mem[43] ) \
+  `FORMAL_WORD(mem, PayloadBits, 44, \u_dut.u_pipe.g_ram.mem[44] ) \
+  `FORMAL_WORD(mem, PayloadBits, 45, \u_dut.u_pipe.g_ram.mem[45] ) \
+  `FORMAL_WORD(mem, PayloadBits, 46, \u_dut.u_pipe.g_ram.mem[46] ) \
+  `FORMAL_WORD(mem, PayloadBits, 47, \u_dut.u_pipe.g_ram.mem[47] ) \
+  `FORMAL_WORD(mem, PayloadBits, 48, \u_dut.u_pipe.g_ram.mem[48] ) \
+  `FORMAL_WORD(mem, PayloadBits, 49, \u_dut.u_pipe.g_ram.mem[49] ) \
+  `FORMAL_WORD(mem, PayloadBits, 50, \u_dut.u_pipe.g_ram.mem[50] ) \
+  `FORMAL_WORD(mem, PayloadBits, 51, \u_dut.u_pipe.g_ram.mem[51] ) \
+  `FORMAL_WORD(mem, PayloadBits, 52, \u_dut.u_pipe.g_ram.mem[52] ) \
+  `FORMAL_WORD(mem, PayloadBits, 53, \u_dut.u_pipe.g_ram.mem[53] ) \
+  `FORMAL_WORD(mem, PayloadBits, 54, \u_dut.u_pipe.g_ram.mem[54] ) \
+  `FORMAL_WORD(mem, PayloadBits, 55, \u_dut.u_pipe.g_ram.mem[55] ) \
+  `FORMAL_WORD(mem, PayloadBits, 56, \u_dut.u_pipe.g_ram.mem[56] ) \
+  `FORMAL_WORD(mem, PayloadBits, 57, \u_dut.u_pipe.g_ram.mem[57] ) \
+  `FORMAL_WORD(mem, PayloadBits, 58, \u_dut.u_pipe.g_ram.mem[58] ) \
+  `FORMAL_WORD(mem, PayloadBits, 59, \u_dut.u_pipe.g_ram.mem[59] ) \
+  `FORMAL_WORD(mem, PayloadBits, 60, \u_dut.u_pipe.g_ram.mem[60] ) \
+  `FORMAL_WORD(mem, PayloadBits, 61, \u_dut.u_pipe.g_ram.mem[61] ) \
+  `FORMAL_WORD(mem, PayloadBits, 62, \u_dut.u_pipe.g_ram.mem[62] ) \
+  `FORMAL_WORD(mem, PayloadBits, 63, \u_dut.u_pipe.g_ram.mem[63] )
 
 `endif

@@ -2,11 +2,14 @@
 // output until ready, passes every beat once, in order, with its payload unchanged (each input
 // beat carries its sequence number as payload), keeps ready_o = ready_i || !valid_o and holds at
 // most 14 beats. stall_pipe_checker ties the payload RAM of its u_pipe to the tags in flight; the
-// normal's datapath is free (its values are the unit benches' business).
+// normal's datapath is free (its values are the unit benches' business), and so are the products:
+// scripts/formal reads tests/formal/mul18_reg_free.sv in place of rtl/mul18_reg.sv. LookAhead = 1
+// (the Phong top's): the environment gives ready_i a clock ahead on ready_next_i.
 `include "formal_stream.svh"
 
 module normalizer_formal #(
   parameter int unsigned PayloadBits = 4,  // the tag: >= log2 of the RAM depth
+  parameter bit          LookAhead   = 1'b0,  // the Phong top's setting is 1
   localparam int unsigned NB      = watkins_pkg::NormalInBits,
   localparam int unsigned UB      = watkins_pkg::UnitBits,
   localparam int unsigned Stages  = 14,  // normalizer's pipe: squares, sum, rsqrt (8), partial products, sum, shift, round
@@ -19,15 +22,16 @@ module normalizer_formal #(
   input  logic [PayloadBits-1:0] payload_i,
   input  logic                   valid_i,
   input  logic                   ready_i,
-  input  logic                   ready_next_i  // LookAhead is 0: only ready_next_o reads it (unchecked)
+  input  logic                   ready_next_i  // LookAhead: ready_i of the next clock
 );
   logic                   ready_o, valid_o, ready_next_o;
   logic [3*UB-1:0]        unit_o;
   logic                   null_o;
   logic [PayloadBits-1:0] payload_o;
-  normalizer #(.PayloadBits(PayloadBits)) u_dut (.*);
+  normalizer #(.PayloadBits(PayloadBits), .LookAhead(LookAhead)) u_dut (.*);
 
   `FORMAL_PAST
+  `FORMAL_READY_AHEAD(LookAhead)
   `FORMAL_COUNT(n_in_q, PayloadBits, valid_i, ready_o)
   `FORMAL_COUNT(n_out_q, PayloadBits, valid_o, ready_i)
   `FORMAL_ASSUME_HOLD(in, valid_i, ready_o, {normal_i, payload_i})

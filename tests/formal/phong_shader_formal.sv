@@ -1,16 +1,19 @@
-// phong_shader_formal: proves rtl/phong_shader.sv (25 stages, a 5-bit payload) holds valid and its
+// phong_shader_formal: proves rtl/phong_shader.sv (33 stages, a 6-bit payload) holds valid and its
 // shade until ready, passes every beat once, in order, with its payload unchanged (each input beat
 // carries its sequence number as payload), keeps ready_o = ready_i || !valid_o and holds at most
-// 25 beats. stall_pipe_checker ties the payload RAM of its u_pipe to the tags in flight; the
-// shading datapath, light and eye are free (values are the unit benches' business).
+// 33 beats. stall_pipe_checker ties the payload RAM of its u_pipe to the tags in flight; the
+// shading datapath, light and eye are free (values are the unit benches' business), and so are the
+// products: scripts/formal reads tests/formal/mul18_reg_free.sv in place of rtl/mul18_reg.sv.
+// LookAhead = 1 (the Phong top's): the environment gives ready_i a clock ahead on ready_next_i.
 `include "formal_stream.svh"
 
 module phong_shader_formal #(
-  parameter int unsigned PayloadBits = 5,  // the tag: >= log2 of the RAM depth
+  parameter int unsigned PayloadBits = 6,  // the tag: >= log2 of the RAM depth
+  parameter bit          LookAhead   = 1'b0,  // the Phong top's setting is 1
   localparam int unsigned UB      = watkins_pkg::UnitBits,
   localparam int unsigned MB      = watkins_pkg::MaterialBits,
   localparam int unsigned SB      = watkins_pkg::ShininessBits,
-  localparam int unsigned Stages  = 6 + 2 * SB + 3,  // phong_shader's pipe: dots, cos(s), powers, output
+  localparam int unsigned Stages  = 6 + 3 * SB + 3,  // phong_shader's pipe: dots, cos(s), powers, output
   localparam int unsigned PtrBits = $clog2(Stages + 1),
   localparam int unsigned Depth   = 2 ** PtrBits
 ) (
@@ -26,14 +29,15 @@ module phong_shader_formal #(
   input  logic [PayloadBits-1:0] payload_i,
   input  logic                   valid_i,
   input  logic                   ready_i,
-  input  logic                   ready_next_i  // LookAhead is 0: only ready_next_o reads it (unchecked)
+  input  logic                   ready_next_i  // LookAhead: ready_i of the next clock
 );
   logic                   ready_o, valid_o, ready_next_o;
   watkins_pkg::rgb_t      rgb_o;
   logic [PayloadBits-1:0] payload_o;
-  phong_shader #(.PayloadBits(PayloadBits)) u_dut (.*);
+  phong_shader #(.PayloadBits(PayloadBits), .LookAhead(LookAhead)) u_dut (.*);
 
   `FORMAL_PAST
+  `FORMAL_READY_AHEAD(LookAhead)
   `FORMAL_COUNT(n_in_q, PayloadBits, valid_i, ready_o)
   `FORMAL_COUNT(n_out_q, PayloadBits, valid_o, ready_i)
   `FORMAL_ASSUME_HOLD(in, valid_i, ready_o, {normal_i, cp_i, d_i, w_i, shininess_i, payload_i})
@@ -43,7 +47,7 @@ module phong_shader_formal #(
 
   // The internals of u_pipe (stall_pipe with PayloadRam) and the stall.
   `FORMAL_RAM_PIPE_PROBES
-  `FORMAL_RAM_PIPE_WORDS_32
+  `FORMAL_RAM_PIPE_WORDS_64
 
   `FORMAL_RAM_PIPE_CHECK
 endmodule

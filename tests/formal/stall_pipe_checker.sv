@@ -1,14 +1,17 @@
 // stall_pipe_checker: the induction invariants of one rtl/stall_pipe.sv instance whose beats carry
 // sequence numbers (formal harnesses only; yosys `read_verilog -formal`). Its inputs are the
 // instance's internals, which the harness reads through hierconn wires. A ghost tag per stage
-// shifts on the instance's en as its valid bits do. The valid stages hold consecutive tags: each
-// one more than the nearest valid stage above (n_out - 1 above the top one) and one less than the
-// nearest valid stage below (n_in below the bottom one); each stage's payload (or the RAM word of
-// each beat in flight, and out_q) is its tag. Every invariant is local to a stage or a word: a
-// population count of the valid bits against n_in - n_out says the same, but the SAT solver
-// takes minutes on it at 26 stages (and explicit per-stage bounds on the beats ahead and behind
-// made it three times slower at 15). With them `sat -tempinduct` closes in two steps whatever the stall pattern;
-// without them a stall long enough hides any corrupt state.
+// shifts on the instance's en as its valid bits do: the n_in its slot entered with, bubble or
+// beat. Each slot's tag is the next older slot's plus that slot's valid bit, the oldest slot's is
+// n_out, the youngest slot's plus its valid bit n_in; per slot, the beats that entered after it
+// are at most the slots at and below it; each valid stage's payload (or each RAM word of a beat
+// in flight, and out_q) is its tag. Every invariant relates a stage to its neighbour or a word to
+// the counters, so the SAT problem has no chain across the stages (session 14: the former
+// invariants, each valid stage's tag against the nearest valid stage above and below, a
+// 33-deep mux chain, and each valid stage's RAM word, Stages x Depth checks, left the 33-stage
+// shader's proof open after 2,400 s; these close it in half a minute of CPU). With them
+// `sat -tempinduct` closes at length 1 whatever the stall pattern; without them a stall long
+// enough hides any corrupt state.
 module stall_pipe_checker #(
   parameter int unsigned Stages      = 2,
   parameter int unsigned PayloadBits = 4,     // the tag width, >= PtrBits
@@ -28,40 +31,49 @@ module stall_pipe_checker #(
   input logic [Depth*PayloadBits-1:0]   mem_i,         // g_ram.mem[k] at k*PayloadBits
   input logic [PayloadBits-1:0]         out_q_i        // g_ram.out_q
 );
-  logic [PayloadBits-1:0] tag_q [Stages];  // the tag of the beat in each stage (when valid)
+  // The ghost tag of each stage: n_in when the stage's slot entered, for a bubble as for a beat
+  // (reset with the counters, so the invariants hold from the reset on).
+  logic [PayloadBits-1:0] tag_q [Stages];
   always_ff @(posedge clk_i) begin
-    if (en_i) begin
+    if (!rst_ni) begin
+      for (int unsigned s = 0; s < Stages; s++) tag_q[s] <= '0;
+    end else if (en_i) begin
       tag_q[0] <= n_in_i;
       for (int unsigned s = 1; s < Stages; s++) tag_q[s] <= tag_q[s-1];
     end
   end
 
-  // The tag of the nearest valid stage above s (n_out - 1 if none), and below s (n_in if none).
-  logic [PayloadBits-1:0] above [Stages];
-  logic [PayloadBits-1:0] below [Stages];
-  always_comb begin
-    above[Stages-1] = n_out_i - 1'b1;
-    for (int s = Stages - 2; s >= 0; s--) above[s] = valid_q_i[s+1] ? tag_q[s+1] : above[s+1];
-    below[0] = n_in_i;
-    for (int s = 1; s < Stages; s++) below[s] = valid_q_i[s-1] ? tag_q[s-1] : below[s-1];
-  end
+  // The tag at or after n_out whose low PtrBits are w: the beat word w holds if it is in flight.
+  logic [PayloadBits-1:0] word_tag [Depth];
+  always_comb
+    for (int unsigned w = 0; w < Depth; w++)
+      word_tag[w] = n_out_i + PayloadBits'(PtrBits'(PtrBits'(w) - PtrBits'(n_out_i)));
 
   always_comb begin
     if (rst_ni) begin
-      // No beat in flight: as many in as out.
-      if (valid_q_i == '0) assert (n_in_i == n_out_i);
+      // Each slot's tag is the next older slot's plus that slot's valid bit (a beat took a
+      // number, a bubble none); the youngest slot's plus its valid bit is n_in, the oldest
+      // slot's tag is n_out (every beat before it has left).
+      assert (n_in_i == tag_q[0] + PayloadBits'(valid_q_i[0]));
+      for (int unsigned s = 0; s + 1 < Stages; s++)
+        assert (tag_q[s] == tag_q[s+1] + PayloadBits'(valid_q_i[s+1]));
+      assert (n_out_i == tag_q[Stages-1]);
+      // Beats that entered after slot s's: at most s + 1 (the slots at and below it), at least
+      // one if slot s holds a beat. (Each follows from the sums above; stated per slot, every
+      // invariant is local, and beats in flight = n_in - tag_q[Stages-1] <= Stages.)
       for (int unsigned s = 0; s < Stages; s++) begin
-        if (valid_q_i[s]) begin
-          assert (tag_q[s] == above[s] + 1'b1 && tag_q[s] == below[s] - 1'b1);
-          if (!PayloadRam) assert (shift_q_i[s*PayloadBits +: PayloadBits] == tag_q[s]);
-          // Its RAM word holds it (Depth > Stages: a word is rewritten only once its beat left).
-          if (PayloadRam)
-            for (int unsigned w = 0; w < Depth; w++)
-              if (PtrBits'(tag_q[s]) == PtrBits'(w))
-                assert (mem_i[w*PayloadBits +: PayloadBits] == tag_q[s]);
-        end
+        assert (PayloadBits'(n_in_i - tag_q[s]) <= PayloadBits'(s + 1));
+        if (valid_q_i[s]) assert (n_in_i != tag_q[s]);
+        if (!PayloadRam && valid_q_i[s]) assert (shift_q_i[s*PayloadBits +: PayloadBits] == tag_q[s]);
       end
       if (PayloadRam) begin
+        // Each word of a beat in flight holds its tag (Depth > Stages: a word is rewritten only
+        // once its beat left). Word w's beat, if any, is the tag at or after n_out whose low
+        // PtrBits are w; it is in flight if it comes before n_in.
+        for (int unsigned w = 0; w < Depth; w++) begin
+          if (PayloadBits'(word_tag[w] - n_out_i) < PayloadBits'(n_in_i - n_out_i))
+            assert (mem_i[w*PayloadBits +: PayloadBits] == word_tag[w]);
+        end
         // The pointers count beats in and out as the tags do.
         assert (wr_q_i == PtrBits'(n_in_i) && rd_q_i == PtrBits'(n_out_i));
         // The beat in the last stage: out_q was loaded with it as it left the stage before (its

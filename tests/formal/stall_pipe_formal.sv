@@ -40,10 +40,7 @@ module stall_pipe_formal #(
   always_comb if (rst_ni) assert (valid_q_o[Stages-1] == valid_o);
 
   `FORMAL_PAST
-  // LookAhead: ready_i is what ready_next_i said a clock before.
-  logic ready_next_q;
-  always_ff @(posedge clk_i) ready_next_q <= ready_next_i;
-  always_comb if (LookAhead && past_q) assume (ready_i == ready_next_q);
+  `FORMAL_READY_AHEAD(LookAhead)
   `FORMAL_COUNT(n_in_q, PayloadBits, valid_i, ready_o)
   `FORMAL_COUNT(n_out_q, PayloadBits, valid_o, ready_i)
   `FORMAL_ASSUME_HOLD(in, valid_i, ready_o, payload_i)
