@@ -2,15 +2,17 @@
 // stepping, exactly model/twins/segment_interpolator.cpp (setup(), fragment(), step()).
 // Setup pipeline, one segment per clock: s0 (first pixel centres, dx, offset, deltas) ->
 // span_reciprocal (26) -> sa (alpha and step partial products, deltas in 17-bit pieces when
-// wider than a MULT18, each product in its multiplier block's register) -> sp (their sums; the
-// pixel range clamped to the screen, the empty test) -> sh (their shifts) -> sb (round, clamp
-// alpha0, saturate steps) -> sc (value partial products, in their blocks' registers too) -> sd
-// (their sums with E and the rounding constant: the value E + round(delta*alpha0)) -> FIFO;
+// wider than a MULT18, each product in its multiplier block's register) -> sp (alpha0's sum;
+// each delta piece's pair of step partial products added; the pixel range clamped to the screen,
+// the empty test) -> sh (alpha0's shift; the steps' sums of their pieces) -> sb (round, clamp
+// alpha0; the steps' shifts) -> sc (value partial products, in their blocks' registers too; the
+// steps saturated) -> sv (each delta piece's pair of value partial products added) -> sd (the
+// pieces' sums with E and the rounding constant: the value E + round(delta*alpha0)) -> FIFO;
 // empty spans are dropped before the FIFO. The stepper emits one fragment per clock from a
 // registered output, taking a span's first pixel straight from the FIFO head, so consecutive
 // spans (even of one pixel) leave no bubble and a span's setup hides behind the previous spans'
 // pixels.
-// Latency segment -> first fragment: 35 cycles. All stage outputs registered; the setup stages'
+// Latency segment -> first fragment: 36 cycles. All stage outputs registered; the setup stages'
 // one stall signal (tail_en) is a flop, loaded a clock ahead from the FIFO's next ready. A setup
 // stage's registers load only for a valid beat (the stall and the valid entering the stage), and
 // their values are computed inside that enable: a simulator evaluates the setup only on the
@@ -221,15 +223,21 @@ module segment_interpolator #(
   );
 
   // ---------------------------------------------------------------- sa .. sd: alpha0, steps, values
-  // sa: offset * recip and delta * recip as partial products. sp: their sums. sh: their shifts.
-  // sb: alpha0 = min(round_shift(offset*recip, p + RecipBits - AlphaBits), 2^AlphaBits)
-  // (round_shift by 0 is exact) and the steps. sc: delta * alpha0 as partial products. sd: the
-  // values.
+  // sa: offset * recip and delta * recip as partial products. sp: offset * recip's sum, and each
+  // delta piece's two step partial products added. sh: alpha0's shift, the steps' sums of their
+  // pieces. sb: alpha0 = min(round_shift(offset*recip, p + RecipBits - AlphaBits), 2^AlphaBits)
+  // (round_shift by 0 is exact), the steps' shifts. sc: delta * alpha0 as partial products, the
+  // steps saturated. sv: each delta piece's two value partial products added. sd: the values.
   // Every product wider than a multiplier block is split at bit MSplit of each operand too wide
   // for one, each partial product registered in its block (mul18_reg) and the partial products
-  // summed a stage later (a product and its adder tree in one clock limited the block):
+  // summed later (a product and its adder tree in one clock limited the block):
   // x y = x0 y0 + (x0 y1 + x1 y0) 2^MSplit + x1 y1 2^(2 MSplit), the sums taken modulo the
-  // product's word as before. recip and alpha0 are unsigned, so their halves are too.
+  // product's word as before. recip and alpha0 are unsigned, so their halves are too. A delta cut
+  // into K pieces has 2K partial products per slot; they are summed over two stages (sp and sh
+  // for a step, sv and sd for a value): first each piece's pair, one two-operand add beside its
+  // blocks, then the K pairs (their sum in one clock, six operands from the blocks' registers,
+  // was the Phong configuration's longest path: 88.1 MHz). The steps wait two stages for the
+  // values anyway, so their extra stage costs no cycle; the values' costs one.
   localparam int unsigned MSplit = 17;  // a low part fits an 18 x 18 multiplier, signed or not
   localparam int unsigned OHi = (DxBits > MSplit) ? DxBits - MSplit : 1;  // offset's high part
   localparam int unsigned RHi = RecipBits + 1 - MSplit;                    // recip's high part
@@ -240,8 +248,10 @@ module segment_interpolator #(
   span_pre_t           sa_span_q;
   /* verilator lint_on UNUSEDSIGNAL */
   span_mid_t           sp_span_q, sh_span_q, sb_span_q, sc_span_q;
+  logic                sv_valid_q;
+  span_mid_t           sv_span_q;
   logic [ShAB-1:0]     sa_sha_q, sp_sha_q;  // alpha0's shift p + RecipBits - AlphaBits
-  logic [ShSB-1:0]     sa_shs_q, sp_shs_q;  // the steps' shift p + RecipBits - FX (> 0)
+  logic [ShSB-1:0]     sa_shs_q, sp_shs_q, sh_shs_q;  // the steps' shift p + RecipBits - FX (> 0)
   logic [2*MSplit-1:0]   sa_pa00_q;           // offset * recip: low x low
   logic [MSplit+RHi-1:0] sa_pa01_q;           // low offset x high recip
   logic [OHi+MSplit-1:0] sa_pa10_q;           // high offset x low recip
@@ -252,7 +262,7 @@ module segment_interpolator #(
   /* verilator lint_off UNUSEDSIGNAL */
   span_mid_t           sd_span_q;
   /* verilator lint_on UNUSEDSIGNAL */
-  logic [IVB-1:0]      sb_step_q, sc_step_q, sd_step_q;
+  logic [IVB-1:0]      sc_step_q, sv_step_q, sd_step_q;
   logic [IVB-1:0]      sd_value_q;          // E + round_shift(delta * alpha0, AlphaBits) per slot
 
   logic [MSplit-1:0] rc_r0, sb_a0;  // recip's and alpha0's low parts
@@ -278,13 +288,14 @@ module segment_interpolator #(
   // as the reciprocal's stages do (stall_pipe's ce_o). A bubble leaves a stage's registers as
   // they were (nobody reads a bubble's values), and a simulator evaluates a stage's products
   // and sums, computed inside its enable, only on the clocks a span passes. Same flops.
-  logic sa_ce, sp_ce, sh_ce, sb_ce, sc_ce, sd_ce;
+  logic sa_ce, sp_ce, sh_ce, sb_ce, sc_ce, sv_ce, sd_ce;
   assign sa_ce = tail_en && rc_valid;
   assign sp_ce = tail_en && sa_valid_q;
   assign sh_ce = tail_en && sp_valid_q;
   assign sb_ce = tail_en && sh_valid_q;
   assign sc_ce = tail_en && sb_valid_q;
-  assign sd_ce = tail_en && sc_valid_q;
+  assign sv_ce = tail_en && sc_valid_q;
+  assign sd_ce = tail_en && sv_valid_q;
 
   // offset * recip's partial products, each in its multiplier block's own register (mul18_reg:
   // the MULT18X18D's output register on the ECP5): a product is then the block's setup, not a
@@ -341,6 +352,7 @@ module segment_interpolator #(
     end
     if (sh_ce) begin
       sh_span_q <= sp_span_q;
+      sh_shs_q  <= sp_shs_q;
       sh_u_q    <= {sp_pa_q, 1'b0} >> sp_sha_q;
     end
     if (sb_ce) begin : sb_set
@@ -351,13 +363,14 @@ module segment_interpolator #(
       sb_span_q  <= sh_span_q;
       sb_alpha_q <= over ? (AlphaBits + 1)'(1 << AlphaBits) : ua + (AlphaBits + 1)'(sh_u_q[0]);
     end
-    if (sc_ce) begin
-      sc_span_q <= sb_span_q;
-      sc_step_q <= sb_step_q;
+    if (sc_ce) sc_span_q <= sb_span_q;
+    if (sv_ce) begin
+      sv_span_q <= sc_span_q;
+      sv_step_q <= sc_step_q;
     end
     if (sd_ce) begin
-      sd_span_q <= sc_span_q;
-      sd_step_q <= sc_step_q;
+      sd_span_q <= sv_span_q;
+      sd_step_q <= sv_step_q;
     end
   end
 
@@ -382,70 +395,81 @@ module segment_interpolator #(
     localparam int unsigned Q1B = DB + RHi + 1;                   // piece * recip's high part
     localparam int unsigned QV1B = DB + AHi + 1;                  // piece * alpha0's high part
     localparam int unsigned TW  = W + 1 - MSplit * (K - 1);       // the top piece's bits
-    logic [K*Q0B-1:0]      ps0_q, pv0_q;
-    logic [K*Q1B-1:0]      ps1_q;
-    logic [K*QV1B-1:0]     pv1_q;
+    // A piece's pair x_k r0 + x_k r1 2^MSplit (steps) or x_k a0 + x_k a1 2^MSplit (values),
+    // exact: one bit above the wider of its two terms.
+    localparam int unsigned PSB = ((Q0B > Q1B + MSplit) ? Q0B : Q1B + MSplit) + 1;
+    localparam int unsigned PVB = ((Q0B > QV1B + MSplit) ? Q0B : QV1B + MSplit) + 1;
+    // The pairs, piece k at k PSB (k PVB), each written in its piece's generate block: the
+    // second stage of each sum reads these registers, never a vector of the blocks' outputs
+    // (one, assembled from every block's product on every clock, was most of Verilator's cost
+    // in this loop).
+    logic [K*PSB-1:0]      pps_q;       // in sp
+    logic [K*PVB-1:0]      ppv_q;       // in sv
     // Piece k of the delta at bit MSplit k: MSplit unsigned bits, the top one TW signed bits (the
     // multiplier sign-extends it). sa takes the delta leaving the reciprocal, sc the delta in sb;
-    // each partial product is one mul18_reg, registered in its block (see u_pa00).
+    // each partial product is one mul18_reg, registered in its block (see u_pa00), and its pair's
+    // add reads the two blocks' outputs straight.
     for (genvar k = 0; k < K; k++) begin : g_piece
       localparam bit          Top = (k == K - 1);
       localparam int unsigned PB  = Top ? TW : MSplit;
+      logic [Q0B-1:0]  ps0, pv0;  // x_k times the low part of recip / alpha0
+      logic [Q1B-1:0]  ps1;       // x_k times recip's high part
+      logic [QV1B-1:0] pv1;       // x_k times alpha0's high part
       mul18_reg #(.ABits(PB), .ASigned(Top), .BBits(MSplit), .PBits(Q0B)) u_ps0 (
-        .clk_i, .ce_i(sa_ce), .a_i(rc_span.delta[Dl + MSplit*k +: PB]), .b_i(rc_r0),
-        .p_o(ps0_q[k*Q0B +: Q0B]));
+        .clk_i, .ce_i(sa_ce), .a_i(rc_span.delta[Dl + MSplit*k +: PB]), .b_i(rc_r0), .p_o(ps0));
       mul18_reg #(.ABits(PB), .ASigned(Top), .BBits(RHi), .PBits(Q1B)) u_ps1 (
-        .clk_i, .ce_i(sa_ce), .a_i(rc_span.delta[Dl + MSplit*k +: PB]), .b_i(rc_r1),
-        .p_o(ps1_q[k*Q1B +: Q1B]));
+        .clk_i, .ce_i(sa_ce), .a_i(rc_span.delta[Dl + MSplit*k +: PB]), .b_i(rc_r1), .p_o(ps1));
       mul18_reg #(.ABits(PB), .ASigned(Top), .BBits(MSplit), .PBits(Q0B)) u_pv0 (
-        .clk_i, .ce_i(sc_ce), .a_i(sb_span_q.delta[Dl + MSplit*k +: PB]), .b_i(sb_a0),
-        .p_o(pv0_q[k*Q0B +: Q0B]));
+        .clk_i, .ce_i(sc_ce), .a_i(sb_span_q.delta[Dl + MSplit*k +: PB]), .b_i(sb_a0), .p_o(pv0));
       mul18_reg #(.ABits(PB), .ASigned(Top), .BBits(AHi), .PBits(QV1B)) u_pv1 (
-        .clk_i, .ce_i(sc_ce), .a_i(sb_span_q.delta[Dl + MSplit*k +: PB]), .b_i(sb_a1),
-        .p_o(pv1_q[k*QV1B +: QV1B]));
+        .clk_i, .ce_i(sc_ce), .a_i(sb_span_q.delta[Dl + MSplit*k +: PB]), .b_i(sb_a1), .p_o(pv1));
+      // The pairs' adds inside their stages' enables (see below).
+      always_ff @(posedge clk_i) begin
+        if (sp_ce) pps_q[k*PSB +: PSB] <= PSB'($signed(ps0)) + (PSB'($signed(ps1)) << MSplit);
+        if (sv_ce) ppv_q[k*PVB +: PVB] <= PVB'($signed(pv0)) + (PVB'($signed(pv1)) << MSplit);
+      end
     end
-    logic signed [PS-1:0]  ps_q;        // delta * recip, in sp
+    logic signed [PS-1:0]  ps_q;        // delta * recip, in sh
     // Shift first, round after, as alpha0: u = {x, 0} >>> s = floor(x / 2^(s-1)) (s > 0), and
     // rs = floor((u + 1) / 2) = (u >>> 1) + u[0]. Saturate from u's high bits: when u >>> 1
     // does not fit W bits, rs saturates to its sign (below the range, + u[0] reaches at most
-    // StepMin); when it fits, only StepMax + 1 leaves the range, so the increment is skipped
-    // there. The W-bit increment runs beside the tests, not before them.
-    logic signed [PS:0] u;              // in sh
+    // StepMin); when it fits, only StepMax + 1 leaves the range, so StepMax is picked there. The
+    // W-bit increment (by u[0] alone) runs beside the tests, which pick among it and the bounds:
+    // the test for StepMax in the increment's carry-in was the Phong block's longest path
+    // (u_q -> at_max -> the carry chain -> sc_step_q, 10.3 ns).
+    logic signed [PS:0] u_q;            // in sb
     // Every value below is computed inside its stage's enable (sa_ce .. sd_ce), not in an
     // always_comb or assign that only feeds it: the same logic, evaluated by a simulator only
     // when a span passes.
     always_ff @(posedge clk_i) begin
-      if (sp_ce) begin : sp_sum
-        // The partial products' sum, modulo the product's word as before.
+      if (sh_ce) begin : sh_sum
+        // The pieces' pairs at bit MSplit k, summed modulo the product's word as before.
         logic signed [PS-1:0] sum;
         sum = '0;
-        for (int k = 0; k < K; k++) begin
-          sum = sum + (PS'($signed(ps0_q[k*Q0B +: Q0B])) << (MSplit * k))
-                    + (PS'($signed(ps1_q[k*Q1B +: Q1B])) << (MSplit * (k + 1)));
-        end
+        for (int k = 0; k < K; k++) sum = sum + (PS'($signed(pps_q[k*PSB +: PSB])) << (MSplit * k));
         ps_q <= sum;
       end
-      if (sh_ce) u <= $signed({ps_q, 1'b0}) >>> sp_shs_q;
-      if (sb_ce) begin : sb_sat
+      if (sb_ce) u_q <= $signed({ps_q, 1'b0}) >>> sh_shs_q;
+      if (sc_ce) begin : sc_sat
         logic fits, at_max;
-        fits   = &u[PS:W] || ~|u[PS:W];
-        at_max = !u[W] && &u[W-1:1];
-        if (!fits) sb_step_q[Lo +: W] <= u[PS] ? W'(StepMin) : W'(StepMax);
-        else sb_step_q[Lo +: W] <= u[W:1] + W'(u[0] && !at_max);
+        logic [W-1:0] inc;
+        fits   = &u_q[PS:W] || ~|u_q[PS:W];
+        at_max = !u_q[W] && &u_q[W-1:1];  // u >>> 1 = StepMax: the increment would leave the range
+        inc    = u_q[W:1] + W'(u_q[0]);
+        if (!fits) sc_step_q[Lo +: W] <= u_q[PS] ? W'(StepMin) : W'(StepMax);
+        else if (at_max) sc_step_q[Lo +: W] <= W'(StepMax);
+        else sc_step_q[Lo +: W] <= inc;
       end
       if (sd_ce) begin : sd_sum
         // value = wrap(E + ((pv + 2^(AlphaBits-1)) >> AlphaBits), W) = bits [AlphaBits +: W] of
         // pv + (E 2^AlphaBits + 2^(AlphaBits-1)): E and the rounding constant are one operand
-        // (their bits do not overlap), added with the partial products in sd, so the FIFO's
-        // input is a register. Sums modulo 2^VS keep those bits.
+        // (their bits do not overlap), added with the pieces' pairs in sd, so the FIFO's input
+        // is a register. Sums modulo 2^VS keep those bits.
         /* verilator lint_off UNUSEDSIGNAL */
         logic [VS-1:0] sum;
         /* verilator lint_on UNUSEDSIGNAL */
-        sum = {sc_span_q.e[Lo +: W], 1'b1, (AlphaBits - 1)'(0)};
-        for (int k = 0; k < K; k++) begin
-          sum = sum + (VS'($signed(pv0_q[k*Q0B +: Q0B])) << (MSplit * k))
-                    + (VS'($signed(pv1_q[k*QV1B +: QV1B])) << (MSplit * (k + 1)));
-        end
+        sum = {sv_span_q.e[Lo +: W], 1'b1, (AlphaBits - 1)'(0)};
+        for (int k = 0; k < K; k++) sum = sum + (VS'($signed(ppv_q[k*PVB +: PVB])) << (MSplit * k));
         sd_value_q[Lo +: W] <= W'(sum >> AlphaBits);
       end
     end
@@ -458,6 +482,7 @@ module segment_interpolator #(
       sh_valid_q <= 1'b0;
       sb_valid_q <= 1'b0;
       sc_valid_q <= 1'b0;
+      sv_valid_q <= 1'b0;
       sd_valid_q <= 1'b0;
     end else if (tail_en) begin
       sa_valid_q <= rc_valid;
@@ -465,19 +490,29 @@ module segment_interpolator #(
       sh_valid_q <= sp_valid_q;
       sb_valid_q <= sh_valid_q;
       sc_valid_q <= sb_valid_q;
-      sd_valid_q <= sc_valid_q;
+      sv_valid_q <= sc_valid_q;
+      sd_valid_q <= sv_valid_q;
     end
   end
 
   // ---------------------------------------------------------------- FIFO of ready spans
+  // A span's first pixel leaves straight from the FIFO head, so what the stepper would compute
+  // from the head (that pixel's readings, the next pixel's value, whether there is one) is
+  // computed from sd's registers before the FIFO and stored: the head's read is then followed by
+  // a pick only (the distributed RAM's read, a route, the rounding add and the clamp after it
+  // were the block's longest paths, 10.4 ns at Phong, 9.5 ns at Gouraud).
   typedef struct packed {
     logic                  eol;
+    logic                  more;    // a pixel after xs: xs + 1 != xe
     logic [PolyIdBits-1:0] poly;
     logic [MIB-1:0]        material;
     logic [LB-1:0]         xs;
     logic [LB-1:0]         xe;
-    logic [IVB-1:0]        value;  // slots Z.. at pixel xs
-    logic [IVB-1:0]        step;   // per-pixel increments
+    logic [DepB-1:0]       depth;   // pixel xs's readings (g_frag)
+    logic [3*8-1:0]        rgb;
+    logic [3*NB-1:0]       normal;
+    logic [IVB-1:0]        value1;  // slots Z.. at pixel xs + 1 (wrapped as the stepper wraps)
+    logic [IVB-1:0]        step;    // per-pixel increments
   } span_t;
 
   span_t          f_in, f_out;
@@ -486,27 +521,17 @@ module segment_interpolator #(
   logic           sd_keep;
   logic           tail_en_q, tail_en_next;
 
-  always_comb begin
-    f_in.eol      = sd_span_q.eol;
-    f_in.poly     = sd_span_q.poly;
-    f_in.material = sd_span_q.material;
-    f_in.xs       = sd_span_q.xs;
-    f_in.xe       = sd_span_q.xe;
-    f_in.value    = sd_value_q;
-    f_in.step     = sd_step_q;
-  end
-
   // Empty spans produce nothing and are dropped here; markers always go through.
   assign sd_keep    = sd_span_q.eol || !sd_span_q.empty;
   assign f_in_valid = sd_valid_q && sd_keep;
   // tail_en = !sd_valid_q || !sd_keep || f_in_ready is a flop loaded a clock ahead (a_tail_en):
-  // sd's valid and keep on the next clock (sc's when the tail advances), the FIFO's next ready.
+  // sd's valid and keep on the next clock (sv's when the tail advances), the FIFO's next ready.
   // From its compare it reached the reciprocal's and s0's clock enables across the block (the
   // sized Gouraud top's critical path at 0129076: `sd_valid_q` -> `tail_en` -> 4.5 ns route ->
   // `s0_ready` -> `s0_load` -> s0's enables, 12.0 ns, 10.6 of it routing).
   // A stall means sd holds a kept beat, which stays: then only the FIFO's ready decides.
   assign tail_en_next = f_in_ready_next
-                     || (tail_en && (!sc_valid_q || !(sc_span_q.eol || !sc_span_q.empty)));
+                     || (tail_en && (!sv_valid_q || !(sv_span_q.eol || !sv_span_q.empty)));
   always_ff @(posedge clk_i) begin
     if (!rst_ni) tail_en_q <= 1'b1;  // sd empty
     else tail_en_q <= tail_en_next;
@@ -538,7 +563,8 @@ module segment_interpolator #(
   logic [LB-1:0]         cur_x, cur_xe;
   logic [PolyIdBits-1:0] cur_poly;
   logic [MIB-1:0]        cur_material;
-  logic [IVB-1:0]        cur_value, cur_step, next_value;
+  logic [IVB-1:0]        cur_step, next_value;
+  logic [IVB-1:0]        st_value1, hd_value1;  // the stepper's value + step; sd's, into the FIFO
 
   assign out_free  = !frag_valid_o || frag_ready_i;
   assign from_head = !st_active_q && f_out_valid && !f_out.eol;
@@ -550,7 +576,6 @@ module segment_interpolator #(
   assign cur_xe    = st_active_q ? st_xe_q    : f_out.xe;
   assign cur_poly  = st_active_q ? st_poly_q  : f_out.poly;
   assign cur_material = st_active_q ? st_material_q : f_out.material;
-  assign cur_value = st_active_q ? st_value_q : f_out.value;
   assign cur_step  = st_active_q ? st_step_q  : f_out.step;
 
   // Per slot: the next pixel's value (wrapping at the slot's word) and the fragment's readings:
@@ -560,7 +585,7 @@ module segment_interpolator #(
   logic [DepB-1:0]   depth_d;
   logic [3*8-1:0]    rgb_d;      // {B, G, R} by slot
   logic [3*NB-1:0]   normal_d;   // {Nz, Ny, Nx}
-  logic [2*DepB-1:0] depth_src;  // per source: {FIFO head, stepper}
+  logic [2*DepB-1:0] depth_src;  // per source: {the span entering the FIFO, stepper}
   logic [2*3*8-1:0]  rgb_src;
   logic [2*3*NB-1:0] normal_src;
   for (genvar c = 1; c <= NI; c++) begin : g_frag
@@ -571,11 +596,12 @@ module segment_interpolator #(
     // The rounded integer part, and a width that holds it and the level's maximum.
     localparam int unsigned RB = W + 1 - F;
     localparam int unsigned CW = (RB > HiBits + 1) ? RB : HiBits + 1;
-    assign next_value[Lo +: W] = cur_value[Lo +: W] + cur_step[Lo +: W];
-    // The readings of both sources, the stepper's registers (s = 0) and the FIFO head (s = 1),
-    // each from its own value; st_active_q picks among the readings, after the rounding add and
-    // the clamp (before them, its fan-out to every value bit and the FIFO's read were in series
-    // with that add: the stepper's longest path).
+    assign st_value1[Lo +: W] = st_value_q[Lo +: W] + st_step_q[Lo +: W];
+    assign hd_value1[Lo +: W] = sd_value_q[Lo +: W] + sd_step_q[Lo +: W];
+    // The readings of both sources, the stepper's registers (s = 0) and the span entering the
+    // FIFO (s = 1, sd's value: stored, they come out at the head with the span); st_active_q
+    // picks among the readings, after the rounding add and the clamp (before them, its fan-out
+    // to every value bit and the FIFO's read were in series with that add).
     for (genvar s = 0; s < 2; s++) begin : g_src
       logic signed [W-1:0] v;
       /* verilator lint_off UNUSEDSIGNAL */
@@ -584,7 +610,7 @@ module segment_interpolator #(
       logic signed [CW-1:0] r;
       logic [CW-2:0]       mag;  // r without its sign
       logic [HiBits-1:0]   level;
-      assign v = (s == 0) ? st_value_q[Lo +: W] : f_out.value[Lo +: W];
+      assign v = (s == 0) ? st_value_q[Lo +: W] : sd_value_q[Lo +: W];
       if (F > 0) begin : g_round
         assign t = $signed({v[W-1], v}) + $signed((W + 1)'(1) << (F - 1));
       end else begin : g_exact
@@ -629,12 +655,25 @@ module segment_interpolator #(
   end
   // The stepper's next state, the span going on past this pixel, for each source and picked
   // by st_active_q after the compare (the pick before the add was the Gouraud block's limit).
-  logic st_more, hd_more;
-  assign st_more = (st_x_q + 1'b1 != st_xe_q);
-  assign hd_more = (f_out.xs + 1'b1 != f_out.xe);
-  assign depth_d  = st_active_q ? depth_src[0 +: DepB]   : depth_src[DepB +: DepB];
-  assign rgb_d    = st_active_q ? rgb_src[0 +: 24]       : rgb_src[24 +: 24];
-  assign normal_d = st_active_q ? normal_src[0 +: 3*NB]  : normal_src[3*NB +: 3*NB];
+  logic st_more;
+  assign st_more    = (st_x_q + 1'b1 != st_xe_q);
+  assign next_value = st_active_q ? st_value1 : f_out.value1;
+  assign depth_d  = st_active_q ? depth_src[0 +: DepB]   : f_out.depth;
+  assign rgb_d    = st_active_q ? rgb_src[0 +: 24]       : f_out.rgb;
+  assign normal_d = st_active_q ? normal_src[0 +: 3*NB]  : f_out.normal;
+
+  // The FIFO's input: sd's span with the head's readings and next value computed from it.
+  assign f_in.eol      = sd_span_q.eol;
+  assign f_in.more     = (sd_span_q.xs + 1'b1 != sd_span_q.xe);
+  assign f_in.poly     = sd_span_q.poly;
+  assign f_in.material = sd_span_q.material;
+  assign f_in.xs       = sd_span_q.xs;
+  assign f_in.xe       = sd_span_q.xe;
+  assign f_in.depth    = depth_src[DepB +: DepB];
+  assign f_in.rgb      = rgb_src[24 +: 24];
+  assign f_in.normal   = normal_src[3*NB +: 3*NB];
+  assign f_in.value1   = hd_value1;
+  assign f_in.step     = sd_step_q;
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
@@ -642,7 +681,7 @@ module segment_interpolator #(
       frag_valid_o <= 1'b0;
     end else begin
       if (out_free) frag_valid_o <= emit_frag || emit_eol;
-      if (emit_frag) st_active_q <= st_active_q ? st_more : hd_more;
+      if (emit_frag) st_active_q <= st_active_q ? st_more : f_out.more;
     end
   end
 
@@ -676,4 +715,7 @@ module segment_interpolator #(
   `WATKINS_COVER(c_back_to_back_spans, emit_frag && from_head && frag_valid_o && !frag_eol_o)
   `WATKINS_COVER(c_empty_dropped, sd_valid_q && !sd_keep)
   `WATKINS_ASSERT(a_tail_en, tail_en == (!sd_valid_q || !sd_keep || f_in_ready))
+  // The head's stored flag is what the stepper would compare there (the other stored fields
+  // are checked by every co-simulation's fragments).
+  `WATKINS_ASSERT(a_head_more, f_out_valid && !f_out.eol |-> f_out.more == (f_out.xs + 1'b1 != f_out.xe))
 endmodule

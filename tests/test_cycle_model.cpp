@@ -28,22 +28,22 @@ PreparedScene with_shading(PreparedScene p, ShadingMode mode) {
 // An empty W x H frame, by hand. The active-edge list: cycle 0 starts the frame, cycle 1 decides
 // the swap to line 1 (the stream's head is its EOF beat), cycle 2 swaps, and from cycle 3 each
 // line is its end-of-line marker (one cycle), the swap's decision (one) and the swap (one): 3
-// cycles per line. The first marker reaches the line buffer at cycle 42: segment former 4 (its
+// cycles per line. The first marker reaches the line buffer at cycle 43: segment former 4 (its
 // input register), 5 (its pairing register) and 6 (its output), s0 7, span_reciprocal 8..33,
-// sa/sp/sh/sb/sc/sd 34..39, FIFO 40, the stepper's output register 41, the fragment queue 42.
+// sa/sp/sh/sb/sc/sv/sd 34..40, FIFO 41, the stepper's output register 42, the fragment queue 43.
 // Full-frame: each line's read-out (W cycles) hides the next marker, so the last pixel is read at
-// 42 + H*W and taken one cycle later: H*W + 44 cycles counting cycle 0. Sparse: an empty line is
+// 43 + H*W and taken one cycle later: H*W + 45 cycles counting cycle 0. Sparse: an empty line is
 // one read step, so the list's 3 cycles per line set the pace: the last line's marker arrives at
-// 42 + 3(H-1), is read one cycle later and taken the next: 3H + 42. The Phong top's 47 stages
+// 43 + 3(H-1), is read one cycle later and taken the next: 3H + 43. The Phong top's 47 stages
 // (normalizer 14, shader 33) delay it all by 47.
 TEST(CycleModel, EmptyFrameByHand) {
   for (const auto& [w, h] : {std::pair{13, 5}, std::pair{320, 240}, std::pair{1, 1}, std::pair{40, 60}}) {
     const PreparedScene g = prepare(screen(w, h, {}, "empty"));
     const PreparedScene p = with_shading(g, ShadingMode::Phong);
-    EXPECT_EQ(predict_cycles(g, PixelOutput::FullFrame).cycles, w * h + 44) << w << "x" << h;
-    EXPECT_EQ(predict_cycles(p, PixelOutput::FullFrame).cycles, w * h + 44 + 47) << w << "x" << h;
-    EXPECT_EQ(predict_cycles(g, PixelOutput::Sparse).cycles, 3 * h + 42) << w << "x" << h;
-    EXPECT_EQ(predict_cycles(p, PixelOutput::Sparse).cycles, 3 * h + 42 + 47) << w << "x" << h;
+    EXPECT_EQ(predict_cycles(g, PixelOutput::FullFrame).cycles, w * h + 45) << w << "x" << h;
+    EXPECT_EQ(predict_cycles(p, PixelOutput::FullFrame).cycles, w * h + 45 + 47) << w << "x" << h;
+    EXPECT_EQ(predict_cycles(g, PixelOutput::Sparse).cycles, 3 * h + 43) << w << "x" << h;
+    EXPECT_EQ(predict_cycles(p, PixelOutput::Sparse).cycles, 3 * h + 43 + 47) << w << "x" << h;
     EXPECT_EQ(predict_cycles(g, PixelOutput::FullFrame).pixels, w * h);
     EXPECT_EQ(predict_cycles(g, PixelOutput::Sparse).pixels, 1);  // the terminating beat
   }

@@ -207,7 +207,7 @@ TEST_F(SweepCli, TinySweepWritesTheColumnsAndPhongBeatsGouraudOnTheSphere) {
   // the sphere's 320-px line: depth, polygon id, shade
   EXPECT_EQ(g.at("line_buffer_bits"), std::to_string(2 * 320 * (24 + 16 + 24)));
   EXPECT_EQ(g.at("cycles_source"), "predicted-sparse");  // the cycle model, no Verilator
-  EXPECT_EQ(g.at("cycles"), "37241");  // what the RTL takes on this frame (--rtl --sparse): session 8's
+  EXPECT_EQ(g.at("cycles"), "37242");  // what the RTL takes on this frame (--rtl --sparse): session 8's
                                        // 37062 + 2 (the segment former's input and pairing
                                        // registers) + 3 (the interpolator's sp, sh and sd stages)
                                        // + 1 (session 10's fragment queue) + 21 (session 11's
@@ -217,7 +217,8 @@ TEST_F(SweepCli, TinySweepWritesTheColumnsAndPhongBeatsGouraudOnTheSphere) {
                                        // fragment in the scanline buffer's read step)
                                        // - 2 (session 12: the list's read ahead, the incrementer
                                        // takes its output register, no step_q)
-  EXPECT_EQ(p.at("cycles"), "37288");  // session 8's 37094 + 2 + 3 + 1 + 21 + 154 - 2 as above
+                                       // + 1 (session 14: the interpolator's sv stage)
+  EXPECT_EQ(p.at("cycles"), "37289");  // session 8's 37094 + 2 + 3 + 1 + 21 + 154 - 2 + 1 as above
                                        // + 7 (normalizer 8 -> 14, shader 24 -> 25 stages)
                                        // + 8 (shader 25 -> 33: a copy stage per power)
   EXPECT_EQ(g.at("error"), "");
