@@ -139,6 +139,7 @@ module segment_interpolator #(
 
   logic                 s0_valid_q, s0_ready, s0_load;
   logic                 rc_valid, tail_en;  // the reciprocal's output valid, the tail's stall
+  logic                 tail_en_q, tail_en_next;  // tail_en, a flop loaded a clock ahead (below)
   span_pre_t            s0_q;
   logic [DxBits-1:0]    s0_dx_q;
   logic signed [XBits-1:0] xe_e, xe_f;  // X of E and F
@@ -147,9 +148,9 @@ module segment_interpolator #(
   assign xe_f = seg_f_i[0 +: XBits];
 
   assign seg_ready_o = !s0_valid_q || s0_ready;
-  // seg_ready_o && seg_valid_i written out from tail_en (s0_ready = tail_en || !rc_valid): one
-  // LUT after tail_en to s0's clock enables, not one after each of s0_ready and seg_ready_o.
-  assign s0_load     = seg_valid_i && (!s0_valid_q || !rc_valid || tail_en);
+  // seg_ready_o && seg_valid_i, one LUT from flops to s0's clock enables: s0_ready is the
+  // reciprocal's own enable flop (LookAhead), equal to tail_en || !rc_valid.
+  assign s0_load     = seg_valid_i && (!s0_valid_q || s0_ready);
 
   always_ff @(posedge clk_i) begin
     if (!rst_ni) s0_valid_q <= 1'b0;
@@ -206,9 +207,17 @@ module segment_interpolator #(
   logic [ExpBits-1:0] rc_p;
   span_pre_t          rc_span;
 
+  // LookAhead: the reciprocal's stall is a flop of its own, loaded from tail_en's next value, not
+  // tail_en itself (whose fan-out is the whole setup tail; tail_en_q -> a 4.5 ns route ->
+  // s0_ready -> the reciprocal's stage enables was the sized Gouraud top's path at f67158a,
+  // 10.7 ns, 9.7 of it routing).
+  /* verilator lint_off UNUSEDSIGNAL */
+  logic recip_ready_next_unused;  // s0 is no LookAhead producer
+  /* verilator lint_on UNUSEDSIGNAL */
   span_reciprocal #(
     .DxBits     (DxBits),
-    .PayloadBits($bits(s0_q))
+    .PayloadBits($bits(s0_q)),
+    .LookAhead  (1'b1)
   ) u_recip (
     .clk_i, .rst_ni,
     .dx_i     (s0_dx_q),
@@ -219,7 +228,9 @@ module segment_interpolator #(
     .p_o      (rc_p),
     .payload_o(rc_span),
     .valid_o  (rc_valid),
-    .ready_i  (tail_en)
+    .ready_i  (tail_en),
+    .ready_next_i(tail_en_next),
+    .ready_next_o(recip_ready_next_unused)
   );
 
   // ---------------------------------------------------------------- sa .. sd: alpha0, steps, values
@@ -519,7 +530,6 @@ module segment_interpolator #(
   logic           f_in_valid, f_in_ready, f_out_valid, f_out_ready;
   logic           f_in_ready_next;  // f_in_ready on the next clock
   logic           sd_keep;
-  logic           tail_en_q, tail_en_next;
 
   // Empty spans produce nothing and are dropped here; markers always go through.
   assign sd_keep    = sd_span_q.eol || !sd_span_q.empty;

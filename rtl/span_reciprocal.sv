@@ -5,13 +5,16 @@
 // then a restoring divider whose first stage takes quotient bits R and R-1 (both decided by m
 // alone) and whose R-1 further stages take one bit each. Latency R+2 = 26 cycles. Every stage
 // is registered; one global stall (ready_o = ready_i || !valid_o, stall_pipe) holds the whole
-// pipe, and a stage's registers load only for a valid beat (stall_pipe's ce_o). payload_i travels alongside, so the caller keeps its span data in step with the quotient:
-// kept in a RAM (stall_pipe PayloadRam), only the quotient's own registers are per stage.
+// pipe (with LookAhead that stall is a flop of its own, loaded a clock ahead from ready_next_i),
+// and a stage's registers load only for a valid beat (stall_pipe's ce_o). payload_i travels
+// alongside, so the caller keeps its span data in step with the quotient: kept in a RAM
+// (stall_pipe PayloadRam), only the quotient's own registers are per stage.
 `include "watkins_assert.svh"
 
 module span_reciprocal #(
   parameter int unsigned DxBits      = watkins_pkg::ChannelBits + 1,  // unsigned width of dx
   parameter int unsigned PayloadBits = 1,
+  parameter bit          LookAhead   = 1'b0,  // stall_pipe's: the stall from a flop of its own
   localparam int unsigned RecipBits   = watkins_pkg::RecipBits,     // R below
   localparam int unsigned ExpBits     = $clog2(DxBits)              // width of p
 ) (
@@ -25,7 +28,9 @@ module span_reciprocal #(
   output logic [ExpBits-1:0]     p_o,        // floor(log2 dx)
   output logic [PayloadBits-1:0] payload_o,
   output logic                   valid_o,
-  input  logic                   ready_i
+  input  logic                   ready_i,
+  input  logic                   ready_next_i,  // LookAhead: ready_i on the next clock
+  output logic                   ready_next_o   // ready_o on the next clock (from ready_next_i)
 );
   localparam int unsigned Stages = RecipBits + 2;  // detect, normalize, R quotient stages (R+1 bits)
 
@@ -41,12 +46,12 @@ module span_reciprocal #(
   /* verilator lint_off UNUSEDSIGNAL */
   logic [Stages-1:0] v_unused;
   logic              en;  // the pipe advances: read by tests/formal's probes, not here
-  logic              en_next_unused;  // its enable stays combinational: one LUT from two flops
   /* verilator lint_on UNUSEDSIGNAL */
   stall_pipe #(
     .Stages     (Stages),
     .PayloadBits(PayloadBits),
-    .PayloadRam (1'b1)
+    .PayloadRam (1'b1),
+    .LookAhead  (LookAhead)
   ) u_pipe (
     .clk_i, .rst_ni,
     .payload_i,
@@ -55,8 +60,8 @@ module span_reciprocal #(
     .payload_o,
     .valid_o,
     .ready_i,
-    .ready_next_i(1'b0),
-    .en_next_o   (en_next_unused),
+    .ready_next_i,
+    .en_next_o   (ready_next_o),
     .en_o     (en),
     .valid_q_o(v_unused),
     .ce_o     (ce)

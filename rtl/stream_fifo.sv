@@ -1,6 +1,6 @@
 // stream_fifo: first-in first-out valid/ready buffer of Depth words.
 // Latency 1 (a word written is visible at the head the next cycle); valid_o and data_o come
-// from registers, ready_o = not full straight from its own flop (room_q, kept equal to
+// from registers (the head word is kept in a register of its own, head_q, beside the slots), ready_o = not full straight from its own flop (room_q, kept equal to
 // cnt_q != Depth: a parent's stall signal built on ready_o starts at a flop, not at a compare of
 // the count); no combinational path from input to output. ready_next_o is ready_o on the next
 // clock (room_q's next value), for a producer whose own ready is a flop loaded a clock ahead
@@ -28,11 +28,12 @@ module stream_fifo #(
   logic [PtrBits-1:0]  wr_q, rd_q;
   logic [CntBits-1:0]  cnt_q;
   logic                room_q;  // cnt_q != Depth
+  logic [DataBits-1:0] head_q;  // mem_q[rd_q] whenever the FIFO holds a word (a_head)
   logic push, pop;
 
   assign ready_o = room_q;
   assign valid_o = (cnt_q != '0);
-  assign data_o  = mem_q[rd_q];
+  assign data_o  = head_q;
   assign push    = valid_i && ready_o;
   assign pop     = valid_o && ready_i;
   // Full next clock: a push without a pop into the last free slot; a pop frees one.
@@ -63,9 +64,25 @@ module stream_fifo #(
   always_ff @(posedge clk_i) begin
     if (push) mem_q[wr_q] <= data_i;
   end
+  // The head from a register, not from a read of the slots after the read pointer's flop: a
+  // consumer's logic on data_o then starts at a flop beside it (in both tops the fragment
+  // queue's slot read, routed into the scanline buffer's word pick, was the longest path: 11.2
+  // ns at f67158a). Same words, same cycles: on a pop the head takes the word behind it (from
+  // its slot, or from data_i when that word is being pushed now); into an empty FIFO, data_i.
+  always_ff @(posedge clk_i) begin
+    if (pop && cnt_q != CntBits'(1)) head_q <= mem_q[next_ptr(rd_q)];
+    else if (push && (pop || !valid_o)) head_q <= data_i;
+  end
 
   `WATKINS_ASSERT_HOLD(a_in_hold, valid_i, ready_o, data_i)
   `WATKINS_ASSERT_HOLD(a_out_hold, valid_o, ready_i, data_o)
+`ifdef WATKINS_ASSERT_ON
+  // The head slot's word as a signal: Verilator 5.006 stops with an internal error on an array
+  // read inside an assertion's property.
+  logic [DataBits-1:0] head_slot;
+  assign head_slot = mem_q[rd_q];
+  `WATKINS_ASSERT(a_head, !valid_o || head_q == head_slot)
+`endif
   `WATKINS_ASSERT(a_room, room_q == (cnt_q != CntBits'(Depth)))
   `WATKINS_COVER(c_full, !ready_o)
 endmodule

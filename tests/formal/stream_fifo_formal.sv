@@ -37,6 +37,7 @@ module stream_fifo_formal #(
   (* hierconn *) logic                \u_dut.room_q ;
   (* hierconn *) logic [PtrBits-1:0]  \u_dut.rd_q ;
   (* hierconn *) logic [PtrBits-1:0]  \u_dut.wr_q ;
+  (* hierconn *) logic [DataBits-1:0] \u_dut.head_q ;
   (* hierconn *) logic [DataBits-1:0] \u_dut.mem_q[0] ;
   (* hierconn *) logic [DataBits-1:0] \u_dut.mem_q[1] ;
   (* hierconn *) logic [DataBits-1:0] \u_dut.mem_q[2] ;
@@ -76,6 +77,8 @@ module stream_fifo_formal #(
       for (int k = 0; k < Depth; k++)
         if (k < 32'(\u_dut.cnt_q ))
           assert (slot[wrap(32'(\u_dut.rd_q ), k)] == n_out_q + DataBits'(k));
+      // The head register holds the head slot's word.
+      if (\u_dut.cnt_q != '0) assert (\u_dut.head_q == n_out_q);
     end
   end
 endmodule
