@@ -56,8 +56,10 @@ module phong_shader #(
   // products, 32 their sums, 33 round and saturate.
   localparam int CosStage = 6;                              // acc0_q, base0_q, f0_q
   localparam int PowStages = 3;                             // a power's product, copy, round
-  localparam int PowFirst = CosStage + 1;                   // power k: stages PowFirst + 3k .. + 3k + 2
-  localparam int PowLast  = CosStage + PowStages * ShininessBits;  // 30: g_pow[ShininessBits-1].acc_q
+  // power k: stages PowFirst + 3k .. + 3k + 2
+  localparam int PowFirst = CosStage + 1;
+  // 30: g_pow[ShininessBits-1].acc_q
+  localparam int PowLast  = CosStage + PowStages * ShininessBits;
   localparam int Stages   = PowLast + 3;                    // 33
   // A product wider than an 18 x 18 multiplier is split at bit PSplit of an operand (17: the low
   // part fits the multiplier unsigned, with a zero sign bit), each partial product registered

@@ -727,5 +727,6 @@ module segment_interpolator #(
   `WATKINS_ASSERT(a_tail_en, tail_en == (!sd_valid_q || !sd_keep || f_in_ready))
   // The head's stored flag is what the stepper would compare there (the other stored fields
   // are checked by every co-simulation's fragments).
-  `WATKINS_ASSERT(a_head_more, f_out_valid && !f_out.eol |-> f_out.more == (f_out.xs + 1'b1 != f_out.xe))
+  `WATKINS_ASSERT(a_head_more, f_out_valid && !f_out.eol
+    |-> f_out.more == (f_out.xs + 1'b1 != f_out.xe))
 endmodule

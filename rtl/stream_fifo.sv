@@ -1,10 +1,11 @@
 // stream_fifo: first-in first-out valid/ready buffer of Depth words.
 // Latency 1 (a word written is visible at the head the next cycle); valid_o and data_o come
-// from registers (the head word is kept in a register of its own, head_q, beside the slots), ready_o = not full straight from its own flop (room_q, kept equal to
-// cnt_q != Depth: a parent's stall signal built on ready_o starts at a flop, not at a compare of
-// the count); no combinational path from input to output. ready_next_o is ready_o on the next
-// clock (room_q's next value), for a producer whose own ready is a flop loaded a clock ahead
-// (stall_pipe's LookAhead).
+// from registers (the head word is kept in a register of its own, head_q, beside the slots);
+// ready_o = not full straight from its own flop (room_q, kept equal to cnt_q != Depth: a
+// parent's stall signal built on ready_o starts at a flop, not at a compare of the count); no
+// combinational path from input to output. ready_next_o is ready_o on the next clock (room_q's
+// next value), for a producer whose own ready is a flop loaded a clock ahead (stall_pipe's
+// LookAhead).
 `include "watkins_assert.svh"
 
 module stream_fifo #(
