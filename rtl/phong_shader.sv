@@ -133,13 +133,21 @@ module phong_shader #(
   // it every clock), but one register per stage: a pixel reads cs_k_q in stage 5, when it holds the
   // value of the pixel itself or of one behind it, the same for the whole frame. Every frame's
   // first pixel computes it.
+  // Beside it the same offset less the clamp's two thresholds (cs_o_q: cos(s) > 1, cs_p_q:
+  // cos(s) > 0), so stage 6 reads each test as the sign of a sum of its own (see there).
+  localparam int CsShift = 2 * DotBits - PowBits;            // cos(s)'s rounding shift
   logic signed [DW-1:0]      le_s_q;
   logic signed [DotBits+1:0] le_q;
-  logic signed [CW-1:0]      cs_k_q;
+  logic signed [CW-1:0]      cs_k_q, cs_o_q, cs_p_q;
   always_ff @(posedge clk_i) begin
     if (ce[1]) le_s_q <= sum3(le_p_q);
     if (ce[2]) le_q   <= round_dot(le_s_q, 1'b1);
-    if (ce[3]) cs_k_q <= CW'(1 <<< (2 * DotBits - PowBits - 1)) - (CW'(le_q) <<< DotBits);
+    if (ce[3]) begin
+      cs_k_q <= CW'(1 <<< (CsShift - 1)) - (CW'(le_q) <<< DotBits);
+      cs_o_q <= CW'(1 <<< (CsShift - 1)) - (CW'(le_q) <<< DotBits)
+              - (CW'((1 << PowBits) + 1) <<< CsShift);
+      cs_p_q <= CW'(1 <<< (CsShift - 1)) - (CW'(le_q) <<< DotBits) - (CW'(1) <<< CsShift);
+    end
   end
 
   // Pixel attributes travel alongside: g_X[i].q holds the pixel in stage i + 1. The
@@ -246,8 +254,12 @@ module phong_shader #(
   end
 
   // ---- stage 6: cos(s) = 2 cos(i)(N.E) - L.E in [0, 1] (P bits), f = cos(i)(1-d) + d -----------
-  // The clamp to [0, 2^P] and the test cs != 0 read csr's bits (its sign, any bit above P, the
-  // bits below P) instead of comparing: a compare is a second carry chain after the add.
+  // cs = (2 cne + cs_k) >> CsShift is cos(s) rounded; the clamp to [0, 2^P] and the test cs > 0
+  // are three signs: cs < 0 iff the sum is negative, cs > 2^P iff the sum is at least
+  // (2^P + 1) 2^CsShift, cs > 0 iff it is at least 2^CsShift (a floor is at least an integer m
+  // exactly when its argument is at least m 2^CsShift). Each is the carry out of a sum of its own
+  // (cs_o_q, cs_p_q), so no reduction over cs's bits follows an add: three carry chains side by
+  // side, then one LUT per bit (the reductions were four LUT levels after the chain, 10.8 ns).
   // Power k = 0..ShininessBits-1 (stages PowFirst + 3k to + 3k + 2): acc *= base if bit k of n,
   // base *= base, the products registered in the first stage, again in the second, rounded in
   // the third; acc0_q and base0_q start them (stage 6), g_pow[k].acc_q and
@@ -256,17 +268,17 @@ module phong_shader #(
   logic [FW-1:0]    f0_q;  // f, then g_f[j].q: stage CosStage + j
   always_ff @(posedge clk_i) begin
     if (ce[CosStage-1]) begin
-      logic signed [CW-1:0] csr;
-      logic                 cs_neg, cs_over, cs_pos;
-      csr     = ((cne_q <<< 1) + cs_k_q) >>> (2 * DotBits - PowBits);
-      cs_neg  = csr[CW-1];
-      cs_over = !cs_neg && (csr[CW-2:PowBits+1] != '0 || (csr[PowBits] && csr[PowBits-1:0] != '0));  // > 2^P
-      cs_pos  = !cs_neg && csr[CW-2:0] != '0;                                                          // > 0
-      if (cs_over)     base0_q <= (PowBits+1)'(1 << PowBits);
-      else if (cs_neg) base0_q <= '0;
-      else             base0_q <= csr[PowBits:0];
+      /* verilator lint_off UNUSEDSIGNAL */
+      logic signed [CW-1:0] cs2, cs_o, cs_p;  // cs's bits below CsShift and above P are not read
+      /* verilator lint_on UNUSEDSIGNAL */
+      cs2  = (cne_q <<< 1) + cs_k_q;
+      cs_o = (cne_q <<< 1) + cs_o_q;
+      cs_p = (cne_q <<< 1) + cs_p_q;
+      if (!cs_o[CW-1])    base0_q <= (PowBits+1)'(1 << PowBits);  // cs > 2^P
+      else if (cs2[CW-1]) base0_q <= '0;                          // cs < 0
+      else                base0_q <= cs2[CsShift +: PowBits+1];
       // A pixel facing away (cos(i) = 0) or with cos(s) = 0 starts from acc = 0: specular 0.
-      acc0_q <= (front5_q && cs_pos) ? (PowBits+1)'(1 << PowBits) : '0;  // cs_pos: cs != 0
+      acc0_q <= (front5_q && !cs_p[CW-1]) ? (PowBits+1)'(1 << PowBits) : '0;  // cs > 0
       f0_q   <= fp_q + (FW'(g_d[CosStage-2].q) << DotBits);
     end
   end
