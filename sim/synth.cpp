@@ -562,7 +562,9 @@ void place_and_route(Row& row, const Target& t, const fs::path& netlist, const f
   argv.insert(argv.end(), t.device.begin(), t.device.end());
   std::ostringstream freq;
   freq << t.freq_mhz;
-  argv.insert(argv.end(), {"--json", netlist.string(), "--report", "report.json", "--timing-allow-fail", "-l",
+  // Relative to `dir`: YoWASP's nextpnr-ecp5 sees its own empty folder at /tmp, so an absolute
+  // path under /tmp would not reach the netlist; the folders above the working one it does see.
+  argv.insert(argv.end(), {"--json", fs::relative(netlist, dir).string(), "--report", "report.json", "--timing-allow-fail", "-l",
                            "nextpnr.log", "--freq", freq.str()});
   if (seed > 0) argv.insert(argv.end(), {"--seed", std::to_string(seed)});
   fs::remove(dir / "report.json");

