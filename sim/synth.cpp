@@ -564,8 +564,8 @@ void place_and_route(Row& row, const Target& t, const fs::path& netlist, const f
   freq << t.freq_mhz;
   // Relative to `dir`: YoWASP's nextpnr-ecp5 sees its own empty folder at /tmp, so an absolute
   // path under /tmp would not reach the netlist; the folders above the working one it does see.
-  argv.insert(argv.end(), {"--json", fs::relative(netlist, dir).string(), "--report", "report.json", "--timing-allow-fail", "-l",
-                           "nextpnr.log", "--freq", freq.str()});
+  argv.insert(argv.end(), {"--json", fs::relative(netlist, dir).string(), "--report", "report.json",
+                           "--timing-allow-fail", "-l", "nextpnr.log", "--freq", freq.str()});
   if (seed > 0) argv.insert(argv.end(), {"--seed", std::to_string(seed)});
   fs::remove(dir / "report.json");
   const ProcessResult p = run_process(argv, dir, dir / "nextpnr.out", timeout_s);
@@ -787,8 +787,7 @@ int run_synth(const SynthArgs& a) {
   }
   if (targets.empty()) throw UsageError("--targets: none given");
   std::vector<int> seeds = parse_seeds(a.seeds);
-  const bool seeded = !seeds.empty();
-  if (!seeded) seeds.push_back(0);  // one run, no --seed: nextpnr's default
+  if (seeds.empty()) seeds.push_back(0);  // one run, no --seed: nextpnr's default
   struct NamedConfig {
     std::string arg, label;
     Config config;
@@ -926,9 +925,9 @@ int run_synth(const SynthArgs& a) {
         const Target& t = **std::find_if(targets.begin(), targets.end(), [&](const Target* x) { return r.target == x->name; });
         char nums[160];
         std::snprintf(nums, sizeof nums, "%.2f,%.1f,", r.fmax, r.constraint);
-        c << r.config << "," << r.design << "," << r.target << "," << seed_text(r) << "," << csv_quote(r.result) << "," << csv_quote(r.logic)
-          << "," << count(r.lut4) << "," << count(r.ff) << "," << r.wrapper_ff << "," << count(r.carry) << ","
-          << count(r.dsp) << "," << count(r.bram) << "," << count(r.ram_other) << "," << nums
+        c << r.config << "," << r.design << "," << r.target << "," << seed_text(r) << "," << csv_quote(r.result) << ","
+          << csv_quote(r.logic) << "," << count(r.lut4) << "," << count(r.ff) << "," << r.wrapper_ff << ","
+          << count(r.carry) << "," << count(r.dsp) << "," << count(r.bram) << "," << count(r.ram_other) << "," << nums
           << csv_quote(r.path_start) << "," << csv_quote(r.path_end) << "," << r.path_ns << "," << r.yosys_s << ","
           << r.nextpnr_s << "," << csv_quote(versions["yosys"]) << "," << csv_quote(versions[nextpnr_binary(t)]) << ","
           << csv_quote(r.dir) << "\n";
