@@ -19,6 +19,11 @@
 // derived in one place, rtl/watkins_top.sv): the Gouraud top's instance, except normalizer and
 // phong_shader, which exist in the Phong top only. A parameter the top does not declare is listed
 // in the table's notes: that design was synthesized at its default for it.
+//
+// Seeds (--seeds): nextpnr's placement is seeded, and runs of nearly the same netlist differ by
+// several MHz (docs/synth-timing.md, "Session 14 (lead)"). With --seeds, yosys runs once per
+// (configuration, design, target) and nextpnr once per seed (`--seed N`, in the job folder's
+// seed-N/), so a figure comes with its spread over seeds and a best run that can be reproduced.
 #include "synth.hpp"
 
 #include <CLI/CLI.hpp>
@@ -35,6 +40,7 @@
 #include <cstdio>
 #include <cstring>
 #include <ctime>
+#include <deque>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -375,10 +381,11 @@ WrapperSize write_wrapper(const Design& d, const Elaborated& e, const std::strin
 }
 
 // ---------------------------------------------------------------------------------------------
-// One run: yosys, nextpnr, and what their reports say.
+// One run: yosys once per netlist, nextpnr once per seed, and what their reports say.
 
 struct Row {
   std::string config, design, target;
+  int seed = 0;        // nextpnr's --seed; 0: none given (nextpnr's default)
   std::string result;  // routed | does not fit | yosys timeout | ... | failed: <line>
   bool ok = false;     // a result (routed or does not fit), not a tool failure
   bool finished = false;
@@ -519,7 +526,9 @@ std::string last_error_line(const std::string& log) {
   return last.empty() ? "no error message" : last;
 }
 
-void synthesize(Row& row, const Rtl& rtl, const Target& t, const fs::path& dir, int timeout_s) {
+// yosys: dir/wrapper.v and the RTL to dir/netlist.json, its cells counted in `row` (the part of a
+// row every seed of this netlist shares). False when yosys failed; row.result says how.
+bool synthesize(Row& row, const Rtl& rtl, const Target& t, const fs::path& dir, int timeout_s) {
   row.dir = dir.string();
   // synth_ice40 / synth_ecp5 to their final check step, whose first command (autoname, cosmetic
   // renaming) is quadratic in yosys 0.23 and alone takes over 10 minutes on a top; the rest of
@@ -539,17 +548,25 @@ void synthesize(Row& row, const Rtl& rtl, const Target& t, const fs::path& dir, 
   write_text(dir / "synth.ys", ys.str());
   const ProcessResult y = run_process({"yosys", "-q", "-l", "yosys.log", "-s", "synth.ys"}, dir, dir / "yosys.out", timeout_s);
   row.yosys_s = y.seconds;
-  if (y.timed_out) { row.result = "yosys timeout"; return; }
-  if (y.status != 0) { row.result = "failed (yosys): " + last_error_line(read_text(dir / "yosys.log")); return; }
+  if (y.timed_out) { row.result = "yosys timeout"; return false; }
+  if (y.status != 0) { row.result = "failed (yosys): " + last_error_line(read_text(dir / "yosys.log")); return false; }
   count_cells(row, t.family, yosys_cell_counts(read_text(dir / "stat.txt")));
+  return true;
+}
 
+// nextpnr: places and routes `netlist` (synthesize's) with `seed` (0: no --seed), its report.json,
+// nextpnr.log and nextpnr.out in `dir` (the netlist's folder, or a seed's folder beside it).
+void place_and_route(Row& row, const Target& t, const fs::path& netlist, const fs::path& dir, int seed, int timeout_s) {
+  row.dir = dir.string();
   std::vector<std::string> argv{nextpnr_binary(t)};
   argv.insert(argv.end(), t.device.begin(), t.device.end());
   std::ostringstream freq;
   freq << t.freq_mhz;
-  for (const char* a : {"--json", "netlist.json", "--report", "report.json", "--timing-allow-fail", "-l", "nextpnr.log", "--freq"})
-    argv.push_back(a);
-  argv.push_back(freq.str());
+  // Relative to `dir`: YoWASP's nextpnr-ecp5 sees its own empty folder at /tmp, so an absolute
+  // path under /tmp would not reach the netlist; the folders above the working one it does see.
+  argv.insert(argv.end(), {"--json", fs::relative(netlist, dir).string(), "--report", "report.json",
+                           "--timing-allow-fail", "-l", "nextpnr.log", "--freq", freq.str()});
+  if (seed > 0) argv.insert(argv.end(), {"--seed", std::to_string(seed)});
   fs::remove(dir / "report.json");
   const ProcessResult p = run_process(argv, dir, dir / "nextpnr.out", timeout_s);
   row.nextpnr_s = p.seconds;
@@ -580,7 +597,7 @@ void synthesize(Row& row, const Rtl& rtl, const Target& t, const fs::path& dir, 
   }
   const json report = json::parse(read_text(dir / "report.json"));
   for (const auto& [clock, f] : report["fmax"].items()) row.fmax = std::max(row.fmax, f["achieved"].get<double>());
-  const RegisterNames names(dir / "netlist.json");
+  const RegisterNames names(netlist);
   for (const json& cp : report["critical_paths"]) {
     const std::string from = cp["from"], to = cp["to"];
     if (from.rfind("posedge", 0) != 0 || to.rfind("posedge", 0) != 0 || cp["path"].empty()) continue;  // IO paths
@@ -620,6 +637,45 @@ std::string secs(double s) {
   return s > 0 ? b : "";
 }
 
+std::string seed_text(const Row& r) { return r.seed > 0 ? std::to_string(r.seed) : "default"; }
+
+// Fmax over seeds, per (config, design, target) with two or more routed seeds, in run order:
+// min / median / max and the seed of the best run (the first of equals); "" when there is none.
+// `given`: seeds asked for each, so a seed that failed or did not fit shows as "2 of 3".
+std::string seed_summary(const std::vector<Row>& rows, size_t given) {
+  struct Group {
+    std::string key;
+    std::vector<std::pair<double, int>> runs;  // Fmax, seed
+  };
+  std::vector<Group> groups;
+  for (const Row& r : rows) {
+    if (!r.finished || r.seed == 0 || r.fmax <= 0) continue;
+    const std::string key = "| " + r.config + " | " + r.design + " | " + r.target + " | ";
+    auto g = std::find_if(groups.begin(), groups.end(), [&](const Group& x) { return x.key == key; });
+    if (g == groups.end()) g = groups.insert(groups.end(), Group{key, {}});
+    g->runs.emplace_back(r.fmax, r.seed);
+  }
+  std::ostringstream md;
+  for (const Group& g : groups) {
+    if (g.runs.size() < 2) continue;
+    if (md.tellp() == 0)
+      md << "\nFmax over nextpnr's placement seeds (each row: one netlist from yosys, placed and routed once per "
+            "seed; the best seed reproduces its run with `--seeds N`):\n\n"
+         << "| config | design | target | seeds | Fmax min / median / max MHz | best seed |\n"
+         << "|---|---|---|---|---|---|\n";
+    std::vector<double> f;
+    for (const auto& [fmax, seed] : g.runs) f.push_back(fmax);
+    std::sort(f.begin(), f.end());
+    const size_t n = f.size();
+    const double median = n % 2 ? f[n / 2] : (f[n / 2 - 1] + f[n / 2]) / 2;
+    const auto best = std::max_element(g.runs.begin(), g.runs.end(),
+                                       [](const auto& x, const auto& y) { return x.first < y.first; });
+    md << g.key << n << (n < given ? " of " + std::to_string(given) : std::string()) << " | " << mhz(f.front())
+       << " / " << mhz(median) << " / " << mhz(f.back()) << " | " << best->second << " |\n";
+  }
+  return md.str();
+}
+
 std::string csv_quote(const std::string& s) {
   if (s.find_first_of(",\"\n") == std::string::npos) return s;
   std::string q = "\"";
@@ -656,6 +712,22 @@ std::vector<std::string> split_list(const char* option, const std::vector<std::s
   return out;
 }
 
+// --seeds: nextpnr's --seed is an int, and 0 stands here for "none given", so [1, 2^31 - 1];
+// a seed named twice would be the same run twice.
+std::vector<int> parse_seeds(const std::vector<std::string>& items) {
+  std::vector<int> seeds;
+  for (const std::string& s : split_list("--seeds", items)) {
+    const bool digits = s.size() <= 10 && s.find_first_not_of("0123456789") == std::string::npos;
+    const long long v = digits ? std::stoll(s) : 0;
+    if (v < 1 || v > 2147483647)
+      throw UsageError("--seeds: \"" + s + "\" is not a seed (a decimal integer from 1 to 2147483647)");
+    if (std::find(seeds.begin(), seeds.end(), v) != seeds.end())
+      throw UsageError("--seeds: seed " + std::to_string(v) + " given twice");
+    seeds.push_back(static_cast<int>(v));
+  }
+  return seeds;
+}
+
 std::string config_label(const std::string& c) {
   if (c == "default") return c;
   std::string stem = fs::path(c).filename().string();
@@ -680,6 +752,9 @@ CLI::App* add_synth_command(CLI::App& app, SynthArgs& a) {
   s->add_option("--jobs,-j", a.jobs, "runs at once (each tool is single-threaded)")->capture_default_str();
   s->add_option("--timeout", a.timeout, "seconds allowed each tool run")->capture_default_str();
   s->add_option("--rtl-dir", a.rtl_dir, "RTL to synthesize (default: the source tree's rtl/)");
+  s->add_option("--seeds", a.seeds, "comma-separated nextpnr placement seeds (1 .. 2^31 - 1): yosys once, nextpnr once "
+                                    "per seed; the table adds Fmax min / median / max and the best seed "
+                                    "(default: one run at nextpnr's default seed)");
   return s;
 }
 
@@ -711,6 +786,8 @@ int run_synth(const SynthArgs& a) {
     targets.push_back(&*it);
   }
   if (targets.empty()) throw UsageError("--targets: none given");
+  std::vector<int> seeds = parse_seeds(a.seeds);
+  if (seeds.empty()) seeds.push_back(0);  // one run, no --seed: nextpnr's default
   struct NamedConfig {
     std::string arg, label;
     Config config;
@@ -735,13 +812,22 @@ int run_synth(const SynthArgs& a) {
     if (!versions.count(nextpnr_binary(*t))) versions[nextpnr_binary(*t)] = tool_version(nextpnr_binary(*t), "--version", work);
 
   // Elaborate (a fraction of a second each) and write the wrappers; then the runs, blocks first.
+  // A netlist is one yosys run, shared by its seeds' jobs: the first of them to start runs yosys,
+  // the others wait for it (call_once), then each runs nextpnr.
+  struct Netlist {
+    std::once_flag once;
+    Row row;  // yosys's part of each seed's row
+    bool ok = false;
+  };
+  std::deque<Netlist> netlists;  // a deque: once_flag does not move
   struct Job {
     const Design* design;
     const Target* target;
     size_t config;
-    Elaborated elaborated;
     WrapperSize size;
-    fs::path dir;
+    fs::path dir;  // the netlist's folder
+    size_t netlist;
+    int seed;      // 0: no --seed
   };
   std::vector<Job> jobs;
   std::map<std::string, std::string> notes;  // per config and design: parameters set / ignored
@@ -786,10 +872,11 @@ int run_synth(const SynthArgs& a) {
         }
         notes[configs[ci].label + " " + d->name] = note;
         for (const Target* t : targets) {
-          Job j{d, t, ci, e, {}, ddir / t->name};
-          fs::create_directories(j.dir);
-          j.size = write_wrapper(*d, e, configs[ci].label, j.dir / "wrapper.v");
-          jobs.push_back(std::move(j));
+          const fs::path dir = ddir / t->name;
+          fs::create_directories(dir);
+          const WrapperSize size = write_wrapper(*d, e, configs[ci].label, dir / "wrapper.v");
+          netlists.emplace_back();
+          for (int seed : seeds) jobs.push_back({d, t, ci, size, dir, netlists.size() - 1, seed});
         }
       }
 
@@ -806,18 +893,21 @@ int run_synth(const SynthArgs& a) {
           "registered serial signature), so the Fmax is register to register; LUT4, FF, carry, DSP, BRAM and "
           "SPRAM / DPR16 (ECP5 distributed RAM) are yosys's cells after synthesis, the wrapper's flip-flops "
           "included (column \"wrapper FF\"); logic cells and Fmax are nextpnr's after placement and routing, the "
-          "clock constrained to the column's MHz. ECP5 carry cells (CCU2C) hold two bits each.\n\n"
-       << "| config | design | target | result | logic cells (nextpnr) | LUT4 | FF | wrapper FF | carry | DSP | BRAM "
-          "| SPRAM / DPR16 | Fmax MHz (constraint) | critical path (start → end) | yosys s | nextpnr s |\n"
-       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+          "clock constrained to the column's MHz; the seed is nextpnr's placement seed (`--seeds`; \"default\": "
+          "none given). ECP5 carry cells (CCU2C) hold two bits each.\n\n"
+       << "| config | design | target | seed | result | logic cells (nextpnr) | LUT4 | FF | wrapper FF | carry | DSP "
+          "| BRAM | SPRAM / DPR16 | Fmax MHz (constraint) | critical path (start → end) | yosys s | nextpnr s |\n"
+       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const Row& r : rows) {
       if (!r.finished) continue;
-      md << "| " << r.config << " | " << r.design << " | " << r.target << " | " << r.result << " | " << r.logic << " | "
+      md << "| " << r.config << " | " << r.design << " | " << r.target << " | " << seed_text(r) << " | " << r.result
+         << " | " << r.logic << " | "
          << count(r.lut4) << " | " << count(r.ff) << " | " << r.wrapper_ff << " | " << count(r.carry) << " | "
          << count(r.dsp) << " | " << count(r.bram) << " | " << count(r.ram_other) << " | " << mhz(r.fmax)
          << (r.constraint > 0 ? " (" + mhz(r.constraint) + ")" : "") << " | " << path_text(r) << " | "
          << secs(r.yosys_s) << " | " << secs(r.nextpnr_s) << " |\n";
     }
+    md << seed_summary(rows, seeds.size());
     md << "\nParameters: a top's are what `watkins_gen_pkg --params CONFIG --shading S` prints; a block's are what "
           "that top gives it (the Gouraud top's instance; the normalizer's and the shader's from the Phong top):\n\n";
     for (const auto& [key, note] : notes) md << "- " << key << ": " << note << "\n";
@@ -828,16 +918,16 @@ int run_synth(const SynthArgs& a) {
     if (print_it) std::printf("%s", md.str().c_str());
     if (!a.csv.empty()) {
       std::ostringstream c;
-      c << "config,design,target,result,logic_cells,lut4,ff,wrapper_ff,carry,dsp,bram,ram_other,fmax_mhz,"
+      c << "config,design,target,seed,result,logic_cells,lut4,ff,wrapper_ff,carry,dsp,bram,ram_other,fmax_mhz,"
            "constraint_mhz,path_start,path_end,path_ns,yosys_s,nextpnr_s,yosys_version,nextpnr_version,dir\n";
       for (const Row& r : rows) {
         if (!r.finished) continue;
         const Target& t = **std::find_if(targets.begin(), targets.end(), [&](const Target* x) { return r.target == x->name; });
         char nums[160];
         std::snprintf(nums, sizeof nums, "%.2f,%.1f,", r.fmax, r.constraint);
-        c << r.config << "," << r.design << "," << r.target << "," << csv_quote(r.result) << "," << csv_quote(r.logic)
-          << "," << count(r.lut4) << "," << count(r.ff) << "," << r.wrapper_ff << "," << count(r.carry) << ","
-          << count(r.dsp) << "," << count(r.bram) << "," << count(r.ram_other) << "," << nums
+        c << r.config << "," << r.design << "," << r.target << "," << seed_text(r) << "," << csv_quote(r.result) << ","
+          << csv_quote(r.logic) << "," << count(r.lut4) << "," << count(r.ff) << "," << r.wrapper_ff << ","
+          << count(r.carry) << "," << count(r.dsp) << "," << count(r.bram) << "," << count(r.ram_other) << "," << nums
           << csv_quote(r.path_start) << "," << csv_quote(r.path_end) << "," << r.path_ns << "," << r.yosys_s << ","
           << r.nextpnr_s << "," << csv_quote(versions["yosys"]) << "," << csv_quote(versions[nextpnr_binary(t)]) << ","
           << csv_quote(r.dir) << "\n";
@@ -852,22 +942,38 @@ int run_synth(const SynthArgs& a) {
   auto worker = [&] {
     for (size_t i; (i = next++) < jobs.size();) {
       const Job& j = jobs[i];
-      Row& r = rows[i];
+      Netlist& n = netlists[j.netlist];
+      // An exception is caught inside: call_once would let the next seed run yosys again.
+      std::call_once(n.once, [&] {
+        try {
+          n.ok = synthesize(n.row, rtl, *j.target, j.dir, a.timeout);
+        } catch (const std::exception& e) {
+          n.row.result = std::string("failed: ") + e.what();
+        }
+      });
+      Row r = n.row;  // the tables read rows[] under the lock: this row is filled apart
       r.config = configs[j.config].label;
       r.design = j.design->name;
       r.target = j.target->name;
+      r.seed = j.seed;
       r.wrapper_ff = j.size.in_bits + j.size.out_bits;
-      try {
-        synthesize(r, rtl, *j.target, j.dir, a.timeout);
-      } catch (const std::exception& e) {
-        r.result = std::string("failed: ") + e.what();
+      if (n.ok) {
+        try {
+          const fs::path dir = j.seed > 0 ? j.dir / ("seed-" + std::to_string(j.seed)) : j.dir;
+          fs::create_directories(dir);
+          place_and_route(r, *j.target, j.dir / "netlist.json", dir, j.seed, a.timeout);
+        } catch (const std::exception& e) {
+          r.result = std::string("failed: ") + e.what();
+        }
       }
       std::lock_guard<std::mutex> lock(print);
       r.finished = true;
+      rows[i] = r;
       write_tables(false);
-      std::fprintf(stderr, "[%zu/%zu] %s %s %s: %s%s%s (yosys %.0f s, nextpnr %.0f s)\n", ++done, jobs.size(),
-                   r.config.c_str(), r.design.c_str(), r.target.c_str(), r.result.c_str(), r.fmax > 0 ? ", " : "",
-                   r.fmax > 0 ? (mhz(r.fmax) + " MHz").c_str() : "", r.yosys_s, r.nextpnr_s);
+      std::fprintf(stderr, "[%zu/%zu] %s %s %s%s: %s%s%s (yosys %.0f s, nextpnr %.0f s)\n", ++done, jobs.size(),
+                   r.config.c_str(), r.design.c_str(), r.target.c_str(),
+                   r.seed > 0 ? (" seed " + std::to_string(r.seed)).c_str() : "", r.result.c_str(),
+                   r.fmax > 0 ? ", " : "", r.fmax > 0 ? (mhz(r.fmax) + " MHz").c_str() : "", r.yosys_s, r.nextpnr_s);
     }
   };
   std::vector<std::thread> pool;

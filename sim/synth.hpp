@@ -1,7 +1,8 @@
 // watkins synth: every block and both tops of rtl/ at a configuration, through yosys and
 // nextpnr (iCE40 UP5K and HX8K, ECP5-85), inside a generated wrapper that registers all IO and
 // needs four pins; a table of utilisation, routed Fmax and critical path (issue 10, item 3).
-// See synth.cpp.
+// With --seeds, each netlist is placed and routed once per nextpnr seed, and the table gains the
+// spread of Fmax over the seeds and the best seed. See synth.cpp.
 #pragma once
 
 #include <string>
@@ -22,6 +23,7 @@ struct SynthArgs {
   int jobs = 1;
   int timeout = 3600;                           // seconds per tool run (yosys, nextpnr)
   std::string rtl_dir;                          // default: the source tree's rtl/
+  std::vector<std::string> seeds;               // nextpnr --seed values; none = nextpnr's default
 };
 
 // Registers `watkins synth` and its options on `app`; returns the subcommand.

@@ -6,7 +6,7 @@
 //   watkins sweep [SCENE ...] [--shadings ...] [--tess ...] [--csv F] [--md F] [--jobs N] [--shard i/N] [--rtl]
 //                  (sim/sweep.cpp)
 //   watkins synth [--config F ...] [--designs D,...] [--targets T,...] [--md F] [--csv F] [--jobs N]
-//                  (sim/synth.cpp)
+//                  [--seeds S,...]   (sim/synth.cpp)
 //   watkins size [SCENE] [--bound L] [--shading S] [--patches P] [--out F]   (sim/size.cpp)
 //   watkins export-stl SCENE --out F [--ascii]   (model/scene/stl_export.hpp)
 #include <CLI/CLI.hpp>

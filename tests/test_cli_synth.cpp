@@ -1,7 +1,7 @@
 // `watkins synth` refuses bad input before it runs any tool: one line naming the option and the
 // value (and the names it accepts), exit code 2 for a wrong option value (usage), 1 for a bad
 // configuration file, no work folder. (The place-and-route itself is
-// the ctest synth_smoke, label synth: tests/synth/smoke.py.)
+// the ctests synth_smoke and synth_seeds, label synth: tests/synth/smoke.py and seeds.py.)
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -51,5 +51,15 @@ TEST_F(CliSynth, EmptyListItemsAreRefused) {
 }
 
 TEST_F(CliSynth, JobsMustBePositive) { expect_refused("--jobs 0", "--jobs: must be at least 1"); }
+
+// nextpnr's --seed is an int: 1 .. 2^31 - 1, each once (a repeated seed would be the same run).
+TEST_F(CliSynth, SeedsMustBePositiveDistinctIntegers) {
+  const std::string range = " is not a seed (a decimal integer from 1 to 2147483647)";
+  expect_refused("--seeds 0", "--seeds: \"0\"" + range);
+  expect_refused("--seeds x", "--seeds: \"x\"" + range);
+  expect_refused("--seeds 1,2147483648", "--seeds: \"2147483648\"" + range);
+  expect_refused("--seeds 1,,2", "--seeds: empty item in \"1,,2\"");
+  expect_refused("--seeds 3,3", "--seeds: seed 3 given twice");
+}
 
 }  // namespace

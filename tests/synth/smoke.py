@@ -36,7 +36,8 @@ if rows:
     check(row["logic_cells"].split(" / ")[-1].startswith("7680"), f"logic cells {row['logic_cells']!r} not of an HX8K")
     check(int(row["ff"]) > int(row["wrapper_ff"]) > 0, f"FF {row['ff']} vs wrapper FF {row['wrapper_ff']}: the block was lost")
     check(int(row["carry"]) > 0, "no carry cells: the block's adders were lost")
-    check("| default | edge_incrementer | ice40-hx8k | routed" in r.stdout, "printed table lacks the row")
+    check(row["seed"] == "default", f"seed {row['seed']!r}: none was given")
+    check("| default | edge_incrementer | ice40-hx8k | default | routed" in r.stdout, "printed table lacks the row")
     check("Yosys 0.23" in row["yosys_version"] or "Yosys" in row["yosys_version"], "yosys version not recorded")
 if failures:
     sys.exit("synth_smoke: " + "; ".join(failures))
