@@ -1,20 +1,26 @@
 // mul18_reg: p = a * b, registered: one 18 x 18 multiplier block and the product's register.
-// Latency 1; ce_i loads the register (its stage's clock enable); no handshake. Operands up to 18
-// bits each, signed or unsigned each (ASigned, BSigned), the product's low PBits bits kept.
+// Latency 1 (InReg = 0): ce_i[0] loads the product register (its stage's clock enable). Latency 2
+// (InReg = 1): ce_i[0] loads the operand registers, ce_i[1] the product register (two stages'
+// enables, ce[k:k-1] of a stall_pipe). No handshake. Operands up to 18 bits each, signed or
+// unsigned each (ASigned, BSigned), the product's low PBits bits kept.
 // Why a module: on the ECP5 (WATKINS_ECP5, defined by `watkins synth` for that target only) the
 // register is the MULT18X18D's own output register (REG_OUTPUT_CLK), which yosys 0.23 does not
 // infer: its multiplier is then the product's setup inside the block, not a block between two
 // fabric flip-flops with a route on each side (10.6 ns, 3.9 of them the block, in the shader at
 // 94 MHz). Everywhere else (Verilator, the formal proofs, lint, iCE40) the same register in RTL.
+// InReg: the operands also registered in the block (REG_INPUTA/B), so a route from the fabric
+// ends at a register (its setup small) instead of at the multiplier's input (3.5 ns setup on the
+// ECP5 after routes of up to 6.9 ns across the die: the Phong top's 112 MULT18 spread over it).
 module mul18_reg #(
   parameter int ABits   = 18,             // <= 18
   parameter int BBits   = 18,             // <= 18
   parameter bit ASigned = 1'b0,           // a is two's complement
   parameter bit BSigned = 1'b0,           // b is two's complement
-  parameter int PBits   = ABits + BBits   // <= 36: the product's low bits
+  parameter int PBits   = ABits + BBits,  // <= 36: the product's low bits
+  parameter bit InReg   = 1'b0            // the operands registered in the block: latency 2
 ) (
   input  logic             clk_i,
-  input  logic             ce_i,   // the product register loads
+  input  logic [InReg:0]   ce_i,   // [InReg]: the product register loads; [0] with InReg: the operands
   input  logic [ABits-1:0] a_i,
   input  logic [BBits-1:0] b_i,
   output logic [PBits-1:0] p_o     // a * b, registered
@@ -35,6 +41,8 @@ module mul18_reg #(
     assign b18 = 18'(b_i);
   end
   MULT18X18D #(
+    .REG_INPUTA_CLK(InReg ? "CLK0" : "NONE"), .REG_INPUTA_CE("CE1"), .REG_INPUTA_RST("RST0"),
+    .REG_INPUTB_CLK(InReg ? "CLK0" : "NONE"), .REG_INPUTB_CE("CE1"), .REG_INPUTB_RST("RST0"),
     .REG_OUTPUT_CLK("CLK0"), .REG_OUTPUT_CE("CE0"), .REG_OUTPUT_RST("RST0"),
     .GSR("DISABLED"), .RESETMODE("SYNC")
   ) u_mult (
@@ -49,7 +57,7 @@ module mul18_reg #(
       .C16(1'b0), .C17(1'b0),
       .SIGNEDA(ASigned), .SIGNEDB(BSigned), .SOURCEA(1'b0), .SOURCEB(1'b0),
       .CLK0(clk_i), .CLK1(1'b0), .CLK2(1'b0), .CLK3(1'b0),
-      .CE0(ce_i), .CE1(1'b0), .CE2(1'b0), .CE3(1'b0),
+      .CE0(ce_i[InReg]), .CE1(ce_i[0]), .CE2(1'b0), .CE3(1'b0),
       .RST0(1'b0), .RST1(1'b0), .RST2(1'b0), .RST3(1'b0),
       .P0(p36[0]), .P1(p36[1]), .P2(p36[2]), .P3(p36[3]), .P4(p36[4]), .P5(p36[5]), .P6(p36[6]),
       .P7(p36[7]), .P8(p36[8]), .P9(p36[9]), .P10(p36[10]), .P11(p36[11]), .P12(p36[12]),
@@ -60,16 +68,31 @@ module mul18_reg #(
   );
   assign p_o = p36[PBits-1:0];
 `else
+  logic [ABits-1:0] a;  // the operands the product reads: a_i / b_i, or their registers (InReg)
+  logic [BBits-1:0] b;
+  if (InReg) begin : g_in
+    logic [ABits-1:0] a_q;
+    logic [BBits-1:0] b_q;
+    always_ff @(posedge clk_i) if (ce_i[0]) begin
+      a_q <= a_i;
+      b_q <= b_i;
+    end
+    assign a = a_q;
+    assign b = b_q;
+  end else begin : g_direct
+    assign a = a_i;
+    assign b = b_i;
+  end
   logic [PBits-1:0] p_q;
   if (!ASigned && !BSigned) begin : g_u
-    always_ff @(posedge clk_i) if (ce_i) p_q <= PBits'(a_i) * PBits'(b_i);
+    always_ff @(posedge clk_i) if (ce_i[InReg]) p_q <= PBits'(a) * PBits'(b);
   end else begin : g_s
     // Each operand one bit wider, its sign bit a copy of its top bit or 0, multiplied signed;
     // extended inside the enable, not by continuous assigns, which Verilator evaluates on every
     // clock (the tops hold dozens of these since the interpolator's products use it).
     always_ff @(posedge clk_i)
-      if (ce_i) p_q <= PBits'($signed({ASigned & a_i[ABits-1], a_i})
-                              * $signed({BSigned & b_i[BBits-1], b_i}));
+      if (ce_i[InReg]) p_q <= PBits'($signed({ASigned & a[ABits-1], a})
+                                     * $signed({BSigned & b[BBits-1], b}));
   end
   assign p_o = p_q;
 `endif

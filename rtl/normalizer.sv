@@ -2,7 +2,7 @@
 // a unit N; p. 317 asks for "a very fast mechanism for obtaining square roots"), bit-exact twin
 // of model/twins/normalizer.hpp. m = Nx^2+Ny^2+Nz^2 exact, 1/sqrt(m) by rsqrt_unit (even shift, seed
 // table, one Newton-Raphson step), N * 1/sqrt(m) rounded and saturated to UnitBits.
-// Latency 14, one normal per clock; every stage registers valid and data; every product is
+// Latency 16, one normal per clock; every stage registers valid and data; every product is
 // registered in its multiplier block (mul18_reg: on the ECP5 the MULT18X18D's output register; the
 // final one as partial products split at an 18 x 18 multiplier), its sums, shift and round a stage
 // later each; one global stall (stall_pipe): ready_o = ready_i || !valid_o (combinational from
@@ -35,7 +35,7 @@ module normalizer #(
 );
   localparam int MBits      = 2 * NB;                   // 36: m < 3 * 2^34
   localparam int RsqrtBits  = watkins_pkg::RsqrtBits;   // F below: fraction bits of y
-  localparam int RDelay     = 8;                        // rsqrt_unit latency
+  localparam int RDelay     = 10;                       // rsqrt_unit latency
   localparam int Stages     = 2 + RDelay + 4;           // squares, sum, rsqrt, partials, sum, shift, round
   localparam int ScaledBits = NB + RsqrtBits + 3;       // N * y, signed, plus a rounding guard bit
 
@@ -81,20 +81,20 @@ module normalizer #(
   logic [MBits-1:0] m_q;
   always_ff @(posedge clk_i) if (ce[1]) m_q <= g_sq[0].q + g_sq[1].q + g_sq[2].q;
 
-  // ---- stages 2..9: y = 1/sqrt(m') with 1/sqrt(m) = y * 2^(j-2) --------------------------------
+  // ---- stages 2..11: y = 1/sqrt(m') with 1/sqrt(m) = y * 2^(j-2) --------------------------------
   logic [RsqrtBits+1:0] y;
   logic [4:0]   j;
   logic         nul;
   rsqrt_unit u_rsqrt (
     .clk_i  (clk_i),
-    .ce_i   (ce[9:2]),  // rsqrt stage k is stage k + 1 here
+    .ce_i   (ce[RDelay+1:2]),  // rsqrt stage k is stage k + 1 here
     .m_i    (m_q),
     .y_o    (y),
     .j_o    (j),
     .null_o (nul)
   );
 
-  // N waits alongside the rsqrt pipe (stage 0 .. stage 9). The per-stage and per-component
+  // N waits alongside the rsqrt pipe (stage 0 .. stage 11). The per-stage and per-component
   // registers are plain variables of generate blocks, not array elements: a simulator
   // (Verilator) keeps a pending-write flag and value per written array element and clears them
   // on every evaluation. Same flops.
@@ -107,37 +107,37 @@ module normalizer #(
     end
   end
 
-  // ---- stage 10: N * y as two partial products, y split at bit YSplit ---------------------------
+  // ---- stage 12: N * y as two partial products, y split at bit YSplit ---------------------------
   // N (NB signed) times y (RsqrtBits + 2 unsigned) is wider than one 18 x 18 multiplier block;
   // each partial product is registered straight from its block, summed a stage later (the
   // product, its adder, the shift and the round in one clock limited the Phong top at 41 MHz).
-  // The shift is registered as MaxJ - j (see stage 12), computed here off the rsqrt's output.
-  // ---- stage 11: p = N * y, exact (FracBits + F fraction bits) ----------------------------------
-  // ---- stage 12: t = floor(p / 2^(F+3-j)), the shift alone --------------------------------------
-  // ---- stage 13: unit = saturate((t + 1) >> 1): Q2.14 ---------------------------------------------
+  // The shift is registered as MaxJ - j (see stage 14), computed here off the rsqrt's output.
+  // ---- stage 13: p = N * y, exact (FracBits + F fraction bits) ----------------------------------
+  // ---- stage 14: t = floor(p / 2^(F+3-j)), the shift alone --------------------------------------
+  // ---- stage 15: unit = saturate((t + 1) >> 1): Q2.14 ---------------------------------------------
   // 1/sqrt(m) = y 2^(j-2) and N carries 16 fraction bits, so the rounding shift to 14 is
   // sh = F + 4 - j, in [F-13, F+4]: always a right shift. round(p / 2^sh) = floor((p + 2^(sh-1)) /
-  // 2^sh) = floor((floor(p / 2^(sh-1)) + 1) / 2): the shift by sh - 1 first (stage 12), then one
-  // increment and a shift by one (stage 13), the same value as round_shift's add-then-shift.
-  // sh - 1 >= MinShift, so stage 12 drops MinShift bits by wiring and shifts by MaxJ - j in [0, MaxJ].
+  // 2^sh) = floor((floor(p / 2^(sh-1)) + 1) / 2): the shift by sh - 1 first (stage 14), then one
+  // increment and a shift by one (stage 15), the same value as round_shift's add-then-shift.
+  // sh - 1 >= MinShift, so stage 14 drops MinShift bits by wiring and shifts by MaxJ - j in [0, MaxJ].
   localparam int YBits    = RsqrtBits + 2;
   localparam int YSplit   = 17;                          // fits an 18 x 18 multiplier as {0, y}
   localparam int YHi      = YBits - YSplit;              // 7
   localparam int MaxJ     = (MBits - 1) / 2;             // rsqrt_unit's largest j: 17
   localparam int MinShift = RsqrtBits + 3 - MaxJ;        // sh - 1 at j = MaxJ: 8
   localparam int TBits    = ScaledBits - MinShift;       // t, signed
-  logic [4:0]                   sh10_q, sh11_q;          // MaxJ - j
-  logic                         nul10_q, nul11_q, nul12_q, nul13_q;
-  always_ff @(posedge clk_i) if (ce[10]) begin
-    sh10_q  <= 5'(MaxJ) - j;
-    nul10_q <= nul;
+  logic [4:0]                   sh12_q, sh13_q;          // MaxJ - j
+  logic                         nul12_q, nul13_q, nul14_q, nul15_q;
+  always_ff @(posedge clk_i) if (ce[RDelay+2]) begin
+    sh12_q  <= 5'(MaxJ) - j;
+    nul12_q <= nul;
   end
-  always_ff @(posedge clk_i) if (ce[11]) begin
-    sh11_q  <= sh10_q;
-    nul11_q <= nul10_q;
+  always_ff @(posedge clk_i) if (ce[RDelay+3]) begin
+    sh13_q  <= sh12_q;
+    nul13_q <= nul12_q;
   end
-  always_ff @(posedge clk_i) if (ce[12]) nul12_q <= nul11_q;
-  always_ff @(posedge clk_i) if (ce[13]) nul13_q <= nul12_q;
+  always_ff @(posedge clk_i) if (ce[RDelay+4]) nul14_q <= nul13_q;
+  always_ff @(posedge clk_i) if (ce[RDelay+5]) nul15_q <= nul14_q;
 
   for (genvar c = 0; c < 3; c++) begin : g_comp
     logic signed [NB-1:0]         n;
@@ -148,21 +148,21 @@ module normalizer #(
     logic [UB-1:0]                unit_q;
     assign n = signed'(g_n[RDelay+1].q[c*NB +: NB]);
     mul18_reg #(.ABits(NB), .BBits(YSplit), .ASigned(1'b1), .PBits(NB+YSplit)) u_pl (
-      .clk_i, .ce_i(ce[10]), .a_i(n), .b_i(y[YSplit-1:0]), .p_o(pl_q));
+      .clk_i, .ce_i(ce[RDelay+2]), .a_i(n), .b_i(y[YSplit-1:0]), .p_o(pl_q));
     mul18_reg #(.ABits(NB), .BBits(YHi), .ASigned(1'b1), .PBits(NB+YHi)) u_ph (
-      .clk_i, .ce_i(ce[10]), .a_i(n), .b_i(y[YBits-1:YSplit]), .p_o(ph_q));
+      .clk_i, .ce_i(ce[RDelay+2]), .a_i(n), .b_i(y[YBits-1:YSplit]), .p_o(ph_q));
     always_ff @(posedge clk_i)
-      if (ce[11]) p_q <= (ScaledBits'(ph_q) <<< YSplit) + ScaledBits'(pl_q);
-    always_ff @(posedge clk_i) if (ce[12]) begin
+      if (ce[RDelay+3]) p_q <= (ScaledBits'(ph_q) <<< YSplit) + ScaledBits'(pl_q);
+    always_ff @(posedge clk_i) if (ce[RDelay+4]) begin
       /* verilator lint_off UNUSEDSIGNAL */
       logic signed [ScaledBits-1:0] ps;  // p >>> MinShift: its top MinShift bits are sign copies
       /* verilator lint_on UNUSEDSIGNAL */
       ps = p_q >>> MinShift;
-      t_q <= signed'(ps[TBits-1:0]) >>> sh11_q;
+      t_q <= signed'(ps[TBits-1:0]) >>> sh13_q;
     end
     // Saturation when r's bits above UB - 1 are not all copies of its sign: bit tests, not
     // compares (a compare would be a second carry chain after the increment).
-    always_ff @(posedge clk_i) if (ce[13]) begin
+    always_ff @(posedge clk_i) if (ce[RDelay+5]) begin
       logic signed [TBits:0] r;
       r = ((TBits+1)'(t_q) + (TBits+1)'(1)) >>> 1;
       if (r[TBits:UB-1] == '0 || r[TBits:UB-1] == '1) unit_q <= r[UB-1:0];
@@ -172,7 +172,7 @@ module normalizer #(
   end
 
   assign unit_o = {g_comp[2].unit_q, g_comp[1].unit_q, g_comp[0].unit_q};
-  assign null_o = nul13_q;
+  assign null_o = nul15_q;
 
   // The payload's hold is checked once, by u_pipe (stall_pipe's a_in_hold and a_out_hold: the
   // same valid and ready): a simulator keeps a sampled copy of every signal an assertion reads.

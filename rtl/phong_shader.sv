@@ -1,7 +1,7 @@
 // phong_shader: Phong's shading rule S = Cp [cos(i)(1-d) + d] + W cos(s)^n (Phong 1975 eq. 3)
 // per pixel, light and eye at infinity, cos(s) = R.E = 2(N.L)(N.E) - L.E (Phong's reflected
 // vector, eqs. 4-8), cos(s)^n by square-and-multiply over the 8 bits of n; bit-exact twin of
-// model/twins/phong_shader.hpp. Latency 33, one pixel per clock; every stage registers valid and
+// model/twins/phong_shader.hpp. Latency 41, one pixel per clock; every stage registers valid and
 // data; one global stall (stall_pipe): ready_o = ready_i || !valid_o (combinational from ready_i
 // and the output valid flop only; with LookAhead a flop loaded a clock ahead from ready_next_i).
 // Every product is registered on its own, in its multiplier block (mul18_reg: on the ECP5 the
@@ -51,16 +51,16 @@ module phong_shader #(
   localparam int FW       = DotBits + MF + 1;               // f = cos(i)(1-d) + d <= 1
   localparam int LW       = FW + 8 + 2;                     // a level at D + MF fraction bits, plus sum
   // Stages: 1 the dot products' six products, 2 their sums, 3 round, 4 cos(i)(N.E) and
-  // cos(i)(1-d) as partial products, 5 their sums, 6 cos(s) and f, 7..30 the powers (a product
-  // stage, a copy stage and a round stage per bit of n), 31 Cp f and 255 W pow as partial
-  // products, 32 their sums, 33 round and saturate.
+  // cos(i)(1-d) as partial products, 5 their sums, 6 cos(s) and f, 7..38 the powers (an operand
+  // stage, a product stage, a copy stage and a round stage per bit of n), 39 Cp f and 255 W pow as
+  // partial products, 40 their sums, 41 round and saturate.
   localparam int CosStage = 6;                              // acc0_q, base0_q, f0_q
-  localparam int PowStages = 3;                             // a power's product, copy, round
-  // power k: stages PowFirst + 3k .. + 3k + 2
+  localparam int PowStages = 4;                             // a power's operands, product, copy, round
+  // power k: stages PowFirst + 4k .. + 4k + 3
   localparam int PowFirst = CosStage + 1;
-  // 30: g_pow[ShininessBits-1].acc_q
+  // 38: g_pow[ShininessBits-1].acc_q
   localparam int PowLast  = CosStage + PowStages * ShininessBits;
-  localparam int Stages   = PowLast + 3;                    // 33
+  localparam int Stages   = PowLast + 3;                    // 41
   // A product wider than an 18 x 18 multiplier is split at bit PSplit of an operand (17: the low
   // part fits the multiplier unsigned, with a zero sign bit), each partial product registered
   // straight from its block; x y = x1 y 2^PSplit + x0 y (and the same for both operands split).
@@ -154,7 +154,7 @@ module phong_shader #(
   // per-stage registers here and below are plain variables of generate blocks, not array
   // elements: a simulator (Verilator) keeps a pending-write flag and value per array element
   // written under its own enable and clears them on every evaluation. Same flops.
-  for (genvar i = 0; i < PowLast; i++) begin : g_cp  // Cp: last read by stage 31
+  for (genvar i = 0; i < PowLast; i++) begin : g_cp  // Cp: last read by stage 39
     logic [watkins_pkg::RgbBits-1:0] q;  // a vector: yosys 0.23 and structs
     if (i == 0) begin : g_in
       always_ff @(posedge clk_i) if (ce[0]) q <= cp_i;
@@ -260,10 +260,10 @@ module phong_shader #(
   // exactly when its argument is at least m 2^CsShift). Each is the carry out of a sum of its own
   // (cs_o_q, cs_p_q), so no reduction over cs's bits follows an add: three carry chains side by
   // side, then one LUT per bit (the reductions were four LUT levels after the chain, 10.8 ns).
-  // Power k = 0..ShininessBits-1 (stages PowFirst + 3k to + 3k + 2): acc *= base if bit k of n,
-  // base *= base, the products registered in the first stage, again in the second, rounded in
-  // the third; acc0_q and base0_q start them (stage 6), g_pow[k].acc_q and
-  // g_pow[k].g_base.base_q are their results.
+  // Power k = 0..ShininessBits-1 (stages PowFirst + 4k to + 4k + 3): acc *= base if bit k of n,
+  // base *= base, the operands registered in the multiplier blocks in the first stage, the
+  // products in the second, again in the third, rounded in the fourth; acc0_q and base0_q start
+  // them (stage 6), g_pow[k].acc_q and g_pow[k].g_base.base_q are their results.
   logic [PowBits:0] acc0_q, base0_q;
   logic [FW-1:0]    f0_q;  // f, then g_f[j].q: stage CosStage + j
   always_ff @(posedge clk_i) begin
@@ -297,6 +297,8 @@ module phong_shader #(
   localparam int PB2    = 2 * PowBits + 3;
   localparam int PHi    = PowBits + 1 - PSplit;   // 4
   for (genvar k = 0; k < ShininessBits; k++) begin : g_pow
+    // ce[Pk - 1]: the operand stage loads, ce[Pk] the product, ce[Pk + 1] the copy, ce[Pk + 2] the round.
+    localparam int Pk = PowFirst + PowStages * k;
     logic [2*PSplit-1:0]   a00_q;                 // low x low
     logic [PSplit+PHi-1:0] a01_q, a10_q;          // low x high
     logic [2*PHi-1:0]      a11_q;                 // high x high
@@ -314,15 +316,20 @@ module phong_shader #(
     end
     assign {x1, x0} = acc_in;
     assign {y1, y0} = base_in;
-    mul18_reg #(.ABits(PSplit), .BBits(PSplit)) u_a00 (
-      .clk_i, .ce_i(ce[PowFirst-1+PowStages*k]), .a_i(x0), .b_i(y0), .p_o(a00_q));
-    mul18_reg #(.ABits(PSplit), .BBits(PHi)) u_a01 (
-      .clk_i, .ce_i(ce[PowFirst-1+PowStages*k]), .a_i(x0), .b_i(y1), .p_o(a01_q));
-    mul18_reg #(.ABits(PHi), .BBits(PSplit)) u_a10 (
-      .clk_i, .ce_i(ce[PowFirst-1+PowStages*k]), .a_i(x1), .b_i(y0), .p_o(a10_q));
-    mul18_reg #(.ABits(PHi), .BBits(PHi)) u_a11 (
-      .clk_i, .ce_i(ce[PowFirst-1+PowStages*k]), .a_i(x1), .b_i(y1), .p_o(a11_q));
-    always_ff @(posedge clk_i) if (ce[PowFirst-1+PowStages*k]) acc_k_q <= acc_in;
+    mul18_reg #(.ABits(PSplit), .BBits(PSplit), .InReg(1'b1)) u_a00 (
+      .clk_i, .ce_i(ce[Pk:Pk-1]), .a_i(x0), .b_i(y0), .p_o(a00_q));
+    mul18_reg #(.ABits(PSplit), .BBits(PHi), .InReg(1'b1)) u_a01 (
+      .clk_i, .ce_i(ce[Pk:Pk-1]), .a_i(x0), .b_i(y1), .p_o(a01_q));
+    mul18_reg #(.ABits(PHi), .BBits(PSplit), .InReg(1'b1)) u_a10 (
+      .clk_i, .ce_i(ce[Pk:Pk-1]), .a_i(x1), .b_i(y0), .p_o(a10_q));
+    mul18_reg #(.ABits(PHi), .BBits(PHi), .InReg(1'b1)) u_a11 (
+      .clk_i, .ce_i(ce[Pk:Pk-1]), .a_i(x1), .b_i(y1), .p_o(a11_q));
+    // The operand stage: acc and base enter the blocks' operand registers (mul18_reg InReg),
+    // so a route from the fabric across the die (up to 6.9 ns in the Phong top, where the 112
+    // MULT18 spread over it) ends at a register, not at the multiplier's 3.5 ns input setup.
+    logic [PowBits:0]      acc_k0_q;              // acc in, for a bit of n that is clear
+    always_ff @(posedge clk_i) if (ce[Pk-1]) acc_k0_q <= acc_in;
+    always_ff @(posedge clk_i) if (ce[Pk])   acc_k_q  <= acc_k0_q;
     // The round stage: the sums only for the products it keeps (acc's for a set bit of n).
     // The copy stage: the multiplier blocks' outputs registered again in the fabric, so the
     // route from a block (up to 4.8 ns on the ECP5) is not in front of the round stage's adders.
@@ -330,20 +337,20 @@ module phong_shader #(
     logic [PSplit+PHi-1:0] a01c_q, a10c_q;
     logic [2*PHi-1:0]      a11c_q;
     logic [PowBits:0]      acc_kc_q;
-    always_ff @(posedge clk_i) if (ce[PowFirst+PowStages*k]) begin
+    always_ff @(posedge clk_i) if (ce[Pk+1]) begin
       a00c_q   <= a00_q;
       a01c_q   <= a01_q;
       a10c_q   <= a10_q;
       a11c_q   <= a11_q;
       acc_kc_q <= acc_k_q;
     end
-    always_ff @(posedge clk_i) if (ce[PowFirst+PowStages*k+1]) begin
+    always_ff @(posedge clk_i) if (ce[Pk+2]) begin
       /* verilator lint_off UNUSEDSIGNAL */
       logic [PB2-1:0] pa;  // product <= 2^2P plus half: only [2P:P] is kept
       /* verilator lint_on UNUSEDSIGNAL */
       pa = PB2'({a11c_q, a00c_q}) + (PB2'(a01c_q) << PSplit) + (PB2'(a10c_q) << PSplit)
          + PB2'(1 << (PowBits - 1));
-      acc_q <= g_n[PowFirst + PowStages * k].q[k] ? pa[2*PowBits:PowBits] : acc_kc_q;
+      acc_q <= g_n[Pk+1].q[k] ? pa[2*PowBits:PowBits] : acc_kc_q;
     end
     // base^2, for the next power stage only (the last one has none).
     if (k + 1 < ShininessBits) begin : g_base
@@ -351,21 +358,21 @@ module phong_shader #(
       logic [PSplit+PHi-1:0] b01_q;               // low x high (b10 = b01: a square)
       logic [2*PHi-1:0]      b11_q;               // high x high
       logic [PowBits:0]      base_q;              // base out
-      mul18_reg #(.ABits(PSplit), .BBits(PSplit)) u_b00 (
-        .clk_i, .ce_i(ce[PowFirst-1+PowStages*k]), .a_i(y0), .b_i(y0), .p_o(b00_q));
-      mul18_reg #(.ABits(PSplit), .BBits(PHi)) u_b01 (
-        .clk_i, .ce_i(ce[PowFirst-1+PowStages*k]), .a_i(y0), .b_i(y1), .p_o(b01_q));
-      mul18_reg #(.ABits(PHi), .BBits(PHi)) u_b11 (
-        .clk_i, .ce_i(ce[PowFirst-1+PowStages*k]), .a_i(y1), .b_i(y1), .p_o(b11_q));
+      mul18_reg #(.ABits(PSplit), .BBits(PSplit), .InReg(1'b1)) u_b00 (
+        .clk_i, .ce_i(ce[Pk:Pk-1]), .a_i(y0), .b_i(y0), .p_o(b00_q));
+      mul18_reg #(.ABits(PSplit), .BBits(PHi), .InReg(1'b1)) u_b01 (
+        .clk_i, .ce_i(ce[Pk:Pk-1]), .a_i(y0), .b_i(y1), .p_o(b01_q));
+      mul18_reg #(.ABits(PHi), .BBits(PHi), .InReg(1'b1)) u_b11 (
+        .clk_i, .ce_i(ce[Pk:Pk-1]), .a_i(y1), .b_i(y1), .p_o(b11_q));
       logic [2*PSplit-1:0]   b00c_q;
       logic [PSplit+PHi-1:0] b01c_q;
       logic [2*PHi-1:0]      b11c_q;
-      always_ff @(posedge clk_i) if (ce[PowFirst+PowStages*k]) begin
+      always_ff @(posedge clk_i) if (ce[Pk+1]) begin
         b00c_q <= b00_q;
         b01c_q <= b01_q;
         b11c_q <= b11_q;
       end
-      always_ff @(posedge clk_i) if (ce[PowFirst+PowStages*k+1]) begin
+      always_ff @(posedge clk_i) if (ce[Pk+2]) begin
         /* verilator lint_off UNUSEDSIGNAL */
         logic [PB2-1:0] pb;  // product <= 2^2P plus half: only [2P:P] is kept
         /* verilator lint_on UNUSEDSIGNAL */
@@ -375,12 +382,12 @@ module phong_shader #(
     end
   end
 
-  // ---- stage 30 (the last power stage): 255 W, so W pow needs no multiply by 255 after it ----
+  // ---- stage 38 (the last power stage): 255 W, so W pow needs no multiply by 255 after it ----
   logic [MaterialBits+7:0] w255_q;  // 255 W < 2^17: one multiplier block with a PSplit-bit operand
   always_ff @(posedge clk_i) if (ce[PowLast-1])
     w255_q <= ((MaterialBits+8)'(g_w[PowLast-2].q) << 8) - (MaterialBits+8)'(g_w[PowLast-2].q);
 
-  // ---- stage 31: Cp f per channel and 255 W cos(s)^n, as partial products ----------------------
+  // ---- stage 39: Cp f per channel and 255 W cos(s)^n, as partial products ----------------------
   // Channel c is byte c of rgb_t (B, G, R for c = 0, 1, 2) in Cp and in the shade alike: the
   // three channels are computed the same way, so the loop need not know which is which.
   // f (FW bits) and pow (P + 1 bits) are split at PSplit: two multiplier blocks each.
@@ -409,9 +416,9 @@ module phong_shader #(
   mul18_reg #(.ABits(MaterialBits+8), .BBits(AHi)) u_wa1 (
     .clk_i, .ce_i(ce[PowLast]), .a_i(w255_q), .b_i(al[PowBits:PSplit]), .p_o(wa1_q));
 
-  // ---- stage 32: Cp f and 255 W cos(s)^n (white highlight), D + MF fraction bits -------------
+  // ---- stage 40: Cp f and 255 W cos(s)^n (white highlight), D + MF fraction bits -------------
   // The final rounding's half, 2^(D+MF-1), is set in Cp f's sum as a bit above Cp f0 (< 2^(PSplit+8)
-  // <= 2^(D+MF-1): an OR, no carry), so stage 33 adds two operands, not three.
+  // <= 2^(D+MF-1): an OR, no carry), so stage 41 adds two operands, not three.
   localparam logic [LW-1:0] Half = LW'(1) << (DotBits + MF - 1);
   logic [3*LW-1:0] diff2_q;  // Cp f plus the rounding half, channel c at c * LW
   logic [LW-1:0]   spec_q;
@@ -422,7 +429,7 @@ module phong_shader #(
     spec_q <= (LW'(wa0_q) + (LW'(wa1_q) << PSplit)) << (DotBits - PowBits);
   end
 
-  // ---- stage 33: level = saturate(round(Cp f + 255 W pow)) --------------------------------------
+  // ---- stage 41: level = saturate(round(Cp f + 255 W pow)) --------------------------------------
   logic [watkins_pkg::RgbBits-1:0] rgb_q;
   always_ff @(posedge clk_i) if (ce[PowLast+2]) begin
     for (int c = 0; c < 3; c++) begin

@@ -1,19 +1,22 @@
 // rsqrt_unit: y ~ 1/sqrt(m') for m = 2^(4-2j) * m', m' in [1/4, 1) (the normalizer's "very fast
 // mechanism for obtaining square roots", Phong 1975 p. 317): even-shift normalization, a 768-row
 // seed table, one Newton-Raphson step. Bit-exact twin of Normalizer::normalize_mantissa and
-// RsqrtUnit::rsqrt_mant (model/twins/rsqrt_unit.hpp). Latency 8, every stage registered; the
+// RsqrtUnit::rsqrt_mant (model/twins/rsqrt_unit.hpp). Latency 10, every stage registered; the
 // leading-one search (stage 1) and the even shift (stage 2, straight into the seed ROM's address)
-// are a clock apart; the seed ROM's output is registered once more before y0^2; the two Newton-Raphson products, wider
-// than an 18 x 18 multiplier, are registered as partial products and summed and rounded a stage
-// later; no handshake: ce_i[k] loads stage k (the parent owns valid/ready and the stall, and
-// gives each stage its clock enable: its stall_pipe's ce_o, low for a bubble, whose values nobody
-// reads, so a simulator computes valid beats only; a unit bench may drive all eight together).
+// are a clock apart; the seed ROM's output is registered once more before y0^2 (the ROM's output
+// also loads y0^2's multiplier block's operand registers); y0^2 enters the next products' blocks
+// through their operand registers (no block's output feeds a block's multiplier); the two
+// Newton-Raphson products, wider than an 18 x 18 multiplier, are registered as partial products
+// (the first copied into the fabric) and summed and rounded a stage later; no handshake: ce_i[k]
+// loads stage k (the parent owns valid/ready and the stall, and gives each stage its clock
+// enable: its stall_pipe's ce_o, low for a bubble, whose values nobody reads, so a simulator
+// computes valid beats only; a unit bench may drive all ten together).
 module rsqrt_unit #(
   localparam int MBits     = 2 * watkins_pkg::NormalInBits,  // m = Nx^2 + Ny^2 + Nz^2, exact
   localparam int RsqrtBits = watkins_pkg::RsqrtBits          // F: fraction bits of y
 ) (
   input  logic                 clk_i,
-  input  logic [8:1]           ce_i,    // [k]: stage k's registers load
+  input  logic [10:1]          ce_i,    // [k]: stage k's registers load
   input  logic [MBits-1:0]     m_i,     // squared length, 2*FracBits fraction bits
   output logic [RsqrtBits+1:0] y_o,     // 1/sqrt(m'c) with F fraction bits, in [1, 2]; 0 if null_o
   output logic [4:0]           j_o,     // 1/sqrt(m) = y * 2^(j-2); 0 if null_o
@@ -71,8 +74,8 @@ module rsqrt_unit #(
   // on every evaluation. Same flops. The logic of a stage is computed inside its enabled
   // always_ff (the same logic in front of the same flops), so a simulator skips it with them.
   logic [MBits-1:0] m1_q;
-  logic [4:0]   j1_q, j2_q, j3_q, j4_q, j5_q, j6_q, j7_q, j8_q;
-  logic         nul1_q, nul2_q, nul3_q, nul4_q, nul5_q, nul6_q, nul7_q, nul8_q;
+  logic [4:0]   j1_q, j2_q, j3_q, j4_q, j5_q, j6_q, j7_q, j8_q, j9_q, j10_q;
+  logic         nul1_q, nul2_q, nul3_q, nul4_q, nul5_q, nul6_q, nul7_q, nul8_q, nul9_q, nul10_q;
 
   // ---- stage 1: the even shift 2j, j = the number of all-zero bit pairs above m's leading one ---
   // m' = (m << 2j) / 2^MBits in [1/4, 1). The search alone: the shift waits for stage 2 (search,
@@ -88,7 +91,7 @@ module rsqrt_unit #(
 
   // ---- stage 2: the shift m << 2j (only its top W bits are kept: truncation, as the model) and
   // the seed y0 read at its top P bits: the ROM's address comes from the shift's multiplexers ---
-  logic [SeedBits:0]    y0_2_q, y0_3_q, y0_4_q, y0_5_q, y0_6_q;
+  logic [SeedBits:0]    y0_2_q, y0_3_q, y0_4_q, y0_5_q, y0_6_q, y0_7_q, y0_8_q;
   logic [MantBits:0]    mc2_q, mc3_q, mc4_q;  // m'c = mant + half an ulp: {mant, 1}, W+1 fraction bits
   always_ff @(posedge clk_i) if (ce_i[2]) begin
     /* verilator lint_off UNUSEDSIGNAL */
@@ -113,9 +116,11 @@ module rsqrt_unit #(
   end
 
   // ---- stage 4: y0^2, exact (2T fraction bits) --------------------------------------------
+  // The block's operand registers load the ROM's output in stage 3, as y0_3_q does beside them
+  // (twins: no latency), so the route from y0_3_q is not in front of the multiplier's setup.
   logic [2*SeedBits+1:0] y0sq_q;
-  mul18_reg #(.ABits(SeedBits+1), .BBits(SeedBits+1)) u_y0sq (
-    .clk_i, .ce_i(ce_i[4]), .a_i(y0_3_q), .b_i(y0_3_q), .p_o(y0sq_q));
+  mul18_reg #(.ABits(SeedBits+1), .BBits(SeedBits+1), .InReg(1'b1)) u_y0sq (
+    .clk_i, .ce_i(ce_i[4:3]), .a_i(y0_2_q), .b_i(y0_2_q), .p_o(y0sq_q));
   always_ff @(posedge clk_i) if (ce_i[4]) begin
     y0_4_q <= y0_3_q;
     mc4_q  <= mc3_q;
@@ -128,7 +133,17 @@ module rsqrt_unit #(
   // x y = x1 y1 2^2PSplit + (x1 y0 + x0 y1) 2^PSplit + x0 y0.
   localparam int PSplit = 17;
 
-  // ---- stage 5: m'c * y0^2 as four partial products ------------------------------------------
+  // ---- stage 5: m'c and y0^2 in the next products' operand registers -------------------------
+  // A multiplier block's output straight into another's multiplier has the second block's input
+  // setup (3.5 ns on the ECP5) after the route between the two, and with the Phong top's 112
+  // MULT18 the placer puts them far apart (7.3 to 7.6 ns of route, the top's path on two of three
+  // seeds): the products below register their operands first (mul18_reg InReg), a stage of its own.
+  always_ff @(posedge clk_i) if (ce_i[5]) begin
+    y0_5_q  <= y0_4_q;
+    j5_q    <= j4_q;
+    nul5_q  <= nul4_q;
+  end
+  // ---- stage 6: m'c * y0^2 as four partial products ------------------------------------------
   localparam int AW  = MantBits + 1;          // m'c: 21 bits
   localparam int BW  = 2 * SeedBits + 2;      // y0^2: 30 bits
   localparam int AHi = AW - PSplit;           // 4
@@ -142,21 +157,38 @@ module rsqrt_unit #(
   logic [AHi+BHi-1:0]    p11_q;
   assign {a1, a0} = mc4_q;
   assign {b1, b0} = y0sq_q;
-  mul18_reg #(.ABits(PSplit), .BBits(PSplit)) u_p00 (
-    .clk_i, .ce_i(ce_i[5]), .a_i(a0), .b_i(b0), .p_o(p00_q));
-  mul18_reg #(.ABits(PSplit), .BBits(BHi)) u_p01 (
-    .clk_i, .ce_i(ce_i[5]), .a_i(a0), .b_i(b1), .p_o(p01_q));
-  mul18_reg #(.ABits(AHi), .BBits(PSplit)) u_p10 (
-    .clk_i, .ce_i(ce_i[5]), .a_i(a1), .b_i(b0), .p_o(p10_q));
-  mul18_reg #(.ABits(AHi), .BBits(BHi)) u_p11 (
-    .clk_i, .ce_i(ce_i[5]), .a_i(a1), .b_i(b1), .p_o(p11_q));
-  always_ff @(posedge clk_i) if (ce_i[5]) begin
-    y0_5_q <= y0_4_q;
-    j5_q   <= j4_q;
-    nul5_q <= nul4_q;
+  mul18_reg #(.ABits(PSplit), .BBits(PSplit), .InReg(1'b1)) u_p00 (
+    .clk_i, .ce_i(ce_i[6:5]), .a_i(a0), .b_i(b0), .p_o(p00_q));
+  mul18_reg #(.ABits(PSplit), .BBits(BHi), .InReg(1'b1)) u_p01 (
+    .clk_i, .ce_i(ce_i[6:5]), .a_i(a0), .b_i(b1), .p_o(p01_q));
+  mul18_reg #(.ABits(AHi), .BBits(PSplit), .InReg(1'b1)) u_p10 (
+    .clk_i, .ce_i(ce_i[6:5]), .a_i(a1), .b_i(b0), .p_o(p10_q));
+  mul18_reg #(.ABits(AHi), .BBits(BHi), .InReg(1'b1)) u_p11 (
+    .clk_i, .ce_i(ce_i[6:5]), .a_i(a1), .b_i(b1), .p_o(p11_q));
+  always_ff @(posedge clk_i) if (ce_i[6]) begin
+    y0_6_q <= y0_5_q;
+    j6_q   <= j5_q;
+    nul6_q <= nul5_q;
   end
 
-  // ---- stage 6: u = 3 - round(m'c * y0^2), G fraction bits (|m'c y0^2 - 1| < 2^-9) ---------
+  // ---- stage 7: the partial products copied into the fabric -----------------------------------
+  // The route out of a multiplier block (4.9 ns across the die in the Phong top) is then not in
+  // front of the stage-8 adder tree, as the shader's copy stage does for its powers.
+  logic [2*PSplit-1:0]   p00c_q;
+  logic [PSplit+BHi-1:0] p01c_q;
+  logic [AHi+PSplit-1:0] p10c_q;
+  logic [AHi+BHi-1:0]    p11c_q;
+  always_ff @(posedge clk_i) if (ce_i[7]) begin
+    p00c_q <= p00_q;
+    p01c_q <= p01_q;
+    p10c_q <= p10_q;
+    p11c_q <= p11_q;
+    y0_7_q <= y0_6_q;
+    j7_q   <= j6_q;
+    nul7_q <= nul6_q;
+  end
+
+  // ---- stage 8: u = 3 - round(m'c * y0^2), G fraction bits (|m'c y0^2 - 1| < 2^-9) ---------
   // One sum, one carry chain: with p = m'c y0^2 (Sh4 + G fraction bits) and s = Sh4,
   // 3 * 2^G - floor((p + 2^(s-1)) / 2^s) = ceil((3 * 2^(G+s) - 2^(s-1) - p) / 2^s)
   //                                      = floor((3 * 2^(G+s) + 2^(s-1) - 1 - p) / 2^s),
@@ -165,48 +197,48 @@ module rsqrt_unit #(
   localparam int PW4 = (AW + BW + 1 > Sh4 + NrBits + 2) ? AW + BW + 1 : Sh4 + NrBits + 2;
   localparam logic [PW4-1:0] UConst = (PW4'(3) << (NrBits + Sh4)) + (PW4'(1) << (Sh4 - 1)) - PW4'(1);
   logic [NrBits+1:0] u_q;
-  always_ff @(posedge clk_i) if (ce_i[6]) begin
+  always_ff @(posedge clk_i) if (ce_i[8]) begin
     /* verilator lint_off UNUSEDSIGNAL */
     logic [PW4-1:0] d4;  // u * 2^s plus the remainder; only bits [s+G+1:s] are kept
     /* verilator lint_on UNUSEDSIGNAL */
-    d4 = UConst - PW4'({p11_q, p00_q}) - (PW4'(p01_q) << PSplit) - (PW4'(p10_q) << PSplit);
+    d4 = UConst - PW4'({p11c_q, p00c_q}) - (PW4'(p01c_q) << PSplit) - (PW4'(p10c_q) << PSplit);
     u_q    <= d4[Sh4 +: NrBits+2];
-    y0_6_q <= y0_5_q;
-    j6_q   <= j5_q;
-    nul6_q <= nul5_q;
+    y0_8_q <= y0_7_q;
+    j8_q   <= j7_q;
+    nul8_q <= nul7_q;
   end
 
-  // ---- stage 7: y0 * u as two partial products (u split at PSplit) -------------------------
+  // ---- stage 9: y0 * u as two partial products (u split at PSplit) -------------------------
   localparam int YW  = SeedBits + 1;          // y0: 15 bits
   localparam int UW  = NrBits + 2;            // u: 26 bits
   localparam int UHi = UW - PSplit;           // 9
   logic [YW+PSplit-1:0] q0_q;
   logic [YW+UHi-1:0]    q1_q;
   mul18_reg #(.ABits(YW), .BBits(PSplit)) u_q0 (
-    .clk_i, .ce_i(ce_i[7]), .a_i(y0_6_q), .b_i(u_q[PSplit-1:0]), .p_o(q0_q));
+    .clk_i, .ce_i(ce_i[9]), .a_i(y0_8_q), .b_i(u_q[PSplit-1:0]), .p_o(q0_q));
   mul18_reg #(.ABits(YW), .BBits(UHi)) u_q1 (
-    .clk_i, .ce_i(ce_i[7]), .a_i(y0_6_q), .b_i(u_q[UW-1:PSplit]), .p_o(q1_q));
-  always_ff @(posedge clk_i) if (ce_i[7]) begin
-    j7_q   <= j6_q;
-    nul7_q <= nul6_q;
+    .clk_i, .ce_i(ce_i[9]), .a_i(y0_8_q), .b_i(u_q[UW-1:PSplit]), .p_o(q1_q));
+  always_ff @(posedge clk_i) if (ce_i[9]) begin
+    j9_q   <= j8_q;
+    nul9_q <= nul8_q;
   end
 
-  // ---- stage 8: y = round(y0 * u / 2), F fraction bits: y <- y (3 - m' y^2) / 2 ------------
+  // ---- stage 10: y = round(y0 * u / 2), F fraction bits: y <- y (3 - m' y^2) / 2 ------------
   localparam int PW5 = YW + UW + 1;
   logic [RsqrtBits+1:0] y_q;
-  always_ff @(posedge clk_i) if (ce_i[8]) begin
+  always_ff @(posedge clk_i) if (ce_i[10]) begin
     logic [PW5-1:0] prod5;
     /* verilator lint_off UNUSEDSIGNAL */
     logic [PW5-1:0] y5;  // y <= 2: the top bits are zero
     /* verilator lint_on UNUSEDSIGNAL */
     prod5 = PW5'(q0_q) + (PW5'(q1_q) << PSplit);
     y5    = (prod5 + (PW5'(1) << (Sh5 - 1))) >> Sh5;
-    y_q    <= y5[RsqrtBits+1:0];
-    j8_q   <= j7_q;
-    nul8_q <= nul7_q;
+    y_q     <= y5[RsqrtBits+1:0];
+    j10_q   <= j9_q;
+    nul10_q <= nul9_q;
   end
 
   assign y_o    = y_q;
-  assign j_o    = j8_q;
-  assign null_o = nul8_q;
+  assign j_o    = j10_q;
+  assign null_o = nul10_q;
 endmodule

@@ -261,6 +261,10 @@ module segment_interpolator #(
   span_mid_t           sp_span_q, sh_span_q, sb_span_q, sc_span_q;
   logic                sv_valid_q;
   span_mid_t           sv_span_q;
+  // sp's compares, applied in sh: x_end clamps to the width; the span is off the screen (fcf <= 0,
+  // width <= fce, width == 0). sp_span_q.empty is fcf <= fce alone, sh_span_q.empty the whole test.
+  logic                sp_xe_clip_q;
+  logic [2:0]          sp_off_q;
   logic [ShAB-1:0]     sa_sha_q, sp_sha_q;  // alpha0's shift p + RecipBits - AlphaBits
   logic [ShSB-1:0]     sa_shs_q, sp_shs_q, sh_shs_q;  // the steps' shift p + RecipBits - FX (> 0)
   logic [2*MSplit-1:0]   sa_pa00_q;           // offset * recip: low x low
@@ -338,31 +342,30 @@ module segment_interpolator #(
     end
     if (sp_ce) begin : sp_set
       // sp: the pixel range x_start = max(fce, 0), x_end = min(fcf, width), from sa's copy of
-      // the span. The clamped ends keep LB bits: beyond them the span is empty.
-      /* verilator lint_off UNUSEDSIGNAL */
-      logic signed [PCB-1:0] xs_full, xe_full;
-      /* verilator lint_on UNUSEDSIGNAL */
-      xs_full = (sa_span_q.fce < 0) ? '0 : sa_span_q.fce;
-      xe_full = (sa_span_q.fcf > $signed(PCB'(width_i))) ? $signed(PCB'(width_i))
-                                                         : sa_span_q.fcf;
+      // the span. The clamped ends keep LB bits: beyond them the span is empty. sp registers
+      // each compare on its own (its carry chain straight into a flip-flop: sa's copy is placed
+      // by the reciprocal's RAM, far from here); sh applies them (sp_xe_clip_q, sp_off_q).
       sp_span_q.eol      <= sa_span_q.eol;
-      // empty = min(fcf, width) <= max(fce, 0), spread into four compares of the unclamped ends
-      // that run side by side (through the clamps it was the block's longest path).
-      sp_span_q.empty    <= (sa_span_q.fcf <= sa_span_q.fce) || (sa_span_q.fcf <= 0)
-                         || ($signed(PCB'(width_i)) <= sa_span_q.fce) || (width_i == '0);
+      sp_span_q.empty    <= sa_span_q.fcf <= sa_span_q.fce;
       sp_span_q.poly     <= sa_span_q.poly;
       sp_span_q.material <= sa_span_q.material;
-      sp_span_q.xs       <= LB'(xs_full);
-      sp_span_q.xe       <= LB'(xe_full);
+      sp_span_q.xs       <= sa_span_q.fce[PCB-1] ? '0 : LB'(sa_span_q.fce);
+      sp_span_q.xe       <= LB'(sa_span_q.fcf);
       sp_span_q.e        <= sa_span_q.e;
       sp_span_q.delta    <= sa_span_q.delta;
+      sp_xe_clip_q <= sa_span_q.fcf > $signed(PCB'(width_i));
+      // empty = min(fcf, width) <= max(fce, 0), spread into four compares of the unclamped ends
+      // (through the clamps it was the block's longest path): fcf <= fce above, the rest here.
+      sp_off_q <= {sa_span_q.fcf <= 0, $signed(PCB'(width_i)) <= sa_span_q.fce, width_i == '0};
       sp_sha_q  <= sa_sha_q;
       sp_shs_q  <= sa_shs_q;
       sp_pa_q   <= APBits'({sa_pa11_q, sa_pa00_q}) + (APBits'(sa_pa01_q) << MSplit)
                  + (APBits'(sa_pa10_q) << MSplit);
     end
     if (sh_ce) begin
-      sh_span_q <= sp_span_q;
+      sh_span_q       <= sp_span_q;
+      sh_span_q.empty <= sp_span_q.empty || (|sp_off_q);
+      if (sp_xe_clip_q) sh_span_q.xe <= LB'(width_i);
       sh_shs_q  <= sp_shs_q;
       sh_u_q    <= {sp_pa_q, 1'b0} >> sp_sha_q;
     end

@@ -26,8 +26,8 @@ namespace rtl_timing {
 constexpr int RecipStages = fmt::RecipBits + 2;  // span_reciprocal: normalize + R+1 quotient bits
 constexpr int InterpFifoDepth = 4;               // segment_interpolator's FifoDepth
 constexpr int InterpTailStages = 7;              // segment_interpolator: sa, sp, sh, sb, sc, sv, sd after the reciprocal
-constexpr int NormalizerStages = 14;             // normalizer: squares, sum, rsqrt_unit (8), partial products, sum, shift, round
-constexpr int ShaderStages = 33;                 // phong_shader: dots (3), cos(s) (3), 8 powers (3 each), 3 out
+constexpr int NormalizerStages = 16;             // normalizer: squares, sum, rsqrt_unit (10), partial products, sum, shift, round
+constexpr int ShaderStages = 41;                 // phong_shader: dots (3), cos(s) (3), 8 powers (4 each), 3 out
 constexpr int SmootherStages = fmt::ShadeBits + 6;  // smoother: line read, window, pairs, sums, products, dividend, a divider
                                                     // stage per quotient bit
 constexpr int FragQueueDepth = 2;                // watkins_top's u_frag_queue (registered ready)

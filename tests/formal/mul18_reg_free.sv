@@ -11,10 +11,11 @@ module mul18_reg #(
   parameter int BBits   = 18,
   parameter bit ASigned = 1'b0,
   parameter bit BSigned = 1'b0,
-  parameter int PBits   = ABits + BBits
+  parameter int PBits   = ABits + BBits,
+  parameter bit InReg   = 1'b0
 ) (
   input  logic             clk_i,
-  input  logic             ce_i,   // the product register loads
+  input  logic [InReg:0]   ce_i,   // [InReg]: the product register loads ([0] with InReg: unread)
   input  logic [ABits-1:0] a_i,    // unread: the product is free
   input  logic [BBits-1:0] b_i,
   output logic [PBits-1:0] p_o     // any value, loaded under ce_i like the real product register
@@ -22,6 +23,6 @@ module mul18_reg #(
   logic [PBits-1:0] free;
   logic [PBits-1:0] p_q;
   assign free = $anyseq;
-  always_ff @(posedge clk_i) if (ce_i) p_q <= free;
+  always_ff @(posedge clk_i) if (ce_i[InReg]) p_q <= free;
   assign p_o = p_q;
 endmodule

@@ -1,18 +1,18 @@
-// normalizer_formal: proves rtl/normalizer.sv (14 stages, a 4-bit payload) holds valid and its whole
+// normalizer_formal: proves rtl/normalizer.sv (16 stages, a 5-bit payload) holds valid and its whole
 // output until ready, passes every beat once, in order, with its payload unchanged (each input
 // beat carries its sequence number as payload), keeps ready_o = ready_i || !valid_o and holds at
-// most 14 beats. stall_pipe_checker ties the payload RAM of its u_pipe to the tags in flight; the
+// most 16 beats. stall_pipe_checker ties the payload RAM of its u_pipe to the tags in flight; the
 // normal's datapath is free (its values are the unit benches' business), and so are the products:
 // scripts/formal reads tests/formal/mul18_reg_free.sv in place of rtl/mul18_reg.sv. LookAhead = 1
 // (the Phong top's): the environment gives ready_i a clock ahead on ready_next_i.
 `include "formal_stream.svh"
 
 module normalizer_formal #(
-  parameter int unsigned PayloadBits = 4,  // the tag: >= log2 of the RAM depth
+  parameter int unsigned PayloadBits = 5,  // the tag: >= log2 of the RAM depth (32 for 16 stages)
   parameter bit          LookAhead   = 1'b0,  // the Phong top's setting is 1
   localparam int unsigned NB      = watkins_pkg::NormalInBits,
   localparam int unsigned UB      = watkins_pkg::UnitBits,
-  localparam int unsigned Stages  = 14,  // normalizer's pipe: squares, sum, rsqrt (8), partial products, sum, shift, round
+  localparam int unsigned Stages  = 16,  // normalizer's pipe: squares, sum, rsqrt (10), partial products, sum, shift, round
   localparam int unsigned PtrBits = $clog2(Stages + 1),
   localparam int unsigned Depth   = 2 ** PtrBits
 ) (
@@ -41,7 +41,7 @@ module normalizer_formal #(
 
   // The internals of u_pipe (stall_pipe with PayloadRam) and the stall.
   `FORMAL_RAM_PIPE_PROBES
-  `FORMAL_RAM_PIPE_WORDS_16
+  `FORMAL_RAM_PIPE_WORDS_32
 
   `FORMAL_RAM_PIPE_CHECK
 endmodule

@@ -1,7 +1,7 @@
-// phong_shader_formal: proves rtl/phong_shader.sv (33 stages, a 6-bit payload) holds valid and its
+// phong_shader_formal: proves rtl/phong_shader.sv (41 stages, a 6-bit payload) holds valid and its
 // shade until ready, passes every beat once, in order, with its payload unchanged (each input beat
 // carries its sequence number as payload), keeps ready_o = ready_i || !valid_o and holds at most
-// 33 beats. stall_pipe_checker ties the payload RAM of its u_pipe to the tags in flight; the
+// 41 beats. stall_pipe_checker ties the payload RAM of its u_pipe to the tags in flight; the
 // shading datapath, light and eye are free (values are the unit benches' business), and so are the
 // products: scripts/formal reads tests/formal/mul18_reg_free.sv in place of rtl/mul18_reg.sv.
 // LookAhead = 1 (the Phong top's): the environment gives ready_i a clock ahead on ready_next_i.
@@ -13,7 +13,7 @@ module phong_shader_formal #(
   localparam int unsigned UB      = watkins_pkg::UnitBits,
   localparam int unsigned MB      = watkins_pkg::MaterialBits,
   localparam int unsigned SB      = watkins_pkg::ShininessBits,
-  localparam int unsigned Stages  = 6 + 3 * SB + 3,  // phong_shader's pipe: dots, cos(s), powers, output
+  localparam int unsigned Stages  = 6 + 4 * SB + 3,  // phong_shader's pipe: dots, cos(s), powers, output
   localparam int unsigned PtrBits = $clog2(Stages + 1),
   localparam int unsigned Depth   = 2 ** PtrBits
 ) (

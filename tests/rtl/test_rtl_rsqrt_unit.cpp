@@ -16,7 +16,7 @@ using namespace watkins::rtl;
 
 namespace {
 
-constexpr int Latency = 8;
+constexpr int Latency = 10;
 
 struct Bench {
   Harness<Vrsqrt_unit> h;
@@ -34,7 +34,7 @@ struct Bench {
       h.tick();
       if (h.dut.y_o != y) ++bad;
     }
-    h.dut.ce_i = 0xFF;  // every stage loads
+    h.dut.ce_i = 0x3FF;  // every stage loads
     h.dut.m_i = m;
     h.tick();
     pipe.push_back(m);
