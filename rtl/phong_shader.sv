@@ -154,32 +154,23 @@ module phong_shader #(
   // per-stage registers here and below are plain variables of generate blocks, not array
   // elements: a simulator (Verilator) keeps a pending-write flag and value per array element
   // written under its own enable and clears them on every evaluation. Same flops.
-  for (genvar i = 0; i < PowLast; i++) begin : g_cp  // Cp: last read by stage 39
-    logic [watkins_pkg::RgbBits-1:0] q;  // a vector: yosys 0.23 and structs
-    if (i == 0) begin : g_in
-      always_ff @(posedge clk_i) if (ce[0]) q <= cp_i;
-    end else begin : g_shift
-      always_ff @(posedge clk_i) if (ce[i]) q <= g_cp[i-1].q;
-    end
-  end
-  for (genvar i = 0; i < PowLast - 1; i++) begin : g_w  // W: then 255 W, w255_q
-    logic [MaterialBits-1:0] q;
-    if (i == 0) begin : g_in
-      always_ff @(posedge clk_i) if (ce[0]) q <= w_i;
-    end else begin : g_shift
-      always_ff @(posedge clk_i) if (ce[i]) q <= g_w[i-1].q;
-    end
-  end
-  for (genvar i = 0; i < PowLast - 1; i++) begin : g_n  // n: last read by the final power stage
+  // Cp, W and n travel in one word {Cp, W, n} per stage (one assignment per stage for a simulator,
+  // not three: the Phong top's Verilator cost per cycle): n is last read by the final power stage,
+  // W by stage 38 (255 W), Cp by stage 39 (from cp_last_q, its one stage more).
+  localparam int RB  = watkins_pkg::RgbBits;
+  localparam int MWB = RB + MaterialBits + ShininessBits;
+  for (genvar i = 0; i < PowLast - 1; i++) begin : g_m
     /* verilator lint_off UNUSEDSIGNAL */
-    logic [ShininessBits-1:0] q;  // the last stage's bits below ShininessBits - 1 are read no more
+    logic [MWB-1:0] q;  // the last stage's n bits below ShininessBits - 1 are read no more
     /* verilator lint_on UNUSEDSIGNAL */
     if (i == 0) begin : g_in
-      always_ff @(posedge clk_i) if (ce[0]) q <= shininess_i;
+      always_ff @(posedge clk_i) if (ce[0]) q <= {cp_i, w_i, shininess_i};
     end else begin : g_shift
-      always_ff @(posedge clk_i) if (ce[i]) q <= g_n[i-1].q;
+      always_ff @(posedge clk_i) if (ce[i]) q <= g_m[i-1].q;
     end
   end
+  logic [RB-1:0] cp_last_q;  // Cp in stage PowLast
+  always_ff @(posedge clk_i) if (ce[PowLast-1]) cp_last_q <= g_m[PowLast-2].q[MWB-1 -: RB];
   for (genvar i = 0; i < CosStage - 1; i++) begin : g_d  // d: last read by stage 6
     logic [MaterialBits-1:0] q;
     if (i == 0) begin : g_in
@@ -350,7 +341,7 @@ module phong_shader #(
       /* verilator lint_on UNUSEDSIGNAL */
       pa = PB2'({a11c_q, a00c_q}) + (PB2'(a01c_q) << PSplit) + (PB2'(a10c_q) << PSplit)
          + PB2'(1 << (PowBits - 1));
-      acc_q <= g_n[Pk+1].q[k] ? pa[2*PowBits:PowBits] : acc_kc_q;
+      acc_q <= g_m[Pk+1].q[k] ? pa[2*PowBits:PowBits] : acc_kc_q;  // bit k of n
     end
     // base^2, for the next power stage only (the last one has none).
     if (k + 1 < ShininessBits) begin : g_base
@@ -385,7 +376,8 @@ module phong_shader #(
   // ---- stage 38 (the last power stage): 255 W, so W pow needs no multiply by 255 after it ----
   logic [MaterialBits+7:0] w255_q;  // 255 W < 2^17: one multiplier block with a PSplit-bit operand
   always_ff @(posedge clk_i) if (ce[PowLast-1])
-    w255_q <= ((MaterialBits+8)'(g_w[PowLast-2].q) << 8) - (MaterialBits+8)'(g_w[PowLast-2].q);
+    w255_q <= ((MaterialBits+8)'(g_m[PowLast-2].q[ShininessBits +: MaterialBits]) << 8)
+            - (MaterialBits+8)'(g_m[PowLast-2].q[ShininessBits +: MaterialBits]);
 
   // ---- stage 39: Cp f per channel and 255 W cos(s)^n, as partial products ----------------------
   // Channel c is byte c of rgb_t (B, G, R for c = 0, 1, 2) in Cp and in the shade alike: the
@@ -395,7 +387,7 @@ module phong_shader #(
   localparam int AHi = PowBits + 1 - PSplit;   // 4
   localparam int DF0 = PSplit + 8;
   localparam int DF1 = FHi + 8;
-  logic [3*DF0-1:0]                 df0_q;      // Cp f0, channel c at c * DF0 (vectors: see g_cp)
+  logic [3*DF0-1:0]                 df0_q;      // Cp f0, channel c at c * DF0 (vectors: see g_m)
   logic [3*DF1-1:0]                 df1_q;      // Cp f1
   logic [MaterialBits+8+PSplit-1:0] wa0_q;      // 255 W pow0
   logic [MaterialBits+8+AHi-1:0]    wa1_q;      // 255 W pow1
@@ -405,10 +397,10 @@ module phong_shader #(
   assign al = g_pow[ShininessBits-1].acc_q;
   for (genvar c = 0; c < 3; c++) begin : g_df
     mul18_reg #(.ABits(8), .BBits(PSplit)) u_df0 (
-      .clk_i, .ce_i(ce[PowLast]), .a_i(g_cp[PowLast-1].q[c*8 +: 8]), .b_i(fl[PSplit-1:0]),
+      .clk_i, .ce_i(ce[PowLast]), .a_i(cp_last_q[c*8 +: 8]), .b_i(fl[PSplit-1:0]),
       .p_o(df0_q[c*DF0 +: DF0]));
     mul18_reg #(.ABits(8), .BBits(FHi)) u_df1 (
-      .clk_i, .ce_i(ce[PowLast]), .a_i(g_cp[PowLast-1].q[c*8 +: 8]), .b_i(fl[FW-1:PSplit]),
+      .clk_i, .ce_i(ce[PowLast]), .a_i(cp_last_q[c*8 +: 8]), .b_i(fl[FW-1:PSplit]),
       .p_o(df1_q[c*DF1 +: DF1]));
   end
   mul18_reg #(.ABits(MaterialBits+8), .BBits(PSplit)) u_wa0 (
