@@ -57,7 +57,7 @@ module mul18_reg #(
       .C16(1'b0), .C17(1'b0),
       .SIGNEDA(ASigned), .SIGNEDB(BSigned), .SOURCEA(1'b0), .SOURCEB(1'b0),
       .CLK0(clk_i), .CLK1(1'b0), .CLK2(1'b0), .CLK3(1'b0),
-      .CE0(ce_i[InReg]), .CE1(ce_i[0]), .CE2(1'b0), .CE3(1'b0),
+      .CE0(ce_i[InReg]), .CE1(InReg ? ce_i[0] : 1'b0), .CE2(1'b0), .CE3(1'b0),
       .RST0(1'b0), .RST1(1'b0), .RST2(1'b0), .RST3(1'b0),
       .P0(p36[0]), .P1(p36[1]), .P2(p36[2]), .P3(p36[3]), .P4(p36[4]), .P5(p36[5]), .P6(p36[6]),
       .P7(p36[7]), .P8(p36[8]), .P9(p36[9]), .P10(p36[10]), .P11(p36[11]), .P12(p36[12]),

@@ -6,7 +6,9 @@
 // and the output valid flop only; with LookAhead a flop loaded a clock ahead from ready_next_i).
 // Every product is registered on its own, in its multiplier block (mul18_reg: on the ECP5 the
 // MULT18X18D's output register), a product wider than one 18 x 18 multiplier as partial products,
-// the sums and roundings that use it one stage later (ECP5 MULT18 and iCE40 MAC16 timing). Each
+// the sums and roundings that use it one stage later (ECP5 MULT18 and iCE40 MAC16 timing); the
+// powers' operands also enter their blocks' registers a stage before the product (mul18_reg InReg)
+// and their partial products are copied into the fabric before the round. Each
 // stage's registers load only when the beat entering it is valid (en && its valid: one LUT, as en
 // alone): a bubble's values are never read, so a simulator need not compute them (most clocks of a
 // frame carry bubbles); a valid beat's values are the same. light_i / eye_i are frame constants:
@@ -161,7 +163,8 @@ module phong_shader #(
   localparam int MWB = RB + MaterialBits + ShininessBits;
   for (genvar i = 0; i < PowLast - 1; i++) begin : g_m
     /* verilator lint_off UNUSEDSIGNAL */
-    logic [MWB-1:0] q;  // the last stage's n bits below ShininessBits - 1 are read no more
+    logic [MWB-1:0] q;  // a vector (yosys 0.23 and structs); the last stage's n bits below
+                        // ShininessBits - 1 are read no more
     /* verilator lint_on UNUSEDSIGNAL */
     if (i == 0) begin : g_in
       always_ff @(posedge clk_i) if (ce[0]) q <= {cp_i, w_i, shininess_i};
@@ -248,9 +251,10 @@ module phong_shader #(
   // cs = (2 cne + cs_k) >> CsShift is cos(s) rounded; the clamp to [0, 2^P] and the test cs > 0
   // are three signs: cs < 0 iff the sum is negative, cs > 2^P iff the sum is at least
   // (2^P + 1) 2^CsShift, cs > 0 iff it is at least 2^CsShift (a floor is at least an integer m
-  // exactly when its argument is at least m 2^CsShift). Each is the carry out of a sum of its own
-  // (cs_o_q, cs_p_q), so no reduction over cs's bits follows an add: three carry chains side by
-  // side, then one LUT per bit (the reductions were four LUT levels after the chain, 10.8 ns).
+  // exactly when its argument is at least m 2^CsShift). Each is the sign bit of a CW-bit sum of
+  // its own (cs_o_q, cs_p_q), so no reduction over cs's bits follows an add: three carry chains
+  // side by side, then one LUT per bit (the reductions were four LUT levels after the chain,
+  // 10.8 ns).
   // Power k = 0..ShininessBits-1 (stages PowFirst + 4k to + 4k + 3): acc *= base if bit k of n,
   // base *= base, the operands registered in the multiplier blocks in the first stage, the
   // products in the second, again in the third, rounded in the fourth; acc0_q and base0_q start
@@ -293,7 +297,7 @@ module phong_shader #(
     logic [2*PSplit-1:0]   a00_q;                 // low x low
     logic [PSplit+PHi-1:0] a01_q, a10_q;          // low x high
     logic [2*PHi-1:0]      a11_q;                 // high x high
-    logic [PowBits:0]      acc_k_q;               // acc in, for a bit of n that is clear
+    logic [PowBits:0]      acc_k_q;               // acc in, product stage (for a bit of n that is clear)
     logic [PowBits:0]      acc_q;                 // acc out
     logic [PowBits:0]      acc_in, base_in;
     logic [PSplit-1:0]     x0, y0;
@@ -318,7 +322,7 @@ module phong_shader #(
     // The operand stage: acc and base enter the blocks' operand registers (mul18_reg InReg),
     // so a route from the fabric across the die (up to 6.9 ns in the Phong top, where the 112
     // MULT18 spread over it) ends at a register, not at the multiplier's 3.5 ns input setup.
-    logic [PowBits:0]      acc_k0_q;              // acc in, for a bit of n that is clear
+    logic [PowBits:0]      acc_k0_q;              // acc in, operand stage
     always_ff @(posedge clk_i) if (ce[Pk-1]) acc_k0_q <= acc_in;
     always_ff @(posedge clk_i) if (ce[Pk])   acc_k_q  <= acc_k0_q;
     // The round stage: the sums only for the products it keeps (acc's for a set bit of n).

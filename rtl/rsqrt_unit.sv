@@ -7,7 +7,8 @@
 // also loads y0^2's multiplier block's operand registers); y0^2 enters the next products' blocks
 // through their operand registers (no block's output feeds a block's multiplier); the two
 // Newton-Raphson products, wider than an 18 x 18 multiplier, are registered as partial products
-// (the first copied into the fabric) and summed and rounded a stage later; no handshake: ce_i[k]
+// (the first's copied into the fabric a stage later, then summed; the second's summed and rounded
+// a stage later); no handshake: ce_i[k]
 // loads stage k (the parent owns valid/ready and the stall, and gives each stage its clock
 // enable: its stall_pipe's ce_o, low for a bubble, whose values nobody reads, so a simulator
 // computes valid beats only; a unit bench may drive all ten together).
@@ -106,8 +107,10 @@ module rsqrt_unit #(
     nul2_q <= nul1_q;
   end
 
-  // ---- stage 3: the seed registered again, so the block RAM's clock-to-out (5.8 ns on the ECP5)
-  // and the multiplier are not in one clock (the normalizer's path at 80.7 MHz) ----------------
+  // ---- stage 3: the seed registered again (y0_3_q: a delay for the later stages) ----------------
+  // The block RAM's clock-to-out (5.8 ns on the ECP5) and the multiplier are not in one clock (the
+  // normalizer's path at 80.7 MHz): y0^2's block registers the ROM's output in its own operand
+  // registers (stage 4 below), so the path to watch is the RAM's clock-to-out and its route.
   always_ff @(posedge clk_i) if (ce_i[3]) begin
     y0_3_q <= y0_2_q;
     mc3_q  <= mc2_q;
@@ -117,7 +120,7 @@ module rsqrt_unit #(
 
   // ---- stage 4: y0^2, exact (2T fraction bits) --------------------------------------------
   // The block's operand registers load the ROM's output in stage 3, as y0_3_q does beside them
-  // (twins: no latency), so the route from y0_3_q is not in front of the multiplier's setup.
+  // (twins: no latency), so no fabric route is in front of the multiplier's 3.5 ns input setup.
   logic [2*SeedBits+1:0] y0sq_q;
   mul18_reg #(.ABits(SeedBits+1), .BBits(SeedBits+1), .InReg(1'b1)) u_y0sq (
     .clk_i, .ce_i(ce_i[4:3]), .a_i(y0_2_q), .b_i(y0_2_q), .p_o(y0sq_q));

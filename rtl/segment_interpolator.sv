@@ -3,8 +3,9 @@
 // Setup pipeline, one segment per clock: s0 (first pixel centres, dx, offset, deltas) ->
 // span_reciprocal (26) -> sa (alpha and step partial products, deltas in 17-bit pieces when
 // wider than a MULT18, each product in its multiplier block's register) -> sp (alpha0's sum;
-// each delta piece's pair of step partial products added; the pixel range clamped to the screen,
-// the empty test) -> sh (alpha0's shift; the steps' sums of their pieces) -> sb (round, clamp
+// each delta piece's pair of step partial products added; the pixel range's and the empty test's
+// compares) -> sh (alpha0's shift; the steps' sums of their pieces; the clamp to the screen and the
+// empty test applied) -> sb (round, clamp
 // alpha0; the steps' shifts) -> sc (value partial products, in their blocks' registers too; the
 // steps saturated) -> sv (each delta piece's pair of value partial products added) -> sd (the
 // pieces' sums with E and the rounding constant: the value E + round(delta*alpha0)) -> FIFO;
@@ -99,11 +100,11 @@ module segment_interpolator #(
   localparam int unsigned ShSB   = $clog2(ShSMax + 1);
 
   // ---------------------------------------------------------------- s0: range and clipping
-  // s0 -> span_reciprocal -> sa: the first centres of X_E and X_F unclamped; sp clamps them and
-  // decides whether the span is empty (span_mid_t), so s0 holds only first_centre's add and the
-  // offset's mux (the clamps and the empty compares after that add were s0's longest path), and
-  // sa only copies the span out of the reciprocal's payload RAM (after the RAM's output register
-  // and its route they were the sized Gouraud top's longest path, 11.5 ns at 084a177).
+  // s0 -> span_reciprocal -> sa: the first centres of X_E and X_F unclamped; sp compares them, sh
+  // clamps them and decides whether the span is empty (span_mid_t), so s0 holds only first_centre's
+  // add and the offset's mux (the clamps and the empty compares after that add were s0's longest
+  // path), and sa only copies the span out of the reciprocal's payload RAM (after the RAM's output
+  // register and its route they were the sized Gouraud top's longest path, 11.5 ns at 084a177).
   typedef struct packed {
     logic                    eol;
     logic [PolyIdBits-1:0]   poly;
@@ -114,7 +115,9 @@ module segment_interpolator #(
     logic [IVB-1:0]          e;       // E's slots Z..
     logic [IDB-1:0]          delta;   // F - E per slot
   } span_pre_t;
-  // sp .. sd: the pixel range clamped to the screen.
+  // sp .. sd: the pixel range; from sh on clamped to the screen (sp: xs clamped, xe the unclamped
+  // first_centre(X_F), empty only fcf <= fce; sh applies sp_xe_clip_q and sp_off_q, reading width_i,
+  // a frame constant).
   typedef struct packed {
     logic                    eol;
     logic                    empty;   // no pixel centre in [X_E, X_F) on screen
