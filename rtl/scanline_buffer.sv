@@ -116,12 +116,6 @@ module scanline_buffer #(
   function automatic logic [WordBits-1:0] bank_word(logic b, int w);
     bank_word = b ? bits_q[(Words + w) * WordBits +: WordBits] : bits_q[w * WordBits +: WordBits];
   endfunction
-  // Bank b's word wi, selected by compares (one-hot), not an indexed part select (a
-  // 2 * MaxWidth-bit shifter); a single loop, which a simulator unrolls.
-  function automatic logic [WordBits-1:0] word_at(logic b, logic [WAB-1:0] wi);
-    word_at = '0;
-    for (int w = 0; w < Words; w++) word_at |= (wi == WAB'(w)) ? bank_word(b, w) : '0;
-  endfunction
   // Bank b's word selected by a one-hot vector.
   function automatic logic [WordBits-1:0] word_at_hot(logic b, logic [Words-1:0] hot);
     word_at_hot = '0;
@@ -283,13 +277,16 @@ module scanline_buffer #(
   assign eol_take     = frag_valid_i && frag_eol_i && eol_ok;
 
   // Three steps, one fragment per clock. Accept: read the depth word (the RAM's read register),
-  // decode the pixel's word and bit one-hot, and take the write bank's word holding the pixel,
-  // with the bits the two fragments ahead set before this one is tested. Read (a_*): the RAM's
-  // data into a register (the block RAM's clock-to-out alone in the clock: 5.6 ns on the ECP5,
-  // too slow to feed the test), and the pixel's written bit from its word (a 32-bit AND-OR of
-  // registers, not a 2 * MaxWidth-way mux). Test (t_*): against the depth word -- or against the
-  // word written one or two clocks before at the same address, which the RAM read did not see
-  // yet (compared a step ahead) -- and write; the fragment sets its written bit.
+  // and decode the pixel's word and bit one-hot. Read (a_*): the RAM's data into a register (the
+  // block RAM's clock-to-out alone in the clock: 5.6 ns on the ECP5, too slow to feed the test),
+  // and the write bank's word holding the pixel, picked by the one-hot word register, with the
+  // bit of the fragment tested in this clock when it is in the same word (decided at the
+  // accept). Test (t_*): the pixel's written bit from that word (a 32-bit AND-OR of registers,
+  // not a 2 * MaxWidth-way mux); the depth word -- or the word written one or two clocks before
+  // at the same address, which the RAM read did not see yet (compared a step ahead) -- and write;
+  // the fragment sets its written bit. (The word picked at the accept, from frag_x_i's compares,
+  // was both tops' path once the search's were cut: the queue's x -> a_wword_q, 10.2-10.5 ns on
+  // the ECP5, session 16.)
   logic                 a_valid_q, t_valid_q, lw_valid_q;
   logic [AddrBits-1:0]  a_addr_q, t_addr_q, lw_addr_q, llw_addr_q;
   /* verilator lint_off UNUSEDSIGNAL */
@@ -300,9 +297,10 @@ module scanline_buffer #(
                                    // and the reader's clear have separate selects)
   logic [Words-1:0]     a_whot_q, t_whot_q;  // the pixel's word, one-hot
   logic [WordBits-1:0]  a_bhot_q, t_bhot_q;  // its bit in the word, one-hot
-  logic [WordBits-1:0]  a_wword_q; // its bank's word as the test will see it
+  logic                 a_ahead_q; // the fragment ahead (tested while this one is read) is in its word
+  logic [WordBits-1:0]  t_wword_q; // its bank's word as the test sees it
   logic                 t_fw1_q, t_fw2_q;  // the tested address is lw_addr_q's / llw_addr_q's
-  logic                 t_written_q; // the pixel already has a fragment
+  logic                 t_written; // the pixel already has a fragment
   logic [DWB-1:0]       a_word_q, t_word_q, lw_word_q, llw_word_q, mem_word_q, t_mem_q, old_word;
   logic [DepthBits-1:0] t_depth, old_depth;
   logic [PolyIdBits-1:0] t_poly, old_poly;
@@ -318,11 +316,9 @@ module scanline_buffer #(
       for (int i = 0; i < WordBits; i++) a_bhot_q[i] <= bit_of(frag_x_i) == WIB'(i);
       a_word_q <= {frag_poly_i, frag_depth_i};
       a_rgb_q  <= frag_rgb_i;
-      // The fragments tested now and next set their bits after this clock: seen here if in the
-      // same word.
-      a_wword_q <= word_at(wsel_q, word_of(frag_x_i))
-                   | ((t_valid_q && word_of(t_x_q) == word_of(frag_x_i)) ? t_bhot_q : '0)
-                   | ((a_valid_q && word_of(a_x_q) == word_of(frag_x_i)) ? a_bhot_q : '0);
+      // The fragment read now is tested next clock, and sets its bit after that one: seen in the
+      // read step if in the same word. (The one tested now has set its bit by then.)
+      a_ahead_q <= a_valid_q && word_of(a_x_q) == word_of(frag_x_i);
     end
     if (a_valid_q) begin
       t_addr_q  <= a_addr_q;
@@ -334,7 +330,7 @@ module scanline_buffer #(
       t_rgb_q   <= a_rgb_q;
       t_mem_q   <= mem_word_q;
       // The fragment tested now sets its bit after this clock: seen here if in the same word.
-      t_written_q <= |(a_wword_q & a_bhot_q);
+      t_wword_q <= word_at_hot(wsel_q, a_whot_q) | (a_ahead_q ? t_bhot_q : '0);
       // Which earlier writes the RAM read missed: the one tested now (lw next clock, if it
       // wins) and the one written at the end of the last clock (llw next clock).
       t_fw1_q   <= t_valid_q && t_addr_q == a_addr_q;
@@ -346,13 +342,14 @@ module scanline_buffer #(
     llw_word_q <= lw_word_q;
   end
 
+  assign t_written = |(t_wword_q & t_bhot_q);
   assign old_word  = (lw_valid_q && t_fw1_q) ? lw_word_q : t_fw2_q ? llw_word_q : t_mem_q;
   assign {t_poly, t_depth}     = t_word_q;
   assign {old_poly, old_depth} = old_word;
   // A tie goes to a strictly smaller id only: equal ids (one polygon's own spans) keep the first
   // arrival, as the model does.
   assign tie_wins  = tie_submission_i && t_depth == old_depth && t_poly < old_poly;
-  assign wins      = t_valid_q && (!t_written_q || (t_depth < old_depth) || tie_wins);
+  assign wins      = t_valid_q && (!t_written || (t_depth < old_depth) || tie_wins);
 
   always_ff @(posedge clk_i) begin
     if (wins) begin
@@ -411,7 +408,7 @@ module scanline_buffer #(
   // at each line's end, and the count is cleared then (counting its takes put the 320-way
   // written-bit mux on the count's path: 14.9 ns on the ECP5).
   logic t_new;
-  assign t_new = t_valid_q && !t_written_q;
+  assign t_new = t_valid_q && !t_written;
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       rd_cnt_q  <= '0;
@@ -685,7 +682,7 @@ module scanline_buffer #(
     for (int w = 0; w < Words; w++) if (raw == w) ra_word = bank_word(!wsel_q, w);
     ra_written = ra_word[int'(PB'(rd_x)) % WordBits];
   end
-  assign t_written_p = t_written_q;
+  assign t_written_p = t_written;
   assign covered_p   = sparse_i ? cnt_found_q : |(rx_word_q & rx_hot_q);
   assign t_addr_ok   = t_addr_q == addr(wsel_q, t_x_q) && t_bank_q == wsel_q;
 `endif
