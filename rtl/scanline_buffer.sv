@@ -3,7 +3,9 @@
 // into one (kept when the pixel is empty or strictly nearer; at equal depth tie_submission_i
 // decides: 0 keeps the first arrival, 1 the smaller polygon id -- GL's submission order) while the
 // other streams line y-1 out, pixel x = 0..width-1, clearing each pixel as it is read. The
-// end-of-line marker swaps the buffers once the reader has taken the previous line's last pixel.
+// end-of-line marker swaps the buffers once the reader has taken the previous line's last pixel;
+// the reader starts on the next clock (full mode) or the one after (sparse mode: its search
+// registers are handed over in between).
 // Storage: depth (with the winner's polygon id beside it, PolyIdBits + DepthBits per word) and
 // shade in two RAMs of 2 * MaxWidth words with synchronous reads (block RAM:
 // SB_RAM40_4K / DP16KD), each with one write port (the writer) and one read port (depth: the
@@ -114,12 +116,6 @@ module scanline_buffer #(
   function automatic logic [WordBits-1:0] bank_word(logic b, int w);
     bank_word = b ? bits_q[(Words + w) * WordBits +: WordBits] : bits_q[w * WordBits +: WordBits];
   endfunction
-  // Bank b's word wi, selected by compares (one-hot), not an indexed part select (a
-  // 2 * MaxWidth-bit shifter); a single loop, which a simulator unrolls.
-  function automatic logic [WordBits-1:0] word_at(logic b, logic [WAB-1:0] wi);
-    word_at = '0;
-    for (int w = 0; w < Words; w++) word_at |= (wi == WAB'(w)) ? bank_word(b, w) : '0;
-  endfunction
   // Bank b's word selected by a one-hot vector.
   function automatic logic [WordBits-1:0] word_at_hot(logic b, logic [Words-1:0] hot);
     word_at_hot = '0;
@@ -163,20 +159,24 @@ module scanline_buffer #(
   // address: 13 ns on the ECP5, the sized Gouraud top's critical path in session 10): per
   // 32-pixel word of each bank, whether it holds a written bit (*_occ_q) and its lowest one's
   // index (*_low_q), kept as the bits change. The write bank's word takes a fragment's bit when
-  // that is lower; the swap hands the write bank's words to the reader; the reader's take clears
-  // its word's lowest bit, and that word's next lowest is found in its own bits with that bit
-  // cleared (each word in parallel, from its registers: a decode and a 32-bit encoder, no carry
-  // chain, no mux; the one-hot first word enables the update). Whether the first word holds
+  // that is lower; the swap hands the write bank's words to the reader, each with the rest of its
+  // bits (rd_rest_q: all but the lowest); the reader's take clears its word's lowest bit (the
+  // word becomes its rest), and that word's next lowest is the rest's lowest (each word in
+  // parallel, from its registers: a 32-bit encoder, and the next rest by a carry chain; the
+  // one-hot first word enables the update). Whether the first word holds
   // another bit after the take -- which decides the next first word -- is a register too
   // (rd_more_q: two or more), kept from a count of each word's written bits (*_wcnt_q: a take
   // leaves two or more when there were three); found from the bits it was the block's longest
   // path (`rd_low_q` -> decode -> 32-bit OR -> `first_q`, 10.6 ns on the ECP5). a_rd_words /
   // a_wr_words check them all against the bits.
   // Only sparse mode reads them on the read side: the read search sits inside `if (sparse_i)`
-  // (full mode keeps it idle and Verilator skips it); full mode empties the read words at each
-  // line's end, when the reader has cleared every bit.
+  // (full mode keeps it idle and Verilator skips it), and only sparse mode loads them at the
+  // swap (full mode's stay empty).
   logic [Words-1:0]    rd_occ_q, wr_occ_q;
   logic [Words*WIB-1:0] rd_low_q, wr_low_q;  // word w's at [w * WIB +: WIB]
+  // The read bank's word w without its lowest written bit (rd_low_q's): what the word holds
+  // after the reader's next take there, and where the take after it is found.
+  logic [Words*WordBits-1:0] rd_rest_q;  // word w's at [w * WordBits +: WordBits]
   logic [Words-1:0]    first_q;   // one-hot: the read bank's first occupied word (a_first)
   localparam int unsigned WCB = $clog2(WordBits + 1);
   logic [Words*WCB-1:0] rd_wcnt_q, wr_wcnt_q;  // word w's written bits, counted (at w * WCB)
@@ -185,7 +185,7 @@ module scanline_buffer #(
   logic [WIB-1:0]      lb;        // its lowest written bit
   logic [LB-1:0]       nx;
   logic [Words*WIB-1:0]      next_low;  // each word's lowest bit once its lowest is taken
-  logic [Words*WordBits-1:0] low_hot;   // each word's lowest bit, one-hot (word w's at w * WordBits)
+  logic [Words*WordBits-1:0] next_rest; // and the bits above that one
 
   always_comb begin
     fw    = '0;
@@ -198,28 +198,23 @@ module scanline_buffer #(
     end
     nx = LB'({fw, lb});
   end
-  // Each word's next lowest, all words in parallel, a block per word writing its own slices (a
-  // loop over the words holding the loop over the bits was left rolled by Verilator 5.006, every
-  // word's vectors then indexed at run time; continuous assigns out of the block would be
-  // evaluated on every clock in full mode too).
+  // Each word's next lowest, all words in parallel, from its rest register alone: the lowest
+  // bit of rd_rest_q is the next lowest, and rd_rest_q with that bit cleared (x & (x - 1): a
+  // carry chain) the next rest. (From the bits and rd_low_q, decoded and cleared before the
+  // 32-bit encoder, it was both tops' critical path in session 15: 9.7-10.1 ns on the ECP5.)
+  // A block per word writing its own slices (a loop over the words holding the loop over the
+  // bits was left rolled by Verilator 5.006, every word's vectors then indexed at run time;
+  // continuous assigns out of the block would be evaluated on every clock in full mode too).
   for (genvar w = 0; w < Words; w++) begin : g_next
     always_comb begin
-      logic [WordBits-1:0] hot, rest;
-      logic [WIB-1:0]      low;
-      hot  = '0;
+      logic [WordBits-1:0] rest;
       rest = '0;
-      low  = '0;
-      low_hot[w * WordBits +: WordBits] = '0;
-      next_low[w * WIB +: WIB]          = '0;
+      next_rest[w * WordBits +: WordBits] = '0;
+      next_low[w * WIB +: WIB]            = '0;
       if (sparse_i) begin
-        low = rd_low_q[w * WIB +: WIB];
-        // Decoded by compares, not a shift: yosys's resource sharing merged the words' shifters
-        // (only one word is first) into one behind a mux on the first word's path (22 ns on
-        // the ECP5).
-        for (int i = 0; i < WordBits; i++) hot[i] = low == WIB'(i);
-        rest = bank_word(!wsel_q, w) & ~hot;
-        low_hot[w * WordBits +: WordBits] = hot;
-        next_low[w * WIB +: WIB]          = lowest_bit(rest);
+        rest = rd_rest_q[w * WordBits +: WordBits];
+        next_rest[w * WordBits +: WordBits] = rest & (rest - 1'b1);
+        next_low[w * WIB +: WIB]            = lowest_bit(rest);
       end
     end
   end
@@ -238,6 +233,16 @@ module scanline_buffer #(
   // block's longest path, rd_cnt_q -> rd_last -> rd_step -> last_line_q, 10.7 ns on the ECP5);
   // the ends of a line and of the frame are flags set a step ahead (rx_end_q: rx_q is
   // width - 1, a_rx_end; last_line_q: rline_q is height - 1, a_last_line).
+  // The swap acts in two clocks. The marker's clock (eol_take, from the reader's decisions and
+  // the queue in front: deep, and late in the clock) flips the banks' roles (wsel_q) and, in full
+  // mode, starts the reader, whose first-word registers follow the write bank while it waits
+  // (rx_*); the next clock (swap_q, a register) hands the write bank's counts and words over to
+  // the read role and clears the write role's, and in sparse mode starts the reader, which reads
+  // them. (Loading them under eol_take put that signal's fan-out to some 300 flops on its path:
+  // the sized Gouraud top's 11.0 ns on seed 2 in session 15.) The marker leaves the writer's
+  // pipeline empty (!a_valid_q), so no fragment is tested on the swap_q clock (a_swap_quiet):
+  // the write role's registers are complete then.
+  logic          swap_q;
   localparam int unsigned CB = $clog2(MaxWidth + 1);
   logic [CB-1:0] rd_cnt_q, wr_cnt_q;
   logic          rx_end_q, last_line_q;
@@ -263,20 +268,25 @@ module scanline_buffer #(
   // The marker may swap in the cycle the reader takes its last pixel (it reads the old bank),
   // once its line's last fragment has left the read step (it is tested on the swap clock at the
   // latest, so it lands before the reader's first read of the bank).
-  assign eol_ok       = !a_valid_q && (!rd_busy_q || (rd_step && rd_last));
+  // In sparse mode the reader waits a clock after the swap for its registers (swap_q, below),
+  // and no marker is taken in that clock.
+  assign eol_ok       = !a_valid_q && !(sparse_i && swap_q) && (!rd_busy_q || (rd_step && rd_last));
   assign frag_ready_o = !frag_eol_i || eol_ok;
   // A fragment is always taken (not through frag_ready_o: that waits on the search's last).
   assign frag_take    = frag_valid_i && !frag_eol_i;
   assign eol_take     = frag_valid_i && frag_eol_i && eol_ok;
 
   // Three steps, one fragment per clock. Accept: read the depth word (the RAM's read register),
-  // decode the pixel's word and bit one-hot, and take the write bank's word holding the pixel,
-  // with the bits the two fragments ahead set before this one is tested. Read (a_*): the RAM's
-  // data into a register (the block RAM's clock-to-out alone in the clock: 5.6 ns on the ECP5,
-  // too slow to feed the test), and the pixel's written bit from its word (a 32-bit AND-OR of
-  // registers, not a 2 * MaxWidth-way mux). Test (t_*): against the depth word -- or against the
-  // word written one or two clocks before at the same address, which the RAM read did not see
-  // yet (compared a step ahead) -- and write; the fragment sets its written bit.
+  // and decode the pixel's word and bit one-hot. Read (a_*): the RAM's data into a register (the
+  // block RAM's clock-to-out alone in the clock: 5.6 ns on the ECP5, too slow to feed the test),
+  // and the write bank's word holding the pixel, picked by the one-hot word register, with the
+  // bit of the fragment tested in this clock when it is in the same word (decided at the
+  // accept). Test (t_*): the pixel's written bit from that word (a 32-bit AND-OR of registers,
+  // not a 2 * MaxWidth-way mux); the depth word -- or the word written one or two clocks before
+  // at the same address, which the RAM read did not see yet (compared a step ahead) -- and write;
+  // the fragment sets its written bit. (The word picked at the accept, from frag_x_i's compares,
+  // was both tops' path once the search's were cut: the queue's x -> a_wword_q, 10.2-10.5 ns on
+  // the ECP5, session 16.)
   logic                 a_valid_q, t_valid_q, lw_valid_q;
   logic [AddrBits-1:0]  a_addr_q, t_addr_q, lw_addr_q, llw_addr_q;
   /* verilator lint_off UNUSEDSIGNAL */
@@ -287,14 +297,15 @@ module scanline_buffer #(
                                    // and the reader's clear have separate selects)
   logic [Words-1:0]     a_whot_q, t_whot_q;  // the pixel's word, one-hot
   logic [WordBits-1:0]  a_bhot_q, t_bhot_q;  // its bit in the word, one-hot
-  logic [WordBits-1:0]  a_wword_q; // its bank's word as the test will see it
+  logic                 a_ahead_q; // the fragment ahead (tested while this one is read) is in its word
+  logic [WordBits-1:0]  t_wword_q; // its bank's word as the test sees it
   logic                 t_fw1_q, t_fw2_q;  // the tested address is lw_addr_q's / llw_addr_q's
-  logic                 t_written_q; // the pixel already has a fragment
-  logic [DWB-1:0]       a_word_q, t_word_q, lw_word_q, llw_word_q, mem_word_q, t_mem_q, old_word;
-  logic [DepthBits-1:0] t_depth, old_depth;
-  logic [PolyIdBits-1:0] t_poly, old_poly;
+  logic                 t_written; // the pixel already has a fragment
+  logic [DWB-1:0]       a_word_q, t_word_q, lw_word_q, llw_word_q, mem_word_q, t_mem_q;
+  logic [DepthBits-1:0] t_depth;
+  logic [PolyIdBits-1:0] t_poly;
   logic [RB-1:0]        a_rgb_q, t_rgb_q;
-  logic                 wins, tie_wins;
+  logic                 wins;
 
   always_ff @(posedge clk_i) begin
     if (frag_take) mem_word_q <= depth_mem[wa];
@@ -305,11 +316,9 @@ module scanline_buffer #(
       for (int i = 0; i < WordBits; i++) a_bhot_q[i] <= bit_of(frag_x_i) == WIB'(i);
       a_word_q <= {frag_poly_i, frag_depth_i};
       a_rgb_q  <= frag_rgb_i;
-      // The fragments tested now and next set their bits after this clock: seen here if in the
-      // same word.
-      a_wword_q <= word_at(wsel_q, word_of(frag_x_i))
-                   | ((t_valid_q && word_of(t_x_q) == word_of(frag_x_i)) ? t_bhot_q : '0)
-                   | ((a_valid_q && word_of(a_x_q) == word_of(frag_x_i)) ? a_bhot_q : '0);
+      // The fragment read now is tested next clock, and sets its bit after that one: seen in the
+      // read step if in the same word. (The one tested now has set its bit by then.)
+      a_ahead_q <= a_valid_q && word_of(a_x_q) == word_of(frag_x_i);
     end
     if (a_valid_q) begin
       t_addr_q  <= a_addr_q;
@@ -321,7 +330,7 @@ module scanline_buffer #(
       t_rgb_q   <= a_rgb_q;
       t_mem_q   <= mem_word_q;
       // The fragment tested now sets its bit after this clock: seen here if in the same word.
-      t_written_q <= |(a_wword_q & a_bhot_q);
+      t_wword_q <= word_at_hot(wsel_q, a_whot_q) | (a_ahead_q ? t_bhot_q : '0);
       // Which earlier writes the RAM read missed: the one tested now (lw next clock, if it
       // wins) and the one written at the end of the last clock (llw next clock).
       t_fw1_q   <= t_valid_q && t_addr_q == a_addr_q;
@@ -333,13 +342,26 @@ module scanline_buffer #(
     llw_word_q <= lw_word_q;
   end
 
-  assign old_word  = (lw_valid_q && t_fw1_q) ? lw_word_q : t_fw2_q ? llw_word_q : t_mem_q;
+  assign t_written = |(t_wword_q & t_bhot_q);
   assign {t_poly, t_depth}     = t_word_q;
-  assign {old_poly, old_depth} = old_word;
+  // Whether the tested fragment beats a depth word: nearer, or at equal depth with the tie rule.
   // A tie goes to a strictly smaller id only: equal ids (one polygon's own spans) keep the first
   // arrival, as the model does.
-  assign tie_wins  = tie_submission_i && t_depth == old_depth && t_poly < old_poly;
-  assign wins      = t_valid_q && (!t_written_q || (t_depth < old_depth) || tie_wins);
+  function automatic logic beats(logic [DWB-1:0] o);
+    logic [DepthBits-1:0]  od;
+    logic [PolyIdBits-1:0] op;
+    {op, od} = o;
+    beats = t_depth < od || (tie_submission_i && t_depth == od && t_poly < op);
+  endfunction
+  // Against each candidate for the old word in parallel, picked after the compares: lw_valid_q
+  // (the last clock's wins) picks, so the compare is not in the loop from wins back to wins (the
+  // pick before it was the sized Gouraud top's path on seed 2 at 5a2a984: 9.7 ns).
+  logic beats_lw, beats_llw, beats_mem;
+  assign beats_lw  = beats(lw_word_q);
+  assign beats_llw = beats(llw_word_q);
+  assign beats_mem = beats(t_mem_q);
+  assign wins      = t_valid_q && (!t_written || ((lw_valid_q && t_fw1_q) ? beats_lw
+                                                  : t_fw2_q ? beats_llw : beats_mem));
 
   always_ff @(posedge clk_i) begin
     if (wins) begin
@@ -367,18 +389,29 @@ module scanline_buffer #(
   logic [WordBits-1:0] rx_hot_q;   // rx_q's bit in its word, one-hot (a_rx_hot)
   logic [Words-1:0]    rx_whot_q;  // rx_q's word, one-hot
   logic [WordBits-1:0] rx_word_q;  // that word of the read bank, from x = rx_q up (a_covered_is_written)
+  // Not loaded by the marker (its fan-out is kept small: see swap_q): x = 0's selects are set
+  // at reset and as the reader takes a line's last pixel, and while the reader is idle or taking
+  // its last pixel the word follows word 0 of the write bank, the next read bank (with the bit
+  // of the fragment tested in this clock), so it holds that word when a marker swaps.
   always_ff @(posedge clk_i) begin
-    if (eol_take) begin
+    if (!rst_ni) begin
       rx_hot_q  <= WordBits'(1);
       rx_whot_q <= Words'(1);
-      rx_word_q <= bank_word(wsel_q, 0) | ((t_valid_q && t_whot_q[0]) ? t_bhot_q : '0);
     end else if (rd_step) begin
-      rx_hot_q <= {rx_hot_q[WordBits-2:0], rx_hot_q[WordBits-1]};
-      if (rx_hot_q[WordBits-1]) begin
-        rx_whot_q <= rx_whot_q << 1;
-        rx_word_q <= word_at_hot(!wsel_q, rx_whot_q << 1);
+      if (rd_last) begin
+        rx_hot_q  <= WordBits'(1);
+        rx_whot_q <= Words'(1);
+      end else begin
+        rx_hot_q <= {rx_hot_q[WordBits-2:0], rx_hot_q[WordBits-1]};
+        if (rx_hot_q[WordBits-1]) rx_whot_q <= rx_whot_q << 1;
       end
     end
+  end
+  always_ff @(posedge clk_i) begin
+    if (!rd_busy_q || (rd_step && rd_last))
+      rx_word_q <= bank_word(wsel_q, 0) | ((t_valid_q && t_whot_q[0]) ? t_bhot_q : '0);
+    else if (rd_step && rx_hot_q[WordBits-1])
+      rx_word_q <= word_at_hot(!wsel_q, rx_whot_q << 1);
   end
 
   // The counts: a fragment tested on an unwritten pixel adds one to the write bank's (the swap
@@ -387,25 +420,24 @@ module scanline_buffer #(
   // at each line's end, and the count is cleared then (counting its takes put the 320-way
   // written-bit mux on the count's path: 14.9 ns on the ECP5).
   logic t_new;
-  assign t_new = t_valid_q && !t_written_q;
+  assign t_new = t_valid_q && !t_written;
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       rd_cnt_q  <= '0;
       wr_cnt_q  <= '0;
       cnt_found_q <= 1'b0;
       cnt_more_q  <= 1'b0;
-    end else if (eol_take) begin
-      rd_cnt_q  <= wr_cnt_q + CB'(t_new);
-      cnt_found_q <= wr_cnt_q != '0 || t_new;
-      cnt_more_q  <= wr_cnt_q > CB'(1) || (wr_cnt_q == CB'(1) && t_new);
+    end else if (swap_q) begin
+      // Full mode never loads the read role's (it stays empty).
+      if (sparse_i) begin
+        rd_cnt_q  <= wr_cnt_q;
+        cnt_found_q <= wr_cnt_q != '0;
+        cnt_more_q  <= wr_cnt_q > CB'(1);
+      end
       wr_cnt_q  <= '0;
     end else begin
       wr_cnt_q <= wr_cnt_q + CB'(t_new);
-      if (!sparse_i && rd_step && rd_last) begin
-        rd_cnt_q  <= '0;
-        cnt_found_q <= 1'b0;
-        cnt_more_q  <= 1'b0;
-      end else if (take && sparse_i && cnt_found_q) begin
+      if (take && sparse_i && cnt_found_q) begin
         rd_cnt_q  <= rd_cnt_q - 1'b1;
         cnt_found_q <= cnt_more_q;
         cnt_more_q  <= rd_cnt_q > CB'(2);
@@ -428,12 +460,13 @@ module scanline_buffer #(
       if (take)
         for (int w = 0; w < Words; w++)
           if (sparse_i ? first_q[w] : rx_whot_q[w]) begin
+            // Sparse: the word's rest (its bits but the lowest, which is taken).
             if (wsel_q)
-              bits_q[w * WordBits +: WordBits] <= bank_word(1'b0, w)
-                & ~(sparse_i ? low_hot[w * WordBits +: WordBits] : rx_hot_q);
+              bits_q[w * WordBits +: WordBits] <= sparse_i ? rd_rest_q[w * WordBits +: WordBits]
+                                                           : bank_word(1'b0, w) & ~rx_hot_q;
             else
-              bits_q[(Words + w) * WordBits +: WordBits] <= bank_word(1'b1, w)
-                & ~(sparse_i ? low_hot[w * WordBits +: WordBits] : rx_hot_q);
+              bits_q[(Words + w) * WordBits +: WordBits] <= sparse_i ? rd_rest_q[w * WordBits +: WordBits]
+                                                                     : bank_word(1'b1, w) & ~rx_hot_q;
           end
     end
   end
@@ -464,16 +497,24 @@ module scanline_buffer #(
       rd_more_q <= '0;
       rd_wcnt_q <= '0;
       wr_wcnt_q <= '0;
-    end else if (eol_take) begin
-      rd_occ_q <= wr_occ_q | (t_valid_q ? t_whot_q : '0);
-      first_q  <= lowest_word(wr_occ_q | (t_valid_q ? t_whot_q : '0));
-      wr_occ_q <= '0;
-      for (int w = 0; w < Words; w++) begin
-        rd_low_q[w * WIB +: WIB]  <= t_low[w] ? tb : wr_low_q[w * WIB +: WIB];
-        rd_wcnt_q[w * WCB +: WCB] <= wr_wcnt_q[w * WCB +: WCB] + WCB'(t_inc[w]);
-        rd_more_q[w]              <= wr_wcnt_q[w * WCB +: WCB] > WCB'(1)
-                                  || (wr_occ_q[w] && t_inc[w]);
+      rd_rest_q <= '0;
+    end else if (swap_q) begin
+      // The old write bank is the read bank now (!wsel_q): its words, each but its lowest bit.
+      // Full mode reads the words only through the bits, and never loads the read role's (they
+      // stay empty; the sparse reader empties them by each line's end).
+      if (sparse_i) begin
+        rd_occ_q <= wr_occ_q;
+        first_q  <= lowest_word(wr_occ_q);
+        for (int w = 0; w < Words; w++) begin
+          logic [WordBits-1:0] low_hot;
+          for (int i = 0; i < WordBits; i++) low_hot[i] = wr_low_q[w * WIB +: WIB] == WIB'(i);
+          rd_low_q[w * WIB +: WIB]            <= wr_low_q[w * WIB +: WIB];
+          rd_rest_q[w * WordBits +: WordBits] <= bank_word(!wsel_q, w) & ~low_hot;
+          rd_wcnt_q[w * WCB +: WCB]           <= wr_wcnt_q[w * WCB +: WCB];
+          rd_more_q[w]                        <= wr_wcnt_q[w * WCB +: WCB] > WCB'(1);
+        end
       end
+      wr_occ_q  <= '0;
       wr_wcnt_q <= '0;
     end else begin
       if (t_valid_q) begin
@@ -491,15 +532,9 @@ module scanline_buffer #(
             rd_more_q[w]              <= rd_wcnt_q[w * WCB +: WCB] > WCB'(2);
             rd_wcnt_q[w * WCB +: WCB] <= rd_wcnt_q[w * WCB +: WCB] - 1'b1;
             rd_low_q[w * WIB +: WIB]  <= next_low[w * WIB +: WIB];
+            rd_rest_q[w * WordBits +: WordBits] <= next_rest[w * WordBits +: WordBits];
           end
         end
-      end
-      // Full mode reads the words only through the bits; at the line's end they are all clear.
-      if (rd_step && rd_last && !sparse_i) begin
-        rd_occ_q  <= '0;
-        first_q   <= '0;
-        rd_more_q <= '0;
-        rd_wcnt_q <= '0;
       end
     end
   end
@@ -515,32 +550,35 @@ module scanline_buffer #(
       rline_q       <= '0;
       rx_end_q      <= 1'b0;
       last_line_q   <= height_i == LB'(1);  // rline_q 0 (then refreshed while the reader idles)
+      swap_q        <= 1'b0;
       pixel_valid_o <= 1'b0;
     end else begin
       a_valid_q   <= frag_take;
       t_valid_q   <= a_valid_q;
       lw_valid_q  <= wins;
-      // Between lines rline_q holds: the flag follows it (and a new frame's height_i).
-      if (!rd_busy_q) last_line_q <= rline_q + 1'b1 == height_i;
+      swap_q      <= eol_take;
+      // Between lines rline_q holds: the flags follow it and the frame (height_i, width_i).
+      if (!rd_busy_q) begin
+        last_line_q <= rline_q + 1'b1 == height_i;
+        rx_end_q    <= width_i == LB'(1);
+      end
       if (rd_step) begin
         // Full mode's x (rd_x = rx_q); sparse mode reads neither it nor the flag (an increment
         // of rd_x put the sparse search on rx_q's path: 12.5 ns on the ECP5). The next is the
-        // line's last when this one is its last but one.
+        // line's last when this one is its last but one; after the last, x = 0.
         rx_q     <= rx_q + 1'b1;
         rx_end_q <= rx_q + LB'(2) == width_i;
         if (rd_last) begin
           rd_busy_q   <= 1'b0;
+          rx_q        <= '0;
+          rx_end_q    <= width_i == LB'(1);
           rline_q     <= rd_lastline ? '0 : rline_q + 1'b1;
           last_line_q <= rd_lastline ? height_i == LB'(1) : rline_q + LB'(2) == height_i;
         end
       end
       if (!pixel_valid_o || pixel_ready_i) pixel_valid_o <= rd_load;
-      if (eol_take) begin
-        wsel_q    <= !wsel_q;
-        rd_busy_q <= 1'b1;
-        rx_q      <= '0;
-        rx_end_q  <= width_i == LB'(1);
-      end
+      if (eol_take) wsel_q <= !wsel_q;
+      if (sparse_i ? swap_q : eol_take) rd_busy_q <= 1'b1;
     end
   end
 
@@ -577,6 +615,12 @@ module scanline_buffer #(
   logic t_addr_ok /* verilator public_flat_rd */;
   logic rd_left /* verilator public_flat_rd */;
   logic t_written_p /* verilator public_flat_rd */;
+  // The covers' tie: the old word the test sees, and an equal depth won by the smaller id.
+  logic [DWB-1:0] old_word;
+  logic tie_wins /* verilator public_flat_rd */;
+  assign old_word = (lw_valid_q && t_fw1_q) ? lw_word_q : t_fw2_q ? llw_word_q : t_mem_q;
+  assign tie_wins = tie_submission_i && t_depth == old_word[DepthBits-1:0]
+                 && t_poly < old_word[DWB-1:DepthBits];
   logic covered_p /* verilator public_flat_rd */;
   // The search's reference, from the bits themselves (sparse mode): whether the read bank holds
   // a written bit (found) or two (more), and whether every word's registers match its bits;
@@ -602,16 +646,19 @@ module scanline_buffer #(
       for (int w = 0; w < Words; w++) begin
         if (!word_ok(rd_occ_q[w], rd_low_q[w * WIB +: WIB], rd_wcnt_q[w * WCB +: WCB],
                      bank_word(!wsel_q, w))
-            || rd_more_q[w] != ($countones(bank_word(!wsel_q, w)) > 1)) rd_words_ok = 1'b0;
+            || rd_more_q[w] != ($countones(bank_word(!wsel_q, w)) > 1)
+            || rd_rest_q[w * WordBits +: WordBits] != (bank_word(!wsel_q, w)
+                 & ~(rd_occ_q[w] ? WordBits'(1) << rd_low_q[w * WIB +: WIB] : '0)))
+          rd_words_ok = 1'b0;
         n += $countones(bank_word(!wsel_q, w));
       end
       found = n != 0;
       more  = n > 1;
     end
-    if (eol_take) begin
+    if (swap_q) begin  // the old write bank, now the read bank
       for (int w = 0; w < Words; w++)
         if (!word_ok(wr_occ_q[w], wr_low_q[w * WIB +: WIB], wr_wcnt_q[w * WCB +: WCB],
-                     bank_word(wsel_q, w))) wr_words_ok = 1'b0;
+                     bank_word(!wsel_q, w))) wr_words_ok = 1'b0;
     end
   end
   localparam int unsigned PB = $clog2(Words * WordBits);  // an x in the padded words
@@ -653,19 +700,22 @@ module scanline_buffer #(
     for (int w = 0; w < Words; w++) if (raw == w) ra_word = bank_word(!wsel_q, w);
     ra_written = ra_word[int'(PB'(rd_x)) % WordBits];
   end
-  assign t_written_p = t_written_q;
+  assign t_written_p = t_written;
   assign covered_p   = sparse_i ? cnt_found_q : |(rx_word_q & rx_hot_q);
   assign t_addr_ok   = t_addr_q == addr(wsel_q, t_x_q) && t_bank_q == wsel_q;
 `endif
   `WATKINS_ASSERT(a_sparse_covered, rd_load && sparse_i && !(rd_last && rd_lastline) |-> found)
   // The registered decisions equal what they stand for.
-  `WATKINS_ASSERT(a_cnt_found, sparse_i |-> cnt_found_q == found)
+  // (Not on the swap_q clock: the counts and words are handed over at its end.)
+  `WATKINS_ASSERT(a_cnt_found, sparse_i && !swap_q |-> cnt_found_q == found)
   `WATKINS_ASSERT(a_first, first_q == (rd_occ_q & ~(rd_occ_q - 1'b1)))
   `WATKINS_ASSERT(a_rx_hot, rd_busy_q && !sparse_i |->
     rx_hot_q == (WordBits'(1) << bit_of(rx_q)) && rx_whot_q == (Words'(1) << word_of(rx_q)))
-  `WATKINS_ASSERT(a_cnt_more, sparse_i |-> cnt_more_q == more)
-  `WATKINS_ASSERT(a_rd_words, sparse_i |-> rd_words_ok)
-  `WATKINS_ASSERT(a_wr_words, eol_take |-> wr_words_ok)
+  `WATKINS_ASSERT(a_cnt_more, sparse_i && !swap_q |-> cnt_more_q == more)
+  `WATKINS_ASSERT(a_rd_words, sparse_i && !swap_q |-> rd_words_ok)
+  `WATKINS_ASSERT(a_wr_words, swap_q |-> wr_words_ok)
+  // Why the write role's registers are complete on the swap_q clock.
+  `WATKINS_ASSERT(a_swap_quiet, swap_q |-> !t_valid_q && !rd_busy_q == sparse_i)
   // Why the sparse search needs no rx_q compare, and why covered needs no read at ra.
   `WATKINS_ASSERT(a_sparse_below_clear, rd_busy_q && sparse_i |-> !below_dirty)
   `WATKINS_ASSERT(a_covered_is_written, rd_load |-> covered_p == ra_written)

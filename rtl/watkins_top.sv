@@ -16,7 +16,7 @@
 // line y is drawn.
 // Sparse mode (sparse_i = 1 for the frame): the pixel stream carries only the covered pixels, in
 // raster order, each with pixel_x_o/pixel_y_o; a line then costs max(1, covered pixels,
-// fragments + setup) cycles. pixel_last_o marks the frame's last beat: its last covered pixel when
+// fragments + setup) cycles, plus one for the line buffer's swap when its reader sets the pace. pixel_last_o marks the frame's last beat: its last covered pixel when
 // the last line has one, otherwise a terminating beat with pixel_covered_o = 0 (background rgb)
 // at (width-1, height-1) -- so a frame covering no pixel is exactly that one beat. The consumer
 // keeps the background elsewhere (e.g. a framebuffer cleared once). sparse_i = 0: every pixel.

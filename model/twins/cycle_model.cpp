@@ -150,6 +150,7 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
   std::array<bool, FragQueueDepth> q_eol{};
   // ---- scanline_buffer: a fragment in its read step (a marker waits behind it), the reader
   bool sb_read_q = false;
+  bool sb_swap_q = false;  // sparse: the swap's second clock, the reader's registers handed over
   bool rd_busy_q = false;
   int rd_left = 0, rline_q = 0, lines_written = 0;
 
@@ -163,7 +164,7 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
                            ord1_q, ord2_q, swap_q, sf_in_valid, sf_in_emits, sf_pr_valid, sf_pr_emits, seg_valid,
                            skid_full, s0_valid_q, recip_valid, recip_out, tail_valid, tail_item, fifo[0], fifo[1], fifo[2], fifo[3], fifo_head, fifo_count, step_active,
                            frag_valid, frag_eol, norm.valid, norm.eol, shade.valid, shade.eol, q_count,
-                           q_eol, sb_read_q, rd_busy_q, rline_q, lines_written);
+                           q_eol, sb_read_q, sb_swap_q, rd_busy_q, rline_q, lines_written);
   };
   static_assert(InterpFifoDepth == 4, "key() lists the FIFO's words");
 
@@ -172,7 +173,7 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
   for (long long t = 1;; ++t) {
     // ================= combinational, from the outputs back =================
     const bool rd_last = rd_busy_q && rd_left == 1;
-    const bool eol_ok = !sb_read_q && (!rd_busy_q || rd_last);
+    const bool eol_ok = !sb_read_q && !sb_swap_q && (!rd_busy_q || rd_last);
     const bool sh_valid = phong ? shade.out_valid() : frag_valid;
     const bool sh_eol = phong ? shade.out_eol() : frag_eol;
     // The queue's head goes to the scanline buffer, which refuses only a marker waiting on the
@@ -263,9 +264,16 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
         --rd_left;
       }
     }
+    // The marker's swap starts the reader on the next clock in full mode; in sparse mode on the
+    // one after (swap_q: the search's registers are handed over in between).
+    if (sb_swap_q) {
+      sb_swap_q = false;
+      rd_busy_q = true;
+    }
     if (eol_fire) {
       if (lines_written >= height) throw std::logic_error("cycle model: more line markers than lines");
-      rd_busy_q = true;
+      if (sparse) sb_swap_q = true;
+      else rd_busy_q = true;
       rd_left = st.read_steps[std::size_t(lines_written++)];
     }
     // fragment queue

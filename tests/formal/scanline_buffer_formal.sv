@@ -106,7 +106,7 @@ module scanline_buffer_formal #(
       // the position is inside the frame.
       assert (\u_dut.rline_q == ny && ey_q < height_i && ex_q < width_i);
       if (\u_dut.rd_busy_q ) assert (\u_dut.rx_q == nx);
-      else assert (nx == '0);
+      else assert (nx == '0 && \u_dut.rx_q == '0);  // x = 0 is set as a line ends, not by the marker
       // The reader's registered decisions: the line's last pixel and the frame's last line.
       if (\u_dut.rd_busy_q ) assert (\u_dut.rx_end_q == (\u_dut.rx_q == width_i - 1'b1));
       assert (\u_dut.last_line_q == (\u_dut.rline_q == height_i - 1'b1));
