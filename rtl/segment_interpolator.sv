@@ -569,30 +569,44 @@ module segment_interpolator #(
   );
 
   // ---------------------------------------------------------------- stepper
-  logic                  st_active_q;  // a span is being stepped from the registers below
+  // st_active_q (a span is being stepped from the st_* registers) in copies, one per group of
+  // registers it picks for and enables, each with its own fragment enable computed from the same
+  // flops: one enable reaching every frag_* and st_* flop was the sized Phong top's critical path
+  // on nextpnr seed 2 at 14f3c10 (st_active_q -> the FIFO's pop -> emit_frag -> a 4.6 ns route
+  // back to st_active_q's clock enable, 12.2 ns). Each copy's next state is computed from the
+  // copy itself, so the copies are not identical logic and yosys keeps them apart (opt_merge
+  // merges flops and LUTs of equal inputs, a (* keep *) on their wires notwithstanding).
+  localparam int unsigned CpCtl  = 0;  // st_active_q's own state, frag_valid_o, st_x/xe/poly/material
+  localparam int unsigned CpFrag = 1;  // the frag_* outputs
+  localparam int unsigned CpVal  = 2;  // st_value_q, st_step_q
+  localparam int unsigned CpHead = 3;  // the FIFO's ready (its pop)
+  localparam int unsigned NumCp  = 4;
+  logic [NumCp-1:0]      st_active_q;  // all equal (a_st_copies)
   logic [LB-1:0]         st_x_q, st_xe_q;
   logic [PolyIdBits-1:0] st_poly_q;
   logic [MIB-1:0]        st_material_q;
   logic [IVB-1:0]        st_value_q, st_step_q;
 
-  logic                  out_free, from_head, emit_frag, emit_eol;
-  logic [LB-1:0]         cur_x, cur_xe;
-  logic [PolyIdBits-1:0] cur_poly;
-  logic [MIB-1:0]        cur_material;
-  logic [IVB-1:0]        cur_step, next_value;
+  logic                  out_free, head_frag, head_eol;
+  logic [NumCp-1:0]      emit_frag;    // per copy: a fragment leaves into frag_*_o
+  logic                  emit_eol;     // a marker does
+  logic                  st_more;      // a pixel after st_x_q in the stepper's span
   logic [IVB-1:0]        st_value1, hd_value1;  // the stepper's value + step; sd's, into the FIFO
 
   assign out_free  = !frag_valid_o || frag_ready_i;
-  assign from_head = !st_active_q && f_out_valid && !f_out.eol;
-  assign emit_frag = out_free && (st_active_q || from_head);
-  assign emit_eol  = out_free && !st_active_q && f_out_valid && f_out.eol;
-  assign f_out_ready = emit_eol || (emit_frag && from_head);
-
-  assign cur_x     = st_active_q ? st_x_q     : f_out.xs;
-  assign cur_xe    = st_active_q ? st_xe_q    : f_out.xe;
-  assign cur_poly  = st_active_q ? st_poly_q  : f_out.poly;
-  assign cur_material = st_active_q ? st_material_q : f_out.material;
-  assign cur_step  = st_active_q ? st_step_q  : f_out.step;
+  assign head_frag = f_out_valid && !f_out.eol;  // the head is a span
+  assign head_eol  = f_out_valid && f_out.eol;
+  for (genvar i = 0; i < NumCp; i++) begin : g_cp
+    assign emit_frag[i] = out_free && (st_active_q[i] || head_frag);
+    always_ff @(posedge clk_i) begin
+      if (!rst_ni) st_active_q[i] <= 1'b0;
+      else if (emit_frag[i]) st_active_q[i] <= st_active_q[i] ? st_more : f_out.more;
+    end
+  end
+  assign emit_eol    = out_free && !st_active_q[CpFrag] && head_eol;
+  // The head leaves when the stepper is idle and the output free (a span's first pixel, or a
+  // marker); a pop needs the FIFO's valid as well, which the FIFO adds.
+  assign f_out_ready = out_free && !st_active_q[CpHead];
 
   // Per slot: the next pixel's value (wrapping at the slot's word) and the fragment's readings:
   // depth = clamp(round_shift(Z, ZFracBits), 0, 2^DepthBits - 1); shade = clamp(round_shift(v,
@@ -669,14 +683,11 @@ module segment_interpolator #(
       end
     end
   end
-  // The stepper's next state, the span going on past this pixel, for each source and picked
-  // by st_active_q after the compare (the pick before the add was the Gouraud block's limit).
-  logic st_more;
-  assign st_more    = (st_x_q + 1'b1 != st_xe_q);
-  assign next_value = st_active_q ? st_value1 : f_out.value1;
-  assign depth_d  = st_active_q ? depth_src[0 +: DepB]   : f_out.depth;
-  assign rgb_d    = st_active_q ? rgb_src[0 +: 24]       : f_out.rgb;
-  assign normal_d = st_active_q ? normal_src[0 +: 3*NB]  : f_out.normal;
+  // The readings of the fragment, picked by the CpFrag copy after the rounding and the clamp.
+  assign st_more  = (st_x_q + 1'b1 != st_xe_q);
+  assign depth_d  = st_active_q[CpFrag] ? depth_src[0 +: DepB]  : f_out.depth;
+  assign rgb_d    = st_active_q[CpFrag] ? rgb_src[0 +: 24]      : f_out.rgb;
+  assign normal_d = st_active_q[CpFrag] ? normal_src[0 +: 3*NB] : f_out.normal;
 
   // The FIFO's input: sd's span with the head's readings and next value computed from it.
   assign f_in.eol      = sd_span_q.eol;
@@ -692,34 +703,36 @@ module segment_interpolator #(
   assign f_in.step     = sd_step_q;
 
   always_ff @(posedge clk_i) begin
-    if (!rst_ni) begin
-      st_active_q  <= 1'b0;
-      frag_valid_o <= 1'b0;
-    end else begin
-      if (out_free) frag_valid_o <= emit_frag || emit_eol;
-      if (emit_frag) st_active_q <= st_active_q ? st_more : f_out.more;
-    end
+    if (!rst_ni) frag_valid_o <= 1'b0;
+    else if (out_free) frag_valid_o <= st_active_q[CpCtl] || f_out_valid;  // a fragment or a marker
   end
 
+  // Each group from its own copy: the picks and the enable.
   always_ff @(posedge clk_i) begin
-    if (emit_frag) begin
-      frag_x_o      <= cur_x;
-      frag_depth_o  <= depth_d;
-      frag_rgb_o.r  <= rgb_d[0 +: 8];
-      frag_rgb_o.g  <= rgb_d[8 +: 8];
-      frag_rgb_o.b  <= rgb_d[16 +: 8];
-      frag_normal_o <= normal_d;
-      frag_poly_o   <= cur_poly;
-      frag_material_o <= cur_material;
-      frag_eol_o    <= 1'b0;
-      st_x_q        <= cur_x + 1'b1;
-      st_poly_q     <= cur_poly;
-      st_material_q <= cur_material;
-      st_xe_q       <= cur_xe;
-      st_step_q     <= cur_step;
-      st_value_q    <= next_value;
+    if (emit_frag[CpFrag]) begin
+      frag_x_o        <= st_active_q[CpFrag] ? st_x_q : f_out.xs;
+      frag_depth_o    <= depth_d;
+      frag_rgb_o.r    <= rgb_d[0 +: 8];
+      frag_rgb_o.g    <= rgb_d[8 +: 8];
+      frag_rgb_o.b    <= rgb_d[16 +: 8];
+      frag_normal_o   <= normal_d;
+      frag_poly_o     <= st_active_q[CpFrag] ? st_poly_q : f_out.poly;
+      frag_material_o <= st_active_q[CpFrag] ? st_material_q : f_out.material;
+      frag_eol_o      <= 1'b0;
     end else if (emit_eol) begin
-      frag_eol_o    <= 1'b1;
+      frag_eol_o      <= 1'b1;
+    end
+    if (emit_frag[CpCtl]) begin
+      st_x_q        <= (st_active_q[CpCtl] ? st_x_q : f_out.xs) + 1'b1;
+      st_xe_q       <= st_active_q[CpCtl] ? st_xe_q : f_out.xe;
+      st_poly_q     <= st_active_q[CpCtl] ? st_poly_q : f_out.poly;
+      st_material_q <= st_active_q[CpCtl] ? st_material_q : f_out.material;
+    end
+    if (emit_frag[CpVal]) begin
+      // The next pixel's value, for each source and picked after the add (the pick before the
+      // add was the Gouraud block's limit).
+      st_value_q <= st_active_q[CpVal] ? st_value1 : f_out.value1;
+      st_step_q  <= st_active_q[CpVal] ? st_step_q : f_out.step;
     end
   end
 
@@ -728,7 +741,9 @@ module segment_interpolator #(
   `WATKINS_ASSERT_HOLD(a_out_hold, frag_valid_o, frag_ready_i, {frag_x_o, frag_depth_o, frag_rgb_o,
     frag_normal_o, frag_poly_o, frag_material_o, frag_eol_o})
   `WATKINS_ASSERT(a_x_on_screen, frag_valid_o && !frag_eol_o |-> frag_x_o < width_i)
-  `WATKINS_COVER(c_back_to_back_spans, emit_frag && from_head && frag_valid_o && !frag_eol_o)
+  `WATKINS_COVER(c_back_to_back_spans, emit_frag[CpCtl] && !st_active_q[CpCtl] && frag_valid_o
+    && !frag_eol_o)
+  `WATKINS_ASSERT(a_st_copies, st_active_q == {NumCp{st_active_q[CpCtl]}})
   `WATKINS_COVER(c_empty_dropped, sd_valid_q && !sd_keep)
   `WATKINS_ASSERT(a_tail_en, tail_en == (!sd_valid_q || !sd_keep || f_in_ready))
   // The head's stored flag is what the stepper would compare there (the other stored fields

@@ -1,6 +1,7 @@
 // stream_fifo: first-in first-out valid/ready buffer of Depth words.
 // Latency 1 (a word written is visible at the head the next cycle); valid_o and data_o come
-// from registers (the head word is kept in a register of its own, head_q, beside the slots);
+// from registers (valid_o from its own flop, valid_q, kept equal to cnt_q != 0; the head word
+// in a register of its own, head_q, beside the slots);
 // ready_o = not full straight from its own flop (room_q, kept equal to cnt_q != Depth: a
 // parent's stall signal built on ready_o starts at a flop, not at a compare of the count); no
 // combinational path from input to output. ready_next_o is ready_o on the next clock (room_q's
@@ -29,11 +30,14 @@ module stream_fifo #(
   logic [PtrBits-1:0]  wr_q, rd_q;
   logic [CntBits-1:0]  cnt_q;
   logic                room_q;  // cnt_q != Depth
+  logic                valid_q; // cnt_q != 0
   logic [DataBits-1:0] head_q;  // mem_q[rd_q] whenever the FIFO holds a word (a_head)
   logic push, pop;
 
   assign ready_o = room_q;
-  assign valid_o = (cnt_q != '0);
+  // valid_o from a flop, not a compare of the count: a consumer's pop decision starts at one
+  // flop (the interpolator's stepper: its enable took a LUT more for the count's compare).
+  assign valid_o = valid_q;
   assign data_o  = head_q;
   assign push    = valid_i && ready_o;
   assign pop     = valid_o && ready_i;
@@ -52,12 +56,16 @@ module stream_fifo #(
       rd_q  <= '0;
       cnt_q <= '0;
       room_q <= 1'b1;
+      valid_q <= 1'b0;
     end else begin
       if (push) wr_q <= next_ptr(wr_q);
       if (pop) rd_q <= next_ptr(rd_q);
       if (push && !pop) cnt_q <= cnt_q + 1'b1;
       else if (pop && !push) cnt_q <= cnt_q - 1'b1;
       room_q <= ready_next_o;
+      // Empty next clock: a pop without a push of the last word; a push fills one.
+      if (push && !pop) valid_q <= 1'b1;
+      else if (pop && !push) valid_q <= cnt_q != CntBits'(1);
     end
   end
 
@@ -85,5 +93,6 @@ module stream_fifo #(
   `WATKINS_ASSERT(a_head, !valid_o || head_q == head_slot)
 `endif
   `WATKINS_ASSERT(a_room, room_q == (cnt_q != CntBits'(Depth)))
+  `WATKINS_ASSERT(a_valid, valid_q == (cnt_q != '0))
   `WATKINS_COVER(c_full, !ready_o)
 endmodule
