@@ -2,14 +2,15 @@
 // a unit N; p. 317 asks for "a very fast mechanism for obtaining square roots"), bit-exact twin
 // of model/twins/normalizer.hpp. m = Nx^2+Ny^2+Nz^2 exact, 1/sqrt(m) by rsqrt_unit (even shift, seed
 // table, one Newton-Raphson step), N * 1/sqrt(m) rounded and saturated to UnitBits.
-// Latency 16, one normal per clock; every stage registers valid and data; every product is
-// registered in its multiplier block (mul18_reg: on the ECP5 the MULT18X18D's output register; the
-// final one as partial products split at an 18 x 18 multiplier), its sums, shift and round a stage
-// later each; one global stall (stall_pipe): ready_o = ready_i || !valid_o (combinational from
-// ready_i and the output valid flop only; with LookAhead a flop loaded a clock ahead from
-// ready_next_i). Each stage's registers load only when the beat entering it is valid (en && its
-// valid: one LUT, as en alone): a bubble's values are never read, so a simulator need not compute
-// them (most clocks of a frame carry bubbles); a valid beat's values are the same.
+// Latency 16 (2 + watkins_pkg::RsqrtStages + 4), one normal per clock; every stage registers valid
+// and data; every product is registered in its multiplier block (mul18_reg: on the ECP5 the
+// MULT18X18D's output register; the final one as partial products split at an 18 x 18
+// multiplier), its sums, shift and round a stage later each; one global stall (stall_pipe):
+// ready_o = ready_i || !valid_o (combinational from ready_i and the output valid flop only; with
+// LookAhead a flop loaded a clock ahead from ready_next_i). Each stage's registers load only when
+// the beat entering it is valid (en && its valid: one LUT, as en alone): a bubble's values are
+// never read, so a simulator need not compute them (most clocks of a frame carry bubbles); a valid
+// beat's values are the same.
 // The null vector (m = 0) gives (0, 0, 0) with null_o set; any m > 0 gives a unit vector.
 `include "watkins_assert.svh"
 
@@ -35,7 +36,7 @@ module normalizer #(
 );
   localparam int MBits      = 2 * NB;                   // 36: m < 3 * 2^34
   localparam int RsqrtBits  = watkins_pkg::RsqrtBits;   // F below: fraction bits of y
-  localparam int RDelay     = 10;                       // rsqrt_unit latency
+  localparam int RDelay     = watkins_pkg::RsqrtStages; // rsqrt_unit's latency (10)
   localparam int Stages     = 2 + RDelay + 4;           // squares, sum, rsqrt, partials, sum, shift, round
   localparam int ScaledBits = NB + RsqrtBits + 3;       // N * y, signed, plus a rounding guard bit
 
@@ -81,7 +82,7 @@ module normalizer #(
   logic [MBits-1:0] m_q;
   always_ff @(posedge clk_i) if (ce[1]) m_q <= g_sq[0].q + g_sq[1].q + g_sq[2].q;
 
-  // ---- stages 2..11: y = 1/sqrt(m') with 1/sqrt(m) = y * 2^(j-2) --------------------------------
+  // ---- stages 2..RDelay+1 (11): y = 1/sqrt(m') with 1/sqrt(m) = y * 2^(j-2) ----------------------
   logic [RsqrtBits+1:0] y;
   logic [4:0]   j;
   logic         nul;

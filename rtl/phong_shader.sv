@@ -60,7 +60,7 @@ module phong_shader #(
   localparam int PowStages = 4;                             // a power's operands, product, copy, round
   // power k: stages PowFirst + 4k .. + 4k + 3
   localparam int PowFirst = CosStage + 1;
-  // 38: g_pow[ShininessBits-1].acc_q
+  // 38: g_pow[ShininessBits-1]'s round stage (fa_r_q)
   localparam int PowLast  = CosStage + PowStages * ShininessBits;
   localparam int Stages   = PowLast + 3;                    // 41
   // A product wider than an 18 x 18 multiplier is split at bit PSplit of an operand (17: the low
@@ -95,6 +95,17 @@ module phong_shader #(
     .valid_q_o(v_unused),
     .ce_o     (ce)
   );
+  // Stage i + 1's enable as a one-bit vector, read as g_ce[i].q[0] by the registers of this module,
+  // the form of a mul18_reg's own test (its port ce_i, indexed): Verilator (5.006) merges the
+  // tests of one enable into one only when their expressions are the same tree, and ce[i] here and
+  // a multiplier block's ce_i[0] inlined differ in their index constant's width. One test per
+  // stage, not two or three (the Phong top's instructions per cycle). The same LUT.
+  for (genvar i = 0; i < Stages; i++) begin : g_ce
+    /* verilator lint_off UNUSEDSIGNAL */
+    logic [0:0] q;  // stage 39's: its registers are all in multiplier blocks
+    /* verilator lint_on UNUSEDSIGNAL */
+    assign q = ce[i];
+  end
 
 
   // The three products of each dot product of two Q2.14 vectors, exact (28 fraction bits), each
@@ -142,9 +153,9 @@ module phong_shader #(
   logic signed [DotBits+1:0] le_q;
   logic signed [CW-1:0]      cs_k_q, cs_o_q, cs_p_q;
   always_ff @(posedge clk_i) begin
-    if (ce[1]) le_s_q <= sum3(le_p_q);
-    if (ce[2]) le_q   <= round_dot(le_s_q, 1'b1);
-    if (ce[3]) begin
+    if (g_ce[1].q[0]) le_s_q <= sum3(le_p_q);
+    if (g_ce[2].q[0]) le_q   <= round_dot(le_s_q, 1'b1);
+    if (g_ce[3].q[0]) begin
       cs_k_q <= CW'(1 <<< (CsShift - 1)) - (CW'(le_q) <<< DotBits);
       cs_o_q <= CW'(1 <<< (CsShift - 1)) - (CW'(le_q) <<< DotBits)
               - (CW'((1 << PowBits) + 1) <<< CsShift);
@@ -152,35 +163,34 @@ module phong_shader #(
     end
   end
 
-  // Pixel attributes travel alongside: g_X[i].q holds the pixel in stage i + 1. The
-  // per-stage registers here and below are plain variables of generate blocks, not array
-  // elements: a simulator (Verilator) keeps a pending-write flag and value per array element
-  // written under its own enable and clears them on every evaluation. Same flops.
-  // Cp, W and n travel in one word {Cp, W, n} per stage (one assignment per stage for a simulator,
-  // not three: the Phong top's Verilator cost per cycle): n is last read by the final power stage,
-  // W by stage 38 (255 W), Cp by stage 39 (from cp_last_q, its one stage more).
+  // Pixel attributes travel alongside: g_X[i].q holds the pixel in stage i + 1 (the power
+  // stages carry theirs in g_pow, beside the power's own registers). The per-stage registers
+  // here and below are plain variables of generate blocks, not array elements: a simulator
+  // (Verilator) keeps a pending-write flag and value per array element written under its own
+  // enable and clears them on every evaluation. Same flops.
+  // Cp, W and n travel in one word M = {Cp, W, n} per stage (one assignment per stage for a
+  // simulator, not three: the Phong top's Verilator cost per cycle), its fields at MN, MW, MCp: n
+  // is last read by the final power stage, W by stage 38 (255 W), Cp by stage 39.
   localparam int RB  = watkins_pkg::RgbBits;
-  localparam int MWB = RB + MaterialBits + ShininessBits;
-  for (genvar i = 0; i < PowLast - 1; i++) begin : g_m
-    /* verilator lint_off UNUSEDSIGNAL */
-    logic [MWB-1:0] q;  // a vector (yosys 0.23 and structs); the last stage's n bits below
-                        // ShininessBits - 1 are read no more
-    /* verilator lint_on UNUSEDSIGNAL */
+  localparam int MN  = 0;                               // n: M[MN +: ShininessBits]
+  localparam int MW  = MN + ShininessBits;              // W: M[MW +: MaterialBits]
+  localparam int MCp = MW + MaterialBits;               // Cp: M[MCp +: RB]
+  localparam int MWB = MCp + RB;
+  for (genvar i = 0; i < CosStage; i++) begin : g_m
+    logic [MWB-1:0] q;  // a vector (yosys 0.23 and structs)
     if (i == 0) begin : g_in
-      always_ff @(posedge clk_i) if (ce[0]) q <= {cp_i, w_i, shininess_i};
+      always_ff @(posedge clk_i) if (g_ce[0].q[0]) q <= {cp_i, w_i, shininess_i};
     end else begin : g_shift
-      always_ff @(posedge clk_i) if (ce[i]) q <= g_m[i-1].q;
+      always_ff @(posedge clk_i) if (g_ce[i].q[0]) q <= g_m[i-1].q;
     end
   end
-  logic [RB-1:0] cp_last_q;  // Cp in stage PowLast
-  always_ff @(posedge clk_i) if (ce[PowLast-1]) cp_last_q <= g_m[PowLast-2].q[MWB-1 -: RB];
   for (genvar i = 0; i < CosStage - 1; i++) begin : g_d  // d: last read by stage 6
     logic [MaterialBits-1:0] q;
     if (i == 0) begin : g_in
       always_ff @(posedge clk_i)  // d <= 1.0
-        if (ce[0]) q <= (d_i > MaterialBits'(1 << MF)) ? MaterialBits'(1 << MF) : d_i;
+        if (g_ce[0].q[0]) q <= (d_i > MaterialBits'(1 << MF)) ? MaterialBits'(1 << MF) : d_i;
     end else begin : g_shift
-      always_ff @(posedge clk_i) if (ce[i]) q <= g_d[i-1].q;
+      always_ff @(posedge clk_i) if (g_ce[i].q[0]) q <= g_d[i-1].q;
     end
   end
 
@@ -188,14 +198,14 @@ module phong_shader #(
 
   // ---- stage 2: N.L and N.E, exact -------------------------------------------------------------
   logic signed [DW-1:0] ndl_q, nde_q;
-  always_ff @(posedge clk_i) if (ce[1]) begin
+  always_ff @(posedge clk_i) if (g_ce[1].q[0]) begin
     ndl_q <= sum3(nl_p_q);
     nde_q <= sum3(ne_p_q);
   end
 
   // ---- stage 3: cos(i) >= 0 (i > 90 degrees clamped, Phong p. 313), N.E ------------------
   logic signed [DotBits+1:0] cosi_q, ne_q;
-  always_ff @(posedge clk_i) if (ce[2]) begin
+  always_ff @(posedge clk_i) if (g_ce[2].q[0]) begin
     cosi_q <= round_dot(ndl_q, 1'b0);
     ne_q   <= round_dot(nde_q, 1'b1);
   end
@@ -221,7 +231,7 @@ module phong_shader #(
   assign {n1, n0} = ne_q;
   // 1 - d registered beside g_d[2] (from the same d), so the subtract is not in front of the
   // multiplier blocks' setup (10.4 ns on the ECP5: its carry chain and a 4.2 ns route).
-  always_ff @(posedge clk_i) if (ce[2]) omd_q <= MaterialBits'(1 << MF) - g_d[1].q;
+  always_ff @(posedge clk_i) if (g_ce[2].q[0]) omd_q <= MaterialBits'(1 << MF) - g_d[1].q;
   mul18_reg #(.ABits(PSplit), .BBits(PSplit)) u_cn00 (
     .clk_i, .ce_i(ce[3]), .a_i(c0), .b_i(n0), .p_o(cn00_q));
   mul18_reg #(.ABits(PSplit), .BBits(NHi), .BSigned(1'b1), .PBits(PSplit+NHi+1)) u_cn01 (
@@ -234,13 +244,13 @@ module phong_shader #(
     .clk_i, .ce_i(ce[3]), .a_i(c0), .b_i(omd_q), .p_o(fp0_q));
   mul18_reg #(.ABits(CHi), .BBits(MaterialBits)) u_fp1 (
     .clk_i, .ce_i(ce[3]), .a_i(c1), .b_i(omd_q), .p_o(fp1_q));
-  always_ff @(posedge clk_i) if (ce[3]) front_q <= cosi_q != '0;
+  always_ff @(posedge clk_i) if (g_ce[3].q[0]) front_q <= cosi_q != '0;
 
   // ---- stage 5: cos(i)(N.E) and cos(i)(1-d), exact ---------------------------------------------
   logic signed [CW-1:0] cne_q;
   logic [FW-1:0]        fp_q;
   logic                 front5_q;
-  always_ff @(posedge clk_i) if (ce[4]) begin
+  always_ff @(posedge clk_i) if (g_ce[4].q[0]) begin
     cne_q    <= (CW'(cn11_q) <<< (2 * PSplit)) + CW'(cn00_q)
               + (CW'(cn01_q) <<< PSplit) + (CW'(cn10_q) <<< PSplit);
     fp_q     <= FW'(fp0_q) + (FW'(fp1_q) << PSplit);
@@ -258,11 +268,11 @@ module phong_shader #(
   // Power k = 0..ShininessBits-1 (stages PowFirst + 4k to + 4k + 3): acc *= base if bit k of n,
   // base *= base, the operands registered in the multiplier blocks in the first stage, the
   // products in the second, again in the third, rounded in the fourth; acc0_q and base0_q start
-  // them (stage 6), g_pow[k].acc_q and g_pow[k].g_base.base_q are their results.
+  // them (stage 6), g_pow[k].fa_r_q's acc and g_pow[k].g_base.base_q are their results.
   logic [PowBits:0] acc0_q, base0_q;
-  logic [FW-1:0]    f0_q;  // f, then g_f[j].q: stage CosStage + j
+  logic [FW-1:0]    f0_q;  // f, then in g_pow[k].fa_*_q
   always_ff @(posedge clk_i) begin
-    if (ce[CosStage-1]) begin
+    if (g_ce[CosStage-1].q[0]) begin
       /* verilator lint_off UNUSEDSIGNAL */
       logic signed [CW-1:0] cs2, cs_o, cs_p;  // cs's bits below CsShift and above P are not read
       /* verilator lint_on UNUSEDSIGNAL */
@@ -277,39 +287,44 @@ module phong_shader #(
       f0_q   <= fp_q + (FW'(g_d[CosStage-2].q) << DotBits);
     end
   end
-  for (genvar j = 1; j <= PowLast - CosStage; j++) begin : g_f
-    logic [FW-1:0] q;
-    if (j == 1) begin : g_in
-      always_ff @(posedge clk_i) if (ce[CosStage]) q <= f0_q;
-    end else begin : g_shift
-      always_ff @(posedge clk_i) if (ce[CosStage-1+j]) q <= g_f[j-1].q;
-    end
-  end
 
   // The products split at bit PSplit into four partial products, each registered straight from
   // its multiplier block (a 21 x 21 product and its adder tree in one clock limited the shader
   // at 58 MHz on the ECP5); the round stage adds them: x·y = {x1·y1, x0·y0} + (x0·y1 + x1·y0)·2^PSplit.
   localparam int PB2    = 2 * PowBits + 3;
   localparam int PHi    = PowBits + 1 - PSplit;   // 4
+  localparam int FA     = PowBits + 1;            // {f, acc}: acc at [FA-1:0], f at [FA +: FW]
+  localparam int FAB    = FA + FW;
   for (genvar k = 0; k < ShininessBits; k++) begin : g_pow
     // ce[Pk - 1]: the operand stage loads, ce[Pk] the product, ce[Pk + 1] the copy, ce[Pk + 2] the round.
     localparam int Pk = PowFirst + PowStages * k;
     logic [2*PSplit-1:0]   a00_q;                 // low x low
     logic [PSplit+PHi-1:0] a01_q, a10_q;          // low x high
     logic [2*PHi-1:0]      a11_q;                 // high x high
-    logic [PowBits:0]      acc_k_q;               // acc in, product stage (for a bit of n that is clear)
-    logic [PowBits:0]      acc_q;                 // acc out
-    logic [PowBits:0]      acc_in, base_in;
+    // acc travels with f in one word {f, acc} per stage (_o: operand stage, _p: product, _c:
+    // copy, _r: round, where acc is the power's result), M in one of its own: the round stage
+    // writes both words and reads n from M, so a simulator (Verilator) orders f's and M's
+    // registers with the power's and merges each stage's enable tests into one (f in a register
+    // chain of its own was ordered apart, under tests of its own; {f, M}, wider than 64 bits,
+    // cost more to copy than it saved). Same flops.
+    logic [FAB-1:0]        fa_in, fa_o_q, fa_p_q, fa_c_q, fa_r_q;
+    /* verilator lint_off UNUSEDSIGNAL */
+    logic [MWB-1:0]        m_in, m_o_q, m_p_q, m_c_q, m_r_q;  // n's bits below k are read no more;
+                                                              // the last power's m_r_q only for Cp
+    /* verilator lint_on UNUSEDSIGNAL */
+    logic [PowBits:0]      base_in;
     logic [PSplit-1:0]     x0, y0;
     logic [PHi-1:0]        x1, y1;
     if (k == 0) begin : g_first
-      assign acc_in  = acc0_q;
+      assign fa_in   = {f0_q, acc0_q};
+      assign m_in    = g_m[CosStage-1].q;
       assign base_in = base0_q;
     end else begin : g_next
-      assign acc_in  = g_pow[k-1].acc_q;
+      assign fa_in   = g_pow[k-1].fa_r_q;
+      assign m_in    = g_pow[k-1].m_r_q;
       assign base_in = g_pow[k-1].g_base.base_q;
     end
-    assign {x1, x0} = acc_in;
+    assign {x1, x0} = fa_in[FA-1:0];
     assign {y1, y0} = base_in;
     mul18_reg #(.ABits(PSplit), .BBits(PSplit), .InReg(1'b1)) u_a00 (
       .clk_i, .ce_i(ce[Pk:Pk-1]), .a_i(x0), .b_i(y0), .p_o(a00_q));
@@ -322,30 +337,38 @@ module phong_shader #(
     // The operand stage: acc and base enter the blocks' operand registers (mul18_reg InReg),
     // so a route from the fabric across the die (up to 6.9 ns in the Phong top, where the 112
     // MULT18 spread over it) ends at a register, not at the multiplier's 3.5 ns input setup.
-    logic [PowBits:0]      acc_k0_q;              // acc in, operand stage
-    always_ff @(posedge clk_i) if (ce[Pk-1]) acc_k0_q <= acc_in;
-    always_ff @(posedge clk_i) if (ce[Pk])   acc_k_q  <= acc_k0_q;
+    // acc also waits in fa_*_q, for a bit of n that is clear.
+    always_ff @(posedge clk_i) if (g_ce[Pk-1].q[0]) begin
+      fa_o_q <= fa_in;
+      m_o_q  <= m_in;
+    end
+    always_ff @(posedge clk_i) if (g_ce[Pk].q[0]) begin
+      fa_p_q <= fa_o_q;
+      m_p_q  <= m_o_q;
+    end
     // The round stage: the sums only for the products it keeps (acc's for a set bit of n).
     // The copy stage: the multiplier blocks' outputs registered again in the fabric, so the
     // route from a block (up to 4.8 ns on the ECP5) is not in front of the round stage's adders.
     logic [2*PSplit-1:0]   a00c_q;
     logic [PSplit+PHi-1:0] a01c_q, a10c_q;
     logic [2*PHi-1:0]      a11c_q;
-    logic [PowBits:0]      acc_kc_q;
-    always_ff @(posedge clk_i) if (ce[Pk+1]) begin
-      a00c_q   <= a00_q;
-      a01c_q   <= a01_q;
-      a10c_q   <= a10_q;
-      a11c_q   <= a11_q;
-      acc_kc_q <= acc_k_q;
+    always_ff @(posedge clk_i) if (g_ce[Pk+1].q[0]) begin
+      a00c_q <= a00_q;
+      a01c_q <= a01_q;
+      a10c_q <= a10_q;
+      a11c_q <= a11_q;
+      fa_c_q <= fa_p_q;
+      m_c_q  <= m_p_q;
     end
-    always_ff @(posedge clk_i) if (ce[Pk+2]) begin
+    always_ff @(posedge clk_i) if (g_ce[Pk+2].q[0]) begin
       /* verilator lint_off UNUSEDSIGNAL */
       logic [PB2-1:0] pa;  // product <= 2^2P plus half: only [2P:P] is kept
       /* verilator lint_on UNUSEDSIGNAL */
       pa = PB2'({a11c_q, a00c_q}) + (PB2'(a01c_q) << PSplit) + (PB2'(a10c_q) << PSplit)
          + PB2'(1 << (PowBits - 1));
-      acc_q <= g_m[Pk+1].q[k] ? pa[2*PowBits:PowBits] : acc_kc_q;  // bit k of n
+      fa_r_q <= {fa_c_q[FA +: FW],
+                 m_c_q[MN + k] ? pa[2*PowBits:PowBits] : fa_c_q[FA-1:0]};  // bit k of n
+      m_r_q  <= m_c_q;
     end
     // base^2, for the next power stage only (the last one has none).
     if (k + 1 < ShininessBits) begin : g_base
@@ -362,12 +385,12 @@ module phong_shader #(
       logic [2*PSplit-1:0]   b00c_q;
       logic [PSplit+PHi-1:0] b01c_q;
       logic [2*PHi-1:0]      b11c_q;
-      always_ff @(posedge clk_i) if (ce[Pk+1]) begin
+      always_ff @(posedge clk_i) if (g_ce[Pk+1].q[0]) begin
         b00c_q <= b00_q;
         b01c_q <= b01_q;
         b11c_q <= b11_q;
       end
-      always_ff @(posedge clk_i) if (ce[Pk+2]) begin
+      always_ff @(posedge clk_i) if (g_ce[Pk+2].q[0]) begin
         /* verilator lint_off UNUSEDSIGNAL */
         logic [PB2-1:0] pb;  // product <= 2^2P plus half: only [2P:P] is kept
         /* verilator lint_on UNUSEDSIGNAL */
@@ -379,9 +402,10 @@ module phong_shader #(
 
   // ---- stage 38 (the last power stage): 255 W, so W pow needs no multiply by 255 after it ----
   logic [MaterialBits+7:0] w255_q;  // 255 W < 2^17: one multiplier block with a PSplit-bit operand
-  always_ff @(posedge clk_i) if (ce[PowLast-1])
-    w255_q <= ((MaterialBits+8)'(g_m[PowLast-2].q[ShininessBits +: MaterialBits]) << 8)
-            - (MaterialBits+8)'(g_m[PowLast-2].q[ShininessBits +: MaterialBits]);
+  logic [MaterialBits-1:0] w_last;  // W in the last power's copy stage
+  assign w_last = g_pow[ShininessBits-1].m_c_q[MW +: MaterialBits];
+  always_ff @(posedge clk_i) if (g_ce[PowLast-1].q[0])
+    w255_q <= ((MaterialBits+8)'(w_last) << 8) - (MaterialBits+8)'(w_last);
 
   // ---- stage 39: Cp f per channel and 255 W cos(s)^n, as partial products ----------------------
   // Channel c is byte c of rgb_t (B, G, R for c = 0, 1, 2) in Cp and in the shade alike: the
@@ -397,14 +421,16 @@ module phong_shader #(
   logic [MaterialBits+8+AHi-1:0]    wa1_q;      // 255 W pow1
   logic [FW-1:0]                    fl;
   logic [PowBits:0]                 al;
-  assign fl = g_f[PowLast-CosStage].q;
-  assign al = g_pow[ShininessBits-1].acc_q;
+  logic [RB-1:0]                    cpl;       // Cp
+  assign fl  = g_pow[ShininessBits-1].fa_r_q[FA +: FW];
+  assign al  = g_pow[ShininessBits-1].fa_r_q[FA-1:0];
+  assign cpl = g_pow[ShininessBits-1].m_r_q[MCp +: RB];
   for (genvar c = 0; c < 3; c++) begin : g_df
     mul18_reg #(.ABits(8), .BBits(PSplit)) u_df0 (
-      .clk_i, .ce_i(ce[PowLast]), .a_i(cp_last_q[c*8 +: 8]), .b_i(fl[PSplit-1:0]),
+      .clk_i, .ce_i(ce[PowLast]), .a_i(cpl[c*8 +: 8]), .b_i(fl[PSplit-1:0]),
       .p_o(df0_q[c*DF0 +: DF0]));
     mul18_reg #(.ABits(8), .BBits(FHi)) u_df1 (
-      .clk_i, .ce_i(ce[PowLast]), .a_i(cp_last_q[c*8 +: 8]), .b_i(fl[FW-1:PSplit]),
+      .clk_i, .ce_i(ce[PowLast]), .a_i(cpl[c*8 +: 8]), .b_i(fl[FW-1:PSplit]),
       .p_o(df1_q[c*DF1 +: DF1]));
   end
   mul18_reg #(.ABits(MaterialBits+8), .BBits(PSplit)) u_wa0 (
@@ -418,7 +444,7 @@ module phong_shader #(
   localparam logic [LW-1:0] Half = LW'(1) << (DotBits + MF - 1);
   logic [3*LW-1:0] diff2_q;  // Cp f plus the rounding half, channel c at c * LW
   logic [LW-1:0]   spec_q;
-  always_ff @(posedge clk_i) if (ce[PowLast+1]) begin
+  always_ff @(posedge clk_i) if (g_ce[PowLast+1].q[0]) begin
     for (int c = 0; c < 3; c++)
       diff2_q[c*LW +: LW] <= (LW'(df0_q[c*DF0 +: DF0]) | Half)
                            + (LW'(df1_q[c*DF1 +: DF1]) << PSplit);
@@ -427,7 +453,7 @@ module phong_shader #(
 
   // ---- stage 41: level = saturate(round(Cp f + 255 W pow)) --------------------------------------
   logic [watkins_pkg::RgbBits-1:0] rgb_q;
-  always_ff @(posedge clk_i) if (ce[PowLast+2]) begin
+  always_ff @(posedge clk_i) if (g_ce[PowLast+2].q[0]) begin
     for (int c = 0; c < 3; c++) begin
       logic [LW-1:0] lvl;
       lvl = (diff2_q[c*LW +: LW] + spec_q) >> (DotBits + MF);  // diff2_q holds the rounding half

@@ -1,23 +1,25 @@
 // rsqrt_unit: y ~ 1/sqrt(m') for m = 2^(4-2j) * m', m' in [1/4, 1) (the normalizer's "very fast
 // mechanism for obtaining square roots", Phong 1975 p. 317): even-shift normalization, a 768-row
 // seed table, one Newton-Raphson step. Bit-exact twin of Normalizer::normalize_mantissa and
-// RsqrtUnit::rsqrt_mant (model/twins/rsqrt_unit.hpp). Latency 10, every stage registered; the
-// leading-one search (stage 1) and the even shift (stage 2, straight into the seed ROM's address)
-// are a clock apart; the seed ROM's output is registered once more before y0^2 (the ROM's output
-// also loads y0^2's multiplier block's operand registers); y0^2 enters the next products' blocks
-// through their operand registers (no block's output feeds a block's multiplier); the two
-// Newton-Raphson products, wider than an 18 x 18 multiplier, are registered as partial products
-// (the first's copied into the fabric a stage later, then summed; the second's summed and rounded
-// a stage later); no handshake: ce_i[k]
-// loads stage k (the parent owns valid/ready and the stall, and gives each stage its clock
-// enable: its stall_pipe's ce_o, low for a bubble, whose values nobody reads, so a simulator
-// computes valid beats only; a unit bench may drive all ten together).
+// RsqrtUnit::rsqrt_mant (model/twins/rsqrt_unit.hpp). Latency Stages = watkins_pkg::RsqrtStages
+// (10: the stages written below; the normalizer, the benches, the proof and the cycle model derive
+// theirs from that one constant), every stage registered; the leading-one search (stage 1) and the
+// even shift (stage 2, straight into the seed ROM's address) are a clock apart; the seed ROM's
+// output is registered once more before y0^2 (the ROM's output also loads y0^2's multiplier
+// block's operand registers); y0^2 enters the next products' blocks through their operand
+// registers (no block's output feeds a block's multiplier); the two Newton-Raphson products, wider
+// than an 18 x 18 multiplier, are registered as partial products (the first's copied into the
+// fabric a stage later, then summed; the second's summed and rounded a stage later); no
+// handshake: ce_i[k] loads stage k (the parent owns valid/ready and the stall, and gives each
+// stage its clock enable: its stall_pipe's ce_o, low for a bubble, whose values nobody reads, so a
+// simulator computes valid beats only; a unit bench may drive them all together).
 module rsqrt_unit #(
   localparam int MBits     = 2 * watkins_pkg::NormalInBits,  // m = Nx^2 + Ny^2 + Nz^2, exact
-  localparam int RsqrtBits = watkins_pkg::RsqrtBits          // F: fraction bits of y
+  localparam int RsqrtBits = watkins_pkg::RsqrtBits,         // F: fraction bits of y
+  localparam int Stages    = watkins_pkg::RsqrtStages        // latency: stage k loads on ce_i[k]
 ) (
   input  logic                 clk_i,
-  input  logic [10:1]          ce_i,    // [k]: stage k's registers load
+  input  logic [Stages:1]      ce_i,    // [k]: stage k's registers load
   input  logic [MBits-1:0]     m_i,     // squared length, 2*FracBits fraction bits
   output logic [RsqrtBits+1:0] y_o,     // 1/sqrt(m'c) with F fraction bits, in [1, 2]; 0 if null_o
   output logic [4:0]           j_o,     // 1/sqrt(m) = y * 2^(j-2); 0 if null_o
@@ -28,8 +30,8 @@ module rsqrt_unit #(
   localparam int IndexBits = watkins_pkg::RsqrtIndexBits;  // P: seed index bits
   localparam int SeedBits  = watkins_pkg::RsqrtSeedBits;   // T: seed fraction bits
   localparam int NrBits    = watkins_pkg::RsqrtNrBits;     // G: fraction bits of m'c * y0^2
-  localparam int Sh4 = (MantBits + 1) + 2 * SeedBits - NrBits;  // m'c * y0^2 down to G fraction bits
-  localparam int Sh5 = SeedBits + NrBits + 1 - RsqrtBits;        // y0 * u / 2 down to F fraction bits
+  localparam int UShift = (MantBits + 1) + 2 * SeedBits - NrBits;  // u's: m'c y0^2 to G fraction bits
+  localparam int YShift = SeedBits + NrBits + 1 - RsqrtBits;        // y's: y0 u / 2 to F fraction bits
 
   // floor(sqrt(v)) bit by bit, exactly Normalizer::isqrt for v < 2^34 (the seeds need v < 2^32:
   // v = 2^(2T+P+3) / (2 idx + 1) with idx >= 2^(P-2)); fewer steps keep elaboration quick.
@@ -192,20 +194,22 @@ module rsqrt_unit #(
   end
 
   // ---- stage 8: u = 3 - round(m'c * y0^2), G fraction bits (|m'c y0^2 - 1| < 2^-9) ---------
-  // One sum, one carry chain: with p = m'c y0^2 (Sh4 + G fraction bits) and s = Sh4,
+  // One sum, one carry chain: with p = m'c y0^2 (UShift + G fraction bits) and s = UShift,
   // 3 * 2^G - floor((p + 2^(s-1)) / 2^s) = ceil((3 * 2^(G+s) - 2^(s-1) - p) / 2^s)
   //                                      = floor((3 * 2^(G+s) + 2^(s-1) - 1 - p) / 2^s),
   // so u is bits [s+G+1:s] of UConst - p (the partial products subtracted in one adder tree; the
   // product, the rounding add and the subtract from 3 were three carry chains: 109 MHz).
-  localparam int PW4 = (AW + BW + 1 > Sh4 + NrBits + 2) ? AW + BW + 1 : Sh4 + NrBits + 2;
-  localparam logic [PW4-1:0] UConst = (PW4'(3) << (NrBits + Sh4)) + (PW4'(1) << (Sh4 - 1)) - PW4'(1);
+  localparam int UDiffBits = (AW + BW + 1 > UShift + NrBits + 2) ? AW + BW + 1 : UShift + NrBits + 2;
+  localparam logic [UDiffBits-1:0] UConst =
+      (UDiffBits'(3) << (NrBits + UShift)) + (UDiffBits'(1) << (UShift - 1)) - UDiffBits'(1);
   logic [NrBits+1:0] u_q;
   always_ff @(posedge clk_i) if (ce_i[8]) begin
     /* verilator lint_off UNUSEDSIGNAL */
-    logic [PW4-1:0] d4;  // u * 2^s plus the remainder; only bits [s+G+1:s] are kept
+    logic [UDiffBits-1:0] ud;  // u * 2^s plus the remainder; only bits [s+G+1:s] are kept
     /* verilator lint_on UNUSEDSIGNAL */
-    d4 = UConst - PW4'({p11c_q, p00c_q}) - (PW4'(p01c_q) << PSplit) - (PW4'(p10c_q) << PSplit);
-    u_q    <= d4[Sh4 +: NrBits+2];
+    ud = UConst - UDiffBits'({p11c_q, p00c_q}) - (UDiffBits'(p01c_q) << PSplit)
+       - (UDiffBits'(p10c_q) << PSplit);
+    u_q    <= ud[UShift +: NrBits+2];
     y0_8_q <= y0_7_q;
     j8_q   <= j7_q;
     nul8_q <= nul7_q;
@@ -226,17 +230,17 @@ module rsqrt_unit #(
     nul9_q <= nul8_q;
   end
 
-  // ---- stage 10: y = round(y0 * u / 2), F fraction bits: y <- y (3 - m' y^2) / 2 ------------
-  localparam int PW5 = YW + UW + 1;
+  // ---- stage 10 (Stages): y = round(y0 * u / 2), F fraction bits: y <- y (3 - m' y^2) / 2 --
+  localparam int YProdBits = YW + UW + 1;
   logic [RsqrtBits+1:0] y_q;
-  always_ff @(posedge clk_i) if (ce_i[10]) begin
-    logic [PW5-1:0] prod5;
+  always_ff @(posedge clk_i) if (ce_i[Stages]) begin
+    logic [YProdBits-1:0] yprod;
     /* verilator lint_off UNUSEDSIGNAL */
-    logic [PW5-1:0] y5;  // y <= 2: the top bits are zero
+    logic [YProdBits-1:0] yr;  // y <= 2: the top bits are zero
     /* verilator lint_on UNUSEDSIGNAL */
-    prod5 = PW5'(q0_q) + (PW5'(q1_q) << PSplit);
-    y5    = (prod5 + (PW5'(1) << (Sh5 - 1))) >> Sh5;
-    y_q     <= y5[RsqrtBits+1:0];
+    yprod = YProdBits'(q0_q) + (YProdBits'(q1_q) << PSplit);
+    yr    = (yprod + (YProdBits'(1) << (YShift - 1))) >> YShift;
+    y_q     <= yr[RsqrtBits+1:0];
     j10_q   <= j9_q;
     nul10_q <= nul9_q;
   end

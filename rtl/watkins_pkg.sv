@@ -34,6 +34,7 @@ package watkins_pkg;
   localparam int RsqrtSeedBits = 14;  // normalizer: fraction bits of the seed y0 ~ 1/sqrt(m') in [1,2)
   localparam int RsqrtNrBits = 24;  // normalizer: fraction bits of m'*y0^2 in the Newton-Raphson step
   localparam int RsqrtBits = 22;  // normalizer: fraction bits of the refined y ~ 1/sqrt(m') in [1,2]
+  localparam int RsqrtStages = 10;  // normalizer: rsqrt_unit's latency, one register stage per clock
   localparam int PhongDotBits = 24;  // phong: fraction bits of cos(i) = N.L, N.E and L.E
   localparam int PhongPowBits = 20;  // phong: fraction bits of cos(s) and cos(s)^n, both in [0,1]
   localparam int MaterialBits = 9;  // phong: unsigned width of d and W (1.0 = 2^MaterialFracBits)

@@ -26,7 +26,8 @@ namespace rtl_timing {
 constexpr int RecipStages = fmt::RecipBits + 2;  // span_reciprocal: normalize + R+1 quotient bits
 constexpr int InterpFifoDepth = 4;               // segment_interpolator's FifoDepth
 constexpr int InterpTailStages = 7;              // segment_interpolator: sa, sp, sh, sb, sc, sv, sd after the reciprocal
-constexpr int NormalizerStages = 16;             // normalizer: squares, sum, rsqrt_unit (10), partial products, sum, shift, round
+// normalizer (16): squares, sum, rsqrt_unit (fmt::RsqrtStages), partial products, sum, shift, round
+constexpr int NormalizerStages = 2 + fmt::RsqrtStages + 4;
 constexpr int ShaderStages = 41;                 // phong_shader: dots (3), cos(s) (3), 8 powers (4 each), 3 out
 constexpr int SmootherStages = fmt::ShadeBits + 6;  // smoother: line read, window, pairs, sums, products, dividend, a divider
                                                     // stage per quotient bit

@@ -12,7 +12,8 @@ module normalizer_formal #(
   parameter bit          LookAhead   = 1'b0,  // the Phong top's setting is 1
   localparam int unsigned NB      = watkins_pkg::NormalInBits,
   localparam int unsigned UB      = watkins_pkg::UnitBits,
-  localparam int unsigned Stages  = 16,  // normalizer's pipe: squares, sum, rsqrt (10), partial products, sum, shift, round
+  // normalizer's pipe (16): squares, sum, the rsqrt unit, partial products, sum, shift, round
+  localparam int unsigned Stages  = 2 + watkins_pkg::RsqrtStages + 4,
   localparam int unsigned PtrBits = $clog2(Stages + 1),
   localparam int unsigned Depth   = 2 ** PtrBits
 ) (

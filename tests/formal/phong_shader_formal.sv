@@ -13,7 +13,11 @@ module phong_shader_formal #(
   localparam int unsigned UB      = watkins_pkg::UnitBits,
   localparam int unsigned MB      = watkins_pkg::MaterialBits,
   localparam int unsigned SB      = watkins_pkg::ShininessBits,
-  localparam int unsigned Stages  = 6 + 4 * SB + 3,  // phong_shader's pipe: dots, cos(s), powers, output
+  // phong_shader's pipe, from its own constants (yosys 0.23 reads no child's localparam): CosStage
+  // stages to cos(s), PowStages per bit of n (a power's operands, product, copy, round), 3 out
+  localparam int unsigned CosStage  = 6,
+  localparam int unsigned PowStages = 4,
+  localparam int unsigned Stages  = CosStage + PowStages * SB + 3,
   localparam int unsigned PtrBits = $clog2(Stages + 1),
   localparam int unsigned Depth   = 2 ** PtrBits
 ) (

@@ -16,7 +16,7 @@ using namespace watkins::rtl;
 
 namespace {
 
-constexpr int Latency = 10;
+constexpr int Latency = fmt::RsqrtStages;  // rtl/rsqrt_unit.sv's Stages
 
 struct Bench {
   Harness<Vrsqrt_unit> h;
