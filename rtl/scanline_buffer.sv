@@ -301,11 +301,11 @@ module scanline_buffer #(
   logic [WordBits-1:0]  t_wword_q; // its bank's word as the test sees it
   logic                 t_fw1_q, t_fw2_q;  // the tested address is lw_addr_q's / llw_addr_q's
   logic                 t_written; // the pixel already has a fragment
-  logic [DWB-1:0]       a_word_q, t_word_q, lw_word_q, llw_word_q, mem_word_q, t_mem_q;
-  logic [DepthBits-1:0] t_depth;
-  logic [PolyIdBits-1:0] t_poly;
+  logic [DWB-1:0]       a_word_q, t_word_q, lw_word_q, llw_word_q, mem_word_q, t_mem_q, old_word;
+  logic [DepthBits-1:0] t_depth, old_depth;
+  logic [PolyIdBits-1:0] t_poly, old_poly;
   logic [RB-1:0]        a_rgb_q, t_rgb_q;
-  logic                 wins;
+  logic                 wins, tie_wins;
 
   always_ff @(posedge clk_i) begin
     if (frag_take) mem_word_q <= depth_mem[wa];
@@ -343,25 +343,13 @@ module scanline_buffer #(
   end
 
   assign t_written = |(t_wword_q & t_bhot_q);
+  assign old_word  = (lw_valid_q && t_fw1_q) ? lw_word_q : t_fw2_q ? llw_word_q : t_mem_q;
   assign {t_poly, t_depth}     = t_word_q;
-  // Whether the tested fragment beats a depth word: nearer, or at equal depth with the tie rule.
+  assign {old_poly, old_depth} = old_word;
   // A tie goes to a strictly smaller id only: equal ids (one polygon's own spans) keep the first
   // arrival, as the model does.
-  function automatic logic beats(logic [DWB-1:0] o);
-    logic [DepthBits-1:0]  od;
-    logic [PolyIdBits-1:0] op;
-    {op, od} = o;
-    beats = t_depth < od || (tie_submission_i && t_depth == od && t_poly < op);
-  endfunction
-  // Against each candidate for the old word in parallel, picked after the compares: lw_valid_q
-  // (the last clock's wins) picks, so the compare is not in the loop from wins back to wins (the
-  // pick before it was the sized Gouraud top's path on seed 2 at 5a2a984: 9.7 ns).
-  logic beats_lw, beats_llw, beats_mem;
-  assign beats_lw  = beats(lw_word_q);
-  assign beats_llw = beats(llw_word_q);
-  assign beats_mem = beats(t_mem_q);
-  assign wins      = t_valid_q && (!t_written || ((lw_valid_q && t_fw1_q) ? beats_lw
-                                                  : t_fw2_q ? beats_llw : beats_mem));
+  assign tie_wins  = tie_submission_i && t_depth == old_depth && t_poly < old_poly;
+  assign wins      = t_valid_q && (!t_written || (t_depth < old_depth) || tie_wins);
 
   always_ff @(posedge clk_i) begin
     if (wins) begin
@@ -615,12 +603,6 @@ module scanline_buffer #(
   logic t_addr_ok /* verilator public_flat_rd */;
   logic rd_left /* verilator public_flat_rd */;
   logic t_written_p /* verilator public_flat_rd */;
-  // The covers' tie: the old word the test sees, and an equal depth won by the smaller id.
-  logic [DWB-1:0] old_word;
-  logic tie_wins /* verilator public_flat_rd */;
-  assign old_word = (lw_valid_q && t_fw1_q) ? lw_word_q : t_fw2_q ? llw_word_q : t_mem_q;
-  assign tie_wins = tie_submission_i && t_depth == old_word[DepthBits-1:0]
-                 && t_poly < old_word[DWB-1:DepthBits];
   logic covered_p /* verilator public_flat_rd */;
   // The search's reference, from the bits themselves (sparse mode): whether the read bank holds
   // a written bit (found) or two (more), and whether every word's registers match its bits;
