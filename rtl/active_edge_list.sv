@@ -11,14 +11,15 @@
 // read port: block RAM), at the filling bank's append address, and never moved. The order is a
 // list of N small keys (X, id) with each entry's RAM index, for the filling bank only: the
 // insertion compares the key against every entry in parallel and shifts keys and indices, in a
-// pipeline of two clocks after the body's write (key registered; per-entry compare flags
-// registered; shift), still one insertion per clock. At the swap (which waits for that pipeline
-// to empty) the indices are copied to the streaming bank's index list (the keys of a streaming
-// bank are never compared again), which shifts down by one as each edge leaves.
-// Per line: about (active + new edges + 6) cycles when nothing stalls: the swap is decided a clock
-// before it acts, and it waits for the incrementer's stage and the insertion's two (the last two
-// are not waited for on a line that inserts nothing). The key's multiplexer, the compares and
-// the shift are in separate clocks. The stream reads the RAM one entry ahead: out_q (a fabric
+// pipeline of three clocks after the body's write (key registered; per-entry compare flags
+// registered; the flags corrected for the keys in flight, registered; shift), still one insertion
+// per clock. At the swap (which waits for that pipeline to empty) the indices are copied to the
+// streaming bank's index list (the keys of a streaming bank are never compared again), which
+// shifts down by one as each edge leaves.
+// Per line: about (active + new edges + 7) cycles when nothing stalls: the swap is decided a clock
+// before it acts, and it waits for the incrementer's stage and the insertion's three (the last
+// three are not waited for on a line that inserts nothing). The key's multiplexer, the compares,
+// their correction and the shift are in separate clocks. The stream reads the RAM one entry ahead: out_q (a fabric
 // register) holds the entry presented, the RAM's read register the one after it, so every path
 // from the RAM (5.6-5.8 ns clock-to-out on the ECP5) ends at out_q, through at most its
 // enable's multiplexer (one LUT4 on the ECP5).
@@ -120,12 +121,13 @@ module active_edge_list #(
   logic            out_done_q, inc_done_q, eol_sent_q;
   logic [EdgeIdBits-1:0] id_q;
   // The sorted insertion's pipeline (below).
-  logic [KB+IB-1:0] key1_q, key2_q;  // {sort key, body index} of the insertion in ord1 / ord2
-  logic             ord1_q, ord2_q;
-  logic [N-1:0]     occ1_q;          // ord1: entry i exists once ord2's key is in (i < key1's index)
+  logic [KB+IB-1:0] key1_q, key2_q, key3_q;  // {sort key, body index} in ord1 / ord2 / ord3
+  logic             ord1_q, ord2_q, ord3_q;
+  logic [N-1:0]     valid_q;         // entry i of order_q exists (a thermometer: i < its entries)
   logic [KB-1:0]    key1_inv_q, key1_free_q, key1_free_inv_q;  // copies of key1_q's key (below)
-  logic [N-1:0]     below_q;         // ord2: entry i of order_q sorts before key2_q
-  logic             key2_before_key1;
+  logic [N-1:0]     lt_q;            // ord2: entry i of order_q as ord1 saw it sorts before key2_q
+  logic             k2_lt_q, k3_lt_q;  // ord2: the keys then in ord2 / ord3 sort before key2_q
+  logic [N-1:0]     below_q;         // ord3: entry i of order_q sorts before key3_q
 
   // ------------------------------------------------------------ stream out line line_q - 1
   logic   streaming, have_edge, out_fire, inc_valid, inc_ready, inc_fire, advance;
@@ -218,7 +220,8 @@ module active_edge_list #(
   // and the input's y0 are then not in front of the swap's fan-out). The condition holds until
   // then: the stream has sent its marker, nothing is being stepped or inserted, and the input's
   // head (held, since it is not taken) still belongs to a later line.
-  assign swap_now = frame_q && !drain_q && pre && !st_valid && !ord1_q && !ord2_q && src_done && !swap_q;
+  assign swap_now = frame_q && !drain_q && pre && !st_valid && !ord1_q && !ord2_q && !ord3_q
+                    && src_done && !swap_q;
   assign swap = swap_q;
   assign next_line = next_line_q;  // the filling bank starts to stream
 
@@ -364,18 +367,24 @@ module active_edge_list #(
     end
   end
 
-  // Sorted insertion of the key and the body's index, pipelined over two clocks after the
+  // Sorted insertion of the key and the body's index, pipelined over three clocks after the
   // insertion is accepted (its body is written then, at index cnt_fill_q), so that no clock holds
-  // the key's multiplexer, a KB-bit compare and the shift together:
+  // the key's multiplexer, a KB-bit compare, the correction for the keys in flight or the shift
+  // together; still one insertion per clock:
   //   ord1: the key is registered (key1_q);
-  //   ord2: every entry's "sorts before key1_q" flag is registered (below_q), corrected for the
-  //         key ord2 inserts in the same clock, so insertions still go one per clock;
+  //   ord2: every entry's "sorts before key1_q" flag against order_q as it is in that clock (lt_q,
+  //         no entry past order_q's count: valid_q), and whether each key then in ord2 and ord3
+  //         (not yet in order_q) sorts before it (k2_lt_q, k3_lt_q);
+  //   ord3: the flags for order_q as it will be after those two insertions (below_q);
   //   then: entries before the new one stay, the one at its place takes it, the tail moves up.
-  // A swap waits until both stages are empty (the stream reads order_q's indices), so a line
-  // takes two cycles more than with the insertion in one clock.
-
-  // (X, id) keys are unique, so "not before" means after.
-  assign key2_before_key1 = key2_q[IB +: KB] < key1_q[IB +: KB];
+  // A swap waits until the three stages are empty (the stream reads order_q's indices), so a line
+  // that inserts takes three cycles more than with the insertion in one clock.
+  // The correction is a shift: order_q is sorted and keys are unique ((X, id): "not before" means
+  // after), so lt_q is a thermometer (entries 0 .. L-1 before the key), and the s keys in flight
+  // that sort before it land among those: the key's place is L + s, below_q[i] = (i < L + s) =
+  // (i < s) || lt_q[i - s]. (In session 16's two-stage pipeline the compare and this correction
+  // were in one clock: order_q -> compare -> below_q, 9.5-9.8 ns, the limit of the Phong top on
+  // every seed and of the block alone.)
 
   // key1's key reaches N comparators; four copies, each for a quarter of the entries, shorten
   // that net (on the ECP5 its routing took 3.5 ns of the clock). The copies differ in structure
@@ -392,24 +401,41 @@ module active_edge_list #(
     endcase
   endfunction
 
-  // below_q for key1_q as order_q will be after ord2's insertion (at the first entry p not before
-  // key2_q): below p the entries stay (their own compare), at p sits key2_q (one compare of the
-  // two keys), above p each entry is its lower neighbour (that neighbour's compare); past key1's
-  // index, no entry (occ1_q, registered with the key, so no count is compared here). Each flag
-  // in its own block (a generate loop, not a procedural loop: Verilator 5.006 does not unroll a
-  // loop of more than 64 iterations, and its non-blocking writes to the vector inside such a loop
-  // went wrong at 68 entries -- the curved-edge top), compared only on the clocks ord1 holds a
-  // key (a simulator skips the N comparators otherwise).
-  for (genvar i = 0; i < N; i++) begin : g_below
+  // Each flag in its own block (a generate loop, not a procedural loop: Verilator 5.006 does not
+  // unroll a loop of more than 64 iterations, and its non-blocking writes to the vector inside
+  // such a loop went wrong at 68 entries -- the curved-edge top), compared only on the clocks
+  // ord1 holds a key (a simulator skips the N comparators otherwise).
+  for (genvar i = 0; i < N; i++) begin : g_lt
     always_ff @(posedge clk_i) begin
-      if (ord1_q) begin
-        if (!ord2_q || below_q[i])
-          below_q[i] <= occ1_q[i] && entry_before_key1(order_q[i][IB +: KB], i);
-        else if (i == 0 || below_q[(i == 0) ? 0 : i - 1])
-          below_q[i] <= occ1_q[i] && key2_before_key1;
-        else
-          below_q[i] <= occ1_q[i] && entry_before_key1(order_q[(i == 0) ? 0 : i - 1][IB +: KB],
-                                                       (i == 0) ? 0 : i - 1);
+      if (ord1_q) lt_q[i] <= valid_q[i] && entry_before_key1(order_q[i][IB +: KB], i);
+    end
+  end
+  always_ff @(posedge clk_i) begin
+    if (ord1_q) begin
+      k2_lt_q <= ord2_q && key2_q[IB +: KB] < key1_q[IB +: KB];
+      k3_lt_q <= ord3_q && key3_q[IB +: KB] < key1_q[IB +: KB];
+    end
+  end
+  // below_q[i] = lt_q[i - s] with s = k2_lt_q + k3_lt_q, and 1 below s.
+  for (genvar i = 0; i < N; i++) begin : g_below
+    logic lt1, lt2;  // lt_q[i - 1], lt_q[i - 2]; 1 below entry 0 (every key in flight is before)
+    if (i >= 1) begin : g_lt1
+      assign lt1 = lt_q[(i >= 1) ? i - 1 : 0];
+    end else begin : g_lt1_none
+      assign lt1 = 1'b1;
+    end
+    if (i >= 2) begin : g_lt2
+      assign lt2 = lt_q[(i >= 2) ? i - 2 : 0];
+    end else begin : g_lt2_none
+      assign lt2 = 1'b1;
+    end
+    always_ff @(posedge clk_i) begin
+      if (ord2_q) begin
+        unique case ({k3_lt_q, k2_lt_q})
+          2'b00:   below_q[i] <= lt_q[i];
+          2'b11:   below_q[i] <= lt2;
+          default: below_q[i] <= lt1;
+        endcase
       end
     end
   end
@@ -422,20 +448,25 @@ module active_edge_list #(
     key1_free_q     <= ins_key;
     key1_free_inv_q <= ~ins_key;
     if (ord1_q) key2_q <= key1_q;
-  end
-  // Each flag in its own block (no procedural loop of N iterations, as g_below).
-  for (genvar i = 0; i < N; i++) begin : g_occ
-    always_ff @(posedge clk_i) begin
-      if (ins_write) occ1_q[i] <= CntB'(i) < cnt_fill_q;
-    end
+    if (ord2_q) key3_q <= key2_q;
   end
   always_ff @(posedge clk_i) begin
     if (!rst_ni || (start_i && !frame_q)) begin
-      ord1_q      <= 1'b0;
-      ord2_q      <= 1'b0;
+      ord1_q <= 1'b0;
+      ord2_q <= 1'b0;
+      ord3_q <= 1'b0;
     end else begin
       ord1_q <= ins_write;
       ord2_q <= ord1_q;
+      ord3_q <= ord2_q;
+    end
+  end
+  // order_q's entries: one more with each insertion, none after the swap (which the filling
+  // bank's count restarts at; no insertion is in flight then).
+  for (genvar i = 0; i < N; i++) begin : g_valid
+    always_ff @(posedge clk_i) begin
+      if (!rst_ni || (start_i && !frame_q) || next_line) valid_q[i] <= 1'b0;
+      else if (ord3_q) valid_q[i] <= (i == 0) || valid_q[(i == 0) ? 0 : i - 1];
     end
   end
 
@@ -444,21 +475,21 @@ module active_edge_list #(
   // size). (One array rather than a variable per entry: Verilator keeps a pending-write flag per
   // written element of an array, but copies a separate variable in and out of a shadow on every
   // clock, about twice the instructions.)
-  // The enable tested on its own (if (ord2_q) if (...)), not in one condition with the entry's
+  // The enable tested on its own (if (ord3_q) if (...)), not in one condition with the entry's
   // flag: a simulator merges the N blocks' identical tests into one and skips them all on the
-  // clocks without an insertion (as g_below's; in one condition, about 10 instructions a clock
+  // clocks without an insertion (as g_lt's; in one condition, about 10 instructions a clock
   // for each entry).
   for (genvar i = 0; i < N; i++) begin : g_order
     if (i > 0) begin : g_above
       always_ff @(posedge clk_i) begin
-        if (ord2_q) begin
-          if (!below_q[i]) order_q[i] <= below_q[i-1] ? key2_q : order_q[i-1];
+        if (ord3_q) begin
+          if (!below_q[i]) order_q[i] <= below_q[i-1] ? key3_q : order_q[i-1];
         end
       end
     end else begin : g_bottom
       always_ff @(posedge clk_i) begin
-        if (ord2_q) begin
-          if (!below_q[0]) order_q[0] <= key2_q;
+        if (ord3_q) begin
+          if (!below_q[0]) order_q[0] <= key3_q;
         end
       end
     end
@@ -487,9 +518,17 @@ module active_edge_list #(
   `WATKINS_ASSERT(a_have_edge, have_edge_q == (streaming_q && (rd_q < cnt_stream_q)))
   `WATKINS_ASSERT(a_out_entry, have_edge |-> (out_q == chk_out_word))
   `WATKINS_ASSERT(a_ram_entry, (have_edge && !pre && rd_q + 1'b1 < cnt_stream_q) |-> (ram_q == chk_ram_word))
-  // The order pipeline's keys carry consecutive body indices (occ1_q counts order_q's entries).
+  // The order pipeline's keys carry consecutive body indices, and valid_q counts order_q's
+  // entries: the filling bank's count less the keys in flight.
   `WATKINS_ASSERT(a_order_index, ord1_q |-> (CntB'(key1_q[IB-1:0]) == cnt_fill_q - CntB'(1)))
   `WATKINS_ASSERT(a_order_index2, (ord1_q && ord2_q) |-> (key1_q[IB-1:0] == key2_q[IB-1:0] + IB'(1)))
+  `WATKINS_ASSERT(a_order_index3, (ord2_q && ord3_q) |-> (key2_q[IB-1:0] == key3_q[IB-1:0] + IB'(1)))
+  `WATKINS_ASSERT(a_valid_count, (frame_q && !drain_q) |->
+    ($countones(valid_q) == 32'(cnt_fill_q) - 32'(ord1_q) - 32'(ord2_q) - 32'(ord3_q)))
+  `WATKINS_ASSERT(a_valid_thermometer, ((valid_q + 1'b1) & valid_q) == '0)
+  // The shift's flags are a thermometer ending at the new key's index in the order.
+  `WATKINS_ASSERT(a_below, ord3_q |-> (((below_q + 1'b1) & below_q) == '0
+    && $countones(below_q) <= $countones(valid_q)))
   `WATKINS_COVER(c_overflow, $rose(overflow_o))
   `WATKINS_COVER(c_new_and_stepped, ins_step && frame_q && head_edge && rec.y0 == line_q)
 endmodule

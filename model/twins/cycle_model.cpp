@@ -118,7 +118,7 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
   std::size_t next_record = 0;
   bool eof_taken = false;
   bool st_valid = false, st_retire = false;  // the edge_incrementer's output (st_valid, st_retire)
-  bool ord1_q = false, ord2_q = false;       // the sorted insertion's two pipeline stages
+  bool ord1_q = false, ord2_q = false, ord3_q = false;  // the sorted insertion's three stages
   bool swap_q = false;                       // the swap, decided a cycle before it acts
   // ---- segment_former: its input and pairing registers (the edge and whether pairing it emits)
   // and its output, all three moved by one enable
@@ -161,7 +161,7 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
   auto key = [&] {
     return std::make_tuple(frame_q, drain_q, line_q, rd_q, cnt_stream, cnt_fill, out_done_q, inc_done_q,
                            eol_sent_q, next_record, eof_taken, st_valid, st_retire,
-                           ord1_q, ord2_q, swap_q, sf_in_valid, sf_in_emits, sf_pr_valid, sf_pr_emits, seg_valid,
+                           ord1_q, ord2_q, ord3_q, swap_q, sf_in_valid, sf_in_emits, sf_pr_valid, sf_pr_emits, seg_valid,
                            skid_full, s0_valid_q, recip_valid, recip_out, tail_valid, tail_item, fifo[0], fifo[1], fifo[2], fifo[3], fifo_head, fifo_count, step_active,
                            frag_valid, frag_eol, norm.valid, norm.eol, shade.valid, shade.eol, q_count,
                            q_eol, sb_read_q, sb_swap_q, rd_busy_q, rline_q, lines_written);
@@ -234,10 +234,10 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
     const bool ins_valid = ins_step || take_new;
     const bool src_done = line_q == height || (edge_valid && (head_eof || y0 > line_q));
     // The swap is decided a cycle before it acts (swap_q), once the incrementer's stage and the
-    // insertion's two are empty. (The stream's read ahead costs no cycle: the RAM reads the next
+    // insertion's three are empty. (The stream's read ahead costs no cycle: the RAM reads the next
     // line's first entry on the clock the swap is decided.)
     const bool swap_now = live && (line_q == 0 || eol_sent_q) && !st_valid && !ord1_q &&
-                          !ord2_q && src_done && !swap_q;
+                          !ord2_q && !ord3_q && src_done && !swap_q;
     const bool swap = swap_q;
 
     // ================= registers =================
@@ -346,6 +346,7 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
       last_progress = t;
     }
     if (ins_valid) ++cnt_fill;
+    ord3_q = ord2_q;
     ord2_q = ord1_q;
     ord1_q = ins_valid;  // (front_half throws on an overflow, so every insertion is written)
     swap_q = swap_now;

@@ -558,7 +558,7 @@ TEST(RtlActiveEdgeList, RandomFramesFullRate) {
     a.frame(random_frame(a.rng, 1 + static_cast<int>(a.rng() % 40), static_cast<int>(a.rng() % (3 * N)), v, N, false), 0, 0);
   }
   a.report("active_edge_list full rate");
-  // About (active + new edges + 6) cycles per line when nothing stalls (rtl/active_edge_list.sv).
+  // About (active + new edges + 7) cycles per line when nothing stalls (rtl/active_edge_list.sv).
   EXPECT_LT(double(a.tot.cycles), 1.25 * double(a.tot.ideal) + 4.0 * double(a.tot.frames));
 }
 
