@@ -281,10 +281,9 @@ module scanline_buffer #(
   // block RAM's clock-to-out alone in the clock: 5.6 ns on the ECP5, too slow to feed the test),
   // and the write bank's word holding the pixel, picked by the one-hot word register, with the
   // bit of the fragment tested in this clock when it is in the same word (decided at the
-  // accept). Test (t_*): the pixel's written bit from that word (a 32-bit AND-OR of registers,
-  // not a 2 * MaxWidth-way mux); the depth word -- or the word written one or two clocks before
-  // at the same address, which the RAM read did not see yet (compared a step ahead) -- and write;
-  // the fragment sets its written bit. (The word picked at the accept, from frag_x_i's compares,
+  // accept), and the pixel's written bit from that word (t_written_q). Test (t_*): the depth
+  // word -- or the word written one or two clocks before at the same address, which the RAM read
+  // did not see yet (compared a step ahead) -- and write; the fragment sets its written bit. (The word picked at the accept, from frag_x_i's compares,
   // was both tops' path once the search's were cut: the queue's x -> a_wword_q, 10.2-10.5 ns on
   // the ECP5, session 16.)
   logic                 a_valid_q, t_valid_q, lw_valid_q;
@@ -298,14 +297,16 @@ module scanline_buffer #(
   logic [Words-1:0]     a_whot_q, t_whot_q;  // the pixel's word, one-hot
   logic [WordBits-1:0]  a_bhot_q, t_bhot_q;  // its bit in the word, one-hot
   logic                 a_ahead_q; // the fragment ahead (tested while this one is read) is in its word
-  logic [WordBits-1:0]  t_wword_q; // its bank's word as the test sees it
+  // The pixel's written bit as the test sees it, from the bank's word picked by the one-hot word
+  // register and the bit's one-hot (the word in a register and its bit picked in the test put
+  // that 32-bit AND-OR in front of wins and of the written count's adder: t_wword_q -> t_new ->
+  // wr_cnt_q, 9.2-9.8 ns alone on the ECP5 at e559598).
+  logic                 t_written_q;
   logic                 t_fw1_q, t_fw2_q;  // the tested address is lw_addr_q's / llw_addr_q's
   logic                 t_written; // the pixel already has a fragment
-  logic [DWB-1:0]       a_word_q, t_word_q, lw_word_q, llw_word_q, mem_word_q, t_mem_q, old_word;
-  logic [DepthBits-1:0] t_depth, old_depth;
-  logic [PolyIdBits-1:0] t_poly, old_poly;
+  logic [DWB-1:0]       a_word_q, t_word_q, lw_word_q, llw_word_q, mem_word_q, t_mem_q;
   logic [RB-1:0]        a_rgb_q, t_rgb_q;
-  logic                 wins, tie_wins;
+  logic                 wins;
 
   always_ff @(posedge clk_i) begin
     if (frag_take) mem_word_q <= depth_mem[wa];
@@ -330,7 +331,7 @@ module scanline_buffer #(
       t_rgb_q   <= a_rgb_q;
       t_mem_q   <= mem_word_q;
       // The fragment tested now sets its bit after this clock: seen here if in the same word.
-      t_wword_q <= word_at_hot(wsel_q, a_whot_q) | (a_ahead_q ? t_bhot_q : '0);
+      t_written_q <= |((word_at_hot(wsel_q, a_whot_q) | (a_ahead_q ? t_bhot_q : '0)) & a_bhot_q);
       // Which earlier writes the RAM read missed: the one tested now (lw next clock, if it
       // wins) and the one written at the end of the last clock (llw next clock).
       t_fw1_q   <= t_valid_q && t_addr_q == a_addr_q;
@@ -342,14 +343,24 @@ module scanline_buffer #(
     llw_word_q <= lw_word_q;
   end
 
-  assign t_written = |(t_wword_q & t_bhot_q);
-  assign old_word  = (lw_valid_q && t_fw1_q) ? lw_word_q : t_fw2_q ? llw_word_q : t_mem_q;
-  assign {t_poly, t_depth}     = t_word_q;
-  assign {old_poly, old_depth} = old_word;
-  // A tie goes to a strictly smaller id only: equal ids (one polygon's own spans) keep the first
-  // arrival, as the model does.
-  assign tie_wins  = tie_submission_i && t_depth == old_depth && t_poly < old_poly;
-  assign wins      = t_valid_q && (!t_written || (t_depth < old_depth) || tie_wins);
+  assign t_written = t_written_q;
+  // Whether the tested word beats an old one: nearer, or at equal depth by the tie rule (a tie
+  // goes to a strictly smaller id only: equal ids, one polygon's own spans, keep the first
+  // arrival, as the model does).
+  function automatic logic beats(input logic [DWB-1:0] t, input logic [DWB-1:0] o, input logic tie);
+    beats = t[DepthBits-1:0] < o[DepthBits-1:0]
+         || (tie && t[DepthBits-1:0] == o[DepthBits-1:0] && t[DWB-1:DepthBits] < o[DWB-1:DepthBits]);
+  endfunction
+  // The test against each candidate old word in parallel (the last word written, the one before,
+  // the RAM's), picked after the compares: lw_valid_q (the last clock's wins) only picks, so the
+  // compare is not in the loop from wins back to wins (the old word's pick, then the compare: the
+  // tops' path on most seeds once the edge list's insert was cut, 9.6-10.4 ns on the ECP5).
+  logic beats_lw, beats_llw, beats_mem;
+  assign beats_lw  = beats(t_word_q, lw_word_q, tie_submission_i);
+  assign beats_llw = beats(t_word_q, llw_word_q, tie_submission_i);
+  assign beats_mem = beats(t_word_q, t_mem_q, tie_submission_i);
+  assign wins      = t_valid_q && (!t_written || ((lw_valid_q && t_fw1_q) ? beats_lw
+                                                  : t_fw2_q ? beats_llw : beats_mem));
 
   always_ff @(posedge clk_i) begin
     if (wins) begin
@@ -603,6 +614,13 @@ module scanline_buffer #(
   logic t_addr_ok /* verilator public_flat_rd */;
   logic rd_left /* verilator public_flat_rd */;
   logic t_written_p /* verilator public_flat_rd */;
+  logic t_written_ref /* verilator public_flat_rd */;  // the tested pixel's bit in its bank
+  // The covers' tie: the old word the test sees, and an equal depth won by the smaller id.
+  logic [DWB-1:0] old_word;
+  logic tie_wins /* verilator public_flat_rd */;
+  assign old_word = (lw_valid_q && t_fw1_q) ? lw_word_q : t_fw2_q ? llw_word_q : t_mem_q;
+  assign tie_wins = tie_submission_i && t_word_q[DepthBits-1:0] == old_word[DepthBits-1:0]
+                 && t_word_q[DWB-1:DepthBits] < old_word[DWB-1:DepthBits];
   logic covered_p /* verilator public_flat_rd */;
   // The search's reference, from the bits themselves (sparse mode): whether the read bank holds
   // a written bit (found) or two (more), and whether every word's registers match its bits;
@@ -683,6 +701,14 @@ module scanline_buffer #(
     ra_written = ra_word[int'(PB'(rd_x)) % WordBits];
   end
   assign t_written_p = t_written;
+  always_comb begin
+    int unsigned tw;
+    logic [WordBits-1:0] tword;
+    tw    = int'(PB'(t_x_q)) / WordBits;
+    tword = '0;
+    for (int w = 0; w < Words; w++) if (tw == w) tword = bank_word(t_bank_q, w);
+    t_written_ref = tword[int'(PB'(t_x_q)) % WordBits];
+  end
   assign covered_p   = sparse_i ? cnt_found_q : |(rx_word_q & rx_hot_q);
   assign t_addr_ok   = t_addr_q == addr(wsel_q, t_x_q) && t_bank_q == wsel_q;
 `endif
@@ -717,5 +743,7 @@ module scanline_buffer #(
   `WATKINS_COVER(c_forwarded2, t_valid_q && t_fw2_q && !(lw_valid_q && t_fw1_q))
   `WATKINS_COVER(c_eol_waits, frag_valid_i && !frag_ready_o)
   `WATKINS_COVER(c_tie_won, t_valid_q && t_written_p && tie_wins)
+  // The written bit registered at the read step is the tested pixel's bit in its bank now.
+  `WATKINS_ASSERT(a_t_written, t_valid_q |-> t_written_p == t_written_ref)
   `WATKINS_COVER(c_tie_forwarded, t_valid_q && lw_valid_q && t_fw1_q && tie_wins)
 endmodule
