@@ -281,9 +281,12 @@ module scanline_buffer #(
   // block RAM's clock-to-out alone in the clock: 5.6 ns on the ECP5, too slow to feed the test),
   // and the write bank's word holding the pixel, picked by the one-hot word register, with the
   // bit of the fragment tested in this clock when it is in the same word (decided at the
-  // accept), and the pixel's written bit from that word (t_written_q). Test (t_*): the depth
-  // word -- or the word written one or two clocks before at the same address, which the RAM read
-  // did not see yet (compared a step ahead) -- and write; the fragment sets its written bit. (The word picked at the accept, from frag_x_i's compares,
+  // accept). Test (t_*): the pixel's written bit from that word (a 32-bit AND-OR of registers,
+  // not a 2 * MaxWidth-way mux); the depth word -- or the word written one or two clocks before
+  // at the same address, which the RAM read did not see yet (compared a step ahead) -- and write;
+  // the fragment sets its written bit. (The bit picked in the read step instead, into a
+  // register, put the word pick and the bit pick in one clock with the 640 written bits' long
+  // routes: a_whot_q -> t_written_q, 10.9 ns in the sized Gouraud top.) (The word picked at the accept, from frag_x_i's compares,
   // was both tops' path once the search's were cut: the queue's x -> a_wword_q, 10.2-10.5 ns on
   // the ECP5, session 16.)
   logic                 a_valid_q, t_valid_q, lw_valid_q;
@@ -297,11 +300,7 @@ module scanline_buffer #(
   logic [Words-1:0]     a_whot_q, t_whot_q;  // the pixel's word, one-hot
   logic [WordBits-1:0]  a_bhot_q, t_bhot_q;  // its bit in the word, one-hot
   logic                 a_ahead_q; // the fragment ahead (tested while this one is read) is in its word
-  // The pixel's written bit as the test sees it, from the bank's word picked by the one-hot word
-  // register and the bit's one-hot (the word in a register and its bit picked in the test put
-  // that 32-bit AND-OR in front of wins and of the written count's adder: t_wword_q -> t_new ->
-  // wr_cnt_q, 9.2-9.8 ns alone on the ECP5 at e559598).
-  logic                 t_written_q;
+  logic [WordBits-1:0]  t_wword_q; // its bank's word as the test sees it
   logic                 t_fw1_q, t_fw2_q;  // the tested address is lw_addr_q's / llw_addr_q's
   logic                 t_written; // the pixel already has a fragment
   logic [DWB-1:0]       a_word_q, t_word_q, lw_word_q, llw_word_q, mem_word_q, t_mem_q;
@@ -331,7 +330,7 @@ module scanline_buffer #(
       t_rgb_q   <= a_rgb_q;
       t_mem_q   <= mem_word_q;
       // The fragment tested now sets its bit after this clock: seen here if in the same word.
-      t_written_q <= |((word_at_hot(wsel_q, a_whot_q) | (a_ahead_q ? t_bhot_q : '0)) & a_bhot_q);
+      t_wword_q <= word_at_hot(wsel_q, a_whot_q) | (a_ahead_q ? t_bhot_q : '0);
       // Which earlier writes the RAM read missed: the one tested now (lw next clock, if it
       // wins) and the one written at the end of the last clock (llw next clock).
       t_fw1_q   <= t_valid_q && t_addr_q == a_addr_q;
@@ -343,7 +342,7 @@ module scanline_buffer #(
     llw_word_q <= lw_word_q;
   end
 
-  assign t_written = t_written_q;
+  assign t_written = |(t_wword_q & t_bhot_q);
   // Whether the tested word beats an old one: nearer, or at equal depth by the tie rule (a tie
   // goes to a strictly smaller id only: equal ids, one polygon's own spans, keep the first
   // arrival, as the model does).
@@ -435,7 +434,10 @@ module scanline_buffer #(
       end
       wr_cnt_q  <= '0;
     end else begin
-      wr_cnt_q <= wr_cnt_q + CB'(t_new);
+      // t_new as the enable, not the increment's carry-in: the adder then runs from the register
+      // alone, and the written bit's AND-OR reaches only the enable (t_wword_q -> t_new -> the
+      // adder's carry chain -> wr_cnt_q was 9.2-10.9 ns on the ECP5).
+      if (t_new) wr_cnt_q <= wr_cnt_q + 1'b1;
       if (take && sparse_i && cnt_found_q) begin
         rd_cnt_q  <= rd_cnt_q - 1'b1;
         cnt_found_q <= cnt_more_q;
