@@ -19,10 +19,10 @@
 // Per line: about (active + new edges + 7) cycles when nothing stalls: the swap is decided a clock
 // before it acts, and it waits for the incrementer's stage and the insertion's three (the last
 // three are not waited for on a line that inserts nothing). The key's multiplexer, the compares,
-// their correction and the shift are in separate clocks. The stream reads the RAM one entry ahead: out_q (a fabric
-// register) holds the entry presented, the RAM's read register the one after it, so every path
-// from the RAM (5.6-5.8 ns clock-to-out on the ECP5) ends at out_q, through at most its
-// enable's multiplexer (one LUT4 on the ECP5).
+// their correction and the shift are in separate clocks. The stream reads the RAM one entry
+// ahead: out_q (a fabric register) holds the entry presented, the RAM's read register the one
+// after it, so every path from the RAM (5.6-5.8 ns clock-to-out on the ECP5) ends at out_q,
+// through at most its enable's multiplexer (one LUT4 on the ECP5).
 // out_poly_o, out_material_o, out_value_o are out_q, which the incrementer also takes;
 // out_valid_o and out_eol_o come from registers through a little logic; ready is
 // combinational. An insertion into a full bank drops the edge and sets the sticky overflow_o.

@@ -284,11 +284,11 @@ module scanline_buffer #(
   // accept). Test (t_*): the pixel's written bit from that word (a 32-bit AND-OR of registers,
   // not a 2 * MaxWidth-way mux); the depth word -- or the word written one or two clocks before
   // at the same address, which the RAM read did not see yet (compared a step ahead) -- and write;
-  // the fragment sets its written bit. (The bit picked in the read step instead, into a
-  // register, put the word pick and the bit pick in one clock with the 640 written bits' long
-  // routes: a_whot_q -> t_written_q, 10.9 ns in the sized Gouraud top.) (The word picked at the accept, from frag_x_i's compares,
+  // the fragment sets its written bit. (The word picked at the accept, from frag_x_i's compares,
   // was both tops' path once the search's were cut: the queue's x -> a_wword_q, 10.2-10.5 ns on
-  // the ECP5, session 16.)
+  // the ECP5, session 16. The bit picked in the read step too, into a register, put the word
+  // pick and the bit pick in one clock with the written bits' long routes: a_whot_q ->
+  // t_written_q, 10.9 ns in the sized Gouraud top, session 18.)
   logic                 a_valid_q, t_valid_q, lw_valid_q;
   logic [AddrBits-1:0]  a_addr_q, t_addr_q, lw_addr_q, llw_addr_q;
   /* verilator lint_off UNUSEDSIGNAL */
@@ -621,8 +621,8 @@ module scanline_buffer #(
   logic [DWB-1:0] old_word;
   logic tie_wins /* verilator public_flat_rd */;
   assign old_word = (lw_valid_q && t_fw1_q) ? lw_word_q : t_fw2_q ? llw_word_q : t_mem_q;
-  assign tie_wins = tie_submission_i && t_word_q[DepthBits-1:0] == old_word[DepthBits-1:0]
-                 && t_word_q[DWB-1:DepthBits] < old_word[DWB-1:DepthBits];
+  assign tie_wins = t_word_q[DepthBits-1:0] == old_word[DepthBits-1:0]
+                 && beats(t_word_q, old_word, tie_submission_i);
   logic covered_p /* verilator public_flat_rd */;
   // The search's reference, from the bits themselves (sparse mode): whether the read bank holds
   // a written bit (found) or two (more), and whether every word's registers match its bits;
@@ -694,23 +694,16 @@ module scanline_buffer #(
   // After this clock's take: a sparse take clears the lowest written bit, so bits are left iff
   // there were two (more); a dense take clears rx_q's.
   assign rd_left = !take ? any_set : sparse_i ? more : rest_rx;
-  always_comb begin
-    int raw;
-    logic [WordBits-1:0] ra_word;
-    raw     = int'(PB'(rd_x)) / WordBits;
-    ra_word = '0;
-    for (int w = 0; w < Words; w++) if (raw == w) ra_word = bank_word(!wsel_q, w);
-    ra_written = ra_word[int'(PB'(rd_x)) % WordBits];
-  end
-  assign t_written_p = t_written;
-  always_comb begin
-    int unsigned tw;
-    logic [WordBits-1:0] tword;
-    tw    = int'(PB'(t_x_q)) / WordBits;
-    tword = '0;
-    for (int w = 0; w < Words; w++) if (tw == w) tword = bank_word(t_bank_q, w);
-    t_written_ref = tword[int'(PB'(t_x_q)) % WordBits];
-  end
+  // Pixel x's written bit in bank b (a MaxWidth-way pick: probes only).
+  function automatic logic written_at(logic b, logic [LB-1:0] x);
+    logic [WordBits-1:0] word;
+    word = '0;
+    for (int w = 0; w < Words; w++) if (word_of(x) == WAB'(w)) word = bank_word(b, w);
+    written_at = word[bit_of(x)];
+  endfunction
+  assign ra_written    = written_at(!wsel_q, rd_x);
+  assign t_written_p   = t_written;
+  assign t_written_ref = written_at(t_bank_q, t_x_q);
   assign covered_p   = sparse_i ? cnt_found_q : |(rx_word_q & rx_hot_q);
   assign t_addr_ok   = t_addr_q == addr(wsel_q, t_x_q) && t_bank_q == wsel_q;
 `endif
@@ -745,7 +738,7 @@ module scanline_buffer #(
   `WATKINS_COVER(c_forwarded2, t_valid_q && t_fw2_q && !(lw_valid_q && t_fw1_q))
   `WATKINS_COVER(c_eol_waits, frag_valid_i && !frag_ready_o)
   `WATKINS_COVER(c_tie_won, t_valid_q && t_written_p && tie_wins)
-  // The written bit registered at the read step is the tested pixel's bit in its bank now.
+  // The test's written bit (the read step's word, the bit picked now) is the pixel's bit in its bank.
   `WATKINS_ASSERT(a_t_written, t_valid_q |-> t_written_p == t_written_ref)
   `WATKINS_COVER(c_tie_forwarded, t_valid_q && lw_valid_q && t_fw1_q && tie_wins)
 endmodule

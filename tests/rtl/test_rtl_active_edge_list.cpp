@@ -50,7 +50,7 @@ using Line = std::vector<OutEdge>;
 struct Expect {
   std::vector<Line> lines, unbounded;
   int ov_line = -1;  // first line where the capacity-N list refused an edge
-  long long ideal_cycles = 0;  // sum over lines of (active + new + 6)
+  long long ideal_cycles = 0;  // sum over lines of (active + new + 7)
 };
 
 Line to_line(const ActiveEdgeList& a) {
@@ -74,7 +74,7 @@ Expect model(const EdgeFrame& f) {
     }
     x.lines.push_back(to_line(a));
     x.unbounded.push_back(to_line(u));
-    x.ideal_cycles += a.size() + fresh + 6;
+    x.ideal_cycles += a.size() + fresh + 7;
     a.advance();
     u.advance();
   }
