@@ -1,8 +1,9 @@
 // segment_interpolator: span setup for each segment E..F, then one fragment per pixel by alpha
 // stepping, exactly model/twins/segment_interpolator.cpp (setup(), fragment(), step()).
 // Setup pipeline, one segment per clock: s0 (first pixel centres, dx, offset, deltas) ->
-// span_reciprocal (26) -> sa (alpha and step partial products, deltas in 17-bit pieces when
-// wider than a MULT18, each product in its multiplier block's register) -> sp (alpha0's sum;
+// span_reciprocal (26) -> sa (alpha's and the steps' multiplier operands, deltas in 17-bit pieces
+// when wider than a MULT18, each registered in its multiplier block) -> sm (those partial
+// products, in their blocks' output registers) -> sp (alpha0's sum;
 // each delta piece's pair of step partial products added; the pixel range's and the empty test's
 // compares) -> sh (alpha0's shift; the steps' sums of their pieces; the clamp to the screen and the
 // empty test applied) -> sb (round, clamp
@@ -13,7 +14,7 @@
 // registered output, taking a span's first pixel straight from the FIFO head, so consecutive
 // spans (even of one pixel) leave no bubble and a span's setup hides behind the previous spans'
 // pixels.
-// Latency segment -> first fragment: 36 cycles. All stage outputs registered; the setup stages'
+// Latency segment -> first fragment: 37 cycles. All stage outputs registered; the setup stages'
 // one stall signal (tail_en) is a flop, loaded a clock ahead from the FIFO's next ready. A setup
 // stage's registers load only for a valid beat (the stall and the valid entering the stage), and
 // their values are computed inside that enable: a simulator evaluates the setup only on the
@@ -237,7 +238,11 @@ module segment_interpolator #(
   );
 
   // ---------------------------------------------------------------- sa .. sd: alpha0, steps, values
-  // sa: offset * recip and delta * recip as partial products. sp: offset * recip's sum, and each
+  // sa: offset * recip's and delta * recip's operands, registered in their multiplier blocks
+  // (mul18_reg InReg): the reciprocal's quotient register fans out to every one of them, so
+  // a route from it across the die ended at a multiplier's input, the block's 3.5 ns setup after
+  // up to 6.4 ns of route (the Phong top's path on seed 2 at 6a98e2c); now it ends at a register.
+  // sm: their partial products, in the blocks' output registers. sp: offset * recip's sum, and each
   // delta piece's two step partial products added. sh: alpha0's shift, the steps' sums of their
   // pieces. sb: alpha0 = min(round_shift(offset*recip, p + RecipBits - AlphaBits), 2^AlphaBits)
   // (round_shift by 0 is exact), the steps' shifts. sc: delta * alpha0 as partial products, the
@@ -256,10 +261,12 @@ module segment_interpolator #(
   localparam int unsigned OHi = (DxBits > MSplit) ? DxBits - MSplit : 1;  // offset's high part
   localparam int unsigned RHi = RecipBits + 1 - MSplit;                    // recip's high part
   localparam int unsigned AHi = AlphaBits + 1 - MSplit;                    // alpha0's high part
-  logic                sa_valid_q, sp_valid_q, sh_valid_q, sb_valid_q, sc_valid_q, sd_valid_q;
-  // sa's copy of the span leaving the reciprocal (its offset is read there, by the products).
+  logic                sa_valid_q, sm_valid_q, sp_valid_q, sh_valid_q, sb_valid_q, sc_valid_q;
+  logic                sd_valid_q;
+  // sa's and sm's copies of the span leaving the reciprocal (its offset and delta are read in
+  // sa, by the multiplier blocks' operand registers).
   /* verilator lint_off UNUSEDSIGNAL */
-  span_pre_t           sa_span_q;
+  span_pre_t           sa_span_q, sm_span_q;
   /* verilator lint_on UNUSEDSIGNAL */
   span_mid_t           sp_span_q, sh_span_q, sb_span_q, sc_span_q;
   logic                sv_valid_q;
@@ -268,12 +275,12 @@ module segment_interpolator #(
   // width <= fce, width == 0). sp_span_q.empty is fcf <= fce alone, sh_span_q.empty the whole test.
   logic                sp_xe_clip_q;
   logic [2:0]          sp_off_q;
-  logic [ShAB-1:0]     sa_sha_q, sp_sha_q;  // alpha0's shift p + RecipBits - AlphaBits
-  logic [ShSB-1:0]     sa_shs_q, sp_shs_q, sh_shs_q;  // the steps' shift p + RecipBits - FX (> 0)
-  logic [2*MSplit-1:0]   sa_pa00_q;           // offset * recip: low x low
-  logic [MSplit+RHi-1:0] sa_pa01_q;           // low offset x high recip
-  logic [OHi+MSplit-1:0] sa_pa10_q;           // high offset x low recip
-  logic [OHi+RHi-1:0]    sa_pa11_q;           // high x high (0 for an offset of MSplit bits)
+  logic [ShAB-1:0]     sa_sha_q, sm_sha_q, sp_sha_q;  // alpha0's shift p + RecipBits - AlphaBits
+  logic [ShSB-1:0]     sa_shs_q, sm_shs_q, sp_shs_q, sh_shs_q;  // the steps' shift p + RecipBits - FX (> 0)
+  logic [2*MSplit-1:0]   sm_pa00_q;           // offset * recip: low x low
+  logic [MSplit+RHi-1:0] sm_pa01_q;           // low offset x high recip
+  logic [OHi+MSplit-1:0] sm_pa10_q;           // high offset x low recip
+  logic [OHi+RHi-1:0]    sm_pa11_q;           // high x high (0 for an offset of MSplit bits)
   logic [APBits-1:0]   sp_pa_q;             // offset * recip, unsigned
   logic [AlphaBits:0]  sb_alpha_q;          // alpha0 in [0, 2^AlphaBits]
   // e and delta are spent by the FIFO; keeping one span type is simpler than a third struct.
@@ -306,34 +313,36 @@ module segment_interpolator #(
   // as the reciprocal's stages do (stall_pipe's ce_o). A bubble leaves a stage's registers as
   // they were (nobody reads a bubble's values), and a simulator evaluates a stage's products
   // and sums, computed inside its enable, only on the clocks a span passes. Same flops.
-  logic sa_ce, sp_ce, sh_ce, sb_ce, sc_ce, sv_ce, sd_ce;
+  logic sa_ce, sm_ce, sp_ce, sh_ce, sb_ce, sc_ce, sv_ce, sd_ce;
   assign sa_ce = tail_en && rc_valid;
-  assign sp_ce = tail_en && sa_valid_q;
+  assign sm_ce = tail_en && sa_valid_q;
+  assign sp_ce = tail_en && sm_valid_q;
   assign sh_ce = tail_en && sp_valid_q;
   assign sb_ce = tail_en && sh_valid_q;
   assign sc_ce = tail_en && sb_valid_q;
   assign sv_ce = tail_en && sc_valid_q;
   assign sd_ce = tail_en && sv_valid_q;
 
-  // offset * recip's partial products, each in its multiplier block's own register (mul18_reg:
-  // the MULT18X18D's output register on the ECP5): a product is then the block's setup, not a
-  // route into the block, the block and a route out of it in one clock (the sized Phong top's
-  // 112 MULT18 spread its setup multipliers far from their fabric registers: 18.6 ns at 4d2bd2c).
-  mul18_reg #(.ABits(MSplit), .BBits(MSplit)) u_pa00 (
-    .clk_i, .ce_i(sa_ce), .a_i(rc_o0), .b_i(rc_r0), .p_o(sa_pa00_q));
-  mul18_reg #(.ABits(MSplit), .BBits(RHi)) u_pa01 (
-    .clk_i, .ce_i(sa_ce), .a_i(rc_o0), .b_i(rc_r1), .p_o(sa_pa01_q));
+  // offset * recip's partial products, each in its multiplier block's own registers (mul18_reg
+  // InReg: the MULT18X18D's input registers in sa, its output register in sm, on the ECP5): a
+  // product is then the block's setup, not a route into the block, the block and a route out of
+  // it in one clock (the sized Phong top's 112 MULT18 spread its setup multipliers far from
+  // their fabric registers: 18.6 ns at 4d2bd2c).
+  mul18_reg #(.ABits(MSplit), .BBits(MSplit), .InReg(1'b1)) u_pa00 (
+    .clk_i, .ce_i({sm_ce, sa_ce}), .a_i(rc_o0), .b_i(rc_r0), .p_o(sm_pa00_q));
+  mul18_reg #(.ABits(MSplit), .BBits(RHi), .InReg(1'b1)) u_pa01 (
+    .clk_i, .ce_i({sm_ce, sa_ce}), .a_i(rc_o0), .b_i(rc_r1), .p_o(sm_pa01_q));
   if (DxBits > MSplit) begin : g_pa_hi
     logic [OHi-1:0] rc_o1;
     assign rc_o1 = OHi'(rc_span.offset >> MSplit);
-    mul18_reg #(.ABits(OHi), .BBits(MSplit)) u_pa10 (
-      .clk_i, .ce_i(sa_ce), .a_i(rc_o1), .b_i(rc_r0), .p_o(sa_pa10_q));
-    mul18_reg #(.ABits(OHi), .BBits(RHi)) u_pa11 (
-      .clk_i, .ce_i(sa_ce), .a_i(rc_o1), .b_i(rc_r1), .p_o(sa_pa11_q));
+    mul18_reg #(.ABits(OHi), .BBits(MSplit), .InReg(1'b1)) u_pa10 (
+      .clk_i, .ce_i({sm_ce, sa_ce}), .a_i(rc_o1), .b_i(rc_r0), .p_o(sm_pa10_q));
+    mul18_reg #(.ABits(OHi), .BBits(RHi), .InReg(1'b1)) u_pa11 (
+      .clk_i, .ce_i({sm_ce, sa_ce}), .a_i(rc_o1), .b_i(rc_r1), .p_o(sm_pa11_q));
   end else begin : g_pa_lo
     // The offset fits its low part: no multiplier block for a zero high part.
-    assign sa_pa10_q = '0;
-    assign sa_pa11_q = '0;
+    assign sm_pa10_q = '0;
+    assign sm_pa11_q = '0;
   end
 
   always_ff @(posedge clk_i) begin
@@ -343,27 +352,32 @@ module segment_interpolator #(
       sa_sha_q  <= ShAB'(rc_p) + ShAB'(RecipBits) - ShAB'(AlphaBits);
       sa_shs_q  <= ShSB'(rc_p) + ShSB'(RecipBits) - ShSB'(FX);
     end
+    if (sm_ce) begin : sm_set
+      sm_span_q <= sa_span_q;
+      sm_sha_q  <= sa_sha_q;
+      sm_shs_q  <= sa_shs_q;
+    end
     if (sp_ce) begin : sp_set
-      // sp: the pixel range x_start = max(fce, 0), x_end = min(fcf, width), from sa's copy of
+      // sp: the pixel range x_start = max(fce, 0), x_end = min(fcf, width), from sm's copy of
       // the span. The clamped ends keep LB bits: beyond them the span is empty. sp registers
-      // each compare on its own (its carry chain straight into a flip-flop: sa's copy is placed
-      // by the reciprocal's RAM, far from here); sh applies them (sp_xe_clip_q, sp_off_q).
-      sp_span_q.eol      <= sa_span_q.eol;
-      sp_span_q.empty    <= sa_span_q.fcf <= sa_span_q.fce;
-      sp_span_q.poly     <= sa_span_q.poly;
-      sp_span_q.material <= sa_span_q.material;
-      sp_span_q.xs       <= sa_span_q.fce[PCB-1] ? '0 : LB'(sa_span_q.fce);
-      sp_span_q.xe       <= LB'(sa_span_q.fcf);
-      sp_span_q.e        <= sa_span_q.e;
-      sp_span_q.delta    <= sa_span_q.delta;
-      sp_xe_clip_q <= sa_span_q.fcf > $signed(PCB'(width_i));
+      // each compare on its own (its carry chain straight into a flip-flop: the span's copy
+      // was placed by the reciprocal's RAM, far from here); sh applies them (sp_xe_clip_q, sp_off_q).
+      sp_span_q.eol      <= sm_span_q.eol;
+      sp_span_q.empty    <= sm_span_q.fcf <= sm_span_q.fce;
+      sp_span_q.poly     <= sm_span_q.poly;
+      sp_span_q.material <= sm_span_q.material;
+      sp_span_q.xs       <= sm_span_q.fce[PCB-1] ? '0 : LB'(sm_span_q.fce);
+      sp_span_q.xe       <= LB'(sm_span_q.fcf);
+      sp_span_q.e        <= sm_span_q.e;
+      sp_span_q.delta    <= sm_span_q.delta;
+      sp_xe_clip_q <= sm_span_q.fcf > $signed(PCB'(width_i));
       // empty = min(fcf, width) <= max(fce, 0), spread into four compares of the unclamped ends
       // (through the clamps it was the block's longest path): fcf <= fce above, the rest here.
-      sp_off_q <= {sa_span_q.fcf <= 0, $signed(PCB'(width_i)) <= sa_span_q.fce, width_i == '0};
-      sp_sha_q  <= sa_sha_q;
-      sp_shs_q  <= sa_shs_q;
-      sp_pa_q   <= APBits'({sa_pa11_q, sa_pa00_q}) + (APBits'(sa_pa01_q) << MSplit)
-                 + (APBits'(sa_pa10_q) << MSplit);
+      sp_off_q <= {sm_span_q.fcf <= 0, $signed(PCB'(width_i)) <= sm_span_q.fce, width_i == '0};
+      sp_sha_q  <= sm_sha_q;
+      sp_shs_q  <= sm_shs_q;
+      sp_pa_q   <= APBits'({sm_pa11_q, sm_pa00_q}) + (APBits'(sm_pa01_q) << MSplit)
+                 + (APBits'(sm_pa10_q) << MSplit);
     end
     if (sh_ce) begin
       sh_span_q       <= sp_span_q;
@@ -423,8 +437,9 @@ module segment_interpolator #(
     logic [K*PSB-1:0]      pps_q;       // in sp
     logic [K*PVB-1:0]      ppv_q;       // in sv
     // Piece k of the delta at bit MSplit k: MSplit unsigned bits, the top one TW signed bits (the
-    // multiplier sign-extends it). sa takes the delta leaving the reciprocal, sc the delta in sb;
-    // each partial product is one mul18_reg, registered in its block (see u_pa00), and its pair's
+    // multiplier sign-extends it). sa takes the delta leaving the reciprocal (into
+    // the blocks' operand registers; the products are sm's), sc the delta in sb; each partial
+    // product is one mul18_reg, registered in its block (see u_pa00), and its pair's
     // add reads the two blocks' outputs straight.
     for (genvar k = 0; k < K; k++) begin : g_piece
       localparam bit          Top = (k == K - 1);
@@ -432,10 +447,12 @@ module segment_interpolator #(
       logic [Q0B-1:0]  ps0, pv0;  // x_k times the low part of recip / alpha0
       logic [Q1B-1:0]  ps1;       // x_k times recip's high part
       logic [QV1B-1:0] pv1;       // x_k times alpha0's high part
-      mul18_reg #(.ABits(PB), .ASigned(Top), .BBits(MSplit), .PBits(Q0B)) u_ps0 (
-        .clk_i, .ce_i(sa_ce), .a_i(rc_span.delta[Dl + MSplit*k +: PB]), .b_i(rc_r0), .p_o(ps0));
-      mul18_reg #(.ABits(PB), .ASigned(Top), .BBits(RHi), .PBits(Q1B)) u_ps1 (
-        .clk_i, .ce_i(sa_ce), .a_i(rc_span.delta[Dl + MSplit*k +: PB]), .b_i(rc_r1), .p_o(ps1));
+      mul18_reg #(.ABits(PB), .ASigned(Top), .BBits(MSplit), .PBits(Q0B), .InReg(1'b1)) u_ps0 (
+        .clk_i, .ce_i({sm_ce, sa_ce}), .a_i(rc_span.delta[Dl + MSplit*k +: PB]), .b_i(rc_r0),
+        .p_o(ps0));
+      mul18_reg #(.ABits(PB), .ASigned(Top), .BBits(RHi), .PBits(Q1B), .InReg(1'b1)) u_ps1 (
+        .clk_i, .ce_i({sm_ce, sa_ce}), .a_i(rc_span.delta[Dl + MSplit*k +: PB]), .b_i(rc_r1),
+        .p_o(ps1));
       mul18_reg #(.ABits(PB), .ASigned(Top), .BBits(MSplit), .PBits(Q0B)) u_pv0 (
         .clk_i, .ce_i(sc_ce), .a_i(sb_span_q.delta[Dl + MSplit*k +: PB]), .b_i(sb_a0), .p_o(pv0));
       mul18_reg #(.ABits(PB), .ASigned(Top), .BBits(AHi), .PBits(QV1B)) u_pv1 (
@@ -495,6 +512,7 @@ module segment_interpolator #(
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       sa_valid_q <= 1'b0;
+      sm_valid_q <= 1'b0;
       sp_valid_q <= 1'b0;
       sh_valid_q <= 1'b0;
       sb_valid_q <= 1'b0;
@@ -503,7 +521,8 @@ module segment_interpolator #(
       sd_valid_q <= 1'b0;
     end else if (tail_en) begin
       sa_valid_q <= rc_valid;
-      sp_valid_q <= sa_valid_q;
+      sm_valid_q <= sa_valid_q;
+      sp_valid_q <= sm_valid_q;
       sh_valid_q <= sp_valid_q;
       sb_valid_q <= sh_valid_q;
       sc_valid_q <= sb_valid_q;

@@ -2,7 +2,8 @@
 // edge-record stream to every pixel of the frame in raster order: active_edge_list
 // (+ edge_incrementer) -> segment_former -> segment skid (registered ready) ->
 // segment_interpolator (span setup, span_reciprocal, stepper) -> [Phong = 1: normalizer ->
-// material table -> phong_shader] -> fragment queue -> scanline_buffer.
+// material table -> phong_shader] -> fragment queue -> scanline_buffer [-> smoother] -> pixel
+// skid (registered ready).
 // Every stage boundary is valid/ready. Phong = 0 (Gouraud): channels 2..4 are R, G, B shades
 // and the fragment's shade goes straight to the depth test. Phong = 1: they are the vertex
 // normal; each fragment's interpolated normal is normalized and shaded by Phong's eq. (3) with
@@ -105,6 +106,10 @@ module watkins_top #(
   watkins_pkg::rgb_t background_q;
   logic          sparse_q, tie_submission_q;
   logic          smooth_on;  // this frame is smoothed (never, without a smoother)
+  // The pixel stream before the output skid (u_pixel_skid).
+  watkins_pkg::rgb_t px_rgb;
+  logic              px_covered, px_last, px_valid, px_ready;
+  logic [LB-1:0]     px_x, px_y;
 
   assign start = edge_valid_i && !frame_busy_q && !ael_busy;
 
@@ -433,7 +438,7 @@ module watkins_top #(
     always_ff @(posedge clk_i) begin
       if (start) smooth_w_q <= smooth_w_i;
     end
-    assign smooth_on = smooth_w_q != '0;
+    assign smooth_on  = smooth_w_q != '0;
 
     watkins_pkg::rgb_t sm_rgb;
     logic              sm_covered, sm_last, sm_valid, sm_ready;
@@ -457,34 +462,55 @@ module watkins_top #(
       .y_o      (sm_y),
       .last_o   (sm_last),
       .valid_o  (sm_valid),
-      .ready_i  (pixel_ready_i)
+      .ready_i  (px_ready)
     );
 
-    assign sb_ready        = smooth_on ? sm_ready : pixel_ready_i;
-    assign pixel_rgb_o     = smooth_on ? sm_rgb : sb_rgb;
-    assign pixel_covered_o = smooth_on ? sm_covered : sb_covered;
-    assign pixel_x_o       = smooth_on ? sm_x : sb_x;
-    assign pixel_y_o       = smooth_on ? sm_y : sb_y;
-    assign pixel_last_o    = smooth_on ? sm_last : sb_last;
-    assign pixel_valid_o   = smooth_on ? sm_valid : sb_valid;
+    assign sb_ready   = smooth_on ? sm_ready : px_ready;
+    assign px_rgb     = smooth_on ? sm_rgb : sb_rgb;
+    assign px_covered = smooth_on ? sm_covered : sb_covered;
+    assign px_x       = smooth_on ? sm_x : sb_x;
+    assign px_y       = smooth_on ? sm_y : sb_y;
+    assign px_last    = smooth_on ? sm_last : sb_last;
+    assign px_valid   = smooth_on ? sm_valid : sb_valid;
 
     // The smoother is empty between frames: a frame without smoothing never sees its output.
     `WATKINS_ASSERT(a_smooth_idle, !smooth_on |-> !sm_valid)
-    `WATKINS_COVER(c_smoothed_frame, smooth_on && pixel_valid_o && pixel_ready_i && pixel_last_o)
+    `WATKINS_COVER(c_smoothed_frame, smooth_on && px_valid && px_ready && px_last)
   end else begin : g_no_smoother
-    assign smooth_on       = 1'b0;
-    assign sb_ready        = pixel_ready_i;
-    assign pixel_rgb_o     = sb_rgb;
-    assign pixel_covered_o = sb_covered;
-    assign pixel_x_o       = sb_x;
-    assign pixel_y_o       = sb_y;
-    assign pixel_last_o    = sb_last;
-    assign pixel_valid_o   = sb_valid;
+    assign smooth_on  = 1'b0;
+    assign sb_ready   = px_ready;
+    assign px_rgb     = sb_rgb;
+    assign px_covered = sb_covered;
+    assign px_x       = sb_x;
+    assign px_y       = sb_y;
+    assign px_last    = sb_last;
+    assign px_valid   = sb_valid;
     // Nothing here could smooth the frame: its driver must not ask (the benches refuse first).
     logic unused_smooth_w;
     assign unused_smooth_w = ^smooth_w_i;
     `WATKINS_ASSERT(a_no_smoother, start |-> smooth_w_i == '0)
   end
+
+  // ------------------------------------------------------------ pixel skid
+  // A registered ready at the pixel output (stream_skid, latency 0): the consumer's ready ends
+  // at the skid's flops instead of reaching the scanline buffer's read step and its fan-out (the
+  // reader's word registers' enables: pixel_ready_i -> rd_step -> rx_word_q, 9.0 of 10.5 ns
+  // routing, was the sized Phong top's path on seed 3 with branch ael3). A pixel refused waits
+  // in the skid; the buffer sees it refused a clock later. With pixel_ready_i high it never
+  // fills: no cycle changes (model/twins/cycle_model.hpp assumes no output stalls).
+  localparam int unsigned PixelBits = watkins_pkg::RgbBits + 2 + 2 * LB;
+
+  stream_skid #(
+    .DataBits(PixelBits)
+  ) u_pixel_skid (
+    .clk_i, .rst_ni,
+    .data_i ({px_rgb, px_covered, px_x, px_y, px_last}),
+    .valid_i(px_valid),
+    .ready_o(px_ready),
+    .data_o ({pixel_rgb_o, pixel_covered_o, pixel_x_o, pixel_y_o, pixel_last_o}),
+    .valid_o(pixel_valid_o),
+    .ready_i(pixel_ready_i)
+  );
 
   `WATKINS_ASSERT_HOLD(a_edge_hold, edge_valid_i, edge_ready_o, {edge_i, edge_eof_i})
   `WATKINS_ASSERT_HOLD(a_pixel_hold, pixel_valid_o, pixel_ready_i, {pixel_rgb_o, pixel_covered_o,

@@ -28,23 +28,23 @@ PreparedScene with_shading(PreparedScene p, ShadingMode mode) {
 // An empty W x H frame, by hand. The active-edge list: cycle 0 starts the frame, cycle 1 decides
 // the swap to line 1 (the stream's head is its EOF beat), cycle 2 swaps, and from cycle 3 each
 // line is its end-of-line marker (one cycle), the swap's decision (one) and the swap (one): 3
-// cycles per line. The first marker reaches the line buffer at cycle 43: segment former 4 (its
+// cycles per line. The first marker reaches the line buffer at cycle 44: segment former 4 (its
 // input register), 5 (its pairing register) and 6 (its output), s0 7, span_reciprocal 8..33,
-// sa/sp/sh/sb/sc/sv/sd 34..40, FIFO 41, the stepper's output register 42, the fragment queue 43.
-// Full-frame: each line's read-out (W cycles) hides the next marker, so the last pixel is read at
-// 43 + H*W and taken one cycle later: H*W + 45 cycles counting cycle 0. Sparse: an empty line is
-// one read step (two cycles after its marker: the swap hands the search's registers over in
+// sa/sm/sp/sh/sb/sc/sv/sd 34..41, FIFO 42, the stepper's output register 43, the fragment queue
+// 44. Full-frame: each line's read-out (W cycles) hides the next marker, so the last pixel is read
+// at 44 + H*W and taken one cycle later: H*W + 46 cycles counting cycle 0. Sparse: an empty line
+// is one read step (two cycles after its marker: the swap hands the search's registers over in
 // between), so the list's 3 cycles per line set the pace: the last line's marker arrives at
-// 43 + 3(H-1), is read two cycles later and taken the next: 3H + 44. The Phong top's 57 stages
+// 44 + 3(H-1), is read two cycles later and taken the next: 3H + 45. The Phong top's 57 stages
 // (normalizer 16, shader 41) delay it all by 57.
 TEST(CycleModel, EmptyFrameByHand) {
   for (const auto& [w, h] : {std::pair{13, 5}, std::pair{320, 240}, std::pair{1, 1}, std::pair{40, 60}}) {
     const PreparedScene g = prepare(screen(w, h, {}, "empty"));
     const PreparedScene p = with_shading(g, ShadingMode::Phong);
-    EXPECT_EQ(predict_cycles(g, PixelOutput::FullFrame).cycles, w * h + 45) << w << "x" << h;
-    EXPECT_EQ(predict_cycles(p, PixelOutput::FullFrame).cycles, w * h + 45 + 57) << w << "x" << h;
-    EXPECT_EQ(predict_cycles(g, PixelOutput::Sparse).cycles, 3 * h + 44) << w << "x" << h;
-    EXPECT_EQ(predict_cycles(p, PixelOutput::Sparse).cycles, 3 * h + 44 + 57) << w << "x" << h;
+    EXPECT_EQ(predict_cycles(g, PixelOutput::FullFrame).cycles, w * h + 46) << w << "x" << h;
+    EXPECT_EQ(predict_cycles(p, PixelOutput::FullFrame).cycles, w * h + 46 + 57) << w << "x" << h;
+    EXPECT_EQ(predict_cycles(g, PixelOutput::Sparse).cycles, 3 * h + 45) << w << "x" << h;
+    EXPECT_EQ(predict_cycles(p, PixelOutput::Sparse).cycles, 3 * h + 45 + 57) << w << "x" << h;
     EXPECT_EQ(predict_cycles(g, PixelOutput::FullFrame).pixels, w * h);
     EXPECT_EQ(predict_cycles(g, PixelOutput::Sparse).pixels, 1);  // the terminating beat
   }

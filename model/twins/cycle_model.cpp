@@ -133,7 +133,7 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
   std::uint64_t recip_valid = 0;
   const std::uint64_t recip_mask = (std::uint64_t{1} << RecipStages) - 1;
   std::size_t recip_out = 0;  // items that left the reciprocal
-  // The setup stages after the reciprocal (sa, sp, sh, sb, sc, sv, sd), all enabled by tail_en; the
+  // The setup stages after the reciprocal (sa, sm, sp, sh, sb, sc, sv, sd), all enabled by tail_en; the
   // last is sd.
   std::array<bool, InterpTailStages> tail_valid{};
   std::array<std::size_t, InterpTailStages> tail_item{};

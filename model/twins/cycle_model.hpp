@@ -25,7 +25,7 @@ namespace watkins {
 namespace rtl_timing {
 constexpr int RecipStages = fmt::RecipBits + 2;  // span_reciprocal: normalize + R+1 quotient bits
 constexpr int InterpFifoDepth = 4;               // segment_interpolator's FifoDepth
-constexpr int InterpTailStages = 7;              // segment_interpolator: sa, sp, sh, sb, sc, sv, sd after the reciprocal
+constexpr int InterpTailStages = 8;              // segment_interpolator: sa, sm, sp, sh, sb, sc, sv, sd after the reciprocal
 // normalizer (16): squares, sum, rsqrt_unit (fmt::RsqrtStages), partial products, sum, shift, round
 constexpr int NormalizerStages = 2 + fmt::RsqrtStages + 4;
 constexpr int ShaderStages = 41;                 // phong_shader: dots (3), cos(s) (3), 8 powers (4 each), 3 out
