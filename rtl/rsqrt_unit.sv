@@ -4,15 +4,15 @@
 // RsqrtUnit::rsqrt_mant (model/twins/rsqrt_unit.hpp). Latency Stages = watkins_pkg::RsqrtStages
 // (10: the stages written below; the normalizer, the benches, the proof and the cycle model derive
 // theirs from that one constant), every stage registered; the leading-one search (stage 1) and the
-// even shift (stage 2, straight into the seed ROM's address) are a clock apart; the seed ROM's
-// output is registered once more before y0^2 (the ROM's output also loads y0^2's multiplier
-// block's operand registers); y0^2 enters the next products' blocks through their operand
-// registers (no block's output feeds a block's multiplier); the two Newton-Raphson products, wider
-// than an 18 x 18 multiplier, are registered as partial products (the first's copied into the
-// fabric a stage later, then summed; the second's summed and rounded a stage later); no
-// handshake: ce_i[k] loads stage k (the parent owns valid/ready and the stall, and gives each
-// stage its clock enable: its stall_pipe's ce_o, low for a bubble, whose values nobody reads, so a
-// simulator computes valid beats only; a unit bench may drive them all together).
+// even shift (stage 2, straight into the seed ROM's address) are a clock apart; the ROM holds
+// y0^2 beside y0 (tabulated, not multiplied), its output registered in the fabric twice more
+// (stages 3 and 4); y0^2 enters the next products' blocks through their operand registers (no
+// route from a block RAM or a block's output ends at a multiplier); the two Newton-Raphson
+// products, wider than an 18 x 18 multiplier, are registered as partial products (the first's
+// copied into the fabric a stage later, then summed; the second's summed and rounded a stage
+// later); no handshake: ce_i[k] loads stage k (the parent owns valid/ready and the stall, and
+// gives each stage its clock enable: its stall_pipe's ce_o, low for a bubble, whose values nobody
+// reads, so a simulator computes valid beats only; a unit bench may drive them all together).
 module rsqrt_unit #(
   localparam int MBits     = 2 * watkins_pkg::NormalInBits,  // m = Nx^2 + Ny^2 + Nz^2, exact
   localparam int RsqrtBits = watkins_pkg::RsqrtBits,         // F: fraction bits of y
@@ -62,14 +62,20 @@ module rsqrt_unit #(
   endfunction
   /* verilator lint_on UNUSEDSIGNAL */
 
-  // The seed ROM, one row per P-bit index, filled at elaboration (yosys and Verilator alike).
-  // Rows below 2^(P-2) hold 0: only the null vector (mant = 0) reads them, and y = 0 then makes
-  // every unit component 0 with no special case. Read synchronously (stage 2's register), so
-  // synthesis maps it to block RAM (iCE40: 4 x SB_RAM40_4K) instead of a 15-bit 1024-way mux.
-  logic [SeedBits:0] seed_rom [1 << IndexBits];
+  // The seed ROM, one row per P-bit index, {y0^2, y0}, filled at elaboration (the same rows in
+  // synthesis and simulation). y0^2 (2T fraction bits, exact) is tabulated beside the seed
+  // instead of multiplied: the multiplier's operands came straight from the block RAM, whose
+  // 5.6 ns clock-to-out and a 4.9 ns route across the die to the multiplier block were the Phong
+  // top's path on seed 1 (branch ael4); now the RAM's output ends at fabric registers. Rows below
+  // 2^(P-2) hold 0: only the null vector (mant = 0) reads them, and y = 0 then makes every unit
+  // component 0 with no special case. Read synchronously (stage 2's register), so synthesis maps
+  // it to block RAM (ECP5: 3 x DP16KD; iCE40: 12 x SB_RAM40_4K) instead of a 1024-way mux.
+  localparam int RowBits = 3 * SeedBits + 3;  // y0^2 (2T + 2 bits) and y0 (T + 1 bits)
+  logic [RowBits-1:0] seed_rom [1 << IndexBits];
   initial begin
     for (int r = 0; r < (1 << (IndexBits - 2)); r++) seed_rom[r] = '0;
-    for (int r = 1 << (IndexBits - 2); r < (1 << IndexBits); r++) seed_rom[r] = seed_fn(r);
+    for (int r = 1 << (IndexBits - 2); r < (1 << IndexBits); r++)
+      seed_rom[r] = {(2 * SeedBits + 2)'(seed_fn(r)) * (2 * SeedBits + 2)'(seed_fn(r)), seed_fn(r)};
   end
 
   // The per-stage registers are plain variables (jN_q: stage N's), not arrays: a simulator
@@ -95,6 +101,7 @@ module rsqrt_unit #(
   // ---- stage 2: the shift m << 2j (only its top W bits are kept: truncation, as the model) and
   // the seed y0 read at its top P bits: the ROM's address comes from the shift's multiplexers ---
   logic [SeedBits:0]    y0_2_q, y0_3_q, y0_4_q, y0_5_q, y0_6_q, y0_7_q, y0_8_q;
+  logic [2*SeedBits+1:0] y0sq_2_q, y0sq_3_q;  // y0^2 from the ROM, 2T fraction bits
   logic [MantBits:0]    mc2_q, mc3_q, mc4_q;  // m'c = mant + half an ulp: {mant, 1}, W+1 fraction bits
   always_ff @(posedge clk_i) if (ce_i[2]) begin
     /* verilator lint_off UNUSEDSIGNAL */
@@ -103,30 +110,27 @@ module rsqrt_unit #(
     logic [MantBits-1:0] mant;  // 0 for m = 0: reads ROM default 0 below
     shifted = m1_q << {j1_q, 1'b0};
     mant    = shifted[MBits-1 -: MantBits];
-    y0_2_q <= seed_rom[mant[MantBits-1 -: IndexBits]];
+    {y0sq_2_q, y0_2_q} <= seed_rom[mant[MantBits-1 -: IndexBits]];
     mc2_q  <= {mant, 1'b1};
     j2_q   <= j1_q;
     nul2_q <= nul1_q;
   end
 
-  // ---- stage 3: the seed registered again (y0_3_q: a delay for the later stages) ----------------
-  // The block RAM's clock-to-out (5.8 ns on the ECP5) and the multiplier are not in one clock (the
-  // normalizer's path at 80.7 MHz): y0^2's block registers the ROM's output in its own operand
-  // registers (stage 4 below), so the path to watch is the RAM's clock-to-out and its route.
+  // ---- stage 3: the seed and its square registered again -----------------------------------
+  // The block RAM's clock-to-out (5.6-5.8 ns on the ECP5) leaves room only for a short route:
+  // these registers, placed beside the RAM, are all it feeds.
   always_ff @(posedge clk_i) if (ce_i[3]) begin
     y0_3_q <= y0_2_q;
+    y0sq_3_q <= y0sq_2_q;
     mc3_q  <= mc2_q;
     j3_q   <= j2_q;
     nul3_q <= nul2_q;
   end
 
-  // ---- stage 4: y0^2, exact (2T fraction bits) --------------------------------------------
-  // The block's operand registers load the ROM's output in stage 3, as y0_3_q does beside them
-  // (twins: no latency), so no fabric route is in front of the multiplier's 3.5 ns input setup.
+  // ---- stage 4: y0^2 registered once more (the multiplier's stage before the table held it) --
   logic [2*SeedBits+1:0] y0sq_q;
-  mul18_reg #(.ABits(SeedBits+1), .BBits(SeedBits+1), .InReg(1'b1)) u_y0sq (
-    .clk_i, .ce_i(ce_i[4:3]), .a_i(y0_2_q), .b_i(y0_2_q), .p_o(y0sq_q));
   always_ff @(posedge clk_i) if (ce_i[4]) begin
+    y0sq_q <= y0sq_3_q;
     y0_4_q <= y0_3_q;
     mc4_q  <= mc3_q;
     j4_q   <= j3_q;

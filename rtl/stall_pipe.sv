@@ -8,7 +8,11 @@
 // way (a_en); LookAhead keeps the consumer's ready off the path into this pipe's enable and out
 // through ready_o to the producer (in the Phong top, the fragment queue's ready through the
 // shader and the normalizer into the interpolator was one 13.9 ns path, 11.5 of it routing).
-// en_next_o, en_o on the next clock, is the ready_next_i of a LookAhead producer.
+// en_next_o, en_o on the next clock, is the ready_next_i of a LookAhead producer. With LookAhead
+// the flop is kept in copies, one per CopyStages stages, each enabling its own stages' ce_o:
+// one flop whose route reached every stage's enable across a deep pipe was a top's critical
+// path (the span reciprocal's 26 stages: en_q -> a 6.0 ns route -> ce[23], sized Gouraud top,
+// branch ael4).
 // PayloadRam = 0: the payload (not reset) shifts through a register per stage. PayloadRam = 1
 // (Stages >= 2): the payload is written once into a small RAM as it enters and read out in
 // order (the pipe never reorders), synchronous read one clock ahead into payload_o's register
@@ -38,6 +42,7 @@ module stall_pipe #(
   output logic [Stages-1:0]      ce_o          // stage s loads: en_o and the beat entering it is valid
 );
   logic [Stages-1:0]      valid_q;
+  logic [Stages-1:0]      en_stage;  // en_o as stage s's clock enable reads it (a copy of it)
 
   // The last stage's valid on the next clock, and en_o then.
   logic valid_next;
@@ -48,21 +53,39 @@ module stall_pipe #(
   end
   assign en_next_o = ready_next_i || !valid_next;
   if (LookAhead) begin : g_ahead
-    logic en_q;  // ready_i || !valid_q[Stages-1], a clock ahead (a_en)
-    always_ff @(posedge clk_i) begin
-      if (!rst_ni) en_q <= 1'b1;  // no beat in flight
-      else en_q <= en_next_o;
+    // Copy c enables stages [c CopyStages, (c + 1) CopyStages); copy 0 is en_o. Each copy's next
+    // state is computed from the copy itself (its own pick of the last valid), so the copies are
+    // not identical logic and yosys keeps them apart (opt_merge merges equal flops).
+    localparam int unsigned CopyStages = 8;
+    localparam int unsigned Copies     = (Stages + CopyStages - 1) / CopyStages;
+    logic [Copies-1:0] en_q;  // each ready_i || !valid_q[Stages-1], a clock ahead (a_en, a_en_copies)
+    for (genvar c = 0; c < Copies; c++) begin : g_copy
+      logic valid_next_c;  // valid_next, picked by this copy
+      if (Stages > 1) begin : g_pick
+        assign valid_next_c = en_q[c] ? valid_q[Stages-2] : valid_q[Stages-1];
+      end else begin : g_pick1
+        assign valid_next_c = en_q[c] ? valid_i : valid_q[0];
+      end
+      always_ff @(posedge clk_i) begin
+        if (!rst_ni) en_q[c] <= 1'b1;  // no beat in flight
+        else en_q[c] <= ready_next_i || !valid_next_c;
+      end
     end
-    assign en_o = en_q;
+    for (genvar s = 0; s < Stages; s++) begin : g_stage_en
+      assign en_stage[s] = en_q[s / CopyStages];
+    end
+    assign en_o = en_q[0];
+    `WATKINS_ASSERT(a_en_copies, en_q == {Copies{en_q[0]}})
   end else begin : g_now
-    assign en_o = ready_i || !valid_q[Stages-1];
+    assign en_o     = ready_i || !valid_q[Stages-1];
+    assign en_stage = {Stages{en_o}};
   end
   assign ready_o = en_o;
   // Per-stage clock enables for a parent that loads a stage's datapath registers only for a
   // valid beat (a bubble leaves them as they were: no value a valid beat reads changes, and a
-  // simulator skips the stage). One LUT from en_o's own inputs.
+  // simulator skips the stage). One LUT from en_o's own inputs (with LookAhead, its stage's copy).
   assign valid_q_o = valid_q;
-  assign ce_o      = {Stages{en_o}} & ((valid_q << 1) | Stages'(valid_i));
+  assign ce_o      = en_stage & ((valid_q << 1) | Stages'(valid_i));
 
   // A shift rather than {valid_q[Stages-2:0], valid_i}, which Stages = 1 would not allow.
   always_ff @(posedge clk_i) begin
@@ -84,7 +107,11 @@ module stall_pipe #(
 
     // rd_q + 1 kept in its own register, so the next read pointer is a 2:1 pick by the handshake
     // (ready_i is the parent's stall signal, with a large fan-out) and no add follows it.
-    assign rd_next = (valid_o && ready_i) ? rd_inc_q : rd_q;
+    // valid_o && en_o is valid_o && ready_i (en_o = ready_i || !valid_o): with LookAhead it reads
+    // this pipe's own flop, not the parent's stall, whose LUT (shared with the parent's first
+    // stage enable, tail_en && valid_o, as yosys merges equal logic) sat among that stage's
+    // registers (tail_en_q -> sa_ce -> rd_next -> rd_inc_q, 10.5 ns, sized Gouraud top, ael4).
+    assign rd_next = (valid_o && en_o) ? rd_inc_q : rd_q;
     always_ff @(posedge clk_i) begin
       if (!rst_ni) begin
         wr_q     <= '0;

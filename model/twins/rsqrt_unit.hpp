@@ -93,7 +93,8 @@ inline RsqrtUnit::Mantissa RsqrtUnit::normalize_mantissa(std::uint64_t m) {
 inline std::uint32_t RsqrtUnit::rsqrt_mant(std::uint32_t mant) {
   const std::uint64_t mc = (static_cast<std::uint64_t>(mant) << 1) | 1u;  // W+1 fraction bits
   const std::uint64_t y0 = RsqrtSeedRom[mant >> (W - P)];                  // T fraction bits
-  const std::uint64_t y0sq = y0 * y0;                                     // 2T fraction bits
+  // 2T fraction bits, exact: the RTL's ROM holds it beside y0 (tabulated, not multiplied).
+  const std::uint64_t y0sq = y0 * y0;
   // 64 bits hold every product: m'c < 2^(W+2), y0^2 < 2^(2T+2), y0 u < 2^(T+1) 2^(G+2).
   // Every word here is >= 0 (u too: m'c y0^2 < 2 for every mant, tests/test_phong_fast_path.cpp
   // runs them all), so round_shift's "add half, shift" is an unsigned add and shift.
