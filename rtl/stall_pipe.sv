@@ -25,7 +25,8 @@ module stall_pipe #(
   parameter int unsigned Stages      = 2,  // pipeline depth, >= 1
   parameter int unsigned PayloadBits = 1,  // carried alongside, unchanged
   parameter bit          PayloadRam  = 1'b0, // 1: keep the payload in a RAM, not in every stage
-  parameter bit          LookAhead   = 1'b0  // 1: en_o from a flop loaded from ready_next_i
+  parameter bit          LookAhead   = 1'b0, // 1: en_o from a flop loaded from ready_next_i
+  parameter int unsigned CopyStages  = 8     // LookAhead: stages enabled by each copy of the flop
 ) (
   input  logic                   clk_i,
   input  logic                   rst_ni,       // active-low synchronous reset (valid only)
@@ -56,7 +57,6 @@ module stall_pipe #(
     // Copy c enables stages [c CopyStages, (c + 1) CopyStages); copy 0 is en_o. Each copy's next
     // state is computed from the copy itself (its own pick of the last valid), so the copies are
     // not identical logic and yosys keeps them apart (opt_merge merges equal flops).
-    localparam int unsigned CopyStages = 8;
     localparam int unsigned Copies     = (Stages + CopyStages - 1) / CopyStages;
     logic [Copies-1:0] en_q;  // each ready_i || !valid_q[Stages-1], a clock ahead (a_en, a_en_copies)
     for (genvar c = 0; c < Copies; c++) begin : g_copy

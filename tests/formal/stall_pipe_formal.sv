@@ -3,14 +3,16 @@
 // once, in order, unchanged, keeps ready_o = en_o = ready_i || !valid_o, and holds at most Stages
 // beats. Each input beat carries its sequence number as payload; stall_pipe_checker ties the
 // stages to it. LookAhead: the environment gives ready_i a clock ahead (ready_next_i), and the
-// enable flop must equal ready_i || !valid_o on every clock.
+// enable flop must equal ready_i || !valid_o on every clock, and so must each of its copies (the
+// per-stage enables below read them).
 `include "formal_stream.svh"
 
 module stall_pipe_formal #(
   parameter int unsigned Stages      = 3,
   parameter int unsigned PayloadBits = 3,     // > log2(Stages + 1)
   parameter bit          PayloadRam  = 1'b0,
-  parameter bit          LookAhead   = 1'b0
+  parameter bit          LookAhead   = 1'b0,
+  parameter int unsigned CopyStages  = 8      // LookAhead: < Stages gives the enable flop copies
 ) (
   input  logic                   clk_i,
   input  logic                   rst_ni,
@@ -26,7 +28,7 @@ module stall_pipe_formal #(
   logic [PayloadBits-1:0] payload_o;
   logic [Stages-1:0]      valid_q_o, ce_o;
   stall_pipe #(.Stages(Stages), .PayloadBits(PayloadBits), .PayloadRam(PayloadRam),
-               .LookAhead(LookAhead)) u_dut (.*);
+               .LookAhead(LookAhead), .CopyStages(CopyStages)) u_dut (.*);
 
   // The per-stage enables: a stage loads exactly when the pipe advances and the beat entering it
   // (on the input, or in the stage before) is valid; the last stage's valid is valid_o.
