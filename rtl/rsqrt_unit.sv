@@ -128,9 +128,9 @@ module rsqrt_unit #(
   end
 
   // ---- stage 4: y0^2 registered once more (the multiplier's stage before the table held it) --
-  logic [2*SeedBits+1:0] y0sq_q;
+  logic [2*SeedBits+1:0] y0sq_4_q;
   always_ff @(posedge clk_i) if (ce_i[4]) begin
-    y0sq_q <= y0sq_3_q;
+    y0sq_4_q <= y0sq_3_q;
     y0_4_q <= y0_3_q;
     mc4_q  <= mc3_q;
     j4_q   <= j3_q;
@@ -165,7 +165,7 @@ module rsqrt_unit #(
   logic [AHi+PSplit-1:0] p10_q;
   logic [AHi+BHi-1:0]    p11_q;
   assign {a1, a0} = mc4_q;
-  assign {b1, b0} = y0sq_q;
+  assign {b1, b0} = y0sq_4_q;
   mul18_reg #(.ABits(PSplit), .BBits(PSplit), .InReg(1'b1)) u_p00 (
     .clk_i, .ce_i(ce_i[6:5]), .a_i(a0), .b_i(b0), .p_o(p00_q));
   mul18_reg #(.ABits(PSplit), .BBits(BHi), .InReg(1'b1)) u_p01 (

@@ -45,13 +45,13 @@ module stall_pipe #(
   logic [Stages-1:0]      valid_q;
   logic [Stages-1:0]      en_stage;  // en_o as stage s's clock enable reads it (a copy of it)
 
+  // The valid entering each stage (on the input, or in the stage before): the stage loads it
+  // when the pipe advances (ce_o), and the last stage's is its valid on the next clock then.
+  logic [Stages-1:0] entering;
+  assign entering = (valid_q << 1) | Stages'(valid_i);
   // The last stage's valid on the next clock, and en_o then.
   logic valid_next;
-  if (Stages > 1) begin : g_next
-    assign valid_next = en_o ? valid_q[Stages-2] : valid_q[Stages-1];
-  end else begin : g_next1
-    assign valid_next = en_o ? valid_i : valid_q[0];
-  end
+  assign valid_next = en_o ? entering[Stages-1] : valid_q[Stages-1];
   assign en_next_o = ready_next_i || !valid_next;
   if (LookAhead) begin : g_ahead
     // Copy c enables stages [c CopyStages, (c + 1) CopyStages); copy 0 is en_o. Each copy's next
@@ -61,11 +61,7 @@ module stall_pipe #(
     logic [Copies-1:0] en_q;  // each ready_i || !valid_q[Stages-1], a clock ahead (a_en, a_en_copies)
     for (genvar c = 0; c < Copies; c++) begin : g_copy
       logic valid_next_c;  // valid_next, picked by this copy
-      if (Stages > 1) begin : g_pick
-        assign valid_next_c = en_q[c] ? valid_q[Stages-2] : valid_q[Stages-1];
-      end else begin : g_pick1
-        assign valid_next_c = en_q[c] ? valid_i : valid_q[0];
-      end
+      assign valid_next_c = en_q[c] ? entering[Stages-1] : valid_q[Stages-1];
       always_ff @(posedge clk_i) begin
         if (!rst_ni) en_q[c] <= 1'b1;  // no beat in flight
         else en_q[c] <= ready_next_i || !valid_next_c;
@@ -85,12 +81,12 @@ module stall_pipe #(
   // valid beat (a bubble leaves them as they were: no value a valid beat reads changes, and a
   // simulator skips the stage). One LUT from en_o's own inputs (with LookAhead, its stage's copy).
   assign valid_q_o = valid_q;
-  assign ce_o      = en_stage & ((valid_q << 1) | Stages'(valid_i));
+  assign ce_o      = en_stage & entering;
 
   // A shift rather than {valid_q[Stages-2:0], valid_i}, which Stages = 1 would not allow.
   always_ff @(posedge clk_i) begin
     if (!rst_ni) valid_q <= '0;
-    else if (en_o) valid_q <= (valid_q << 1) | Stages'(valid_i);
+    else if (en_o) valid_q <= entering;
   end
 
   assign valid_o = valid_q[Stages-1];
