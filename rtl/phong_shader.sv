@@ -1,14 +1,14 @@
 // phong_shader: Phong's shading rule S = Cp [cos(i)(1-d) + d] + W cos(s)^n (Phong 1975 eq. 3)
 // per pixel, light and eye at infinity, cos(s) = R.E = 2(N.L)(N.E) - L.E (Phong's reflected
 // vector, eqs. 4-8), cos(s)^n by square-and-multiply over the 8 bits of n; bit-exact twin of
-// model/twins/phong_shader.hpp. Latency 41, one pixel per clock; every stage registers valid and
+// model/twins/phong_shader.hpp. Latency 42, one pixel per clock; every stage registers valid and
 // data; one global stall (stall_pipe): ready_o = ready_i || !valid_o (combinational from ready_i
 // and the output valid flop only; with LookAhead a flop loaded a clock ahead from ready_next_i).
 // Every product is registered on its own, in its multiplier block (mul18_reg: on the ECP5 the
 // MULT18X18D's output register), a product wider than one 18 x 18 multiplier as partial products,
 // the sums and roundings that use it one stage later (ECP5 MULT18 and iCE40 MAC16 timing); the
-// powers' operands also enter their blocks' registers a stage before the product (mul18_reg InReg)
-// and their partial products are copied into the fabric before the round. Each
+// operands of the powers and of the output's products also enter their blocks' registers a stage
+// before the product (mul18_reg InReg), and the powers' partial products are copied into the fabric before the round. Each
 // stage's registers load only when the beat entering it is valid (en && its valid: one LUT, as en
 // alone): a bubble's values are never read, so a simulator need not compute them (most clocks of a
 // frame carry bubbles); a valid beat's values are the same. light_i / eye_i are frame constants:
@@ -54,15 +54,16 @@ module phong_shader #(
   localparam int LW       = FW + 8 + 2;                     // a level at D + MF fraction bits, plus sum
   // Stages: 1 the dot products' six products, 2 their sums, 3 round, 4 cos(i)(N.E) and
   // cos(i)(1-d) as partial products, 5 their sums, 6 cos(s) and f, 7..38 the powers (an operand
-  // stage, a product stage, a copy stage and a round stage per bit of n), 39 Cp f and 255 W pow as
-  // partial products, 40 their sums, 41 round and saturate.
+  // stage, a product stage, a copy stage and a round stage per bit of n), 39 the operands of Cp f
+  // and 255 W pow into their multiplier blocks, 40 their partial products, 41 their sums, 42
+  // round and saturate.
   localparam int CosStage = 6;                              // acc0_q, base0_q, f0_q
   localparam int PowStages = 4;                             // a power's operands, product, copy, round
   // power k: stages PowFirst + 4k .. + 4k + 3
   localparam int PowFirst = CosStage + 1;
   // 38: g_pow[ShininessBits-1]'s round stage (fa_r_q)
   localparam int PowLast  = CosStage + PowStages * ShininessBits;
-  localparam int Stages   = PowLast + 3;                    // 41
+  localparam int Stages   = PowLast + 4;                    // 42
   // A product wider than an 18 x 18 multiplier is split at bit PSplit of an operand (17: the low
   // part fits the multiplier unsigned, with a zero sign bit), each partial product registered
   // straight from its block; x y = x1 y 2^PSplit + x0 y (and the same for both operands split).
@@ -102,7 +103,7 @@ module phong_shader #(
   // stage, not two or three (the Phong top's instructions per cycle). The same LUT.
   for (genvar i = 0; i < Stages; i++) begin : g_ce
     /* verilator lint_off UNUSEDSIGNAL */
-    logic [0:0] q;  // stage 39's: its registers are all in multiplier blocks
+    logic [0:0] q;  // stages 39 and 40: their registers are all in multiplier blocks
     /* verilator lint_on UNUSEDSIGNAL */
     assign q = ce[i];
   end
@@ -407,7 +408,11 @@ module phong_shader #(
   always_ff @(posedge clk_i) if (g_ce[PowLast-1].q[0])
     w255_q <= ((MaterialBits+8)'(w_last) << 8) - (MaterialBits+8)'(w_last);
 
-  // ---- stage 39: Cp f per channel and 255 W cos(s)^n, as partial products ----------------------
+  // ---- stages 39, 40: Cp f per channel and 255 W cos(s)^n, as partial products ---------------
+  // Stage 39 loads the operands into the multiplier blocks' registers (mul18_reg InReg), stage 40
+  // the products: the last power's f and acc (fa_r_q) otherwise reached the blocks' inputs over a
+  // route of up to 6.2 ns, in front of the multiplier's 3.5 ns setup (the Phong top's seed 2 at
+  // 98 MHz on the ECP5).
   // Channel c is byte c of rgb_t (B, G, R for c = 0, 1, 2) in Cp and in the shade alike: the
   // three channels are computed the same way, so the loop need not know which is which.
   // f (FW bits) and pow (P + 1 bits) are split at PSplit: two multiplier blocks each.
@@ -426,34 +431,34 @@ module phong_shader #(
   assign al  = g_pow[ShininessBits-1].fa_r_q[FA-1:0];
   assign cpl = g_pow[ShininessBits-1].m_r_q[MCp +: RB];
   for (genvar c = 0; c < 3; c++) begin : g_df
-    mul18_reg #(.ABits(8), .BBits(PSplit)) u_df0 (
-      .clk_i, .ce_i(ce[PowLast]), .a_i(cpl[c*8 +: 8]), .b_i(fl[PSplit-1:0]),
+    mul18_reg #(.ABits(8), .BBits(PSplit), .InReg(1'b1)) u_df0 (
+      .clk_i, .ce_i(ce[PowLast+1:PowLast]), .a_i(cpl[c*8 +: 8]), .b_i(fl[PSplit-1:0]),
       .p_o(df0_q[c*DF0 +: DF0]));
-    mul18_reg #(.ABits(8), .BBits(FHi)) u_df1 (
-      .clk_i, .ce_i(ce[PowLast]), .a_i(cpl[c*8 +: 8]), .b_i(fl[FW-1:PSplit]),
+    mul18_reg #(.ABits(8), .BBits(FHi), .InReg(1'b1)) u_df1 (
+      .clk_i, .ce_i(ce[PowLast+1:PowLast]), .a_i(cpl[c*8 +: 8]), .b_i(fl[FW-1:PSplit]),
       .p_o(df1_q[c*DF1 +: DF1]));
   end
-  mul18_reg #(.ABits(MaterialBits+8), .BBits(PSplit)) u_wa0 (
-    .clk_i, .ce_i(ce[PowLast]), .a_i(w255_q), .b_i(al[PSplit-1:0]), .p_o(wa0_q));
-  mul18_reg #(.ABits(MaterialBits+8), .BBits(AHi)) u_wa1 (
-    .clk_i, .ce_i(ce[PowLast]), .a_i(w255_q), .b_i(al[PowBits:PSplit]), .p_o(wa1_q));
+  mul18_reg #(.ABits(MaterialBits+8), .BBits(PSplit), .InReg(1'b1)) u_wa0 (
+    .clk_i, .ce_i(ce[PowLast+1:PowLast]), .a_i(w255_q), .b_i(al[PSplit-1:0]), .p_o(wa0_q));
+  mul18_reg #(.ABits(MaterialBits+8), .BBits(AHi), .InReg(1'b1)) u_wa1 (
+    .clk_i, .ce_i(ce[PowLast+1:PowLast]), .a_i(w255_q), .b_i(al[PowBits:PSplit]), .p_o(wa1_q));
 
-  // ---- stage 40: Cp f and 255 W cos(s)^n (white highlight), D + MF fraction bits -------------
+  // ---- stage 41: Cp f and 255 W cos(s)^n (white highlight), D + MF fraction bits -------------
   // The final rounding's half, 2^(D+MF-1), is set in Cp f's sum as a bit above Cp f0 (< 2^(PSplit+8)
-  // <= 2^(D+MF-1): an OR, no carry), so stage 41 adds two operands, not three.
+  // <= 2^(D+MF-1): an OR, no carry), so stage 42 adds two operands, not three.
   localparam logic [LW-1:0] Half = LW'(1) << (DotBits + MF - 1);
   logic [3*LW-1:0] diff2_q;  // Cp f plus the rounding half, channel c at c * LW
   logic [LW-1:0]   spec_q;
-  always_ff @(posedge clk_i) if (g_ce[PowLast+1].q[0]) begin
+  always_ff @(posedge clk_i) if (g_ce[PowLast+2].q[0]) begin
     for (int c = 0; c < 3; c++)
       diff2_q[c*LW +: LW] <= (LW'(df0_q[c*DF0 +: DF0]) | Half)
                            + (LW'(df1_q[c*DF1 +: DF1]) << PSplit);
     spec_q <= (LW'(wa0_q) + (LW'(wa1_q) << PSplit)) << (DotBits - PowBits);
   end
 
-  // ---- stage 41: level = saturate(round(Cp f + 255 W pow)) --------------------------------------
+  // ---- stage 42: level = saturate(round(Cp f + 255 W pow)) --------------------------------------
   logic [watkins_pkg::RgbBits-1:0] rgb_q;
-  always_ff @(posedge clk_i) if (g_ce[PowLast+2].q[0]) begin
+  always_ff @(posedge clk_i) if (g_ce[PowLast+3].q[0]) begin
     for (int c = 0; c < 3; c++) begin
       logic [LW-1:0] lvl;
       lvl = (diff2_q[c*LW +: LW] + spec_q) >> (DotBits + MF);  // diff2_q holds the rounding half

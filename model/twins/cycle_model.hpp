@@ -28,7 +28,7 @@ constexpr int InterpFifoDepth = 4;               // segment_interpolator's FifoD
 constexpr int InterpTailStages = 8;              // segment_interpolator: sa, sm, sp, sh, sb, sc, sv, sd after the reciprocal
 // normalizer (16): squares, sum, rsqrt_unit (fmt::RsqrtStages), partial products, sum, shift, round
 constexpr int NormalizerStages = 2 + fmt::RsqrtStages + 4;
-constexpr int ShaderStages = 41;                 // phong_shader: dots (3), cos(s) (3), 8 powers (4 each), 3 out
+constexpr int ShaderStages = 42;                 // phong_shader: dots (3), cos(s) (3), 8 powers (4 each), 4 out
 constexpr int SmootherStages = fmt::ShadeBits + 6;  // smoother: line read, window, pairs, sums, products, dividend, a divider
                                                     // stage per quotient bit
 constexpr int FragQueueDepth = 2;                // watkins_top's u_frag_queue (registered ready)

@@ -1,7 +1,7 @@
-// phong_shader_formal: proves rtl/phong_shader.sv (41 stages, a 6-bit payload) holds valid and its
+// phong_shader_formal: proves rtl/phong_shader.sv (42 stages, a 6-bit payload) holds valid and its
 // shade until ready, passes every beat once, in order, with its payload unchanged (each input beat
 // carries its sequence number as payload), keeps ready_o = ready_i || !valid_o and holds at most
-// 41 beats. stall_pipe_checker ties the payload RAM of its u_pipe to the tags in flight; the
+// 42 beats. stall_pipe_checker ties the payload RAM of its u_pipe to the tags in flight; the
 // shading datapath, light and eye are free (values are the unit benches' business), and so are the
 // products: scripts/formal reads tests/formal/mul18_reg_free.sv in place of rtl/mul18_reg.sv.
 // LookAhead = 1 (the Phong top's): the environment gives ready_i a clock ahead on ready_next_i.
@@ -14,10 +14,10 @@ module phong_shader_formal #(
   localparam int unsigned MB      = watkins_pkg::MaterialBits,
   localparam int unsigned SB      = watkins_pkg::ShininessBits,
   // phong_shader's pipe, from its own constants (yosys 0.23 reads no child's localparam): CosStage
-  // stages to cos(s), PowStages per bit of n (a power's operands, product, copy, round), 3 out
+  // stages to cos(s), PowStages per bit of n (a power's operands, product, copy, round), 4 out
   localparam int unsigned CosStage  = 6,
   localparam int unsigned PowStages = 4,
-  localparam int unsigned Stages  = CosStage + PowStages * SB + 3,
+  localparam int unsigned Stages  = CosStage + PowStages * SB + 4,
   localparam int unsigned PtrBits = $clog2(Stages + 1),
   localparam int unsigned Depth   = 2 ** PtrBits
 ) (
