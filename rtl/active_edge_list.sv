@@ -102,7 +102,10 @@ module active_edge_list #(
   localparam int unsigned TB = EdgeIdBits + PolyIdBits + MaterialIdBits;  // id, polygon, material
   localparam int unsigned EB = LB + TB + VB + DB;
   localparam int unsigned AB = IB + 1;
-  logic [EB-1:0]   body_mem [2 ** AB];
+  // no_rw_check: no read that reaches out_q meets a write (a_no_ram_collision, below), so yosys
+  // need not emulate read-first behaviour around the block RAM (a mux and a register per bit of
+  // the record, about 185 of each, and an address compare in front of ram_q).
+  (* no_rw_check *) logic [EB-1:0] body_mem [2 ** AB];
   // The filling bank's order: entry i's {sort key, body index} in one word (past the count:
   // don't care).
   logic [KB+IB-1:0] order_q [N];

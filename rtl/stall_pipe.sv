@@ -97,7 +97,12 @@ module stall_pipe #(
     // reaches the last stage on; it entered at least Stages - 1 >= 1 clocks before (write first).
     localparam int unsigned PtrBits = $clog2(Stages + 1);
     localparam int unsigned Depth   = 2 ** PtrBits;
-    logic [PayloadBits-1:0] mem [Depth];
+    // no_rw_check: a read that loads out_q never meets the write of its own slot (a_no_collision:
+    // the beat it reads entered a clock or more before, and wr_q is past every beat in flight),
+    // so yosys need not build its read-during-write emulation around a block RAM (on the ECP5 a
+    // mux on every output bit behind the RAM's 5.8 ns clock-to-out, plus a register per bit and
+    // an address compare: the Phong top's seed-2 path from the shader's payload RAM at 102.5 MHz).
+    (* no_rw_check *) logic [PayloadBits-1:0] mem [Depth];
     logic [PtrBits-1:0]     wr_q, rd_q, rd_inc_q, rd_next, rd_addr;
     logic [PayloadBits-1:0] out_q;
 
@@ -120,6 +125,7 @@ module stall_pipe #(
       end
     end
     `WATKINS_ASSERT(a_rd_inc, rd_inc_q == rd_q + 1'b1)
+    `WATKINS_ASSERT(a_no_collision, (valid_i && ce_o[Stages-1]) |-> rd_addr != wr_q)
     // Written whenever a beat is offered (valid_i), stalled or not: slot wr_q holds no beat in
     // flight until wr_q moves past it (a beat entering is written the clock it enters), so
     // writing it while stalled is harmless, and the RAM's write enable is a valid, not the

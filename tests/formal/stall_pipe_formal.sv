@@ -1,8 +1,8 @@
 // stall_pipe_formal: proves rtl/stall_pipe.sv (Stages <= 4 with the payload in flops, <= 3 with
 // PayloadRam: the words probed below) holds valid and payload until ready, passes every beat
 // once, in order, unchanged, keeps ready_o = en_o = ready_i || !valid_o, and holds at most Stages
-// beats. Each input beat carries its sequence number as payload; stall_pipe_checker ties the
-// stages to it. LookAhead: the environment gives ready_i a clock ahead (ready_next_i), and the
+// beats, and (PayloadRam) never reads the RAM slot written on the same clock. Each input beat
+// carries its sequence number as payload; stall_pipe_checker ties the stages to it. LookAhead: the environment gives ready_i a clock ahead (ready_next_i), and the
 // enable flop must equal ready_i || !valid_o on every clock, and so must each of its copies (the
 // per-stage enables below read them).
 `include "formal_stream.svh"
@@ -75,9 +75,14 @@ module stall_pipe_formal #(
   `FORMAL_WORD(mem, PayloadBits, 2, \u_dut.g_ram.mem[2] )
   `FORMAL_WORD(mem, PayloadBits, 3, \u_dut.g_ram.mem[3] )
 
-  // rd_q + 1 precomputed (read address picked, not added, by the handshake).
+  // rd_q + 1 precomputed (read address picked, not added, by the handshake). A read that loads
+  // out_q never addresses the slot written on the same clock (the RAM is no_rw_check: yosys
+  // builds no read-during-write logic, and a block RAM's output on a collision is undefined).
   if (PayloadRam) begin : g_rd_inc
     always_comb if (rst_ni) assert (\u_dut.g_ram.rd_inc_q == \u_dut.g_ram.rd_q + 1'b1);
+    logic [PtrBits-1:0] rd_addr;  // the read address, as u_dut's g_ram picks it
+    assign rd_addr = valid_o ? \u_dut.g_ram.rd_inc_q : \u_dut.g_ram.rd_q ;
+    always_comb if (rst_ni && valid_i && ce_o[Stages-1]) assert (rd_addr != \u_dut.g_ram.wr_q );
   end
 
   stall_pipe_checker #(.Stages(Stages), .PayloadBits(PayloadBits), .PayloadRam(PayloadRam)) u_check (
