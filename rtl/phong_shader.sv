@@ -8,13 +8,13 @@
 // MULT18X18D's output register), a product wider than one 18 x 18 multiplier as partial products,
 // the sums and roundings that use it one stage later (ECP5 MULT18 and iCE40 MAC16 timing); the
 // operands of the powers and of the output's products also enter their blocks' registers a stage
-// before the product (mul18_reg InReg), and the powers' partial products are copied into the fabric before the round. Each
-// stage's registers load only when the beat entering it is valid (en && its valid: one LUT, as en
-// alone): a bubble's values are never read, so a simulator need not compute them (most clocks of a
-// frame carry bubbles); a valid beat's values are the same. light_i / eye_i are frame constants:
-// L.E is computed from them over stages 1 to 4 by the valid beats (one register per stage, not per
-// pixel: every pixel in flight has the same value), so they must be stable from a frame's first
-// pixel to its last output.
+// before the product (mul18_reg InReg), and the powers' partial products are copied into the fabric
+// before the round. Each stage's registers load only when the beat entering it is valid (en && its
+// valid: one LUT, as en alone): a bubble's values are never read, so a simulator need not compute
+// them (most clocks of a frame carry bubbles); a valid beat's values are the same. light_i / eye_i
+// are frame constants: L.E is computed from them over stages 1 to 4 by the valid beats (one
+// register per stage, not per pixel: every pixel in flight has the same value), so they must be
+// stable from a frame's first pixel to its last output.
 `include "watkins_assert.svh"
 
 module phong_shader #(

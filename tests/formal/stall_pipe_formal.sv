@@ -1,10 +1,10 @@
 // stall_pipe_formal: proves rtl/stall_pipe.sv (Stages <= 4 with the payload in flops, <= 3 with
-// PayloadRam: the words probed below) holds valid and payload until ready, passes every beat
-// once, in order, unchanged, keeps ready_o = en_o = ready_i || !valid_o, and holds at most Stages
-// beats, and (PayloadRam) never reads the RAM slot written on the same clock. Each input beat
-// carries its sequence number as payload; stall_pipe_checker ties the stages to it. LookAhead: the environment gives ready_i a clock ahead (ready_next_i), and the
-// enable flop must equal ready_i || !valid_o on every clock, and so must each of its copies (the
-// per-stage enables below read them).
+// PayloadRam: the words probed below) holds valid and payload until ready, passes every beat once,
+// in order, unchanged, keeps ready_o = en_o = ready_i || !valid_o, and holds at most Stages beats,
+// and (PayloadRam) never reads the RAM slot written on the same clock. Each input beat carries its
+// sequence number as payload; stall_pipe_checker ties the stages to it. LookAhead: the environment
+// gives ready_i a clock ahead (ready_next_i), and the enable flop must equal ready_i || !valid_o on
+// every clock, and so must each of its copies (the per-stage enables below read them).
 `include "formal_stream.svh"
 
 module stall_pipe_formal #(
