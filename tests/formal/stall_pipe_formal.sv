@@ -62,6 +62,7 @@ module stall_pipe_formal #(
   (* hierconn *) logic [PtrBits-1:0] \u_dut.g_ram.wr_q ;
   (* hierconn *) logic [PtrBits-1:0] \u_dut.g_ram.rd_q ;
   (* hierconn *) logic [PtrBits-1:0] \u_dut.g_ram.rd_inc_q ;
+  (* hierconn *) logic [PtrBits-1:0] \u_dut.g_ram.rd_addr ;
   (* hierconn *) logic [PayloadBits-1:0] \u_dut.g_ram.out_q ;
   logic [4*PayloadBits-1:0] shift_q;
   logic [8*PayloadBits-1:0] mem;  // Depth <= 8 (Stages = 4 with flops); words 4..7 unused
@@ -80,9 +81,8 @@ module stall_pipe_formal #(
   // builds no read-during-write logic, and a block RAM's output on a collision is undefined).
   if (PayloadRam) begin : g_rd_inc
     always_comb if (rst_ni) assert (\u_dut.g_ram.rd_inc_q == \u_dut.g_ram.rd_q + 1'b1);
-    logic [PtrBits-1:0] rd_addr;  // the read address, as u_dut's g_ram picks it
-    assign rd_addr = valid_o ? \u_dut.g_ram.rd_inc_q : \u_dut.g_ram.rd_q ;
-    always_comb if (rst_ni && valid_i && ce_o[Stages-1]) assert (rd_addr != \u_dut.g_ram.wr_q );
+    always_comb if (rst_ni && valid_i && ce_o[Stages-1])
+      assert (\u_dut.g_ram.rd_addr != \u_dut.g_ram.wr_q );
   end
 
   stall_pipe_checker #(.Stages(Stages), .PayloadBits(PayloadBits), .PayloadRam(PayloadRam)) u_check (
