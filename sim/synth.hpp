@@ -24,6 +24,9 @@ struct SynthArgs {
   int timeout = 3600;                           // seconds per tool run (yosys, nextpnr)
   std::string rtl_dir;                          // default: the source tree's rtl/
   std::vector<std::string> seeds;               // nextpnr --seed values; none = nextpnr's default
+  // --nextpnr-options: replaces every target's placement options (Target::placer) when given.
+  std::string nextpnr_options;  // whitespace-separated, checked by run_synth
+  bool nextpnr_options_given = false;
 };
 
 // Registers `watkins synth` and its options on `app`; returns the subcommand.

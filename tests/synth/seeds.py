@@ -59,6 +59,8 @@ if shutil.which(ecp5):
     r, rows = synth(watkins, os.path.join(work, "ecp5"), "--seeds", "1,2", "--jobs", "2", target="ecp5-85")
     check(r.returncode == 0 and len(rows) == 2 and all(row["result"].startswith("routed") for row in rows),
           f"ECP5 with seeds: exit code {r.returncode}, results {[row['result'] for row in rows]}")
+    check(all(row["nextpnr_options"] == "--placer-heap-timingweight 30" for row in rows),
+          f"ECP5 placement options {[row['nextpnr_options'] for row in rows]}, expected the flow's timing weight")
 else:
     print(f"synth_seeds: {ecp5} not found, ECP5 part skipped")
 

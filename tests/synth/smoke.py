@@ -28,5 +28,8 @@ if rows:
     check(int(row["carry"]) > 0, "no carry cells: the block's adders were lost")
     check(row["seed"] == "default", f"seed {row['seed']!r}: none was given")
     check("| default | edge_incrementer | ice40-hx8k | default | routed" in r.stdout, "printed table lacks the row")
+    check(row["nextpnr_options"] == "", f"iCE40 placement options {row['nextpnr_options']!r}, expected none")
+    check("nextpnr's placement options: ice40-hx8k none (nextpnr's defaults)." in r.stdout,
+          "the table does not say which placement options ran")
     check("Yosys 0.23" in row["yosys_version"] or "Yosys" in row["yosys_version"], "yosys version not recorded")
 failures.finish()
