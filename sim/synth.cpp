@@ -103,7 +103,7 @@ struct Target {
 // HX8K has neither. The packages are the parts' usual ones; the wrapper needs 4 pins of any.
 // ECP5: HeAP's timing weight 30 (nextpnr's default 10). The sized tops fill a quarter of the die
 // and their paths were 85-92 % routing; with weight 30 the placer keeps critical nets short: the
-// sized Gouraud top on seeds 1 / 2 / 3 went from 101.0 / 106.3 / 111.8 to 112.7 / 112.7 / ... MHz
+// sized Gouraud top on seeds 1 / 2 / 3 went from 101.0 / 106.3 / 111.8 to 112.7 / 112.7 / 110.8 MHz
 // on one netlist (docs/synth-timing.md, "Session 21"). Weight 60 and `--placer static` gained
 // less; `--router router2` lost a quarter (78.1).
 const Target kTargets[] = {
