@@ -11,7 +11,7 @@ def synth(watkins, work, *options, target="ice40-hx8k", env=None):
     completed process and the CSV table's rows (none when it wrote no table)."""
     table = os.path.join(work, "synth.csv")
     r = subprocess.run([watkins, "synth", "--designs", "edge_incrementer", "--targets", target, "--work", work,
-                        "--csv", table, "--timeout", "100", *options], capture_output=True, text=True, env=env)
+                        "--csv", table, "--timeout", "400", *options], capture_output=True, text=True, env=env)
     print(r.stdout, r.stderr)
     rows = list(csv.DictReader(open(table))) if os.path.exists(table) else []
     return r, rows
