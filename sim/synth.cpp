@@ -729,7 +729,7 @@ std::vector<std::string> split_list(const char* option, const std::vector<std::s
 // --nextpnr-options: whitespace-separated words, passed to nextpnr as they are. The options the
 // flow sets itself (netlist, report, log, clock, seed, device) are refused: a second one would
 // either fail in nextpnr or silently change what a row measures.
-std::vector<std::string> split_words(const std::string& text) {
+std::vector<std::string> parse_nextpnr_options(const std::string& text) {
   static const char* const kOwn[] = {"--json", "--report", "-l", "--log", "--freq", "--seed", "--pcf",
                                      "--package", "--up5k", "--hx8k", "--85k", "--timing-allow-fail"};
   std::vector<std::string> words;
@@ -834,7 +834,7 @@ int run_synth(const SynthArgs& a) {
     targets.push_back(&*it);
   }
   if (targets.empty()) throw UsageError("--targets: none given");
-  const std::vector<std::string> given_placer = split_words(a.nextpnr_options);
+  const std::vector<std::string> given_placer = parse_nextpnr_options(a.nextpnr_options);
   auto placer_options = [&](const Target& t) { return a.nextpnr_options_given ? given_placer : t.placer; };
   std::vector<int> seeds = parse_seeds(a.seeds);
   if (seeds.empty()) seeds.push_back(0);  // one run, no --seed: nextpnr's default
