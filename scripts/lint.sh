@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Lint and synthesis check of rtl/: Verilator --lint-only -Wall on every file (package first) and
 # on watkins_top in both shading modes (Phong = 0 and 1), without the smoother, and built for
-# configuration files (docs/size, tests/lint), then yosys 0.23: read,
+# configuration files (scenes/sized, tests/lint), then yosys 0.23: read,
 # hierarchy/proc/check of the Phong top (every module) at the synthesis sizes; with --synth a full synth_ice40 of the Gouraud top with small
 # buffers (MaxWidth, MaxActiveEdges) and of the two Phong blocks (normalizer, phong_shader) on their
 # own, so every module is synthesized in a few minutes; --synth-all also synthesizes the whole
@@ -40,14 +40,14 @@ top_params() {  # $1: configuration file, $2: gouraud | phong
   echo "$p"
 }
 # The top built for other configurations, read from their files (FILE@shading): the sized default
-# scene (docs/size/default.*.json: depth without fraction bits, X narrower than the screen index,
+# scene (scenes/sized/default.*.json: depth without fraction bits, X narrower than the screen index,
 # no smoother: Smoothing = 0), an odd one (tests/lint/odd.json: X at the 1/16-pixel minimum, 3-bit
 # depth word, normals finer than the normalizer reads) in both shading modes, and the curved-edge
-# top (EdgeOrder 3, docs/size/patches.curves.phong.json; 68 active edges, more than the 64 iterations Verilator
+# top (EdgeOrder 3, scenes/sized/patches.curves.phong.json; 68 active edges, more than the 64 iterations Verilator
 # unrolls by default: active_edge_list's insertion must need no unrolling), both modes.
-LINT_TOPS=(docs/size/default.gouraud.json@gouraud docs/size/default.phong.json@phong
+LINT_TOPS=(scenes/sized/default.gouraud.json@gouraud scenes/sized/default.phong.json@phong
            tests/lint/odd.json@gouraud tests/lint/odd.json@phong
-           docs/size/patches.curves.phong.json@gouraud docs/size/patches.curves.phong.json@phong)
+           scenes/sized/patches.curves.phong.json@gouraud scenes/sized/patches.curves.phong.json@phong)
 for top in "${LINT_TOPS[@]}"; do
   cfg=$(top_params "${top%@*}" "${top#*@}")
   # shellcheck disable=SC2086
@@ -80,7 +80,7 @@ echo "== yosys read + hierarchy/proc/check (Phong top: every module; MaxWidth=$S
 # The buffers as synthesis sizes them (Verilator above lints the defaults): a quick check.
 yosys_check elab "$READ; hierarchy -check -top watkins_top $SMALL -chparam Phong 1; proc; check -assert"
 # The sized Phong top above (yosys takes the same parameters through chparam).
-SIZED=$(top_params docs/size/default.phong.json phong | sed -E 's/-G([A-Za-z]+)=([0-9]+)/-chparam \1 \2/g')
+SIZED=$(top_params scenes/sized/default.phong.json phong | sed -E 's/-G([A-Za-z]+)=([0-9]+)/-chparam \1 \2/g')
 yosys_check elab_sized "$READ; hierarchy -check -top watkins_top $SIZED; proc; check -assert"
 # And the curved-edge top (EdgeOrder 3).
 yosys_check elab_cubic "$READ; hierarchy -check -top watkins_top $SMALL -chparam Phong 1 -chparam EdgeOrder 3; proc; check -assert"

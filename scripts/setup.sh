@@ -6,7 +6,7 @@
 #                                           tops (no tests, no SystemC bench, no speed programs, no
 #                                           per-configuration tops)
 #   scripts/setup.sh                        everything: tests, benches, speed harnesses, and a
-#                                           Verilated top per docs/size/*.json and tests/configs/*.json
+#                                           Verilated top per scenes/sized/*.json and tests/configs/*.json
 #                                           (WATKINS_RTL_CONFIGS at its default)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)

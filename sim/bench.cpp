@@ -53,7 +53,7 @@ int main(int argc, char** argv) {
                  "only render the model this many times and print its fragments (for callgrind: "
                  "instructions per fragment)");
   app.add_option("--seconds", budget, "time budget per measurement")->capture_default_str();
-  app.add_option("--config", config_path, "hardware configuration (docs/config-format.md); default: formats.hpp");
+  app.add_option("--config", config_path, "hardware configuration (docs/guide/config-format.md); default: formats.hpp");
   CLI11_PARSE(app, argc, argv);
   try {
     using namespace watkins;

@@ -21,7 +21,7 @@ int print_value(const char* name) {
   return 1;
 }
 // `watkins_gen_pkg --params F --shading gouraud|phong` prints watkins_top's parameters for
-// configuration F (docs/config-format.md) as Verilator options, one `-GName=value` per line (a
+// configuration F (docs/guide/config-format.md) as Verilator options, one `-GName=value` per line (a
 // file for `verilator -f`; yosys takes the same names with `chparam`). The names and values
 // come from rtl_parameters() (model/twins/config.hpp), the one map from a configuration to the RTL.
 int print_params(const char* path, const char* shading_name) {

@@ -779,7 +779,7 @@ std::string config_label(const std::string& c) {
 CLI::App* add_synth_command(CLI::App& app, SynthArgs& a) {
   auto* s = app.add_subcommand("synth", "synthesize, place and route every block and both tops (yosys, nextpnr-ice40, "
                                         "nextpnr-ecp5): utilisation, routed Fmax, critical path");
-  s->add_option("--config", a.configs, "configuration file(s) from `watkins size` (docs/config-format.md); "
+  s->add_option("--config", a.configs, "configuration file(s) from `watkins size` (docs/guide/config-format.md); "
                                        "'default' = the default configuration")->capture_default_str();
   s->add_option("--designs", a.designs, "comma-separated: edge_incrementer, active_edge_list, segment_former, "
                                         "span_reciprocal, segment_interpolator, normalizer, phong_shader, "

@@ -217,7 +217,7 @@ struct RenderArgs {
   std::string patches;  // --patches curves|polygons
   int max_active_edges = watkins::fmt::MaxActiveEdges;
   bool max_active_edges_given = false;  // --max-active-edges overrides the configuration's
-  std::string config;                   // --config F (docs/config-format.md)
+  std::string config;                   // --config F (docs/guide/config-format.md)
   RtlArgs rtl;  // --rtl and its options
 };
 
@@ -458,7 +458,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   RenderArgs ra;
   auto* r = app.add_subcommand("render", "render a scene (the embedded default scene if none is given)");
-  CLI::Option* scene_opt = r->add_option("scene", ra.scene, "scene file (JSON); see docs/scene-format.md");
+  CLI::Option* scene_opt = r->add_option("scene", ra.scene, "scene file (JSON); see docs/guide/scene-format.md");
   r->add_flag("--strict", ra.strict, "a zero-area polygon of a command list is an error (default: skipped and "
                                      "counted, as GL does)");
   r->add_option("--out,-o", ra.out, "PNG to write")->capture_default_str();
@@ -486,7 +486,7 @@ int main(int argc, char** argv) {
   CLI::Option* mae = r->add_option("--max-active-edges", ra.max_active_edges, "active-edge list capacity "
                                                                               "(overrides the configuration's)")
       ->check(CLI::Range(1, 1 << 16))->capture_default_str();
-  r->add_option("--config", ra.config, "hardware configuration (JSON, docs/config-format.md): the format of each "
+  r->add_option("--config", ra.config, "hardware configuration (JSON, docs/guide/config-format.md): the format of each "
                                        "channel group and the capacities; default: model/twins/formats.hpp");
   add_rtl_options(r, ra.rtl);  // --rtl, --trace, --seed, --gap, --stall
   ExportStlArgs xa;

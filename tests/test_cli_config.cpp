@@ -54,12 +54,12 @@ TEST_F(CliConfig, TooNarrowForTheSceneIsRefused) {
 }
 
 // A scene that smooths on a configuration without the smoother ("smoothing": false): one line
-// naming the field, exit code 1, no image; on the model and on the RTL (docs/size/default.gouraud.json
+// naming the field, exit code 1, no image; on the model and on the RTL (scenes/sized/default.gouraud.json
 // has no smoother: the default scene never smooths), whether or not this build has that top (the
 // RTL case is left out in a build without the RTL).
 TEST_F(CliConfig, SmoothingOnAConfigurationWithoutTheSmootherIsRefused) {
   const std::string cfg = write("nosmooth.json", R"({"smoothing": false})");
-  const std::string sized = WATKINS_SOURCE_DIR "/docs/size/default.gouraud.json";
+  const std::string sized = WATKINS_SOURCE_DIR "/scenes/sized/default.gouraud.json";
   const std::string png = dir_ + "/out.png";
   const std::string line = ": smoothing: the scene smooths (W = 102/128, shading.smooth or --smooth); the configuration "
                            "has smoothing false (no smoother)\n";

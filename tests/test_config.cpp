@@ -1,4 +1,4 @@
-// Run-time configurations (model/twins/config.hpp, docs/config-format.md): the default is today's
+// Run-time configurations (model/twins/config.hpp, docs/guide/config-format.md): the default is today's
 // formats.hpp exactly; configuration files are validated field by field; narrower shade formats
 // cost the error derived below and no more; a configuration too narrow for a scene is refused.
 #include <gtest/gtest.h>

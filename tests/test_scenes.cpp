@@ -44,7 +44,7 @@ TEST_P(ShippedScene, RendersWithinErrorBoundsOfTheDoubleReference) {
   const ImageError e = compare_images(fixed, ref, scene.smooth > 0 ? 1 : 0);
   // Where both show the same polygon, quantization costs well under a level on average; larger
   // differences only occur on silhouette slivers a fraction of a pixel tall, where 1/16-pixel
-  // vertex positions move α by a large fraction (see docs/numerics.md).
+  // vertex positions move α by a large fraction (see docs/reference/numerics.md).
   EXPECT_LT(e.mean_abs, 0.1);
   // teapot.json has far more silhouette for its area than the others (handle, spout, knob and lid
   // rim seen edge-on by 4 x 4 grid elements per patch): its slivers, a few pixels of area each with

@@ -199,7 +199,7 @@ TEST_F(Size, DefaultOutputNameIsTheSceneStem) {
   EXPECT_NO_THROW(load_config(dir_ + "/mesh.config.json"));
 }
 
-// docs/size/ holds the shipped scenes' configurations (scripts/size_table); they must stay what
+// scenes/sized/ holds the shipped scenes' configurations (scripts/size_table); they must stay what
 // `watkins size` finds, on the scenes that search fastest.
 TEST_F(Size, ShippedConfigurationsAreCurrent) {
   for (const char* scene : {"cone", "mesh", "highlight", "default"})
@@ -208,16 +208,16 @@ TEST_F(Size, ShippedConfigurationsAreCurrent) {
       const CliRun r = run(std::string("size " WATKINS_SOURCE_DIR "/scenes/") + scene + ".json --shading " + shading +
                            " --out " + dir_ + "/" + name);
       ASSERT_EQ(r.exit_code, 0) << r.output;
-      EXPECT_EQ(load_config(dir_ + "/" + name), load_config(WATKINS_SOURCE_DIR "/docs/size/" + name))
+      EXPECT_EQ(load_config(dir_ + "/" + name), load_config(WATKINS_SOURCE_DIR "/scenes/sized/" + name))
           << name << ": re-run scripts/size_table";
     }
 }
 
-// docs/size/patches.curves.phong.json is one configuration for the shipped patch scenes drawn by
+// scenes/sized/patches.curves.phong.json is one configuration for the shipped patch scenes drawn by
 // curves: every key at least what `watkins size --patches curves` finds for each (edge_order 3,
 // the curve regions counted as polygon ids), so each prepares at it.
 TEST_F(Size, CurvesConfigurationCoversTheShippedPatchScenes) {
-  const Config cover = load_config(WATKINS_SOURCE_DIR "/docs/size/patches.curves.phong.json");
+  const Config cover = load_config(WATKINS_SOURCE_DIR "/scenes/sized/patches.curves.phong.json");
   ASSERT_EQ(cover.edge_order, 3);
   for (const char* scene : {"patch", "bspline", "teapot"}) {
     SCOPED_TRACE(scene);

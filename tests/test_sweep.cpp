@@ -316,7 +316,7 @@ TEST_F(SweepCli, FractionBitsAxis) {
 
 // Whitted's curves against the tessellation with the same cells (patch.json, 4 x 4): the curves'
 // silhouette is exact where the polygons' is a chord, so far fewer pixels differ in coverage from
-// the truth, and the mean error is lower (docs/whitted.md: 0 against 338 pixels, 2.32 against
+// the truth, and the mean error is lower (docs/reference/whitted.md: 0 against 338 pixels, 2.32 against
 // 4.46 levels for the double reference). The whitted point's cycles, edge record and curved
 // active edges are those of the scene drawn with k_u = k_v = 4 at edge_order 3, rebuilt here.
 TEST_F(SweepCli, WhittedCurvesAgainstPolygonsOnThePatch) {

@@ -82,7 +82,7 @@ TEST(Voxels, OneVoxelHasSixOutwardFacesWoundFrontFromOutside) {
     normals.insert({int(n.x), int(n.y), int(n.z)});
     // Outward: from the voxel's centre (the grid's centre, the origin) towards the face.
     EXPECT_GT(glm::dot(n, centroid(m, f)), 0.49);
-    // Left-handed world: a front face's Newell normal points inward (docs/scene-format.md).
+    // Left-handed world: a front face's Newell normal points inward (docs/guide/scene-format.md).
     EXPECT_LT(glm::dot(newell(m, f), n), 0);
     for (int k = 0; k < 4; ++k) EXPECT_EQ(m.normal[std::size_t(f.idx[k])], n);  // flat: the face's own normal
   }

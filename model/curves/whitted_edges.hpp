@@ -7,7 +7,7 @@
 // only through a camera-space point function, so any bicubic basis (Bezier, B-spline in Bezier
 // form) and any object transform work.
 //
-// Choices (docs/whitted.md): edges are exact surface curves projected exactly (perspective
+// Choices (docs/reference/whitted.md): edges are exact surface curves projected exactly (perspective
 // division per point), not the cubic through transformed control points; the silhouette's Hermite
 // is built in (u, v) parameter space and mapped through the patch, so it lies on the surface; the
 // normal along an edge is the exact one (dP/du x dP/dv, its limit at a degenerate point).

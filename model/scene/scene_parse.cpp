@@ -257,7 +257,7 @@ std::map<std::string, Material> parse_materials(const Reader& r, const json& j) 
     mat.name = it.key();
     mat.color = r.vec3_in(r.required(m, mf, "color"), mf + ".color", 0, 1);
     // Whitted's S = hue (.25 + .75 N.I) + glossiness (R.I)^60 is eq. (3) with d = 0.25, n = 60,
-    // Cp = hue and W = glossiness (docs/whitted.md): the rule fixes d and n.
+    // Cp = hue and W = glossiness (docs/reference/whitted.md): the rule fixes d and n.
     opt(m, mf, "rule", [&](const json& v, const std::string& ff) {
       if (r.string(v, ff) != "whitted") r.fail(ff, "expected \"whitted\", got " + show(v));
       for (const char* k : {"d", "n"})

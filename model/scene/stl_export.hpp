@@ -13,7 +13,7 @@
 namespace watkins {
 
 // One facet in STL's frame: right-handed, z negated from the Watkins world (as OBJ files are read,
-// docs/scene-format.md), vertices counter-clockwise seen from the front (the side the object's
+// docs/guide/scene-format.md), vertices counter-clockwise seen from the front (the side the object's
 // normals point to), normal the unit cross product (v1 - v0) x (v2 - v0).
 struct StlFacet {
   glm::dvec3 normal;

@@ -27,7 +27,7 @@ struct IndexedMesh {
 
   int add_vertex(const glm::dvec3& p, const glm::dvec3& n);
   // Adds a face wound so that it is front-facing when seen from the side its vertex normals
-  // point to (see docs/scene-format.md, "Winding"). Quads become two triangles if `split`.
+  // point to (see docs/guide/scene-format.md, "Winding"). Quads become two triangles if `split`.
   void add_face(std::initializer_list<int> idx, bool split);
 };
 

@@ -109,7 +109,7 @@ void for_each_face(const VoxelGrid& g, F f) {
 }
 
 // The face's four grid corners, wound so that it is front-facing from outside: in this left-handed
-// world a front face's Newell normal points inward (docs/scene-format.md, "Winding"), so the corners
+// world a front face's Newell normal points inward (docs/guide/scene-format.md, "Winding"), so the corners
 // run b then c (Newell along +axis) for side -1 and c then b for side +1.
 std::array<std::array<int, 3>, 4> face_corners(int i, int j, int k, int axis, int side) {
   const int b = (axis + 1) % 3, c = (axis + 2) % 3;

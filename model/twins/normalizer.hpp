@@ -1,5 +1,5 @@
 // Twin of rtl/normalizer.sv: unit normal from an interpolated normal n = (Nx, Ny, Nz), stage by
-// stage with the RTL's widths and rounding (see docs/phong-blocks.md for the derivation).
+// stage with the RTL's widths and rounding (see docs/reference/phong-blocks.md for the derivation).
 //
 //   stage 0  m = Nx^2 + Ny^2 + Nz^2, exact: 36 bits unsigned, 2*FracBits fraction bits
 //   stage 1  even-shift normalization m = 2^(4-2j) m',  m' = M' / 2^36 in [1/4, 1), j in 0..17;

@@ -14,7 +14,7 @@ namespace watkins {
 
 struct RsqrtUnit {
   static constexpr int MBits = 2 * fmt::NormalInBits;  // 36: m < 3 * 2^34
-  // One-letter names as the formulas in docs/phong-blocks.md write them; rtl/rsqrt_unit.sv spells
+  // One-letter names as the formulas in docs/reference/phong-blocks.md write them; rtl/rsqrt_unit.sv spells
   // them out: W = MantBits, P = IndexBits, T = SeedBits, G = NrBits, F = RsqrtBits.
   static constexpr int W = fmt::RsqrtMantBits;         // 20
   static constexpr int P = fmt::RsqrtIndexBits;        // 10

@@ -1,6 +1,6 @@
 // The RTL built for other configurations (CMake option WATKINS_RTL_CONFIGS; issue 9) against the
 // model built for the same configuration: every shipped scene at its sized configuration
-// (docs/size/<scene>.<shading>.json) on the top built for it, and random scenes at the narrow and
+// (scenes/sized/<scene>.<shading>.json) on the top built for it, and random scenes at the narrow and
 // wide test configurations (tests/configs/), both shadings. Every pixel and every stage stream bit
 // for bit, under input gaps and output stalls, full-frame and sparse; and the cycle model's
 // prediction equal to the RTL's cycles with no gaps or stalls.
@@ -89,11 +89,11 @@ void expect_clean_frames(const std::string& what, const std::vector<const Prepar
   }
 }
 
-// docs/size/<scene>.<shading>.json file names, sorted; the curves configuration (one for several
+// scenes/sized/<scene>.<shading>.json file names, sorted; the curves configuration (one for several
 // scenes, patches.curves.phong.json) has tests of its own below.
 std::vector<std::string> sized_configs() {
   std::vector<std::string> v;
-  for (const auto& e : std::filesystem::directory_iterator(WATKINS_SOURCE_DIR "/docs/size")) {
+  for (const auto& e : std::filesystem::directory_iterator(WATKINS_SOURCE_DIR "/scenes/sized")) {
     const std::string name = e.path().filename().string();
     if (e.path().extension() == ".json" && name.find(".curves.") == std::string::npos) v.push_back(name);
   }
@@ -107,13 +107,13 @@ class SizedConfig : public ::testing::TestWithParam<std::string> {};
 // <scene>.<gouraud|phong>.json: scenes/<scene>.json in that shading at that configuration.
 TEST_P(SizedConfig, ShippedSceneOnItsOwnRtl) {
   const std::string name = GetParam();
-  if (name == "<none>") GTEST_SKIP() << "no docs/size/*.json";
+  if (name == "<none>") GTEST_SKIP() << "no scenes/sized/*.json";
   const auto dot = name.find('.');
   const std::string scene_name = name.substr(0, dot);
   const std::string shading_name = name.substr(dot + 1, name.rfind('.') - dot - 1);
   ASSERT_TRUE(shading_name == "gouraud" || shading_name == "phong") << name;
   const ShadingMode shading = shading_name == "phong" ? ShadingMode::Phong : ShadingMode::Gouraud;
-  const std::string file = "docs/size/" + name;
+  const std::string file = "scenes/sized/" + name;
   const Config cfg = load_config(WATKINS_SOURCE_DIR "/" + file);
   const BuiltScene scene = load_scene(WATKINS_SOURCE_DIR "/scenes/" + scene_name + ".json", shading_options(shading));
   const PreparedScene p = prepare(scene, cfg);
@@ -132,7 +132,7 @@ INSTANTIATE_TEST_SUITE_P(Sized, SizedConfig, ::testing::ValuesIn(sized_configs()
 // refuses such a scene first; this is a frame changed after preparation). Unsmoothed frames on
 // that top are SizedConfig's above.
 TEST(CosimConfigs, SmoothedFrameRefusedWithoutTheSmoother) {
-  const Config cfg = load_config(WATKINS_SOURCE_DIR "/docs/size/default.gouraud.json");
+  const Config cfg = load_config(WATKINS_SOURCE_DIR "/scenes/sized/default.gouraud.json");
   ASSERT_FALSE(cfg.smoothing) << "the default scene never smooths: its sized top has no smoother";
   PreparedScene p = prepare(load_scene(WATKINS_SOURCE_DIR "/scenes/default.json", shading_options(ShadingMode::Gouraud)), cfg);
   ASSERT_EQ(p.smooth_w, 0);
@@ -194,7 +194,7 @@ INSTANTIATE_TEST_SUITE_P(Configs, RandomAtConfig,
 
 // The order-3 Phong configuration of Whitted's curves: the shipped patch scenes drawn by curves
 // and the synthetic curve scene, one Verilated top for all.
-constexpr const char* CurvesConfig = "docs/size/patches.curves.phong.json";
+constexpr const char* CurvesConfig = "scenes/sized/patches.curves.phong.json";
 
 // Whitted's curved edges on the forward-difference top (EdgeOrder 3): the synthetic curve scene
 // (a disc, a sine-like band, a steep curve over a triangle) and random scenes of straight edges

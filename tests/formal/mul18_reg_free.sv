@@ -5,7 +5,7 @@
 // rtl/mul18_reg.sv. For the stream proofs of the pipelined units (normalizer, phong_shader), whose
 // hold, tag and capacity properties do not depend on product values: the SAT problem then carries
 // no multiplier (76 of them in the shader). scripts/formal reads it for a proof whose module list
-// names `formal:mul18_reg_free`; docs/formal.md says why it is sound.
+// names `formal:mul18_reg_free`; docs/reference/formal.md says why it is sound.
 module mul18_reg #(
   parameter int ABits   = 18,
   parameter int BBits   = 18,
