@@ -848,10 +848,10 @@ int run_synth(const SynthArgs& a) {
   if (configs.empty()) throw UsageError("--config: none given");
 
   const Rtl rtl = find_rtl(a.rtl_dir.empty() ? std::string(WATKINS_SOURCE_DIR) + "/rtl" : a.rtl_dir);
-  if (!on_path("yosys")) throw std::runtime_error("yosys not found on PATH (scripts/setup.sh installs it)");
+  if (!on_path("yosys")) throw std::runtime_error("yosys not found on PATH (scripts/setup installs it)");
   for (const Target* t : targets)
     if (!on_path(nextpnr_binary(*t)))
-      throw std::runtime_error(nextpnr_binary(*t) + " not found on PATH (scripts/setup.sh installs it)");
+      throw std::runtime_error(nextpnr_binary(*t) + " not found on PATH (scripts/setup installs it)");
   const fs::path work = fs::absolute(a.work);
   fs::create_directories(work);
 

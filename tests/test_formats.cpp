@@ -24,7 +24,7 @@ TEST(Formats, SvPackageIsGeneratedFromTheHeader) {
   committed << f.rdbuf();
   const std::string generated = run(WATKINS_GEN_PKG);
   ASSERT_FALSE(generated.empty());
-  EXPECT_EQ(committed.str(), generated) << "rtl/watkins_pkg.sv is stale: run scripts/gen_pkg.sh";
+  EXPECT_EQ(committed.str(), generated) << "rtl/watkins_pkg.sv is stale: run scripts/lib/gen_pkg.sh";
 }
 
 }  // namespace

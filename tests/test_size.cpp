@@ -199,7 +199,7 @@ TEST_F(Size, DefaultOutputNameIsTheSceneStem) {
   EXPECT_NO_THROW(load_config(dir_ + "/mesh.config.json"));
 }
 
-// scenes/sized/ holds the shipped scenes' configurations (scripts/size_table); they must stay what
+// scenes/sized/ holds the shipped scenes' configurations (scripts/lib/size_table.py); they must stay what
 // `watkins size` finds, on the scenes that search fastest.
 TEST_F(Size, ShippedConfigurationsAreCurrent) {
   for (const char* scene : {"cone", "mesh", "highlight", "default"})
@@ -209,7 +209,7 @@ TEST_F(Size, ShippedConfigurationsAreCurrent) {
                            " --out " + dir_ + "/" + name);
       ASSERT_EQ(r.exit_code, 0) << r.output;
       EXPECT_EQ(load_config(dir_ + "/" + name), load_config(WATKINS_SOURCE_DIR "/scenes/sized/" + name))
-          << name << ": re-run scripts/size_table";
+          << name << ": re-run scripts/lib/size_table.py";
     }
 }
 

@@ -3,7 +3,7 @@
 // structs). Reads the hex files of watkins_export, streams the edge records with no gaps and
 // no back-pressure, checks every pixel against the model, prints cycles and mismatches.
 // The sizes are the package's, from the one source of formats (model/twins/formats.hpp):
-// scripts/bench.d/icarus.sh passes each with iverilog -Ptb_watkins.NAME=`watkins_gen_pkg --value NAME`.
+// scripts/lib/bench/icarus.sh passes each with iverilog -Ptb_watkins.NAME=`watkins_gen_pkg --value NAME`.
 //   vvp tb.vvp +dir=<folder of edges.hex, pixels.hex, frame.hex>
 `timescale 1ns / 1ps
 module tb_watkins #(
@@ -53,7 +53,7 @@ module tb_watkins #(
   initial begin
     if (EdgeRecordBits <= 0 || LineBits <= 0 || UnitBits <= 0 || MaterialIdBits <= 0 || MaterialBits <= 0 ||
         ShininessBits <= 0) begin
-      $display("tb_watkins: sizes not set (iverilog -Ptb_watkins.NAME=..., see scripts/bench.d/icarus.sh)");
+      $display("tb_watkins: sizes not set (iverilog -Ptb_watkins.NAME=..., see scripts/lib/bench/icarus.sh)");
       $finish;
     end
     if (!$value$plusargs("dir=%s", dir)) dir = ".";

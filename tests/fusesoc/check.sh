@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
 # ctest fusesoc_core (label fusesoc): fusesoc accepts watkins.core. Its lint target (Verilator
 # -Wall) passes on the Gouraud and the Phong top, and its synth target sets up a yosys
-# synth_ice40 -dsp run of the top (running it takes minutes; scripts/lint.sh --synth synthesizes
+# synth_ice40 -dsp run of the top (running it takes minutes; scripts/lint --synth synthesizes
 # the tops in CI). About 30 s.
 #   check.sh SOURCE_DIR WORK_DIR
 set -euo pipefail
 src=$1 work=$2
-command -v fusesoc >/dev/null || { echo "fusesoc_core: fusesoc not installed (scripts/setup.sh installs it with pip)"; exit 1; }
+command -v fusesoc >/dev/null || { echo "fusesoc_core: fusesoc not installed (scripts/setup installs it with pip)"; exit 1; }
 rm -rf "$work"
 core=watkins:shading:pipeline
 for phong in 0 1; do

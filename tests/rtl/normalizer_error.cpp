@@ -4,7 +4,7 @@
 //  (b) the full normalizer over every exponent class (component magnitudes 2^e, e = 0..17),
 //      near-null vectors, interpolated antipodal normals, and 10^7 random inputs (fixed seed):
 //      max error in ulps of the Q2.14 output (2^-14) and max length error ||unit| - 1|.
-// Exits non-zero if a bound is exceeded, so ctest runs it; scripts/normalizer_ulp prints it.
+// Exits non-zero if a bound is exceeded, so ctest runs it; scripts/lib/normalizer_ulp.sh prints it.
 #include <cmath>
 #include <cstdio>
 #include <algorithm>

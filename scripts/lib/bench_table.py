@@ -3,7 +3,7 @@
 
 Every figure in the table is one line of that run, so the ratios beside it were measured side by
 side on the same machine at the same load. Issue 11's targets are shown with each figure.
-  scripts/bench_table.py BENCH_LOG [--out table.md]
+  scripts/lib/bench_table.py BENCH_LOG [--out table.md]
 """
 import argparse
 import re

@@ -8,12 +8,12 @@
 # reference of the same algorithm (over pixels showing the same polygon: what quantization
 # costs), and the double reference's error against the analytic truth (the exact surface
 # ray-cast, eq. (3) per pixel, over pixels showing the same object: what the algorithm costs).
-#   scripts/phong_figures [OUTDIR]   (default: docs)
+#   scripts/lib/phong_figures.sh [OUTDIR]   (default: docs)
 set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
+root=$(cd "$(dirname "$0")/../.." && pwd)
 build="${WATKINS_BUILD:-$root/build}"
 out="${1:-$root/docs}"
-[ -x "$build/watkins" ] || "$root/scripts/setup.sh" >/dev/null
+[ -x "$build/watkins" ] || "$root/scripts/setup" >/dev/null
 mkdir -p "$out"
 echo "machine $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(date -u +%Y-%m-%d)"
 printf "%-10s %-8s %8s %8s %6s | %-26s | %-26s\n" "" "" "RTL" "RTL" "" "fixed vs double" "double vs analytic truth"

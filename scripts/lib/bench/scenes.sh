@@ -3,9 +3,9 @@
 # every shipped scene (scenes/*.json) in both shadings, each pair measured back to back by one
 # watkins_bench run (0.3 s per measurement). One line per scene and shading, then the summary
 # (how many pairs hold, and the closest one). Skipped when scripts/bench was given a scene.
-#   scripts/bench.d/scenes.sh
+#   scripts/lib/bench/scenes.sh
 set -euo pipefail
-root=$(cd "$(dirname "$0")/../.." && pwd)
+root=$(cd "$(dirname "$0")/../../.." && pwd)
 build="${WATKINS_BUILD:-$root/build}"
 [ $# -eq 0 ] || [ -z "${1:-}" ] || exit 0
 held=0 total=0 closest="" closest_ratio=""

@@ -4,7 +4,7 @@ Phong, at --bound 1 (or the bound given). Writes each configuration to scenes/si
 (or $WATKINS_SIZE_OUT) and prints a markdown table: per group int.frac, depth_bits, capacities,
 edge-record and line-buffer bits, the error against the double reference at the chosen point and,
 one bit below, which limit broke for each width.
-  scripts/size_table [--bound L]          (build: $WATKINS_BUILD or build/)
+  scripts/lib/size_table.py [--bound L]          (build: $WATKINS_BUILD or build/)
 """
 import os
 import platform
@@ -13,7 +13,7 @@ import subprocess
 import sys
 import time
 
-root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 build = os.environ.get("WATKINS_BUILD", os.path.join(root, "build"))
 out = os.environ.get("WATKINS_SIZE_OUT", os.path.join(root, "docs", "size"))
 watkins = os.path.join(build, "watkins")
@@ -21,7 +21,7 @@ bound = "1"
 if len(sys.argv) == 3 and sys.argv[1] == "--bound":
     bound = sys.argv[2]
 elif len(sys.argv) != 1:
-    sys.exit("usage: scripts/size_table [--bound L]")
+    sys.exit("usage: scripts/lib/size_table.py [--bound L]")
 if not os.access(watkins, os.X_OK):
     sys.exit(f"size_table: no {watkins}; build the watkins target first")
 os.makedirs(out, exist_ok=True)

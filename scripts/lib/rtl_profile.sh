@@ -3,17 +3,17 @@
 # program (watkins_rtl_speed_cc, the plain C++ harness) for 1 and 3 frames of the default scene,
 # the difference over the simulated cycles is the cost per cycle (load-independent), and the
 # Verilated code's per-line counts are summed by the instance each statement names
-# (scripts/rtl_profile.py). Line counts need debug information in the Verilated code, so use a
+# (scripts/lib/rtl_profile.py). Line counts need debug information in the Verilated code, so use a
 # build of its own:
 #   cmake -S . -B build-prof -DCMAKE_BUILD_TYPE=Release -DWATKINS_TESTS=OFF \
 #     -DWATKINS_RTL_SYSTEMC=OFF -DWATKINS_RTL_CONFIGS="" -DCMAKE_CXX_FLAGS=-g
 #   cmake --build build-prof -j2 --target watkins_rtl_speed_cc
-#   WATKINS_BUILD=build-prof scripts/rtl_profile [gouraud|phong] [DEPTH] [ROWS]
+#   WATKINS_BUILD=build-prof scripts/lib/rtl_profile.sh [gouraud|phong] [DEPTH] [ROWS]
 # DEPTH 1: per block (u_scanline_buffer, ...); 2: per block and signal or generate scope.
 # Attribution is by the first instance named in a statement's lines (continuation lines go with
 # it): a guide to where the cost is, not an exact account.
 set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
+root=$(cd "$(dirname "$0")/../.." && pwd)
 build="${WATKINS_BUILD:-$root/build}"
 shading="${1:-gouraud}"
 depth="${2:-1}"
@@ -39,4 +39,4 @@ echo "machine      $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -
 echo "top          $shading, default scene, $cycles cycles in the 2 frames measured"
 echo "per cycle    $(( (refs[1] - refs[0]) / cycles )) instructions (callgrind, 3 frames minus 1, stage checker on)"
 callgrind_annotate --auto=yes --context=0 --include="$gen" "$tmp/cg3.out" >"$tmp/ann.txt" 2>/dev/null
-python3 "$root/scripts/rtl_profile.py" "$tmp/ann.txt" "$cycles3" "$depth" "$rows"
+python3 "$root/scripts/lib/rtl_profile.py" "$tmp/ann.txt" "$cycles3" "$depth" "$rows"

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Whitted's curved patches against tessellated Gouraud and Phong: the comparison table and the
-side-by-side images of scripts/whitted_figures, from one `watkins sweep --uv ... --images DIR` run.
+side-by-side images of scripts/lib/whitted_figures.sh, from one `watkins sweep --uv ... --images DIR` run.
 
   whitted_figures.py SWEEP.csv --images DIR --md OUT.md --montage SCENE:N,N,... --out DOCS
 

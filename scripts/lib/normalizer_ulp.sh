@@ -4,9 +4,9 @@
 # normals, 10^7 random inputs: max error in ulps of the Q2.14 output and ||unit| - 1|), and
 # with --shader also the Phong shader (max error in 8-bit levels). Same programs as the ctests
 # PhongNormalizerError / PhongShaderError (tests/rtl/*_error.cpp), fixed seeds.
-# Usage: scripts/normalizer_ulp [--shader] [random-count]
+# Usage: scripts/lib/normalizer_ulp.sh [--shader] [random-count]
 set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
+root=$(cd "$(dirname "$0")/../.." && pwd)
 shader=0
 if [[ "${1:-}" == "--shader" ]]; then shader=1; shift; fi
 tmp=$(mktemp -d)

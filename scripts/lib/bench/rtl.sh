@@ -8,7 +8,7 @@
 # (watkins_rtl_speed_sc_fast: --sc tops without assertions or tracing; not in the default build,
 # so this script builds that target first, -j${WATKINS_JOBS:-2}).
 set -euo pipefail
-root=$(cd "$(dirname "$0")/../.." && pwd)
+root=$(cd "$(dirname "$0")/../../.." && pwd)
 build="${WATKINS_BUILD:-$root/build}"
 [ -x "$build/testbench/watkins_rtl_speed_sc" ] && [ -x "$build/testbench/watkins_rtl_speed_cc" ] ||
   { echo "rtl: not built (needs Verilator, SystemC, WATKINS_RTL_SPEED and WATKINS_RTL_SYSTEMC)"; exit 0; }

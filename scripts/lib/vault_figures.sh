@@ -11,12 +11,12 @@
 # and sparse output). Then the STL import against the built-in bay: scenes/vault_bay.json and
 # the same scene reading scenes/vault_bay.stl, both at crease 0 and both at crease 80, and the
 # pixels that differ.
-#   scripts/vault_figures [OUTDIR]   (default: docs)
+#   scripts/lib/vault_figures.sh [OUTDIR]   (default: docs)
 set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
+root=$(cd "$(dirname "$0")/../.." && pwd)
 build="${WATKINS_BUILD:-$root/build}"
 out="${1:-$root/docs}"
-[ -x "$build/watkins" ] || "$root/scripts/setup.sh" >/dev/null
+[ -x "$build/watkins" ] || "$root/scripts/setup" >/dev/null
 mkdir -p "$out"
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/vault_figures.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
@@ -40,7 +40,7 @@ for crease in exact 0 80 180; do
   scene="$tmp/portico_crease$crease.json"
   with_key "$root/scenes/portico.json" "$portico" "$key" "$scene"
   for shading in gouraud phong; do
-    # The exact-normal images are docs/portico_<shading>.png (scripts/phong_figures).
+    # The exact-normal images are docs/portico_<shading>.png (scripts/lib/phong_figures.sh).
     png="$out/portico_crease${crease}_$shading.png"
     [ "$crease" = exact ] && png="$tmp/exact.png"
     r=$("$build/watkins" render "$scene" --shading $shading --rule phong --out "$png" \

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Sums callgrind's per-line counts of Verilated code by RTL instance (scripts/rtl_profile).
+"""Sums callgrind's per-line counts of Verilated code by RTL instance (scripts/lib/rtl_profile.sh).
 
 Usage: rtl_profile.py ANNOTATED.txt CYCLES DEPTH [ROWS]
 ANNOTATED.txt is `callgrind_annotate --auto=yes --context=0` output over the Verilated sources;

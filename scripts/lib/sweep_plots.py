@@ -13,7 +13,7 @@ reference (quantization) equals the double reference's mean error against the tr
 algorithm's own error), interpolated between the bracketing widths on a log scale of the error.
 A CSV with that axis gets only these (the others are the default sweep's).
 
-    scripts/sweep_plots.py SWEEP.csv [MORE.csv ...] [--out docs] [--summary docs/results/sweep_eq1_eq2.md]
+    scripts/lib/sweep_plots.py SWEEP.csv [MORE.csv ...] [--out docs] [--summary docs/results/sweep_eq1_eq2.md]
                            [--prefix sweep] [--crossover docs/results/sweep_frac_crossover.md]
 
 Several CSVs (shards of one sweep, --shard i/N) are merged by their `point` column.

@@ -3,9 +3,9 @@
 # package's packed structs, so yosys elaborates the SystemVerilog to plain Verilog first
 # (read_verilog -sv; proc; flatten; write_verilog) and Icarus simulates that, checking every
 # pixel against the model. Prints simulated cycles per second.
-#   scripts/bench.d/icarus.sh [SCENE]
+#   scripts/lib/bench/icarus.sh [SCENE]
 set -euo pipefail
-root=$(cd "$(dirname "$0")/../.." && pwd)
+root=$(cd "$(dirname "$0")/../../.." && pwd)
 build="${WATKINS_BUILD:-$root/build}"
 command -v iverilog >/dev/null && command -v yosys >/dev/null || { echo "icarus: iverilog or yosys missing"; exit 0; }
 work=$(mktemp -d)
