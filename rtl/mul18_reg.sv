@@ -1,16 +1,19 @@
-// mul18_reg: p = a * b, registered: one 18 x 18 multiplier block and the product's register.
-// Latency 1 (InReg = 0): ce_i[0] loads the product register (its stage's clock enable). Latency 2
-// (InReg = 1): ce_i[0] loads the operand registers, ce_i[1] the product register (two stages'
-// enables, ce[k:k-1] of a stall_pipe). No handshake. Operands up to 18 bits each, signed or
-// unsigned each (ASigned, BSigned), the product's low PBits bits kept.
+// mul18_reg: p = a * b in one 18 x 18 multiplier block, the product registered.
+// Operands up to 18 bits each, signed or unsigned each (ASigned, BSigned); the product's low
+// PBits bits are kept. No handshake: the parent gives each register its stage's clock enable
+// (ce[k:k-1] of a stall_pipe).
+// Latency: 1 cycle, or 2 with InReg. InReg = 0: ce_i[0] loads the product register. InReg = 1:
+// ce_i[0] loads the operand registers, ce_i[1] the product register.
+// Stages: operands (a_q, b_q; InReg only) -> product (p_q).
 // Why a module: on the ECP5 (WATKINS_ECP5, defined by `watkins synth` for that target only) the
-// register is the MULT18X18D's own output register (REG_OUTPUT_CLK), which yosys 0.23 does not
-// infer: its multiplier is then the product's setup inside the block, not a block between two
-// fabric flip-flops with a route on each side (10.6 ns, 3.9 of them the block, in the shader at
-// 94 MHz). Everywhere else (Verilator, the formal proofs, lint, iCE40) the same register in RTL.
-// InReg: the operands also registered in the block (REG_INPUTA/B), so a route from the fabric
-// ends at a register (its setup small) instead of at the multiplier's input (3.5 ns setup on the
-// ECP5 after routes of up to 6.9 ns across the die: the Phong top's 112 MULT18 spread over it).
+// product register is the MULT18X18D's own output register (REG_OUTPUT_CLK), which yosys 0.23
+// does not infer; the multiplier is then the product's setup inside the block, not a block
+// between two fabric flip-flops with a route on each side. Everywhere else (Verilator, the formal
+// proofs, lint, iCE40) the same register is in RTL.
+// InReg: the operands are also registered in the block (REG_INPUTA/B), so a route from the
+// fabric ends at a register with a small setup instead of at the multiplier's input, whose setup
+// is long on the ECP5 (in the Phong top the MULT18 blocks spread across the die, so those routes
+// are long too).
 module mul18_reg #(
   parameter int ABits   = 18,             // <= 18
   parameter int BBits   = 18,             // <= 18
@@ -89,7 +92,7 @@ module mul18_reg #(
   end else begin : g_s
     // Each operand one bit wider, its sign bit a copy of its top bit or 0, multiplied signed;
     // extended inside the enable, not by continuous assigns, which Verilator evaluates on every
-    // clock (the tops hold dozens of these since the interpolator's products use it).
+    // clock (the tops hold dozens of these, as the interpolator's products use it).
     always_ff @(posedge clk_i)
       if (ce_i[InReg]) p_q <= PBits'($signed({ASigned & a[ABits-1], a})
                                      * $signed({BSigned & b[BBits-1], b}));

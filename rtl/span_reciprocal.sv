@@ -1,22 +1,26 @@
-// span_reciprocal: 1/dx for a span width dx > 0 as mantissa recip = floor(2^(2R-1) / m) and
-// exponent p = floor(log2 dx), m = dx normalized to exactly R = RecipBits bits (low bits
-// truncated), exactly model/twins/span_reciprocal.hpp: 1/dx ~= recip * 2^-(p+R).
+// span_reciprocal: 1/dx for a span width dx > 0, as a mantissa and an exponent.
+// recip = floor(2^(2R-1) / m) and p = floor(log2 dx), m = dx normalized to exactly
+// R = RecipBits bits (low bits truncated), exactly model/twins/span_reciprocal.hpp:
+// 1/dx ~= recip * 2^-(p+R).
 // Pipelined, one input per clock: a stage of leading-one detection, a stage of normalization,
 // then a restoring divider whose first stage takes quotient bits R and R-1 (both decided by m
-// alone) and whose R-1 further stages take one bit each. Latency R+2 = 26 cycles. Every stage
-// is registered; one global stall (ready_o = ready_i || !valid_o, stall_pipe) holds the whole
-// pipe (with LookAhead that stall is a flop of its own, loaded a clock ahead from ready_next_i),
-// and a stage's registers load only for a valid beat (stall_pipe's ce_o). payload_i travels
-// alongside, so the caller keeps its span data in step with the quotient: kept in a RAM
-// (stall_pipe PayloadRam), only the quotient's own registers are per stage.
+// alone) and whose R-1 further stages take one bit each.
+// Latency 26 cycles (RecipBits + 2). Every stage is registered; one global stall (ready_o =
+// ready_i || !valid_o, stall_pipe) holds the whole pipe (with LookAhead that stall is a flop of
+// its own, loaded a clock ahead from ready_next_i), and a stage's registers load only for a
+// valid beat (stall_pipe's ce_o). payload_i travels alongside, so the caller keeps its span data
+// in step with the quotient: kept in a RAM (stall_pipe PayloadRam), only the quotient's own
+// registers are per stage.
+// Stages: g_lead (leading one) -> g_norm (normalize) -> g_top (quotient bits R and R-1) ->
+// g_bit (stages 3 .. R+1, one quotient bit each).
 `include "watkins_assert.svh"
 
 module span_reciprocal #(
   parameter int unsigned DxBits      = watkins_pkg::ChannelBits + 1,  // unsigned width of dx
   parameter int unsigned PayloadBits = 1,
   parameter bit          LookAhead   = 1'b0,  // stall_pipe's: the stall from a flop of its own
-  localparam int unsigned RecipBits   = watkins_pkg::RecipBits,     // R below
-  localparam int unsigned ExpBits     = $clog2(DxBits)              // width of p
+  localparam int unsigned RecipBits    = watkins_pkg::RecipBits,  // R below
+  localparam int unsigned ExponentBits = $clog2(DxBits)           // width of p
 ) (
   input  logic                   clk_i,
   input  logic                   rst_ni,
@@ -25,7 +29,7 @@ module span_reciprocal #(
   input  logic                   valid_i,
   output logic                   ready_o,
   output logic [RecipBits:0]     recip_o,    // in (2^(R-1), 2^R]
-  output logic [ExpBits-1:0]     p_o,        // floor(log2 dx)
+  output logic [ExponentBits-1:0] p_o,        // floor(log2 dx)
   output logic [PayloadBits-1:0] payload_o,
   output logic                   valid_o,
   input  logic                   ready_i,
@@ -67,24 +71,26 @@ module span_reciprocal #(
     .ce_o     (ce)
   );
 
-  // Leading-one detection (stage 0), then normalization (stage 1): dx << (NormBits-1-p) puts
-  // the leading one on top; its top R bits are the model's m whether dx is shifted left or right.
+  // Leading-one detection (stage 0), then normalization (stage 1): dx << (NormalizedBits-1-p)
+  // puts the leading one on top; its top R bits are the model's m whether dx is shifted left or
+  // right.
   // A narrow dx (a configuration with few X bits) is widened to R bits first. The detection and
-  // the shift in one clock were the block's longest path.
-  localparam int unsigned NormBits = (DxBits > RecipBits) ? DxBits : RecipBits;
-  localparam int unsigned ShBits   = $clog2(NormBits);
-  // The shift NormBits - 1 - p comes out of the encoder beside p, not from a subtract after it.
-  // A function called inside stage 0's enable, not an always_comb: a simulator evaluates it only
-  // when a span enters (the same encoder).
-  function automatic logic [ExpBits+ShBits-1:0] lead_of(logic [DxBits-1:0] dx);  // {p, shift}
-    logic [ExpBits-1:0] lead;
-    logic [ShBits-1:0]  lead_sh;
+  // the shift are a clock apart: together they would be the block's longest path.
+  localparam int unsigned NormalizedBits = (DxBits > RecipBits) ? DxBits : RecipBits;
+  localparam int unsigned ShiftBits      = $clog2(NormalizedBits);
+  // The shift NormalizedBits - 1 - p comes out of the encoder beside p, not from a subtract
+  // after it. A function called inside stage 0's enable, not an always_comb: a simulator
+  // evaluates it only when a span enters (the same encoder).
+  function automatic logic [ExponentBits+ShiftBits-1:0] lead_of(  // {p, shift}
+      logic [DxBits-1:0] dx);
+    logic [ExponentBits-1:0] lead;
+    logic [ShiftBits-1:0]    lead_sh;
     lead    = '0;
-    lead_sh = ShBits'(NormBits - 1);
+    lead_sh = ShiftBits'(NormalizedBits - 1);
     for (int i = 0; i < DxBits; i++) begin
       if (dx[i]) begin
-        lead    = ExpBits'(i);
-        lead_sh = ShBits'(NormBits - 1 - i);
+        lead    = ExponentBits'(i);
+        lead_sh = ShiftBits'(NormalizedBits - 1 - i);
       end
     end
     lead_of = {lead, lead_sh};
@@ -114,9 +120,9 @@ module span_reciprocal #(
     logic [RecipBits-1:0] rem_q;  // partial remainder, < m
     logic [RecipBits:0]   quo_q;  // quotient bits so far
     logic [DxBits-1:0]    dx_q;   // stage 0 only: dx
-    logic [ShBits-1:0]    sh_q;   // stage 0 only: NormBits - 1 - p
+    logic [ShiftBits-1:0] sh_q;   // stage 0 only: NormalizedBits - 1 - p
     /* verilator lint_on UNUSEDSIGNAL */
-    logic [ExpBits-1:0]   p_q;
+    logic [ExponentBits-1:0] p_q;
     if (k == 0) begin : g_lead
       always_ff @(posedge clk_i) begin
         if (ce[0]) begin
@@ -128,7 +134,8 @@ module span_reciprocal #(
       // Only the top R bits of the normalized width matter (the model truncates the rest).
       always_ff @(posedge clk_i) begin
         if (ce[1]) begin
-          m_q <= RecipBits'((NormBits'(g_stage[0].dx_q) << g_stage[0].sh_q) >> (NormBits - RecipBits));
+          m_q <= RecipBits'((NormalizedBits'(g_stage[0].dx_q) << g_stage[0].sh_q)
+                            >> (NormalizedBits - RecipBits));
           p_q <= g_stage[0].p_q;
         end
       end

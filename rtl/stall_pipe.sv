@@ -1,24 +1,25 @@
-// stall_pipe: the valid and payload shift of a Stages-deep pipeline with one global stall, the
-// idiom of span_reciprocal, normalizer and phong_shader: every stage advances together on en_o,
-// which the parent also uses to enable its own datapath registers, so they stay in step.
-// Latency Stages; valid (reset) registered in every stage; ready_o = en_o = ready_i || !valid_o
-// (a bubble anywhere in the pipe is not squeezed out while the output waits): combinational from
-// ready_i and the last valid flop, or with LookAhead a flop of its own, loaded with that value a
-// clock ahead from the consumer's ready_next_i (ready_i on the next clock). Same cycles either
-// way (a_en); LookAhead keeps the consumer's ready off the path into this pipe's enable and out
-// through ready_o to the producer (in the Phong top, the fragment queue's ready through the
-// shader and the normalizer into the interpolator was one 13.9 ns path, 11.5 of it routing).
-// en_next_o, en_o on the next clock, is the ready_next_i of a LookAhead producer. With LookAhead
-// the flop is kept in copies, one per CopyStages stages, each enabling its own stages' ce_o:
-// one flop whose route reached every stage's enable across a deep pipe was a top's critical
-// path (the span reciprocal's 26 stages: en_q -> a 6.0 ns route -> ce[23], sized Gouraud top,
-// branch ael4).
+// stall_pipe: the valid and payload shift of a Stages-deep pipeline with one global stall.
+// The idiom of span_reciprocal, normalizer and phong_shader: every stage advances together on
+// en_o, which the parent also uses to enable its own datapath registers, so they stay in step.
+// Latency: Stages cycles (the parameter). Valid (reset) is registered in every stage. ready_o =
+// en_o = ready_i || !valid_o (a bubble anywhere in the pipe is not squeezed out while the output
+// waits): combinational from ready_i and the last valid flop, or with LookAhead a flop of its
+// own, loaded with that value a clock ahead from the consumer's ready_next_i (ready_i on the next
+// clock). Same cycles either way (a_en).
+// Stages: valid_q[0] -> valid_q[1] -> ... -> valid_q[Stages-1], each loaded on en_o (ce_o[s]
+// for the parent's stage s).
+// LookAhead keeps the consumer's ready off the path into this pipe's enable and out through
+// ready_o to the producer: in the Phong top the fragment queue's ready would otherwise cross the
+// shader and the normalizer into the interpolator in one clock. en_next_o, en_o on the next
+// clock, is the ready_next_i of a LookAhead producer. With LookAhead the flop is kept in copies,
+// one per CopyStages stages, each enabling its own stages' ce_o: a single flop's route to every
+// stage's enable across a deep pipe (the span reciprocal's 26 stages) is long.
 // PayloadRam = 0: the payload (not reset) shifts through a register per stage. PayloadRam = 1
 // (Stages >= 2): the payload is written once into a small RAM as it enters and read out in
 // order (the pipe never reorders), synchronous read one clock ahead into payload_o's register
-// (written while a beat is offered, read as a beat enters the last stage):
-// a wide payload costs one RAM word per beat in flight instead of Stages registers, and maps to
-// block RAM (SB_RAM40_4K, DP16KD). Same latency and values either way.
+// (written while a beat is offered, read as a beat enters the last stage): a wide payload costs
+// one RAM word per beat in flight instead of Stages registers, and maps to block RAM
+// (SB_RAM40_4K, DP16KD). Same latency and values either way.
 `include "watkins_assert.svh"
 
 module stall_pipe #(
@@ -95,29 +96,28 @@ module stall_pipe #(
     // At most Stages beats are in flight, so Depth > Stages entries never overwrite one that is
     // still to be read. A beat is written when it enters and its entry read from the clock it
     // reaches the last stage on; it entered at least Stages - 1 >= 1 clocks before (write first).
-    localparam int unsigned PtrBits = $clog2(Stages + 1);
-    localparam int unsigned Depth   = 2 ** PtrBits;
+    localparam int unsigned PointerBits = $clog2(Stages + 1);
+    localparam int unsigned Depth       = 2 ** PointerBits;
     // no_rw_check: a read that loads out_q never meets the write of its own slot (a_no_collision:
     // the beat it reads entered a clock or more before, and wr_q is past every beat in flight),
-    // so yosys need not build its read-during-write emulation around a block RAM (on the ECP5 a
-    // mux on every output bit behind the RAM's 5.8 ns clock-to-out, plus a register per bit and
-    // an address compare: the Phong top's seed-2 path from the shader's payload RAM at 102.5 MHz).
+    // so yosys need not build its read-during-write emulation around a block RAM: a mux on every
+    // output bit behind the RAM's long clock-to-out, a register per bit and an address compare.
     (* no_rw_check *) logic [PayloadBits-1:0] mem [Depth];
-    logic [PtrBits-1:0]     wr_q, rd_q, rd_inc_q, rd_next, rd_addr;
+    logic [PointerBits-1:0] wr_q, rd_q, rd_inc_q, rd_next, rd_addr;
     logic [PayloadBits-1:0] out_q;
 
     // rd_q + 1 kept in its own register, so the next read pointer is a 2:1 pick by the handshake
     // (ready_i is the parent's stall signal, with a large fan-out) and no add follows it.
     // valid_o && en_o is valid_o && ready_i (en_o = ready_i || !valid_o): with LookAhead it reads
-    // this pipe's own flop, not the parent's stall, whose LUT (shared with the parent's first
-    // stage enable, tail_en && valid_o, as yosys merges equal logic) sat among that stage's
-    // registers (tail_en_q -> sa_ce -> rd_next -> rd_inc_q, 10.5 ns, sized Gouraud top, ael4).
+    // this pipe's own flop, not the parent's stall, whose LUT yosys would share with the parent's
+    // first stage enable (tail_en && valid_o: equal logic is merged) and place among that stage's
+    // registers, far from this pointer.
     assign rd_next = (valid_o && en_o) ? rd_inc_q : rd_q;
     always_ff @(posedge clk_i) begin
       if (!rst_ni) begin
         wr_q     <= '0;
         rd_q     <= '0;
-        rd_inc_q <= PtrBits'(1);
+        rd_inc_q <= PointerBits'(1);
       end else begin
         if (en_o && valid_i) wr_q <= wr_q + 1'b1;
         rd_q     <= rd_next;

@@ -1,12 +1,11 @@
-// stream_fifo: first-in first-out valid/ready buffer of Depth words.
-// Latency 1 (a word written is visible at the head the next cycle); valid_o and data_o come
-// from registers (valid_o from its own flop, valid_q, kept equal to cnt_q != 0; the head word
-// in a register of its own, head_q, beside the slots);
-// ready_o = not full straight from its own flop (room_q, kept equal to cnt_q != Depth: a
-// parent's stall signal built on ready_o starts at a flop, not at a compare of the count); no
-// combinational path from input to output. ready_next_o is ready_o on the next clock (room_q's
-// next value), for a producer whose own ready is a flop loaded a clock ahead (stall_pipe's
-// LookAhead).
+// stream_fifo: a first-in first-out valid/ready buffer of Depth words.
+// Latency 1 cycle: a word written is visible at the head on the next clock. Every output comes
+// from a register: valid_o from its own flop (valid_q, kept equal to cnt_q != 0), data_o from a
+// head register beside the slots (head_q), and ready_o ("not full") from its own flop (room_q,
+// kept equal to cnt_q != Depth), so a parent's stall signal built on ready_o starts at a flop,
+// not at a compare of the count. No combinational path from input to output. ready_next_o is
+// ready_o on the next clock (room_q's next value), for a producer whose own ready is a flop
+// loaded a clock ahead (stall_pipe's LookAhead).
 `include "watkins_assert.svh"
 
 module stream_fifo #(
@@ -23,12 +22,12 @@ module stream_fifo #(
   output logic                valid_o,  // the FIFO holds a word
   input  logic                ready_i
 );
-  localparam int unsigned PtrBits = (Depth > 1) ? $clog2(Depth) : 1;
-  localparam int unsigned CntBits = $clog2(Depth + 1);
+  localparam int unsigned PointerBits = (Depth > 1) ? $clog2(Depth) : 1;
+  localparam int unsigned CountBits   = $clog2(Depth + 1);
 
-  logic [DataBits-1:0] mem_q [Depth];
-  logic [PtrBits-1:0]  wr_q, rd_q;
-  logic [CntBits-1:0]  cnt_q;
+  logic [DataBits-1:0]    mem_q [Depth];
+  logic [PointerBits-1:0] wr_q, rd_q;
+  logic [CountBits-1:0]   cnt_q;
   logic                room_q;  // cnt_q != Depth
   logic                valid_q; // cnt_q != 0
   logic [DataBits-1:0] head_q;  // mem_q[rd_q] whenever the FIFO holds a word (a_head)
@@ -36,18 +35,18 @@ module stream_fifo #(
 
   assign ready_o = room_q;
   // valid_o from a flop, not a compare of the count: a consumer's pop decision starts at one
-  // flop (the interpolator's stepper: its enable took a LUT more for the count's compare).
+  // flop (the interpolator's stepper's enable needs no LUT for a compare of the count).
   assign valid_o = valid_q;
   assign data_o  = head_q;
   assign push    = valid_i && ready_o;
   assign pop     = valid_o && ready_i;
   // Full next clock: a push without a pop into the last free slot; a pop frees one.
-  assign ready_next_o = (push && !pop) ? cnt_q != CntBits'(Depth - 1)
+  assign ready_next_o = (push && !pop) ? cnt_q != CountBits'(Depth - 1)
                       : (pop && !push) ? 1'b1 : room_q;
 
   // Pointers wrap at Depth, which need not be a power of two.
-  function automatic logic [PtrBits-1:0] next_ptr(logic [PtrBits-1:0] p);
-    next_ptr = (p == PtrBits'(Depth - 1)) ? '0 : p + 1'b1;
+  function automatic logic [PointerBits-1:0] next_ptr(logic [PointerBits-1:0] p);
+    next_ptr = (p == PointerBits'(Depth - 1)) ? '0 : p + 1'b1;
   endfunction
 
   always_ff @(posedge clk_i) begin
@@ -65,7 +64,7 @@ module stream_fifo #(
       room_q <= ready_next_o;
       // Empty next clock: a pop without a push of the last word; a push fills one.
       if (push && !pop) valid_q <= 1'b1;
-      else if (pop && !push) valid_q <= cnt_q != CntBits'(1);
+      else if (pop && !push) valid_q <= cnt_q != CountBits'(1);
     end
   end
 
@@ -75,11 +74,12 @@ module stream_fifo #(
   end
   // The head from a register, not from a read of the slots after the read pointer's flop: a
   // consumer's logic on data_o then starts at a flop beside it (in both tops the fragment
-  // queue's slot read, routed into the scanline buffer's word pick, was the longest path: 11.2
-  // ns at f67158a). Same words, same cycles: on a pop the head takes the word behind it (from
-  // its slot, or from data_i when that word is being pushed now); into an empty FIFO, data_i.
+  // queue's head feeds the scanline buffer's word pick, and a slot read in front of that pick
+  // would be the tops' longest path). Same words, same cycles: on a pop the head takes the word
+  // behind it (from its slot, or from data_i when that word is being pushed now); into an empty
+  // FIFO, data_i.
   always_ff @(posedge clk_i) begin
-    if (pop && cnt_q != CntBits'(1)) head_q <= mem_q[next_ptr(rd_q)];
+    if (pop && cnt_q != CountBits'(1)) head_q <= mem_q[next_ptr(rd_q)];
     else if (push && (pop || !valid_o)) head_q <= data_i;
   end
 
@@ -92,7 +92,7 @@ module stream_fifo #(
   assign head_slot = mem_q[rd_q];
   `WATKINS_ASSERT(a_head, !valid_o || head_q == head_slot)
 `endif
-  `WATKINS_ASSERT(a_room, room_q == (cnt_q != CntBits'(Depth)))
+  `WATKINS_ASSERT(a_room, room_q == (cnt_q != CountBits'(Depth)))
   `WATKINS_ASSERT(a_valid, valid_q == (cnt_q != '0))
   `WATKINS_COVER(c_full, !ready_o)
 endmodule

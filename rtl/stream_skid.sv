@@ -1,13 +1,14 @@
 // stream_skid: a one-beat skid buffer that cuts a valid/ready stream's ready path.
-// Latency 0: while the skid slot is empty, data_i and valid_i pass straight to the output; when
-// the consumer stalls (valid_o && !ready_i), the beat on the output is held in the skid register
-// (a beat taken from the producer on that clock, since ready_o was high) and offered from there
-// until taken, while ready_o is low. ready_o = "skid slot empty", straight from a flop (full_q):
-// ready_i reaches only full_q's next state, never the producer. valid_o = valid_i || full_q and
-// data_o (a 2:1 mux on full_q) are combinational from the input: the valid/data path is not cut.
+// Latency 0 cycles: while the skid slot is empty, data_i and valid_i pass straight to the
+// output; when the consumer stalls (valid_o && !ready_i), the beat on the output (taken from the
+// producer on that clock, as ready_o was high) is held in the skid register and offered from
+// there until taken, while ready_o is low.
+// Registered: ready_o = "skid slot empty" comes straight from a flop (full_q), so ready_i
+// reaches only full_q's next state, never the producer. Not registered: valid_o = valid_i ||
+// full_q and data_o (a 2:1 mux on full_q) are combinational from the input.
 // Throughput: one beat per clock to the consumer; the producer is refused on the clock after each
-// stall that fills the slot, the clock the slot drains (cycle model: model/twins/cycle_model.cpp).
-// No value twin: it moves no value.
+// stall that fills the slot, the clock the slot drains (cycle model:
+// model/twins/cycle_model.cpp). No value twin: it moves no value.
 // The skid register loads on every clock it is empty and a beat is offered (valid_i, not
 // ready_i): its enable reads full_q and the producer's valid, which is a flop in watkins_top
 // (segment_former's seg_valid_o), and a simulator copies the word only on offered beats.
