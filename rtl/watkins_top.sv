@@ -1,32 +1,37 @@
-// watkins_top: the Watkins scan-line shading pipeline (model/twins/watkins_top.cpp) from the y-sorted
-// edge-record stream to every pixel of the frame in raster order: active_edge_list
-// (+ edge_incrementer) -> segment_former -> segment skid (registered ready) ->
-// segment_interpolator (span setup, span_reciprocal, stepper) -> [Phong = 1: normalizer ->
-// material table -> phong_shader] -> fragment queue -> scanline_buffer [-> smoother] -> pixel
-// skid (registered ready).
+// watkins_top: the Watkins scan-line shading pipeline, edge records in, pixels out.
+// From the y-sorted edge-record stream to every pixel of the frame in raster order; twin:
+// model/twins/watkins_top.cpp.
+// Stages: active_edge_list (+ edge_incrementer) -> segment_former -> segment skid (registered
+// ready) -> segment_interpolator (span setup, span_reciprocal, stepper) -> [Phong = 1:
+// normalizer -> material table -> phong_shader] -> fragment queue -> scanline_buffer
+// [-> smoother] -> pixel skid (registered ready).
+// Latency: a frame's first pixel leaves once its first line's fragments are depth-tested and
+// the line's marker swaps the line buffers; model/twins/cycle_model.hpp gives a frame's cycles.
+// Steady state: one fragment per clock; a line costs max(width, fragments + setup) cycles, the
+// active-edge list working on line y+1 while line y is drawn.
 // Every stage boundary is valid/ready. Phong = 0 (Gouraud): channels 2..4 are R, G, B shades
 // and the fragment's shade goes straight to the depth test. Phong = 1: they are the vertex
 // normal; each fragment's interpolated normal is normalized and shaded by Phong's eq. (3) with
 // its polygon's material (a 2^MaterialIdBits-entry table written through material_*_i between
-// frames) and the frame's light_i / eye_i (sampled with the frame size), adding 39 cycles of
-// latency, not throughput: still one fragment per clock, shaded before the depth test.
+// frames) and the frame's light_i / eye_i (sampled with the frame size), adding 58 cycles of
+// latency (the normalizer's 16 and the shader's 42), not throughput: still one fragment per
+// clock, shaded before the depth test.
 // A frame starts with the first beat of its edge stream once the previous frame's last pixel
 // has left and its stream has been read up to its EOF beat; width, height and background are
-// sampled then (and sparse_i, tie_submission_i). Steady state: one fragment per clock; a line
-// costs max(width, fragments + setup) cycles, the active-edge list working on line y+1 while
-// line y is drawn.
+// sampled then (and sparse_i, tie_submission_i).
 // Sparse mode (sparse_i = 1 for the frame): the pixel stream carries only the covered pixels, in
 // raster order, each with pixel_x_o/pixel_y_o; a line then costs max(1, covered pixels,
-// fragments + setup) cycles, plus one for the line buffer's swap when its reader sets the pace. pixel_last_o marks the frame's last beat: its last covered pixel when
-// the last line has one, otherwise a terminating beat with pixel_covered_o = 0 (background rgb)
-// at (width-1, height-1) -- so a frame covering no pixel is exactly that one beat. The consumer
-// keeps the background elsewhere (e.g. a framebuffer cleared once). sparse_i = 0: every pixel.
+// fragments + setup) cycles, plus one for the line buffer's swap when its reader sets the pace.
+// pixel_last_o marks the frame's last beat: its last covered pixel when the last line has one,
+// otherwise a terminating beat with pixel_covered_o = 0 (background rgb) at (width-1, height-1)
+// -- so a frame covering no pixel is exactly that one beat. The consumer keeps the background
+// elsewhere (e.g. a framebuffer cleared once). sparse_i = 0: every pixel.
 // Smoothing (smooth_w_i != 0 for the frame): Herman & Liu's 3x3 smoother (rtl/smoother.sv) after
 // the scanline buffer. It needs the whole raster, so a smoothed frame is emitted in full whatever
-// sparse_i says; its last pixel leaves width + 15 clocks after the buffer's last (the flush of the
-// last line and the smoother's 14 stages). smooth_w_i = 0: the smoother is bypassed, no latency.
-// Smoothing = 0 (Config::smoothing false): a top for scenes that never smooth has no smoother
-// at all (about 7,400 ECP5 LC and 6 multipliers saved); smooth_w_i is ignored, a frame must
+// sparse_i says; its last pixel leaves width + 15 clocks after the buffer's last (the flush of
+// the last line and the smoother's 14 stages). smooth_w_i = 0: the smoother is bypassed, no
+// latency. Smoothing = 0 (Config::smoothing false): a top for scenes that never smooth has no
+// smoother at all (its logic and multipliers are saved); smooth_w_i is ignored, a frame must
 // start with it 0 (asserted), and the pixel stream comes straight from the scanline buffer.
 // Equal depth (tie_submission_i for the frame): 0 keeps the fragment that reached the depth test
 // first (segments in closing order); 1 keeps the smaller polygon id, i.e. the first polygon
@@ -82,34 +87,34 @@ module watkins_top #(
   output logic                               pixel_last_o,    // last pixel of the frame
   output logic                               pixel_valid_o,
   input  logic                               pixel_ready_i,
-  output logic                               overflow_o,      // sticky until reset: the active-edge list was full
+  output logic                               overflow_o,      // sticky until reset: the
+                                                              // active-edge list was full
   // Phong only (ignored when Phong = 0). light_i / eye_i: unit vectors towards the light and the
   // eye, {z, y, x} Q2.14, sampled at frame start. Material table: one write per clock, between
   // frames; entry {Cp, d, W (1.0 = 256), n} as model/twins/phong_shader.hpp defines them.
   input  logic [3*watkins_pkg::UnitBits-1:0]       light_i,
   input  logic [3*watkins_pkg::UnitBits-1:0]       eye_i,
   input  logic                                     material_we_i,
-  input  logic [MaterialIdBits-1:0]               material_addr_i,
+  input  logic [MaterialIdBits-1:0]                material_addr_i,
   input  watkins_pkg::rgb_t                        material_cp_i,   // reflectance Cp (255 = 1.0)
   input  logic [watkins_pkg::MaterialBits-1:0]     material_d_i,
   input  logic [watkins_pkg::MaterialBits-1:0]     material_w_i,
   input  logic [watkins_pkg::ShininessBits-1:0]    material_n_i
 );
-  localparam int unsigned LB   = watkins_pkg::LineBits;
-  localparam int unsigned VB   = watkins_pkg::vector_bits(XBits, ZBits, AttrBits);  // channel vector
-  localparam int unsigned DepB = DepthBits;
-  localparam int unsigned MIB  = MaterialIdBits;
+  localparam int unsigned LineBits   = watkins_pkg::LineBits;
+  localparam int unsigned VectorBits = watkins_pkg::vector_bits(XBits, ZBits, AttrBits);  // channel
+                                                                                          // vector
 
   // ------------------------------------------------------------ frame control
-  logic          frame_busy_q, ael_busy, start;
-  logic [LB-1:0] width_q, height_q;
-  watkins_pkg::rgb_t background_q;
-  logic          sparse_q, tie_submission_q;
-  logic          smooth_on;  // this frame is smoothed (never, without a smoother)
+  logic                frame_busy_q, ael_busy, start;
+  logic [LineBits-1:0] width_q, height_q;
+  watkins_pkg::rgb_t   background_q;
+  logic                sparse_q, tie_submission_q;
+  logic                smooth_on;  // this frame is smoothed (never, without a smoother)
   // The pixel stream before the output skid (u_pixel_skid).
-  watkins_pkg::rgb_t px_rgb;
-  logic              px_covered, px_last, px_valid, px_ready;
-  logic [LB-1:0]     px_x, px_y;
+  watkins_pkg::rgb_t   px_rgb;
+  logic                px_covered, px_last, px_valid, px_ready;
+  logic [LineBits-1:0] px_x, px_y;
 
   assign start = edge_valid_i && !frame_busy_q && !ael_busy;
 
@@ -136,12 +141,12 @@ module watkins_top #(
   // ------------------------------------------------------------ active edges
   // The three internal stage streams are readable from the Verilated model (the co-simulation
   // bench compares them item by item with the model's, testbench/stage_checker.hpp).
-  logic [PolyIdBits-1:0]              ae_poly  /*verilator public_flat_rd*/;
-  logic [MIB-1:0]                     ae_material /*verilator public_flat_rd*/;
-  logic [VB-1:0]                      ae_value /*verilator public_flat_rd*/;
-  logic                               ae_eol   /*verilator public_flat_rd*/;
-  logic                               ae_valid /*verilator public_flat_rd*/;
-  logic                               ae_ready /*verilator public_flat_rd*/;
+  logic [PolyIdBits-1:0]     ae_poly     /*verilator public_flat_rd*/;
+  logic [MaterialIdBits-1:0] ae_material /*verilator public_flat_rd*/;
+  logic [VectorBits-1:0]     ae_value    /*verilator public_flat_rd*/;
+  logic                      ae_eol      /*verilator public_flat_rd*/;
+  logic                      ae_valid    /*verilator public_flat_rd*/;
+  logic                      ae_ready    /*verilator public_flat_rd*/;
 
   active_edge_list #(
     .MaxActiveEdges(MaxActiveEdges),
@@ -171,18 +176,18 @@ module watkins_top #(
   );
 
   // ------------------------------------------------------------ segments
-  logic [VB-1:0]          sg_e     /*verilator public_flat_rd*/;
-  logic [VB-1:0]          sg_f     /*verilator public_flat_rd*/;
-  logic                  sg_eol   /*verilator public_flat_rd*/;
-  logic                  sg_valid /*verilator public_flat_rd*/;
-  logic                  sg_ready /*verilator public_flat_rd*/;
+  logic [VectorBits-1:0]     sg_e        /*verilator public_flat_rd*/;
+  logic [VectorBits-1:0]     sg_f        /*verilator public_flat_rd*/;
+  logic                      sg_eol      /*verilator public_flat_rd*/;
+  logic                      sg_valid    /*verilator public_flat_rd*/;
+  logic                      sg_ready    /*verilator public_flat_rd*/;
   // The polygon id pairs edges here and breaks depth ties in the scanline buffer.
-  logic [PolyIdBits-1:0] sg_poly /*verilator public_flat_rd*/;
-  logic [MIB-1:0]        sg_material /*verilator public_flat_rd*/;
+  logic [PolyIdBits-1:0]     sg_poly     /*verilator public_flat_rd*/;
+  logic [MaterialIdBits-1:0] sg_material /*verilator public_flat_rd*/;
 
   segment_former #(
     .MaxActiveEdges(MaxActiveEdges),
-    .VectorBits    (VB),
+    .VectorBits    (VectorBits),
     .PolyIdBits    (PolyIdBits),
     .MaterialIdBits(MaterialIdBits)
   ) u_segment_former (
@@ -206,13 +211,14 @@ module watkins_top #(
   // A registered ready between the segment former and the interpolator (stream_skid, latency 0):
   // the interpolator's stall (its FIFO's room -> setup stall -> s0) ends at the skid's flops
   // instead of running on through the segment former's enable into the active-edge list's
-  // stream advance and body-RAM read address (the sized Gouraud top's critical path in session
-  // 12). A segment refused by s0 waits in the skid; the former sees it refused a clock later.
-  localparam int unsigned SkidBits = 2 * VB + PolyIdBits + MIB + 1;
-  logic [VB-1:0]         sk_e, sk_f;
-  logic [PolyIdBits-1:0] sk_poly;
-  logic [MIB-1:0]        sk_material;
-  logic                  sk_eol, sk_valid, sk_ready;
+  // stream advance and body-RAM read address, where it would be the sized Gouraud top's
+  // critical path. A segment refused by s0 waits in the skid; the former sees it refused a clock
+  // later.
+  localparam int unsigned SkidBits = 2 * VectorBits + PolyIdBits + MaterialIdBits + 1;
+  logic [VectorBits-1:0]     sk_e, sk_f;
+  logic [PolyIdBits-1:0]     sk_poly;
+  logic [MaterialIdBits-1:0] sk_material;
+  logic                      sk_eol, sk_valid, sk_ready;
 
   stream_skid #(
     .DataBits(SkidBits)
@@ -227,15 +233,15 @@ module watkins_top #(
   );
 
   // ------------------------------------------------------------ fragments
-  logic [LB-1:0]                     fr_x     /*verilator public_flat_rd*/;
-  logic [DepB-1:0]                   fr_depth /*verilator public_flat_rd*/;
-  watkins_pkg::rgb_t                 fr_rgb   /*verilator public_flat_rd*/;
-  logic [3*watkins_pkg::NormalInBits-1:0] fr_normal /*verilator public_flat_rd*/;
-  logic [PolyIdBits-1:0]             fr_poly  /*verilator public_flat_rd*/;
-  logic [MIB-1:0]                    fr_material /*verilator public_flat_rd*/;
-  logic                              fr_eol   /*verilator public_flat_rd*/;
-  logic                              fr_valid /*verilator public_flat_rd*/;
-  logic                              fr_ready /*verilator public_flat_rd*/;
+  logic [LineBits-1:0]                    fr_x        /*verilator public_flat_rd*/;
+  logic [DepthBits-1:0]                   fr_depth    /*verilator public_flat_rd*/;
+  watkins_pkg::rgb_t                      fr_rgb      /*verilator public_flat_rd*/;
+  logic [3*watkins_pkg::NormalInBits-1:0] fr_normal   /*verilator public_flat_rd*/;
+  logic [PolyIdBits-1:0]                  fr_poly     /*verilator public_flat_rd*/;
+  logic [MaterialIdBits-1:0]              fr_material /*verilator public_flat_rd*/;
+  logic                                   fr_eol      /*verilator public_flat_rd*/;
+  logic                                   fr_valid    /*verilator public_flat_rd*/;
+  logic                                   fr_ready    /*verilator public_flat_rd*/;
 
   segment_interpolator #(
     .XBits         (XBits),
@@ -270,19 +276,20 @@ module watkins_top #(
 
   // ------------------------------------------------------------ shading
   // sh_*: the fragments the depth test receives, shaded (the bench compares them, too).
-  logic [LB-1:0]   sh_x     /*verilator public_flat_rd*/;
-  logic [DepB-1:0] sh_depth /*verilator public_flat_rd*/;
-  logic [PolyIdBits-1:0] sh_poly /*verilator public_flat_rd*/;
-  watkins_pkg::rgb_t sh_rgb /*verilator public_flat_rd*/;
-  logic            sh_eol   /*verilator public_flat_rd*/;
-  logic            sh_valid /*verilator public_flat_rd*/;
-  logic            sh_ready /*verilator public_flat_rd*/;
-  logic            sh_ready_next;  // sh_ready on the next clock (the Phong pipes' lookahead)
+  logic [LineBits-1:0]   sh_x     /*verilator public_flat_rd*/;
+  logic [DepthBits-1:0]  sh_depth /*verilator public_flat_rd*/;
+  logic [PolyIdBits-1:0] sh_poly  /*verilator public_flat_rd*/;
+  watkins_pkg::rgb_t     sh_rgb   /*verilator public_flat_rd*/;
+  logic                  sh_eol   /*verilator public_flat_rd*/;
+  logic                  sh_valid /*verilator public_flat_rd*/;
+  logic                  sh_ready /*verilator public_flat_rd*/;
+  logic                  sh_ready_next;  // sh_ready on the next clock (the Phong pipes' lookahead)
 
   if (Phong != 0) begin : g_phong
-    localparam int unsigned UB = watkins_pkg::UnitBits;
-    localparam int unsigned ShadePayloadBits = 1 + LB + DepB + PolyIdBits;  // {eol, x, depth, poly} rides along
-    logic [3*UB-1:0] light_q, eye_q;
+    localparam int unsigned UnitBits         = watkins_pkg::UnitBits;
+    // {eol, x, depth, poly} rides along
+    localparam int unsigned ShadePayloadBits = 1 + LineBits + DepthBits + PolyIdBits;
+    logic [3*UnitBits-1:0] light_q, eye_q;
     always_ff @(posedge clk_i) begin
       if (start) begin
         light_q <= light_i;
@@ -293,19 +300,19 @@ module watkins_top #(
     // Material table: flops (16 x 50 bits), read combinationally by the shader's input stage.
     localparam int unsigned EntryBits = watkins_pkg::RgbBits + 2 * watkins_pkg::MaterialBits
                                       + watkins_pkg::ShininessBits;
-    logic [EntryBits-1:0] material_q [2**MIB];
+    logic [EntryBits-1:0] material_q [2**MaterialIdBits];
     always_ff @(posedge clk_i) begin
       if (material_we_i)
         material_q[material_addr_i] <= {material_cp_i, material_d_i, material_w_i, material_n_i};
     end
 
-    logic [3*UB-1:0]             nm_unit;
-    logic [MIB-1:0]              nm_material;
+    logic [3*UnitBits-1:0]       nm_unit;
+    logic [MaterialIdBits-1:0]   nm_material;
     logic [ShadePayloadBits-1:0] nm_payload, sh_payload;
     logic                        nm_valid, nm_ready;
-    // The shader's and the normalizer's ready are flops loaded a clock ahead (LookAhead): the
-    // fragment queue's ready crossed both pipes into the interpolator's stepper in one clock
-    // (the sized Phong top's critical path at d10f016, 13.9 ns, 11.5 of it routing).
+    // The shader's and the normalizer's ready are flops loaded a clock ahead (LookAhead):
+    // otherwise the fragment queue's ready would cross both pipes into the interpolator's stepper
+    // in one clock (the sized Phong top's critical path, most of it routing).
     logic                        nm_ready_next;  // nm_ready on the next clock
     /* verilator lint_off UNUSEDSIGNAL */
     logic                        nm_ready_next_unused;  // the interpolator's stall is not a flop
@@ -313,7 +320,7 @@ module watkins_top #(
     logic                        nm_null_unused;  // a null normal already reads as (0,0,0): cos(i) = 0
 
     normalizer #(
-      .PayloadBits(MIB + ShadePayloadBits),
+      .PayloadBits(MaterialIdBits + ShadePayloadBits),
       .LookAhead  (1'b1)
     ) u_normalizer (
       .clk_i, .rst_ni,
@@ -378,11 +385,12 @@ module watkins_top #(
   // reach every stall enable upstream in one clock. Two entries keep one fragment per clock;
   // latency 1. In the Phong top the queue's next ready (ready_next_o, from the buffer's ready)
   // does reach the shader's and the normalizer's LookAhead enable flops, as their D input:
-  // a path into two flops, not through every enable (not the critical path at 084a177).
-  localparam int unsigned QueueBits = 1 + LB + DepB + PolyIdBits + watkins_pkg::RgbBits;
+  // a path into two flops, not through every enable.
+  localparam int unsigned QueueBits = 1 + LineBits + DepthBits + PolyIdBits
+                                    + watkins_pkg::RgbBits;
   watkins_pkg::rgb_t     q_rgb;
-  logic [LB-1:0]         q_x;
-  logic [DepB-1:0]       q_depth;
+  logic [LineBits-1:0]   q_x;
+  logic [DepthBits-1:0]  q_depth;
   logic [PolyIdBits-1:0] q_poly;
   logic                  q_eol, q_valid, q_ready;
 
@@ -401,9 +409,9 @@ module watkins_top #(
   );
 
   // ------------------------------------------------------------ visibility and pixels
-  watkins_pkg::rgb_t sb_rgb;
-  logic              sb_covered, sb_last, sb_valid, sb_ready;
-  logic [LB-1:0]     sb_x, sb_y;
+  watkins_pkg::rgb_t   sb_rgb;
+  logic                sb_covered, sb_last, sb_valid, sb_ready;
+  logic [LineBits-1:0] sb_x, sb_y;
 
   scanline_buffer #(
     .MaxWidth  (MaxWidth),
@@ -440,9 +448,9 @@ module watkins_top #(
     end
     assign smooth_on  = smooth_w_q != '0;
 
-    watkins_pkg::rgb_t sm_rgb;
-    logic              sm_covered, sm_last, sm_valid, sm_ready;
-    logic [LB-1:0]     sm_x, sm_y;
+    watkins_pkg::rgb_t   sm_rgb;
+    logic                sm_covered, sm_last, sm_valid, sm_ready;
+    logic [LineBits-1:0] sm_x, sm_y;
 
     smoother #(
       .MaxWidth(MaxWidth)
@@ -494,11 +502,11 @@ module watkins_top #(
   // ------------------------------------------------------------ pixel skid
   // A registered ready at the pixel output (stream_skid, latency 0): the consumer's ready ends
   // at the skid's flops instead of reaching the scanline buffer's read step and its fan-out (the
-  // reader's word registers' enables: pixel_ready_i -> rd_step -> rx_word_q, 9.0 of 10.5 ns
-  // routing, was the sized Phong top's path on seed 3 with branch ael3). A pixel refused waits
+  // reader's word registers' enables: pixel_ready_i -> rd_step -> rx_word_q, mostly routing, a
+  // critical path of the sized Phong top). A pixel refused waits
   // in the skid; the buffer sees it refused a clock later. With pixel_ready_i high it never
   // fills: no cycle changes (model/twins/cycle_model.hpp assumes no output stalls).
-  localparam int unsigned PixelBits = watkins_pkg::RgbBits + 2 + 2 * LB;
+  localparam int unsigned PixelBits = watkins_pkg::RgbBits + 2 + 2 * LineBits;
 
   stream_skid #(
     .DataBits(PixelBits)
@@ -515,8 +523,8 @@ module watkins_top #(
   `WATKINS_ASSERT_HOLD(a_edge_hold, edge_valid_i, edge_ready_o, {edge_i, edge_eof_i})
   `WATKINS_ASSERT_HOLD(a_pixel_hold, pixel_valid_o, pixel_ready_i, {pixel_rgb_o, pixel_covered_o,
     pixel_last_o, pixel_x_o, pixel_y_o})
-  `WATKINS_ASSERT(a_frame_size, start |-> width_i != '0 && width_i <= LB'(MaxWidth)
-    && height_i != '0 && height_i <= LB'(watkins_pkg::MaxScreen))
+  `WATKINS_ASSERT(a_frame_size, start |-> width_i != '0 && width_i <= LineBits'(MaxWidth)
+    && height_i != '0 && height_i <= LineBits'(watkins_pkg::MaxScreen))
   `WATKINS_ASSERT(a_overflow_sticky, overflow_o |=> overflow_o)
   `WATKINS_ASSERT(a_material_between_frames, material_we_i |-> !frame_busy_q)
   `WATKINS_COVER(c_frame_done, pixel_valid_o && pixel_ready_i && pixel_last_o)
