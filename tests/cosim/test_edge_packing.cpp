@@ -126,9 +126,9 @@ TEST(EdgePacking, MatchesTheRecordInTheRtl) {
     names.push_back((*it)[2].str());
   }
   EXPECT_EQ(names, (std::vector<std::string>{"y0", "n", "poly", "material", "value", "slope"}));
-  EXPECT_EQ(dims, (std::vector<std::string>{"[LB-1:0]", "[LB-1:0]", "[PolyIdBits-1:0]", "[MaterialIdBits-1:0]",
-                                            "[VB-1:0]", "[DB-1:0]"}));
-  EXPECT_NE(ael.find("localparam int unsigned DB = EdgeOrder * VB,"), std::string::npos)
+  EXPECT_EQ(dims, (std::vector<std::string>{"[LineBits-1:0]", "[LineBits-1:0]", "[PolyIdBits-1:0]",
+                                            "[MaterialIdBits-1:0]", "[VectorBits-1:0]", "[SlopeBits-1:0]"}));
+  EXPECT_NE(ael.find("localparam int unsigned SlopeBits = EdgeOrder * VectorBits,"), std::string::npos)
       << "the slope field holds EdgeOrder channel vectors (d1, d2, d3)";
   EXPECT_NE(pkg.find("edge_bits = 2 * LineBits + pb + mb + (1 + ord) * vector_bits(xb, zb, ab);"), std::string::npos);
   EXPECT_NE(pkg.find("slot_lo = (c == 0) ? 0 : (c == 1) ? xb : xb + zb + (c - 2) * ab;"), std::string::npos);
