@@ -1,5 +1,5 @@
 // tb_watkins: Icarus Verilog bench for the yosys-elaborated watkins_top (plain Verilog
-// written by `yosys ... write_verilog`, since Icarus 11 cannot read the package's packed
+// written by `yosys ... write_verilog`, as Icarus 11 cannot read the package's packed
 // structs). Reads the hex files of watkins_export, streams the edge records with no gaps and
 // no back-pressure, checks every pixel against the model, prints cycles and mismatches.
 // The sizes are the package's, from the one source of formats (model/twins/formats.hpp):

@@ -11,21 +11,21 @@ module edge_incrementer_formal #(
   parameter int unsigned ZBits       = 4,
   parameter int unsigned AttrBits    = 5,
   parameter int unsigned PayloadBits = 3,  // the tag; <= every slot width
-  localparam int unsigned VB = watkins_pkg::vector_bits(XBits, ZBits, AttrBits),
-  localparam int unsigned LB = watkins_pkg::LineBits
+  localparam int unsigned VectorBits = watkins_pkg::vector_bits(XBits, ZBits, AttrBits),
+  localparam int unsigned LineBits   = watkins_pkg::LineBits
 ) (
   input  logic                   clk_i,
   input  logic                   rst_ni,
-  input  logic [VB-1:0]          value_i,
-  input  logic [VB-1:0]          slope_i,
-  input  logic [LB-1:0]          remaining_i,
+  input  logic [VectorBits-1:0]  value_i,
+  input  logic [VectorBits-1:0]  slope_i,
+  input  logic [LineBits-1:0]    remaining_i,
   input  logic [PayloadBits-1:0] payload_i,
   input  logic                   valid_i,
   input  logic                   ready_i
 );
   logic                   ready_o, valid_o, retire_o;
-  logic [VB-1:0]          value_o, slope_o;
-  logic [LB-1:0]          remaining_o;
+  logic [VectorBits-1:0]  value_o, slope_o;
+  logic [LineBits-1:0]    remaining_o;
   logic [PayloadBits-1:0] payload_o;
   edge_incrementer #(
     .XBits(XBits), .ZBits(ZBits), .AttrBits(AttrBits), .PayloadBits(PayloadBits)
@@ -38,7 +38,7 @@ module edge_incrementer_formal #(
   `FORMAL_ASSERT_HOLD(out, valid_o, ready_i, {value_o, slope_o, remaining_o, retire_o, payload_o})
 
   // The input beat tagged t and the output beat it must become.
-  logic [VB-1:0] value_in, slope_in, value_out;
+  logic [VectorBits-1:0] value_in, slope_in, value_out;
   always_comb begin
     for (int unsigned c = 0; c < watkins_pkg::NumChannels; c++) begin
       for (int unsigned b = 0; b < watkins_pkg::slot_bits(c, XBits, ZBits, AttrBits); b++) begin
@@ -51,14 +51,14 @@ module edge_incrementer_formal #(
 
   always_comb begin
     if (valid_i)
-      assume (payload_i == n_in_q && remaining_i == LB'(n_in_q) && value_i == value_in
+      assume (payload_i == n_in_q && remaining_i == LineBits'(n_in_q) && value_i == value_in
               && slope_i == slope_in);
     if (rst_ni) begin
       assert (ready_o == (ready_i || !valid_o));
       assert (PayloadBits'(n_in_q - n_out_q) == PayloadBits'(valid_o));
       if (valid_o) begin
         assert (payload_o == n_out_q);
-        assert (remaining_o == LB'(n_out_q) - 1'b1);
+        assert (remaining_o == LineBits'(n_out_q) - 1'b1);
         assert (retire_o == (n_out_q <= PayloadBits'(1)));
         assert (value_o == value_out);
         // The slope passes unchanged (slope_in is the same for every tag).

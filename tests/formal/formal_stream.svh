@@ -80,9 +80,9 @@
 `define FORMAL_RAM_PIPE_PROBES \
   (* hierconn *) logic                   \u_dut.en ; \
   (* hierconn *) logic [Stages-1:0]      \u_dut.u_pipe.valid_q ; \
-  (* hierconn *) logic [PtrBits-1:0]     \u_dut.u_pipe.g_ram.wr_q ; \
-  (* hierconn *) logic [PtrBits-1:0]     \u_dut.u_pipe.g_ram.rd_q ; \
-  (* hierconn *) logic [PtrBits-1:0]     \u_dut.u_pipe.g_ram.rd_inc_q ; \
+  (* hierconn *) logic [PointerBits-1:0] \u_dut.u_pipe.g_ram.wr_q ; \
+  (* hierconn *) logic [PointerBits-1:0] \u_dut.u_pipe.g_ram.rd_q ; \
+  (* hierconn *) logic [PointerBits-1:0] \u_dut.u_pipe.g_ram.rd_inc_q ; \
   (* hierconn *) logic [PayloadBits-1:0] \u_dut.u_pipe.g_ram.out_q ; \
   logic [Depth*PayloadBits-1:0] mem;
 

@@ -10,23 +10,23 @@
 module normalizer_formal #(
   parameter int unsigned PayloadBits = 5,  // the tag: >= log2 of the RAM depth (32 for 16 stages)
   parameter bit          LookAhead   = 1'b0,  // the Phong top's setting is 1
-  localparam int unsigned NB      = watkins_pkg::NormalInBits,
-  localparam int unsigned UB      = watkins_pkg::UnitBits,
+  localparam int unsigned NormalBits  = watkins_pkg::NormalInBits,
+  localparam int unsigned UnitBits    = watkins_pkg::UnitBits,
   // normalizer's pipe (16): squares, sum, the rsqrt unit, partial products, sum, shift, round
-  localparam int unsigned Stages  = 2 + watkins_pkg::RsqrtStages + 4,
-  localparam int unsigned PtrBits = $clog2(Stages + 1),
-  localparam int unsigned Depth   = 2 ** PtrBits
+  localparam int unsigned Stages      = 2 + watkins_pkg::RsqrtStages + 4,
+  localparam int unsigned PointerBits = $clog2(Stages + 1),
+  localparam int unsigned Depth       = 2 ** PointerBits
 ) (
   input  logic                   clk_i,
   input  logic                   rst_ni,
-  input  logic [3*NB-1:0]        normal_i,
+  input  logic [3*NormalBits-1:0] normal_i,
   input  logic [PayloadBits-1:0] payload_i,
   input  logic                   valid_i,
   input  logic                   ready_i,
   input  logic                   ready_next_i  // LookAhead: ready_i of the next clock
 );
   logic                   ready_o, valid_o, ready_next_o;
-  logic [3*UB-1:0]        unit_o;
+  logic [3*UnitBits-1:0]  unit_o;
   logic                   null_o;
   logic [PayloadBits-1:0] payload_o;
   normalizer #(.PayloadBits(PayloadBits), .LookAhead(LookAhead)) u_dut (.*);

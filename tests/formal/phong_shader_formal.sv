@@ -10,26 +10,26 @@
 module phong_shader_formal #(
   parameter int unsigned PayloadBits = 6,  // the tag: >= log2 of the RAM depth
   parameter bit          LookAhead   = 1'b0,  // the Phong top's setting is 1
-  localparam int unsigned UB      = watkins_pkg::UnitBits,
-  localparam int unsigned MB      = watkins_pkg::MaterialBits,
-  localparam int unsigned SB      = watkins_pkg::ShininessBits,
+  localparam int unsigned UnitBits      = watkins_pkg::UnitBits,
+  localparam int unsigned MaterialBits  = watkins_pkg::MaterialBits,
+  localparam int unsigned ShininessBits = watkins_pkg::ShininessBits,
   // phong_shader's pipe, from its own constants (yosys 0.23 reads no child's localparam): CosStage
   // stages to cos(s), PowStages per bit of n (a power's operands, product, copy, round), 4 out
   localparam int unsigned CosStage  = 6,
   localparam int unsigned PowStages = 4,
-  localparam int unsigned Stages  = CosStage + PowStages * SB + 4,
-  localparam int unsigned PtrBits = $clog2(Stages + 1),
-  localparam int unsigned Depth   = 2 ** PtrBits
+  localparam int unsigned Stages      = CosStage + PowStages * ShininessBits + 4,
+  localparam int unsigned PointerBits = $clog2(Stages + 1),
+  localparam int unsigned Depth       = 2 ** PointerBits
 ) (
   input  logic                   clk_i,
   input  logic                   rst_ni,
-  input  logic [3*UB-1:0]        light_i,
-  input  logic [3*UB-1:0]        eye_i,
-  input  logic [3*UB-1:0]        normal_i,
+  input  logic [3*UnitBits-1:0]    light_i,
+  input  logic [3*UnitBits-1:0]    eye_i,
+  input  logic [3*UnitBits-1:0]    normal_i,
   input  watkins_pkg::rgb_t      cp_i,
-  input  logic [MB-1:0]          d_i,
-  input  logic [MB-1:0]          w_i,
-  input  logic [SB-1:0]          shininess_i,
+  input  logic [MaterialBits-1:0]  d_i,
+  input  logic [MaterialBits-1:0]  w_i,
+  input  logic [ShininessBits-1:0] shininess_i,
   input  logic [PayloadBits-1:0] payload_i,
   input  logic                   valid_i,
   input  logic                   ready_i,

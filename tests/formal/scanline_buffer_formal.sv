@@ -10,17 +10,17 @@
 `include "formal_stream.svh"
 
 module scanline_buffer_formal #(
-  localparam int unsigned MaxWidth  = 4,
-  localparam int unsigned DepthBits = 2,
+  localparam int unsigned MaxWidth   = 4,
+  localparam int unsigned DepthBits  = 2,
   localparam int unsigned PolyIdBits = 2,
-  localparam int unsigned LB        = watkins_pkg::LineBits
+  localparam int unsigned LineBits   = watkins_pkg::LineBits
 ) (
   input  logic                 clk_i,
   input  logic                 rst_ni,
-  input  logic [LB-1:0]        width_i,
-  input  logic [LB-1:0]        height_i,
+  input  logic [LineBits-1:0]   width_i,
+  input  logic [LineBits-1:0]   height_i,
   input  watkins_pkg::rgb_t    background_i,
-  input  logic [LB-1:0]        frag_x_i,
+  input  logic [LineBits-1:0]   frag_x_i,
   input  logic                 tie_submission_i,
   input  logic [DepthBits-1:0] frag_depth_i,
   input  logic [PolyIdBits-1:0] frag_poly_i,
@@ -32,7 +32,7 @@ module scanline_buffer_formal #(
   logic              sparse_i;
   logic              frag_ready_o, pixel_covered_o, pixel_last_o, pixel_valid_o;
   watkins_pkg::rgb_t pixel_rgb_o;
-  logic [LB-1:0]     pixel_x_o, pixel_y_o;
+  logic [LineBits-1:0]     pixel_x_o, pixel_y_o;
   assign sparse_i = 1'b0;
   scanline_buffer #(.MaxWidth(MaxWidth), .DepthBits(DepthBits), .PolyIdBits(PolyIdBits)) u_dut (.*);
 
@@ -43,7 +43,7 @@ module scanline_buffer_formal #(
     pixel_x_o, pixel_y_o})
 
   // Frame settings are constant (immediate assume: it must hold on the clock it speaks of).
-  logic [LB-1:0] width_q, height_q;
+  logic [LineBits-1:0] width_q, height_q;
   always_ff @(posedge clk_i) begin
     width_q  <= width_i;
     height_q <= height_i;
@@ -52,7 +52,7 @@ module scanline_buffer_formal #(
 
   // The position of the next pixel out, and the pixels owed.
   logic          pix_fire, eol_fire;
-  logic [LB-1:0] ex_q, ey_q;
+  logic [LineBits-1:0] ex_q, ey_q;
   logic [3:0]    owed_q;  // <= MaxWidth + 1
   assign pix_fire = pixel_valid_o && pixel_ready_i;
   assign eol_fire = frag_valid_i && frag_ready_o && frag_eol_i;
@@ -71,7 +71,7 @@ module scanline_buffer_formal #(
   end
 
   // The reader's next position: after the beat on the output, if there is one.
-  logic [LB-1:0] nx, ny;
+  logic [LineBits-1:0] nx, ny;
   always_comb begin
     nx = ex_q;
     ny = ey_q;
@@ -83,13 +83,14 @@ module scanline_buffer_formal #(
 
   (* hierconn *) logic          \u_dut.rd_busy_q ;
   (* hierconn *) logic          \u_dut.a_valid_q ;
-  (* hierconn *) logic [LB-1:0] \u_dut.rx_q ;
-  (* hierconn *) logic [LB-1:0] \u_dut.rline_q ;
+  (* hierconn *) logic [LineBits-1:0] \u_dut.rx_q ;
+  (* hierconn *) logic [LineBits-1:0] \u_dut.rline_q ;
   (* hierconn *) logic          \u_dut.rx_end_q ;
   (* hierconn *) logic          \u_dut.last_line_q ;
 
   always_comb begin
-    assume (width_i >= LB'(1) && width_i <= LB'(MaxWidth) && height_i >= LB'(1));
+    assume (width_i >= LineBits'(1) && width_i <= LineBits'(MaxWidth)
+            && height_i >= LineBits'(1));
     if (frag_valid_i && !frag_eol_i) assume (frag_x_i < width_i);
     if (rst_ni) begin
       // Every pixel of every marked line, once, in raster order, and the frame's last flagged.

@@ -18,7 +18,7 @@
 `include "formal_stream.svh"
 
 module segment_former_formal #(
-  localparam int unsigned N              = 3,  // MaxActiveEdges: the entries probed below
+  localparam int unsigned Entries        = 3,  // MaxActiveEdges: the entries probed below
   localparam int unsigned VectorBits     = 3,  // the tag
   localparam int unsigned PolyIdBits     = 2,
   localparam int unsigned MaterialIdBits = 1,
@@ -38,7 +38,7 @@ module segment_former_formal #(
   logic [PolyIdBits-1:0]     seg_poly_o;
   logic [MaterialIdBits-1:0] seg_material_o;
   segment_former #(
-    .MaxActiveEdges(N), .VectorBits(VectorBits), .PolyIdBits(PolyIdBits),
+    .MaxActiveEdges(Entries), .VectorBits(VectorBits), .PolyIdBits(PolyIdBits),
     .MaterialIdBits(MaterialIdBits)
   ) u_dut (.*);
 
@@ -57,14 +57,14 @@ module segment_former_formal #(
   (* hierconn *) logic [PolyIdBits-1:0]     \u_dut.in_poly_q ;
   (* hierconn *) logic [MaterialIdBits-1:0] \u_dut.in_material_q ;
   (* hierconn *) logic [VectorBits-1:0]     \u_dut.in_value_q ;
-  (* hierconn *) logic [N-1:0]              \u_dut.in_same_q ;
+  (* hierconn *) logic [Entries-1:0]              \u_dut.in_same_q ;
   (* hierconn *) logic                      \u_dut.pr_valid_q ;
   (* hierconn *) logic                      \u_dut.pr_eol_q ;
   (* hierconn *) logic                      \u_dut.pr_closes_q ;
   (* hierconn *) logic [PolyIdBits-1:0]     \u_dut.pr_poly_q ;
   (* hierconn *) logic [MaterialIdBits-1:0] \u_dut.pr_material_q ;
   (* hierconn *) logic [VectorBits-1:0]     \u_dut.pr_value_q ;
-  (* hierconn *) logic [N-1:0]              \u_dut.pr_match_q ;
+  (* hierconn *) logic [Entries-1:0]              \u_dut.pr_match_q ;
   (* hierconn *) logic [1:0]                \u_dut.pr_idx_q ;
   logic                      a_valid, a_eol;      // the input register's edge
   logic [PolyIdBits-1:0]     a_poly;
@@ -115,7 +115,7 @@ module segment_former_formal #(
   `FORMAL_COUNT(n_due_q, VectorBits, in_valid && closes, seg_ready_i || !seg_valid_o)
   `FORMAL_COUNT(n_out_q, VectorBits, seg_valid_o, seg_ready_i)
 
-  logic [1:0] opened_n_q;  // segments opened on this line, <= N
+  logic [1:0] opened_n_q;  // segments opened on this line, <= Entries
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
       open_q     <= '0;
@@ -175,17 +175,17 @@ module segment_former_formal #(
   endfunction
 
   // The table (hierconn wires: flatten connects them to u_dut's registers).
-  (* hierconn *) logic [N-1:0]          \u_dut.open_q ;
+  (* hierconn *) logic [Entries-1:0]          \u_dut.open_q ;
   (* hierconn *) logic [1:0]            \u_dut.used_q ;
-  (* hierconn *) logic [N:0]            \u_dut.used_oh_q ;
+  (* hierconn *) logic [Entries:0]            \u_dut.used_oh_q ;
   (* hierconn *) logic [PolyIdBits-1:0] \u_dut.open_poly_q[0] ;
   (* hierconn *) logic [PolyIdBits-1:0] \u_dut.open_poly_q[1] ;
   (* hierconn *) logic [PolyIdBits-1:0] \u_dut.open_poly_q[2] ;
   (* hierconn *) logic [VectorBits-1:0] \u_dut.open_value_q[0] ;
   (* hierconn *) logic [VectorBits-1:0] \u_dut.open_value_q[1] ;
   (* hierconn *) logic [VectorBits-1:0] \u_dut.open_value_q[2] ;
-  logic [PolyIdBits-1:0] poly [N];
-  logic [VectorBits-1:0] value [N];
+  logic [PolyIdBits-1:0] poly [Entries];
+  logic [VectorBits-1:0] value [Entries];
   assign poly[0]  = \u_dut.open_poly_q[0] ;
   assign poly[1]  = \u_dut.open_poly_q[1] ;
   assign poly[2]  = \u_dut.open_poly_q[2] ;
@@ -196,8 +196,8 @@ module segment_former_formal #(
   always_comb begin
     if (edge_valid_i) begin
       assume (edge_value_i == n_in_q);
-      // At most N segments opened per line.
-      assume (edge_eol_i || open_after[edge_poly_i] || opened_n_after < 2'(N));
+      // At most Entries segments opened per line.
+      assume (edge_eol_i || open_after[edge_poly_i] || opened_n_after < 2'(Entries));
     end
     if (rst_ni) begin
       assert (edge_ready_o == (seg_ready_i || !seg_valid_o));
@@ -211,10 +211,10 @@ module segment_former_formal #(
         assert (\u_dut.in_prev_q == (in_valid && !in_eol && in_poly == a_poly));
         // The entries it found on arrival are the open ones of its polygon now.
         if (!a_eol)
-          for (int unsigned i = 0; i < N; i++)
+          for (int unsigned i = 0; i < Entries; i++)
             assert ((\u_dut.in_same_q [i] && \u_dut.open_q [i]) == (\u_dut.open_q [i] && poly[i] == a_poly));
         // It fits in the table once the edge ahead is paired.
-        assert (a_eol || open_mid[a_poly] || opened_n_mid < 2'(N));
+        assert (a_eol || open_mid[a_poly] || opened_n_mid < 2'(Entries));
       end
       if (in_valid) begin
         if (a_valid)
@@ -225,11 +225,11 @@ module segment_former_formal #(
                   && in_material == taken_material_q && in_value == taken_value_q);
         assert (in_value == VectorBits'(n_in_q - 1'b1 - VectorBits'(a_valid)));
         // It fits in the table (the environment's bound, taken when it arrived).
-        assert (in_eol || open_q[in_poly] || opened_n_q < 2'(N));
+        assert (in_eol || open_q[in_poly] || opened_n_q < 2'(Entries));
         // Its open entry, whether it closes and the entry's index are a search's now.
         if (!in_eol) begin
           assert (\u_dut.pr_closes_q == open_q[in_poly]);
-          for (int unsigned i = 0; i < N; i++)
+          for (int unsigned i = 0; i < Entries; i++)
             assert (\u_dut.pr_match_q [i] == (\u_dut.open_q [i] && poly[i] == in_poly));
           if (\u_dut.pr_closes_q ) assert (\u_dut.pr_match_q [\u_dut.pr_idx_q ]);
         end
@@ -244,12 +244,12 @@ module segment_former_formal #(
       // Induction invariants: the table mirrors the reference.
       assert (count(Polys'(\u_dut.open_q )) == count(open_q));
       assert (\u_dut.used_q == opened_n_q);
-      assert (\u_dut.used_oh_q == {{N{1'b0}}, 1'b1} << \u_dut.used_q );
-      for (int unsigned i = 0; i < N; i++) begin
+      assert (\u_dut.used_oh_q == {{Entries{1'b0}}, 1'b1} << \u_dut.used_q );
+      for (int unsigned i = 0; i < Entries; i++) begin
         if (\u_dut.open_q [i]) begin
           assert (i < 32'(\u_dut.used_q ));
           assert (open_q[poly[i]] && value[i] == opened_q[poly[i]]);
-          for (int unsigned j = i + 1; j < N; j++)
+          for (int unsigned j = i + 1; j < Entries; j++)
             if (\u_dut.open_q [j]) assert (poly[i] != poly[j]);
         end
       end

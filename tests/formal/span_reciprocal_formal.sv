@@ -1,4 +1,4 @@
-// span_reciprocal_formal: proves rtl/span_reciprocal.sv (26 stages, a 4-bit payload, 6-bit dx)
+// span_reciprocal_formal: proves rtl/span_reciprocal.sv (26 stages, a 5-bit payload, 6-bit dx)
 // holds valid and its whole output until ready, passes every beat once, in order, with its payload
 // unchanged (each input beat carries its sequence number as payload), keeps ready_o =
 // ready_i || !valid_o and holds at most 26 beats. stall_pipe_checker ties the payload RAM of its
@@ -10,11 +10,11 @@ module span_reciprocal_formal #(
   parameter int unsigned DxBits      = 6,
   parameter int unsigned PayloadBits = 5,  // the tag: > log2(Stages + 1)
   parameter bit          LookAhead   = 1'b0,  // the interpolator's setting is 1
-  localparam int unsigned RecipBits  = watkins_pkg::RecipBits,
-  localparam int unsigned ExpBits    = $clog2(DxBits),
-  localparam int unsigned Stages     = RecipBits + 2,  // span_reciprocal's pipe
-  localparam int unsigned PtrBits    = $clog2(Stages + 1),
-  localparam int unsigned Depth      = 2 ** PtrBits
+  localparam int unsigned RecipBits    = watkins_pkg::RecipBits,
+  localparam int unsigned ExponentBits = $clog2(DxBits),
+  localparam int unsigned Stages       = RecipBits + 2,  // span_reciprocal's pipe
+  localparam int unsigned PointerBits = $clog2(Stages + 1),
+  localparam int unsigned Depth       = 2 ** PointerBits
 ) (
   input  logic                   clk_i,
   input  logic                   rst_ni,
@@ -26,7 +26,7 @@ module span_reciprocal_formal #(
 );
   logic                   ready_o, valid_o, ready_next_o;
   logic [RecipBits:0]     recip_o;
-  logic [ExpBits-1:0]     p_o;
+  logic [ExponentBits-1:0] p_o;
   logic [PayloadBits-1:0] payload_o;
   span_reciprocal #(.DxBits(DxBits), .PayloadBits(PayloadBits), .LookAhead(LookAhead)) u_dut (.*);
 

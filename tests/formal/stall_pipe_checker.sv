@@ -6,18 +6,17 @@
 // n_out, the youngest slot's plus its valid bit n_in; per slot, the beats that entered after it
 // are at most the slots at and below it; each valid stage's payload (or each RAM word of a beat
 // in flight, and out_q) is its tag. Every invariant relates a stage to its neighbour or a word to
-// the counters, so the SAT problem has no chain across the stages (session 14: the former
-// invariants, each valid stage's tag against the nearest valid stage above and below, a
-// 33-deep mux chain, and each valid stage's RAM word, Stages x Depth checks, left the 33-stage
-// shader's proof open after 2,400 s; these close it in half a minute of CPU). With them
-// `sat -tempinduct` closes at length 1 whatever the stall pattern; without them a stall long
-// enough hides any corrupt state.
+// the counters, so the SAT problem has no chain across the stages (invariants that tie each
+// valid stage's tag to the nearest valid stage above and below build a mux chain as deep as the
+// pipe, and checking each valid stage's RAM word takes Stages x Depth checks: the shader's proof
+// then does not close in practical time). With them `sat -tempinduct` closes at length 1
+// whatever the stall pattern; without them a stall long enough hides any corrupt state.
 module stall_pipe_checker #(
   parameter int unsigned Stages      = 2,
-  parameter int unsigned PayloadBits = 4,     // the tag width, >= PtrBits
+  parameter int unsigned PayloadBits = 4,     // the tag width, >= PointerBits
   parameter bit          PayloadRam  = 1'b0,
-  localparam int unsigned PtrBits = $clog2(Stages + 1),  // as stall_pipe's g_ram
-  localparam int unsigned Depth   = 2 ** PtrBits
+  localparam int unsigned PointerBits = $clog2(Stages + 1),  // as stall_pipe's g_ram
+  localparam int unsigned Depth       = 2 ** PointerBits
 ) (
   input logic                           clk_i,
   input logic                           rst_ni,
@@ -26,8 +25,8 @@ module stall_pipe_checker #(
   input logic [PayloadBits-1:0]         n_out_i,       // tag of the next beat out
   input logic [Stages-1:0]              valid_q_i,     // valid_q
   input logic [Stages*PayloadBits-1:0]  shift_q_i,     // g_shift.payload_q[s] at s*PayloadBits
-  input logic [PtrBits-1:0]             wr_q_i,        // g_ram.wr_q
-  input logic [PtrBits-1:0]             rd_q_i,        // g_ram.rd_q
+  input logic [PointerBits-1:0]         wr_q_i,        // g_ram.wr_q
+  input logic [PointerBits-1:0]         rd_q_i,        // g_ram.rd_q
   input logic [Depth*PayloadBits-1:0]   mem_i,         // g_ram.mem[k] at k*PayloadBits
   input logic [PayloadBits-1:0]         out_q_i        // g_ram.out_q
 );
@@ -43,11 +42,12 @@ module stall_pipe_checker #(
     end
   end
 
-  // The tag at or after n_out whose low PtrBits are w: the beat word w holds if it is in flight.
+  // The tag at or after n_out whose low PointerBits are w: the beat word w holds if it is in
+  // flight.
   logic [PayloadBits-1:0] word_tag [Depth];
   always_comb
     for (int unsigned w = 0; w < Depth; w++)
-      word_tag[w] = n_out_i + PayloadBits'(PtrBits'(PtrBits'(w) - PtrBits'(n_out_i)));
+      word_tag[w] = n_out_i + PayloadBits'(PointerBits'(PointerBits'(w) - PointerBits'(n_out_i)));
 
   always_comb begin
     if (rst_ni) begin
@@ -69,13 +69,13 @@ module stall_pipe_checker #(
       if (PayloadRam) begin
         // Each word of a beat in flight holds its tag (Depth > Stages: a word is rewritten only
         // once its beat left). Word w's beat, if any, is the tag at or after n_out whose low
-        // PtrBits are w; it is in flight if it comes before n_in.
+        // PointerBits are w; it is in flight if it comes before n_in.
         for (int unsigned w = 0; w < Depth; w++) begin
           if (PayloadBits'(word_tag[w] - n_out_i) < PayloadBits'(n_in_i - n_out_i))
             assert (mem_i[w*PayloadBits +: PayloadBits] == word_tag[w]);
         end
         // The pointers count beats in and out as the tags do.
-        assert (wr_q_i == PtrBits'(n_in_i) && rd_q_i == PtrBits'(n_out_i));
+        assert (wr_q_i == PointerBits'(n_in_i) && rd_q_i == PointerBits'(n_out_i));
         // The beat in the last stage: out_q was loaded with it as it left the stage before (its
         // word written at least a clock earlier), and is not reloaded but with the same word while
         // it waits. (out_q is read only while a beat is in the last stage but one: a beat further

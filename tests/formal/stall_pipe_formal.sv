@@ -21,8 +21,8 @@ module stall_pipe_formal #(
   input  logic                   ready_i,
   input  logic                   ready_next_i
 );
-  localparam int unsigned PtrBits = $clog2(Stages + 1);
-  localparam int unsigned Depth   = 2 ** PtrBits;
+  localparam int unsigned PointerBits = $clog2(Stages + 1);
+  localparam int unsigned Depth   = 2 ** PointerBits;
 
   logic                   ready_o, valid_o, en_o, en_next_o;
   logic [PayloadBits-1:0] payload_o;
@@ -59,10 +59,10 @@ module stall_pipe_formal #(
 
   // The internals (absent words stay undriven and unused).
   (* hierconn *) logic [Stages-1:0] \u_dut.valid_q ;
-  (* hierconn *) logic [PtrBits-1:0] \u_dut.g_ram.wr_q ;
-  (* hierconn *) logic [PtrBits-1:0] \u_dut.g_ram.rd_q ;
-  (* hierconn *) logic [PtrBits-1:0] \u_dut.g_ram.rd_inc_q ;
-  (* hierconn *) logic [PtrBits-1:0] \u_dut.g_ram.rd_addr ;
+  (* hierconn *) logic [PointerBits-1:0] \u_dut.g_ram.wr_q ;
+  (* hierconn *) logic [PointerBits-1:0] \u_dut.g_ram.rd_q ;
+  (* hierconn *) logic [PointerBits-1:0] \u_dut.g_ram.rd_inc_q ;
+  (* hierconn *) logic [PointerBits-1:0] \u_dut.g_ram.rd_addr ;
   (* hierconn *) logic [PayloadBits-1:0] \u_dut.g_ram.out_q ;
   logic [4*PayloadBits-1:0] shift_q;
   logic [8*PayloadBits-1:0] mem;  // Depth <= 8 (Stages = 4 with flops); words 4..7 unused

@@ -16,8 +16,8 @@ module stream_fifo_formal #(
   input  logic                valid_i,
   input  logic                ready_i
 );
-  localparam int unsigned PtrBits = (Depth > 1) ? $clog2(Depth) : 1;
-  localparam int unsigned CntBits = $clog2(Depth + 1);
+  localparam int unsigned PointerBits = (Depth > 1) ? $clog2(Depth) : 1;
+  localparam int unsigned CountBits = $clog2(Depth + 1);
 
   logic                ready_o, valid_o, ready_next_o;
   logic [DataBits-1:0] data_o;
@@ -33,10 +33,10 @@ module stream_fifo_formal #(
   always_ff @(posedge clk_i) ready_next_q <= rst_ni ? ready_next_o : 1'b1;
   always_comb if (past_q && rst_ni) assert (ready_o == ready_next_q);
 
-  (* hierconn *) logic [CntBits-1:0]  \u_dut.cnt_q ;
+  (* hierconn *) logic [CountBits-1:0]  \u_dut.cnt_q ;
   (* hierconn *) logic                \u_dut.room_q ;
-  (* hierconn *) logic [PtrBits-1:0]  \u_dut.rd_q ;
-  (* hierconn *) logic [PtrBits-1:0]  \u_dut.wr_q ;
+  (* hierconn *) logic [PointerBits-1:0]  \u_dut.rd_q ;
+  (* hierconn *) logic [PointerBits-1:0]  \u_dut.wr_q ;
   (* hierconn *) logic [DataBits-1:0] \u_dut.head_q ;
   (* hierconn *) logic [DataBits-1:0] \u_dut.mem_q[0] ;
   (* hierconn *) logic [DataBits-1:0] \u_dut.mem_q[1] ;
@@ -70,7 +70,7 @@ module stream_fifo_formal #(
       assert (ready_o == (occupancy != DataBits'(Depth)));
       // Induction invariants: pointers in range, the write pointer cnt slots after the read
       // pointer, and the k-th occupied slot holds beat n_out + k.
-      assert (\u_dut.room_q == (\u_dut.cnt_q != CntBits'(Depth)));
+      assert (\u_dut.room_q == (\u_dut.cnt_q != CountBits'(Depth)));
       assert (32'(\u_dut.rd_q ) < Depth);
       assert (32'(\u_dut.wr_q ) < Depth);
       assert (wrap(32'(\u_dut.rd_q ), 32'(\u_dut.cnt_q )) == 32'(\u_dut.wr_q ));
