@@ -78,6 +78,6 @@ static_assert(DepthBits + FracBits + 2 <= ChannelBits, "depth (plus sign and gua
 static_assert(VertexIntBits + FracBits + 1 <= ChannelBits, "X must fit a channel word");
 static_assert(ChannelBits + RecipBits + 1 <= 127, "span products must fit 128-bit model math");
 // W < 2 keeps the smoother's denominator d = 2^2F + 2^F·w·n_edge + w²·n_corner below
-// 6.25·2^(2·SmoothWBits), so 2d fits rtl/smoother.sv's DenBits = 2·SmoothWBits + 4.
+// 6.25·2^(2·SmoothWBits), so 2d fits rtl/smoother.sv's DivisorBits = 2·SmoothWBits + 4.
 static_assert(SmoothWFracBits < SmoothWBits, "smoother: W must stay below 2 (its divider's width)");
 }  // namespace watkins::fmt
