@@ -1,4 +1,4 @@
-// The throughput scene of the benchmarks (issue 11): a size x size screen tiled by cells x cells
+// The throughput scene of the benchmarks: a size x size screen tiled by cells x cells
 // squares, each split into two triangles, so every pixel is covered exactly once (size^2
 // fragments, 2 cells^2 triangles), with shades and depths varying smoothly across the screen.
 // watkins_bench and watkins_gl_bench render the same triangles.

@@ -1,5 +1,5 @@
 // watkins size SCENE [--bound L] [--shading S] [--patches curves|polygons] [--out F]: the smallest
-// configuration whose fixed-point image stays within L levels of the double reference (issue 9, part 2).
+// configuration whose fixed-point image stays within L levels of the double reference.
 //
 // The criterion, per pixel, against the double reference of the same algorithm:
 //  * where the image and the reference show the same polygon, |Δ| ≤ max(L, Δ_default): the default

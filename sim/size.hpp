@@ -1,7 +1,7 @@
-// watkins size: the smallest hardware configuration a scene needs (issue 9, part 2). A search,
-// not a formula: fraction bits per channel group and depth_bits lowered one bit at a time while
-// the fixed-point image stays within L levels of the double reference, integer bits and
-// capacities exactly what the scene needs. See size.cpp.
+// watkins size: the smallest hardware configuration a scene needs. A search, not a formula:
+// fraction bits per channel group and depth_bits lowered one bit at a time while the fixed-point
+// image stays within L levels of the double reference, integer bits and capacities exactly what the
+// scene needs. See size.cpp.
 #pragma once
 
 #include <string>

@@ -1,7 +1,7 @@
-// watkins synth (issue 10, item 3): each design (a block of rtl/ or a top) at a configuration goes
-// through yosys and nextpnr for each target inside a generated wrapper; the table gives what
-// yosys mapped (LUT4, FF, carry, DSP, block RAM), what nextpnr placed (logic cells against the
-// device), the routed Fmax and the critical path's start and end registers.
+// watkins synth: each design (a block of rtl/ or a top) at a configuration goes through yosys and
+// nextpnr for each target inside a generated wrapper; the table gives what yosys mapped (LUT4, FF,
+// carry, DSP, block RAM), what nextpnr placed (logic cells against the device), the routed Fmax and
+// the critical path's start and end registers.
 //
 // The wrapper needs four pins (clk, si, so and nothing else) on every target, so the same
 // netlist is measured on every part, a 466-bit edge record fits a 48-pin UP5K package, and every
@@ -21,9 +21,9 @@
 // in the table's notes: that design was synthesized at its default for it.
 //
 // Seeds (--seeds): nextpnr's placement is seeded, and runs of nearly the same netlist differ by
-// several MHz (docs/synth-timing.md, "Session 14 (lead)"). With --seeds, yosys runs once per
-// (configuration, design, target) and nextpnr once per seed (`--seed N`, in the job folder's
-// seed-N/), so a figure comes with its spread over seeds and a best run that can be reproduced.
+// several MHz from one seed to another. With --seeds, yosys runs once per (configuration, design,
+// target) and nextpnr once per seed (`--seed N`, in the job folder's seed-N/), so a figure comes
+// with its spread over seeds and a best run that can be reproduced.
 #include "synth.hpp"
 
 #include <CLI/CLI.hpp>
@@ -96,16 +96,16 @@ struct Target {
   const char* synth;                // yosys synthesis command (without -top)
   const char* nextpnr;              // binary; WATKINS_NEXTPNR_ICE40 / _ECP5 override
   std::vector<std::string> device;  // nextpnr's device and package options
-  double freq_mhz;                  // clock constraint: issue 10's target on that part
+  double freq_mhz;                  // clock constraint: the pipeline's target on that part
   std::vector<std::string> placer;  // nextpnr's placement options (--nextpnr-options replaces them)
 };
 // UP5K: its 8 MAC16 (-dsp) and 4 SPRAM (-spram) are what make it a candidate for the pipeline.
 // HX8K has neither. The packages are the parts' usual ones; the wrapper needs 4 pins of any.
 // ECP5: HeAP's timing weight 30 (nextpnr's default 10). The sized tops fill a quarter of the die
-// and their paths were 85-92 % routing; with weight 30 the placer keeps critical nets short: the
-// sized Gouraud top on seeds 1 / 2 / 3 went from 101.0 / 106.3 / 111.8 to 112.7 / 112.7 / 110.8 MHz
-// on one netlist (docs/synth-timing.md, "Session 21"). Weight 60 and `--placer static` gained
-// less; `--router router2` lost a quarter (78.1).
+// and most of their critical paths' delay is routing; weight 30 makes the placer keep critical
+// nets short, and on the sized tops it routes faster than the default 10, than 60 and than
+// `--placer static`, over several seeds of one netlist (docs/reference/timing.md; the runs in
+// docs/results/synth.md). `--router router2` routes slower still.
 const Target kTargets[] = {
     {"ice40-up5k", Family::Ice40, "synth_ice40 -device u -dsp -spram", "nextpnr-ice40",
      {"--up5k", "--package", "sg48", "--pcf-allow-unconstrained"}, 25, {}},

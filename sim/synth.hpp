@@ -1,6 +1,6 @@
 // watkins synth: every block and both tops of rtl/ at a configuration, through yosys and
 // nextpnr (iCE40 UP5K and HX8K, ECP5-85), inside a generated wrapper that registers all IO and
-// needs four pins; a table of utilisation, routed Fmax and critical path (issue 10, item 3).
+// needs four pins; a table of utilisation, routed Fmax and critical path.
 // With --seeds, each netlist is placed and routed once per nextpnr seed, and the table gains the
 // spread of Fmax over the seeds and the best seed. See synth.cpp.
 #pragma once

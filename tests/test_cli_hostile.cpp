@@ -1,4 +1,4 @@
-// Hostile and careless command lines (issue 12): exit codes 0 ok, 1 bad input, 2 usage, 3 internal
+// Hostile and careless command lines: exit codes 0 ok, 1 bad input, 2 usage, 3 internal
 // error or RTL mismatch; one line naming the file, field or option; no output file, not even a
 // partial one or a temporary, unless the whole run succeeded.
 #include <gtest/gtest.h>
@@ -95,7 +95,7 @@ TEST_F(CliHostile, PngWriteErrorsAreReported) {
 }
 
 TEST_F(CliHostile, NoPartialOutputsWhenAnyWriteFails) {
-  // --diff was written before --out failed; now neither is, and no temporary is left.
+  // --out fails: --diff is not written either, and no temporary is left.
   const CliRun r = run_cli("render " + sphere() + " --diff d.png --out /dev/full", dir_);
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_FALSE(has("d.png"));

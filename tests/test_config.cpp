@@ -1,4 +1,4 @@
-// Run-time configurations (model/twins/config.hpp, docs/guide/config-format.md): the default is today's
+// Run-time configurations (model/twins/config.hpp, docs/guide/config-format.md): the default is
 // formats.hpp exactly; configuration files are validated field by field; narrower shade formats
 // cost the error derived below and no more; a configuration too narrow for a scene is refused.
 #include <gtest/gtest.h>
@@ -79,7 +79,7 @@ TEST(Config, FileErrorsNameTheField) {
 }
 
 // `watkins_gen_pkg --params F --shading S`: watkins_top's parameters for the configuration, one
-// Verilator -G option per line; the default configuration gives today's widths.
+// Verilator -G option per line; the default configuration gives formats.hpp's widths.
 TEST(Config, GeneratorPrintsTheRtlParametersOfAConfiguration) {
   char tmpl[] = "/tmp/watkins_cfgpkg_XXXXXX";
   const int fd = mkstemp(tmpl);
@@ -119,9 +119,10 @@ TEST(Config, GeneratorPrintsTheRtlParametersOfAConfiguration) {
   std::remove(path.c_str());
 }
 
-// "smoothing": absent or true keeps today's top (and its parameter list, so every existing file
-// builds what it built); false drops the smoother: Smoothing = 0, and a scene that smooths is
-// refused in one line naming the field, while one that does not renders exactly as before.
+// "smoothing": absent or true keeps the default top (and its parameter list, so a file without the
+// key builds the same top as one with it true); false drops the smoother: Smoothing = 0, and a
+// scene that smooths is refused in one line naming the field, while one that does not renders
+// exactly as on the top with the smoother.
 TEST(Config, SmoothingFalseBuildsATopWithoutTheSmoother) {
   auto err = [](const std::string& text) { return error_of([&] { parse_config(text, "c.json"); }); };
   EXPECT_TRUE(parse_config("{}", "c.json").smoothing);

@@ -328,11 +328,11 @@ TEST(Curves, WhittedMaterialRule) {
   EXPECT_THROW(load_scene_text(bad, "p", ".", o), SceneError);
 }
 
-// Stretch (issue 15 item 4's comparison): the Newton option in fixed point, one iteration per line
-// with an N-bit reciprocal, on Whitted's screen-space cubics per piece, against the double Newton
-// on the exact edges (patch.json, 8 x 8 subpatches). Measured (x, px), any N from 8 to 20 bits:
-// total max 0.81, mean 0.0068; the cubic fit alone max 0.71; the one-iteration stepping alone max
-// 0.82, mean 0.0016, on 16 of 2864 lines over 1/16 px (a piece of a shared edge counts per region).
+// The Newton option in fixed point, one iteration per line with an N-bit reciprocal, on Whitted's
+// screen-space cubics per piece, against the double Newton on the exact edges (patch.json, 8 x 8
+// subpatches). Measured (x, px), any N from 8 to 20 bits: total max 0.81, mean 0.0068; the cubic
+// fit alone max 0.71; the one-iteration stepping alone max 0.82, mean 0.0016, on 16 of 2864 lines
+// over 1/16 px (a piece of a shared edge counts per region).
 TEST(Curves, FixedPointNewtonAgainstTheDouble) {
   const DescribedPatch d;
   const BuiltScene& s = d.s;

@@ -1,4 +1,4 @@
-// Hostile and careless input (issue 12): the scene parser and the OBJ reader refuse it with one
+// Hostile and careless input: the scene parser and the OBJ reader refuse it with one
 // message naming the file, line or field; nothing recurses on input, nothing allocates before
 // the size is known, nothing non-finite gets through.
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // STL import (ASCII and binary, welding, bad input), crease-angle normals and face splitting by
-// edge length (issue 13): the mesh becomes polygons like any other, so the pipelines need nothing new.
+// edge length: the mesh becomes polygons like any other, so the pipelines need nothing new.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,8 +1,8 @@
-// The Phong per-pixel path (WatkinsTop) against the stage-by-stage formulas it was rewritten from
-// (issue 11): the same bits for every input. rsqrt: every mantissa (W = 20 bits). power: every n
-// and a dense set of bases. The normalizer and the shader: the rewrites are exact identities
-// (the comments in normalizer.hpp and phong_shader.hpp argue each); here dense random and
-// boundary inputs check them, and every mantissa checks the bound that makes the normalizer's
+// The Phong per-pixel path (WatkinsTop's fast path) against the stage-by-stage formulas, kept here
+// as its specification: the same bits for every input. rsqrt: every mantissa (W = 20 bits). power:
+// every n and a dense set of bases. The normalizer and the shader: the fast forms are exact
+// identities (the comments in normalizer.hpp and phong_shader.hpp argue each); here dense random
+// and boundary inputs check them, and every mantissa checks the bound that makes the normalizer's
 // saturation idle.
 #include <gtest/gtest.h>
 
@@ -18,7 +18,7 @@
 namespace watkins {
 namespace {
 
-// ---- the formulas as they stood before the fast path (session 8), kept as the specification ----
+// ---- the stage-by-stage formulas: the specification the fast path must match bit for bit ----
 std::uint32_t ref_rsqrt_mant(std::uint32_t mant) {
   using R = RsqrtUnit;
   const std::uint64_t mc = (static_cast<std::uint64_t>(mant) << 1) | 1u;

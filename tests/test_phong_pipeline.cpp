@@ -41,9 +41,9 @@ BuiltScene shipped_phong(const std::string& name) {
 }
 
 // Measured: max 2, mean 0.2079, 1 of 37558 pixels > 1 level. The mean is set by Cp's 8-bit
-// format (0.95 * 255 = 242.25 -> 242 ...). (With vertex normals turned towards the eye one by
-// one, silhouette polygons got antipodal normals and errors up to 57 levels: the side seen is
-// now decided per polygon.)
+// format (0.95 * 255 = 242.25 -> 242 ...). (The side seen is decided per polygon: vertex normals
+// turned towards the eye one by one would give silhouette polygons antipodal normals and errors
+// up to 57 levels.)
 TEST(PhongPipeline, SphereWithinBoundsOfTheDoubleReference) {
   const ImageError e = fixed_vs_double(shipped_phong("sphere.json"));
   EXPECT_GT(e.compared, 37000);

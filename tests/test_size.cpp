@@ -1,4 +1,4 @@
-// `watkins size SCENE`: on shipped scenes the configuration it writes is smaller than today's
+// `watkins size SCENE`: on shipped scenes the configuration it writes is smaller than the default's
 // 466-bit edge records, renders within the bound with no coverage or visibility change beyond
 // the default configuration's, and is a local minimum (one bit less in any width breaks the bound
 // or the flips, or is no valid configuration); bad input is one line, exit code 1, no file.

@@ -1,5 +1,5 @@
-// A fixed-point model of the Newton option for stepping curved edges in hardware (issue 15 item 4),
-// to measure it against the double Newton of whitted_edges.hpp; not a twin of any RTL (the
+// A fixed-point model of the Newton option for stepping curved edges in hardware, to measure it
+// against the double Newton of whitted_edges.hpp; not a twin of any RTL (the
 // pipeline steps curves by forward differences: docs/reference/whitted.md). Per y-monotonic piece the
 // preparation would hand the hardware Whitted's screen-space cubics in s in [0, 1] over the piece
 // (here the Hermite of the exact projected edge's end values and slopes) for y, x, depth and the

@@ -1,6 +1,6 @@
 // Configuration files (docs/guide/config-format.md): a JSON object with the format of each channel
 // group and the capacities, every key optional (a missing key keeps the default, which is
-// today's formats.hpp). Bad input is a SceneError of one line naming the file and the field,
+// formats.hpp's). Bad input is a SceneError of one line naming the file and the field,
 // like scenes: "narrow.json: shade.frac_bits: expected an integer, got 2.5".
 #pragma once
 

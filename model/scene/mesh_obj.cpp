@@ -1,7 +1,7 @@
 // OBJ loading: a strict reader of the statements a polygon mesh uses (v, vn, f; vt is checked and
 // ignored; every other statement is skipped as OBJ readers do). Written here rather than taken
 // from tinyobjloader, whose 2.0.0rc10 keeps a face's vertex count in a byte (a 256-vertex face
-// became a wrong polygon), reads "nan" and garbage tokens as 0 and wraps indices past 2^63.
+// becomes a wrong polygon), reads "nan" and garbage tokens as 0 and wraps indices past 2^63.
 #include "mesh_obj.hpp"
 
 #include "mesh_polygons.hpp"

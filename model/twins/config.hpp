@@ -1,7 +1,7 @@
 // A hardware configuration chosen at run time: the fixed-point format of each channel group
 // (X, depth, shade R G B, normal Nx Ny Nz) and the capacities of the pipeline. The twins and
 // scene preparation take their widths from it, so one binary models any configuration; the
-// default is exactly today's compile-time formats (formats.hpp, rtl/watkins_pkg.sv), bit for bit.
+// default is exactly the compile-time formats (formats.hpp, rtl/watkins_pkg.sv), bit for bit.
 //
 // A channel group's word is signed two's complement, int_bits + frac_bits wide; int_bits
 // counts the sign bit. Values are in the group's own unit scaled by 2^frac_bits: X in pixels,
@@ -19,10 +19,10 @@
 //   max_edges        EdgeIdBits = clog2(max_edges) (the active-edge list's record numbers)
 //   edge_order       EdgeOrder: 1 steps value += slope (straight edges), 3 steps a cubic by forward
 //                    differences (Whitted's curved edges, model/prepare/curved_edges.hpp); listed
-//                    only when not 1, so an order-1 configuration's list is what it always was
+//                    only when not 1, so an order-1 configuration's list is that of one without it
 //   smoothing        Smoothing: false builds the top without Herman & Liu's smoother (a frame
 //                    that smooths is refused, prepare() and the RTL benches); listed only when
-//                    false, so a smoothing configuration's list is what it always was
+//                    false, so a smoothing configuration's list is that of one without it
 // Each twin's header lists which of its registers takes which of these.
 #pragma once
 
@@ -67,7 +67,7 @@ struct Config {
   int max_materials = fmt::MaxMaterials;         // Phong material table entries
   int max_polygons = fmt::MaxPolygons;           // polygons per frame (polygon ids)
   int max_edges = fmt::MaxEdges;                 // edge records per frame (edge ids: the X tie order)
-  // Forward differences per edge record: 1 (the slope: straight edges, today's hardware) or 3
+  // Forward differences per edge record: 1 (the slope: straight edges, the default hardware) or 3
   // (d1, d2, d3: a cubic in the scan-line index, for Whitted's curved edges; the record carries
   // three channel vectors of differences instead of one).
   int edge_order = 1;

@@ -58,7 +58,7 @@ struct EdgeIncrementer {
     else
       step<1>(e, signs(f));
   }
-  // The default configuration (today's ChannelBits words).
+  // The default configuration (formats.hpp's ChannelBits words).
   static void step(ActiveEdge& e) { step(e, Config{}.channels(ShadingMode::Gouraud)); }
 };
 

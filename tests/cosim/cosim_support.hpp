@@ -54,7 +54,7 @@ inline std::vector<std::string> shipped_scenes() {
 // A shipped scene on the RTL at full speed, under gaps and stalls and all-stall bursts, then in
 // sparse output mode; every frame bit for bit the model's.
 inline void check_shipped_scene(const std::string& name, const BuildOptions& opt) {
-  if (name == "<none>") GTEST_SKIP() << "no scenes/*.json yet";
+  if (name == "<none>") GTEST_SKIP() << "no scenes/*.json";
   const std::string path = WATKINS_SOURCE_DIR "/scenes/" + name;
   BuiltScene scene;
   try {

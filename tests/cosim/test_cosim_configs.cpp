@@ -1,4 +1,4 @@
-// The RTL built for other configurations (CMake option WATKINS_RTL_CONFIGS; issue 9) against the
+// The RTL built for other configurations (CMake option WATKINS_RTL_CONFIGS) against the
 // model built for the same configuration: every shipped scene at its sized configuration
 // (scenes/sized/<scene>.<shading>.json) on the top built for it, and random scenes at the narrow and
 // wide test configurations (tests/configs/), both shadings. Every pixel and every stage stream bit

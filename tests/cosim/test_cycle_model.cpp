@@ -44,7 +44,7 @@ void expect_predicted(const std::string& name, const PreparedScene& p) {
 }
 
 void expect_predicted_shipped(const std::string& name, ShadingMode mode) {
-  if (name == "<none>") GTEST_SKIP() << "no scenes/*.json yet";
+  if (name == "<none>") GTEST_SKIP() << "no scenes/*.json";
   BuiltScene scene;
   PreparedScene prepared;
   try {
