@@ -137,7 +137,9 @@ def main():
   // copies merged. The lid's and bottom's patches have collapsed rows (a pole): their normals are
   // the limits from inside. Phong's rule; the silhouette is the polygon path's weak spot.
   // u = v = 4 (512 grid elements, 280 after culling) needs 64 active edges (scan line 73), the
-  // default hardware's; u = v = 6 needs 90 (--max-active-edges 128).
+  // default hardware's; u = v = 6 needs 90 (--max-active-edges 128). k_u, k_v: the interior edges
+  // when drawn by curves (--patches curves): 4 x 4 subpatches per patch, at most 68 curved edges on
+  // a line (k = 2: 42, k = 8: 134); the polygons are the u x v grid.
   "screen": {{"width": 320, "height": 240, "background": [10, 10, 16]}},
   "camera": {{"type": "lookat", "eye": [0.75, 6.6, -12.1], "target": [0.2, 1.4, 0], "up": [0, 1, 0], "fov_deg": 40,
              "near": 0.5, "far": 100}},
@@ -145,7 +147,7 @@ def main():
   "shading": {{"rule": "phong", "cull_backfaces": true}},
   "materials": {{"porcelain": {{"color": [0.85, 0.82, 0.72], "d": 0.2, "W": 0.6, "n": 40}}}},
   "objects": [
-    {{"type": "patches", "basis": "bezier", "material": "porcelain", "u": 4, "v": 4,
+    {{"type": "patches", "basis": "bezier", "material": "porcelain", "u": 4, "v": 4, "k_u": 4, "k_v": 4,
      "rotate_deg": [-90, 0, 0],
      "control_points": [
 {pts_text}
