@@ -8,11 +8,11 @@
 # algorithm (what quantization costs) and the double reference against the analytic truth (the
 # exact surface ray-cast: what the algorithm costs). Then the fill rate of both pipelines on the
 # overdraw scene (cycle model). Images: docs/results/images/<scene>_{gouraud,phong,truth}.png.
-#   scripts/lib/phong_figures.sh [OUTDIR]   (default: docs/results; images in OUTDIR/images)
+#   scripts/lib/phong_figures.sh [OUTDIR]   (default: $WATKINS_RESULTS_DIR or docs/results; images in OUTDIR/images)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 build="${WATKINS_BUILD:-$root/build}"
-out="${1:-$root/docs/results}"
+out="${1:-${WATKINS_RESULTS_DIR:-$root/docs/results}}"
 # shellcheck source=results_header.sh
 source "$root/scripts/lib/results_header.sh"
 [ -x "$build/watkins" ] || "$root/scripts/setup" >/dev/null

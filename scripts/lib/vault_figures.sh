@@ -10,12 +10,12 @@
 # references against the truth), and the STL import against the built-in bay (the bay and its
 # export scenes/vault_bay.stl at crease 0 and 80: the pixels that differ).
 # Images: docs/results/images/portico_{gouraud,phong,truth}.png, portico_crease<A>_<shading>.png.
-#   scripts/lib/vault_figures.sh [OUTDIR]   (default: docs/results; images in OUTDIR/images)
+#   scripts/lib/vault_figures.sh [OUTDIR]   (default: $WATKINS_RESULTS_DIR or docs/results; images in OUTDIR/images)
 #   WATKINS_NO_RTL=1 scripts/lib/vault_figures.sh   the fixed model only (no RTL columns)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 build="${WATKINS_BUILD:-$root/build}"
-out="${1:-$root/docs/results}"
+out="${1:-${WATKINS_RESULTS_DIR:-$root/docs/results}}"
 # shellcheck source=results_header.sh
 source "$root/scripts/lib/results_header.sh"
 [ -x "$build/watkins" ] || "$root/scripts/setup" >/dev/null

@@ -7,12 +7,12 @@
 # thresholded raw volume) through the RTL in both pipelines, full-frame, and voxel_beaded in sparse
 # output under input gaps and output stalls: mismatching pixels, diverging stages, cycles against
 # the cycle model's. Images: docs/results/images/voxel_<phantom>_{flat,gouraud,phong,smooth,truth}.png.
-#   scripts/lib/voxel_figures.sh [OUTDIR]   (default: docs/results; images in OUTDIR/images)
+#   scripts/lib/voxel_figures.sh [OUTDIR]   (default: $WATKINS_RESULTS_DIR or docs/results; images in OUTDIR/images)
 #   WATKINS_NO_RTL=1 scripts/lib/voxel_figures.sh   the comparison only (no RTL table)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 build="${WATKINS_BUILD:-$root/build}"
-out="${1:-$root/docs/results}"
+out="${1:-${WATKINS_RESULTS_DIR:-$root/docs/results}}"
 # shellcheck source=results_header.sh
 source "$root/scripts/lib/results_header.sh"
 [ -x "$build/watkins" ] || "$root/scripts/setup" >/dev/null

@@ -10,13 +10,13 @@
 # rows n = 2 and 4). Then the three patch scenes drawn by curves through the RTL at the order-3
 # configuration scenes/sized/patches.curves.phong.json (full-frame; the teapot also sparse and
 # sparse under input gaps and output stalls).
-#   scripts/lib/whitted_figures.sh [OUTDIR]   (default: docs/results; images in OUTDIR/images)
+#   scripts/lib/whitted_figures.sh [OUTDIR]   (default: $WATKINS_RESULTS_DIR or docs/results; images in OUTDIR/images)
 #   WATKINS_WHITTED_UV=2,4,8,16   the n of the sweep
 #   WATKINS_NO_RTL=1              the sweep only (no RTL table)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 build="${WATKINS_BUILD:-$root/build}"
-out="${1:-$root/docs/results}"
+out="${1:-${WATKINS_RESULTS_DIR:-$root/docs/results}}"
 uv="${WATKINS_WHITTED_UV:-2,4,8,16}"
 # shellcheck source=results_header.sh
 source "$root/scripts/lib/results_header.sh"
