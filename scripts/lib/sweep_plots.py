@@ -13,8 +13,10 @@ reference (quantization) equals the double reference's mean error against the tr
 algorithm's own error), interpolated between the bracketing widths on a log scale of the error.
 A CSV with that axis gets only these (the others are the default sweep's).
 
-    scripts/lib/sweep_plots.py SWEEP.csv [MORE.csv ...] [--out docs] [--summary docs/results/sweep_eq1_eq2.md]
-                           [--prefix sweep] [--crossover docs/results/sweep_frac_crossover.md]
+    scripts/lib/sweep_plots.py SWEEP.csv [MORE.csv ...] [--out docs/results/images] [--prefix sweep]
+                           [--summary eq1_eq2.md] [--crossover crossover.md]
+
+scripts/lib/sweep.sh runs it and wraps the tables into docs/results/ files.
 
 Several CSVs (shards of one sweep, --shard i/N) are merged by their `point` column.
 Installs matplotlib with pip when it is missing.
@@ -214,7 +216,7 @@ def eq1_eq2_summary(rows):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("csv", nargs="+")
-    ap.add_argument("--out", default="docs", help="folder of the PNGs")
+    ap.add_argument("--out", default="docs/results/images", help="folder of the PNGs")
     ap.add_argument("--prefix", default="sweep", help="PNG name prefix")
     ap.add_argument("--summary", help="markdown file for the eq. (1) vs eq. (2) table")
     ap.add_argument("--crossover", help="markdown file for the fraction-width crossover table")
