@@ -1,11 +1,13 @@
 #!/usr/bin/env python3
-"""README's speed table from one `scripts/bench` run (its printed lines on stdin or in a file).
+"""docs/results/bench.md and bench.csv from one `scripts/bench` run (its printed lines in a file).
 
 Every figure in the table is one line of that run, so the ratios beside it were measured side by
-side on the same machine at the same load. Issue 11's targets are shown with each figure.
-  scripts/lib/bench_table.py BENCH_LOG [--out table.md]
+side on the same machine at the same load; the product's speed targets are shown with each figure.
+bench.csv holds the same figures one per row (key, value, unit) for scripts/lib/status.py.
+  scripts/lib/bench_table.py BENCH_LOG [--out bench.md] [--csv bench.csv] [--header LINE]
 """
 import argparse
+import csv
 import re
 import sys
 
@@ -41,23 +43,46 @@ def fmt(v):
     return "%.1f M" % v if v is not None else "—"
 
 
+def verilator_key(what, unit):
+    """A stable key for a Verilator line: harness (cc, sc, sc_fast), top and, for instruction
+    counts, whether the stage checker ran."""
+    harness = "cc" if what.startswith("plain C++") else "sc_fast" if "speed build" in what else "sc"
+    top = "phong" if "phong top" in what else "gouraud"
+    if unit == "cycles/s":
+        return "verilator.%s.%s" % (harness, top)
+    checker = ".no_checker" if "no stage checker" in what else ".checker"
+    return "verilator_ipc.%s.%s%s" % (harness, top, checker if harness == "cc" else "")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("log")
-    ap.add_argument("--out")
+    ap.add_argument("--out", help="markdown file (default: stdout)")
+    ap.add_argument("--csv", help="CSV of every figure: key, value, unit")
+    ap.add_argument("--header", help="first line of the markdown file (scripts/lib/results_header.sh)")
     a = ap.parse_args()
     lines = [l.rstrip("\n") for l in (sys.stdin if a.log == "-" else open(a.log))]
+    figures = []  # (key, value, unit)
     out = []
-    machine = next((l.split(None, 1)[1] for l in lines if l.startswith("machine ")), "?")
-    out.append("`scripts/bench` (%s), one run:" % machine.strip())
-    out.append("")
-    out.append("| what | figure | issue 11 target |")
-    out.append("|---|---|---|")
+    if a.header:
+        out += [a.header, ""]
+    load0 = next((m.group(1) for l in lines for m in [re.search(r", load ([0-9.]+)$", l)] if l.startswith("machine ") and m), "?")
+    load1 = next((m.group(1) for l in lines for m in [re.match(r"^load at the end +([0-9.]+)", l)] if m), "?")
+    out += ["# Benchmarks (`scripts/bench`)", "",
+            "Every figure is one line of one `scripts/bench` run, so the ratios are measured side by side on "
+            "one machine at one load. Wall-clock figures (fragments/s, cycles/s) depend on the machine and "
+            "on what else runs; instruction counts (callgrind) are repeatable. The model renders into one "
+            "image reused across frames unless the row says \"a new image per frame\"; Mesa is llvmpipe "
+            "through OSMesa on the same triangles, one thread.", "",
+            "Load average (1 minute) at the start of the run: %s; at its end: %s." % (load0, load1), "",
+            "| what | figure | target |",
+            "|---|---|---|"]
     instr = {m.group(2): m.group(1) for l in lines
              for m in [re.match(r"^model instructions +(\d+) per fragment \(callgrind, (.*)\)$", l)] if m}
     for b in model_rows(lines):
         name = scene_name(b["scene"])
         shading = "Phong" if b["phong"] else "Gouraud"
+        key = "default" if name == "default scene" else re.sub(r"[^a-z0-9]+", "_", name.split(",")[0])
         target = 30.0 if b["phong"] else 70.0
         fixed = b.get("fixed")
         verdict = ("met" if fixed and fixed >= target else "not met") + " (≥ %d M)" % target
@@ -67,15 +92,24 @@ def main():
         parts.append("double reference %s" % fmt(b.get("double")))
         if "mesa" in b:
             parts.append("Mesa llvmpipe, one thread, %s" % fmt(b["mesa"]))
-        key = "default scene" if name == "default scene" else "--grid 32"
-        if not b["phong"] and key in instr:
-            parts.append("%s instructions per fragment (callgrind)" % instr[key])
+            if fixed:
+                parts.append("model / Mesa %.2f×" % (fixed / b["mesa"]))
+        ikey = "default scene" if name == "default scene" else "--grid 32"
+        if not b["phong"] and ikey in instr:
+            parts.append("%s instructions per fragment (callgrind)" % instr[ikey])
+            figures.append(("instructions_per_fragment.%s" % key, instr[ikey], "instructions/fragment"))
+        for k in ("fixed", "new", "double", "mesa"):
+            if b.get(k) is not None:
+                figures.append(("%s.%s.%s" % ({"fixed": "model", "new": "model_new_image"}.get(k, k),
+                                              shading.lower(), key), b[k], "M fragments/s"))
         out.append("| model, %s, %s | %s | %s |" % (shading, name, "; ".join(parts), verdict))
     verilator = [m.groups() for l in lines
                  for m in [re.match(r"^verilator (.*?) +(\d+) (cycles/s|instructions/cycle)$", l)] if m]
-    # The SystemC bench's speed build (no assertions, no tracing) is the one issue 11's 1 M
-    # cycles/s is for; its row shows the assertion build's figure (the tests' bench) beside it.
-    # Logs without a speed build: the assertion build's row carries the target.
+    for what, value, unit in verilator:
+        figures.append((verilator_key(what, unit), value, unit))
+    # The SystemC bench's speed build (no assertions, no tracing) is the one the 1 M cycles/s target
+    # is for; its row shows the assertion build's figure (the tests' bench) beside it. Logs without
+    # a speed build: the assertion build's row carries the target.
     speed_sc = {re.sub(r" \(speed build;", " (assertions;", w): int(v) for w, v, u in verilator
                 if u == "cycles/s" and "SystemC" in w and "(speed build;" in w}
     for what, value, unit in verilator:
@@ -101,17 +135,21 @@ def main():
            for m in [re.match(r"^verilator plain C\+\+ harness, (gouraud|phong) top, stage checker on +(\d+) inst", l)] if m}
     if len(ipc) == 2:
         r = ipc["phong"] / ipc["gouraud"]
+        figures.append(("verilator_ipc.phong_over_gouraud", "%.3f" % r, "ratio"))
         out.append("| Verilator, Phong top against Gouraud top (instructions per cycle, stage checker on) | %.2fx | %s (≤ 1.20x) |"
                    % (r, "met" if r <= 1.2 else "not met"))
     for l in lines:
         m = re.match(r"^shipped scenes +model at least as fast as the double reference on (\d+) of (\d+) \(scene, shading\); closest (.*) ([0-9.]+)x$", l)
         if m:
             held, total = int(m.group(1)), int(m.group(2))
+            figures += [("shipped_scenes.model_not_slower", held, "pairs"), ("shipped_scenes.pairs", total, "pairs"),
+                        ("shipped_scenes.closest_ratio", m.group(4), "ratio")]
             out.append("| model against the double reference, every shipped scene, both shadings | at least as fast on %d of %d; closest %s (%sx) | %s (never slower) |"
                        % (held, total, m.group(3), m.group(4), "met" if held == total else "not met"))
     for l in lines:
         m = re.match(r"^icarus speed +(\d+) cycles/s", l)
         if m:
+            figures.append(("icarus.default", m.group(1), "cycles/s"))
             out.append("| Icarus Verilog (yosys-elaborated RTL), default scene | %s k cycles/s | |" % (int(m.group(1)) / 1e3))
     frames = [l for l in lines if re.match(r"^\S+ (gouraud|phong)( sparse)? +\d+ ", l)]
     if frames:
@@ -121,11 +159,18 @@ def main():
         for l in frames:
             f = l.split()
             name = " ".join(f[:-5])
+            figures.append(("rtl_frame.%s.cycles" % name.replace(" ", "."), f[-5], "cycles"))
             out.append("| %s | %s |" % (name, " | ".join(f[-5:])))
     text = "\n".join(out) + "\n"
     if a.out:
         open(a.out, "w").write(text)
-    sys.stdout.write(text)
+    else:
+        sys.stdout.write(text)
+    if a.csv:
+        with open(a.csv, "w", newline="") as f:
+            w = csv.writer(f, lineterminator="\n")
+            w.writerow(["key", "value", "unit"])
+            w.writerows(figures)
 
 
 if __name__ == "__main__":

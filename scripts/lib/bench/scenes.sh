@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 11's rule that the double reference is never faster than the bit-exact model: both on
+# The rule that the double reference is never faster than the bit-exact model: both on
 # every shipped scene (scenes/*.json) in both shadings, each pair measured back to back by one
 # watkins_bench run (0.3 s per measurement). One line per scene and shading, then the summary
 # (how many pairs hold, and the closest one). Skipped when scripts/bench was given a scene.
