@@ -6,9 +6,10 @@
 // pixel as it is read. The end-of-line marker swaps the buffers once the reader has taken the
 // previous line's last pixel; the reader starts on the next clock (full mode) or the one after
 // (sparse mode: its search registers are handed over in between).
-// Latency: a fragment is written three clocks after it is accepted; a line's pixels stream out
-// after its end-of-line marker swaps the buffers, one per clock, each one clock after the reader
-// takes it (from the shade RAM's output register, with registered coverage and background).
+// Latency: a fragment is accepted, read and tested in three consecutive clocks, written at the
+// end of the third; a line's pixels stream out after its end-of-line marker swaps the buffers,
+// one per clock, each one clock after the reader takes it (from the shade RAM's output register,
+// with registered coverage and background).
 // Stages (write side): accept (frag_take: the depth RAM read) -> read (a_*_q: the RAM's data
 // registered) -> test (t_*_q: the depth test and the RAM write). Read side: take (rd_load) ->
 // pixel (pixel_*_o).
