@@ -198,9 +198,12 @@ def fmax_row(part, design, label, goal):
     title = "%s top on the ECP5-85: ≥ %d MHz" % (label, goal)
     rows = read_csv("synth/%s.csv" % part)
     mine = runs(rows or [], design, "ecp5-85")
-    routed = [r for r in mine if num(r["fmax_mhz"]) is not None]
-    if not routed:
+    routed = [r for r in mine if (num(r["fmax_mhz"]) or 0) > 0]
+    if not mine:
         return [title] + missing("%s run on the ECP5-85" % design, "synth")
+    if not routed:
+        return [title, "no Fmax: %s (%s)" % (", ".join(sorted({r["result"] for r in mine})), link("synth.md")), "no",
+                "the run did not finish routing; `watkins synth --timeout` sets its limit"]
     fs = [num(r["fmax_mhz"]) for r in routed]
     seeds = [r.get("seed", "default") or "default" for r in routed]
     if len(routed) == 1:
