@@ -77,29 +77,10 @@ done
 py=python3  # one with matplotlib (to compare the STL and built-in images), else /usr/bin's
 "$py" -c 'import matplotlib' 2>/dev/null || { [ -x /usr/bin/python3 ] && py=/usr/bin/python3; }
 results_header "scripts/results portico" > "$tmp/portico.md"
-"$py" - "$tmp" "$root" "$(( $(date +%s) - start ))" "${#rtl[@]}" >> "$tmp/portico.md" <<'EOF'
+PYTHONPATH="$root/scripts/lib" "$py" - "$tmp" "$root" "$(( $(date +%s) - start ))" "${#rtl[@]}" >> "$tmp/portico.md" <<'EOF'
 import io, os, re, sys
 
-def reflow(text, width=100):
-    """Paragraphs and list items rewrapped to `width`; tables, headings, images and code kept."""
-    import textwrap
-    fill = lambda s, first="", rest="": textwrap.fill(s, width, initial_indent=first, subsequent_indent=rest,
-                                                      break_long_words=False, break_on_hyphens=False)
-    out = []
-    for block in text.split("\n\n"):
-        lines = block.split("\n")
-        if not block.strip() or any(l.startswith(("|", "#", "!", "```", "    ")) for l in lines):
-            out.append(block)
-        elif lines[0].startswith("- "):
-            items = []
-            for l in lines:
-                if l.startswith("- "):
-                    items.append([])
-                items[-1].append(l.strip())
-            out.append("\n".join(fill(" ".join(i)[2:], "- ", "  ") for i in items))
-        else:
-            out.append(fill(" ".join(l.strip() for l in lines)))
-    return "\n\n".join(out)
+from reflow import reflow  # scripts/lib/reflow.py
 
 
 _page = sys.stdout = io.StringIO()  # the page, rewrapped when complete

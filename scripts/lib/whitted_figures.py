@@ -153,25 +153,8 @@ def rtl_table(specs):
     return "\n".join(lines) + "\n"
 
 
-def reflow(text, width=100):
-    """Paragraphs and list items rewrapped to `width`; tables, headings, images and code kept."""
-    fill = lambda s, first="", rest="": textwrap.fill(s, width, initial_indent=first, subsequent_indent=rest,
-                                                      break_long_words=False, break_on_hyphens=False)
-    out = []
-    for block in text.split("\n\n"):
-        lines = block.split("\n")
-        if not block.strip() or any(l.startswith(("|", "#", "!", "```", "    ")) for l in lines):
-            out.append(block)
-        elif lines[0].startswith("- "):
-            items = []
-            for l in lines:
-                if l.startswith("- "):
-                    items.append([])
-                items[-1].append(l.strip())
-            out.append("\n".join(fill(" ".join(i)[2:], "- ", "  ") for i in items))
-        else:
-            out.append(fill(" ".join(l.strip() for l in lines)))
-    return "\n\n".join(out)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from reflow import reflow  # noqa: E402  scripts/lib/reflow.py
 
 
 def montage(images, scene, ns, shadings, out, rows):
