@@ -11,15 +11,9 @@
 #   scripts/lib/phong_figures.sh [OUTDIR]   (default: $WATKINS_RESULTS_DIR or docs/results; images in OUTDIR/images)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
-build="${WATKINS_BUILD:-$root/build}"
-out="${1:-${WATKINS_RESULTS_DIR:-$root/docs/results}}"
 # shellcheck source=results_header.sh
 source "$root/scripts/lib/results_header.sh"
-[ -x "$build/watkins" ] || "$root/scripts/setup" >/dev/null
-mkdir -p "$out/images"
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/phong_figures.XXXXXX")
-trap 'rm -rf "$tmp"' EXIT
-start=$(date +%s)
+results_begin phong_figures "${1:-}"
 
 scenes=(sphere cone highlight portico)
 for scene in "${scenes[@]}"; do

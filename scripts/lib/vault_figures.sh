@@ -14,15 +14,9 @@
 #   WATKINS_NO_RTL=1 scripts/lib/vault_figures.sh   the fixed model only (no RTL columns)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
-build="${WATKINS_BUILD:-$root/build}"
-out="${1:-${WATKINS_RESULTS_DIR:-$root/docs/results}}"
 # shellcheck source=results_header.sh
 source "$root/scripts/lib/results_header.sh"
-[ -x "$build/watkins" ] || "$root/scripts/setup" >/dev/null
-mkdir -p "$out/images"
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/vault_figures.XXXXXX")
-trap 'rm -rf "$tmp"' EXIT
-start=$(date +%s)
+results_begin vault_figures "${1:-}"
 rtl=(--rtl)
 [ -z "${WATKINS_NO_RTL:-}" ] || rtl=()
 

@@ -11,15 +11,9 @@
 #   WATKINS_NO_RTL=1 scripts/lib/voxel_figures.sh   the comparison only (no RTL table)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
-build="${WATKINS_BUILD:-$root/build}"
-out="${1:-${WATKINS_RESULTS_DIR:-$root/docs/results}}"
 # shellcheck source=results_header.sh
 source "$root/scripts/lib/results_header.sh"
-[ -x "$build/watkins" ] || "$root/scripts/setup" >/dev/null
-mkdir -p "$out/images"
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/voxel_figures.XXXXXX")
-trap 'rm -rf "$tmp"' EXIT
-start=$(date +%s)
+results_begin voxel_figures "${1:-}"
 load=$(cut -d' ' -f1 /proc/loadavg)  # the front-end timings depend on what else runs
 
 mkdir "$tmp/images"

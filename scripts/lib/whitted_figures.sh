@@ -15,16 +15,10 @@
 #   WATKINS_NO_RTL=1              the sweep only (no RTL table)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
-build="${WATKINS_BUILD:-$root/build}"
-out="${1:-${WATKINS_RESULTS_DIR:-$root/docs/results}}"
 uv="${WATKINS_WHITTED_UV:-2,4,8,16}"
 # shellcheck source=results_header.sh
 source "$root/scripts/lib/results_header.sh"
-[ -x "$build/watkins" ] || "$root/scripts/setup" >/dev/null
-mkdir -p "$out/images"
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/whitted_figures.XXXXXX")
-trap 'rm -rf "$tmp"' EXIT
-start=$(date +%s)
+results_begin whitted_figures "${1:-}"
 cd "$root"  # scene paths in the sweep relative to the repository
 
 mkdir "$tmp/images"
