@@ -29,11 +29,14 @@
 #include <vector>
 
 #include "config_file.hpp"
+#include "options.hpp"
+#include "run_files.hpp"
 #include "float_reference.hpp"
 #include "hardware_cost.hpp"
 #include "image_io.hpp"
 #include "prepare.hpp"
 #include "scene.hpp"
+#include "scene_types.hpp"
 #include "scene_error.hpp"
 #include "usage_error.hpp"
 #include "watkins_top.hpp"
@@ -212,16 +215,11 @@ std::string broke(const Point& p, int bound) {
 }
 
 int parse_bound(const std::string& s) {
-  std::size_t used = 0;
-  long v = -1;
-  try {
-    v = std::stol(s, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (s.empty() || used != s.size() || v < 0 || v > fmt::ShadeMax)
+  const bool digits = !s.empty() && s.size() <= 3 && s.find_first_not_of("0123456789") == std::string::npos;
+  const int v = digits ? std::stoi(s) : -1;
+  if (v < 0 || v > fmt::ShadeMax)
     throw UsageError("--bound: expected a whole number of levels in 0..255, got \"" + s + "\"");
-  return static_cast<int>(v);
+  return v;
 }
 
 std::string default_out(const std::string& scene) {
@@ -240,29 +238,45 @@ std::string format(const ChannelFormat& f) {
 CLI::App* add_size_command(CLI::App& app, SizeArgs& a) {
   auto* s = app.add_subcommand("size", "the smallest configuration whose image stays within --bound levels of the "
                                        "double reference (writes a configuration file)");
-  s->add_option("scene", a.scene, "scene file (JSON); default: the embedded default scene");
+  cli::add_file(s, "scene", a.scene, "scene file (JSON); default: the embedded default scene");
   s->add_option("--bound", a.bound, "levels: the largest |fixed - double| allowed at a pixel showing the same polygon")
       ->capture_default_str();
   s->add_option("--shading", a.shading, "gouraud or phong; overrides the scene's shading.mode");
-  s->add_option("--out,-o", a.out, "configuration file to write (default: <scene>.config.json)");
+  cli::add_file(s, "--out,-o", a.out, "configuration file to write (default: <scene>.config.json)");
   s->add_option("--patches", a.patches, "patch objects drawn as curves (Whitted's edges; sized at edge_order 3) or "
                                         "polygons; overrides each object's \"draw\"")
       ->check(CLI::IsMember({"curves", "polygons"}));
   return s;
 }
 
-int run_size(const SizeArgs& a) {
-  const int bound = parse_bound(a.bound);
+// The command line's names parsed into the scene's build options (UsageError naming the option).
+BuildOptions build_options(const SizeArgs& a) {
   BuildOptions opt;
   if (!a.shading.empty()) {
     opt.shading = parse_shading_mode(a.shading);
     if (!opt.shading) throw UsageError("--shading: unknown shading mode \"" + a.shading + "\" (gouraud, phong)");
   }
   if (!a.patches.empty()) opt.patches_as_curves = a.patches == "curves";
+  return opt;
+}
+
+void check_size(const SizeArgs& a) {
+  (void)parse_bound(a.bound);
+  (void)build_options(a);
+}
+
+int run_size(const SizeArgs& a) {
+  const int bound = parse_bound(a.bound);
+  const BuildOptions opt = build_options(a);
   const auto t0 = std::chrono::steady_clock::now();
-  const BuiltScene scene = load_scene_or_default(a.scene, opt);
-  const ShadingMode shading = scene.shading;
+  RunFiles file;  // complete or not at all (run_files.hpp), never over the scene or a file it reads
+  const Scene parsed = parse_scene_file(a.scene);
+  if (!a.scene.empty()) file.input("the scene file", a.scene);
+  file.scene_inputs(parsed);
   const std::string out = a.out.empty() ? default_out(a.scene) : a.out;
+  file.output(a.out.empty() ? "the default output (--out)" : "--out", out);
+  const BuiltScene scene = build_scene(parsed, opt);
+  const ShadingMode shading = scene.shading;
 
   Judge judge(scene, bound);
   // Coordinate descent: each width lowered while the criterion holds, rounds until none moves.
@@ -366,7 +380,6 @@ int run_size(const SizeArgs& a) {
                 p.refused.empty() ? (error(p) + "\n                       broke " + broke(p, bound)).c_str()
                                   : broke(p, bound).c_str());
   }
-  OutputFiles file;  // complete or not at all (image_io.hpp); write errors reported
   file.add(out, config_json(c));
   file.commit();
   std::printf("wrote         %s\n", out.c_str());

@@ -22,6 +22,8 @@ struct SizeArgs {
 
 // Registers `watkins size` and its options on `app`; returns the subcommand.
 CLI::App* add_size_command(CLI::App& app, SizeArgs& args);
+// The checks of the command line that need no file: UsageError (exit code 2) naming the option.
+void check_size(const SizeArgs& args);
 // Runs the search, prints the report and writes the configuration; returns the exit code.
 // Bad input throws (one line, no file written).
 int run_size(const SizeArgs& args);

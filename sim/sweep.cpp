@@ -45,8 +45,11 @@
 #include "formats.hpp"
 #include "hardware_cost.hpp"
 #include "image_io.hpp"
+#include "options.hpp"
 #include "prepare.hpp"
+#include "run_files.hpp"
 #include "scene.hpp"
+#include "scene_types.hpp"
 #include "usage_error.hpp"
 #include "watkins_top.hpp"
 
@@ -460,76 +463,80 @@ class Progress {
   std::mutex m_;
 };
 
-void parse_shard(const std::string& s, long long& i, long long& n) {
-  const auto slash = s.find('/');
-  try {
-    if (slash == std::string::npos) throw std::invalid_argument("");
-    i = std::stoll(s.substr(0, slash));
-    n = std::stoll(s.substr(slash + 1));
-  } catch (const std::exception&) {
-    throw UsageError("--shard: expected i/N (0 <= i < N), got \"" + s + "\"");
-  }
-  if (n < 1 || i < 0 || i >= n) throw UsageError("--shard: expected i/N with 0 <= i < N, got \"" + s + "\"");
-}
-
 }  // namespace
 
 CLI::App* add_sweep_command(CLI::App& app, SweepArgs& a) {
   auto* s = app.add_subcommand(
       "sweep", "error against cost over scenes x shading x tessellation x fraction bits (CSV, markdown)");
-  s->add_option("scenes", a.scenes, "scene files (JSON); default: scenes/sphere.json scenes/cone.json");
-  s->add_option("--shadings", a.shadings,
-                "flat, gouraud-eq1 (depth 1/Z), gouraud-eq2 (depth Z), phong, whitted (patches by curved edges, "
-                "k_u = u, k_v = v subpatches, Phong)")
-      ->delimiter(',')
-      ->check(CLI::IsMember({"flat", "gouraud-eq1", "gouraud-eq2", "phong", "whitted"}))
-      ->capture_default_str();
-  s->add_option("--tess", a.tess, "factors on the first object's u and v (u >= 3, v >= 1; a vault's u rounded to even)")
-      ->delimiter(',')
-      ->check(CLI::Range(0.01, 64.0))
-      ->capture_default_str();
-  s->add_option("--uv", a.uv, "instead of --tess: u = v = n on the first object (axis uv; a vault's u rounded to even)")
-      ->delimiter(',')
-      ->check(CLI::Range(1, 1024));
-  s->add_option("--frac-bits", a.attr_frac,
-                "fraction bits of the shading's attribute group: shade (flat, Gouraud) or normal (Phong)")
-      ->delimiter(',')
-      ->capture_default_str();
-  s->add_option("--x-frac-bits", a.x_frac, "fraction bits of X (pixels)")->delimiter(',')->capture_default_str();
-  s->add_option("--depth-frac-bits", a.depth_frac, "fraction bits of the depth channel")
-      ->delimiter(',')
-      ->capture_default_str();
+  s->add_option("scenes", a.scenes, "scene files (JSON); default: scenes/sphere.json scenes/cone.json")
+      ->check(cli::non_empty_name());
+  cli::add_name_list(s, "--shadings", a.shadings,
+                     "flat, gouraud-eq1 (depth 1/Z), gouraud-eq2 (depth Z), phong, whitted (patches by curved edges, "
+                     "k_u = u, k_v = v subpatches, Phong)",
+                     {"flat", "gouraud-eq1", "gouraud-eq2", "phong", "whitted"});
+  CLI::Option* tess = cli::add_real_list(
+      s, "--tess", a.tess, "factors on the first object's u and v (u >= 3, v >= 1; a vault's u rounded to even)", 0.01,
+      64.0);
+  CLI::Option* uv = cli::add_int_list(
+      s, "--uv", a.uv, "instead of --tess: u = v = n on the first object (axis uv; a vault's u rounded to even)", 1, 1024);
+  cli::exclusive({tess, uv});
+  cli::add_int_list(s, "--frac-bits", a.attr_frac,
+                    "fraction bits of the shading's attribute group: shade (flat, Gouraud) or normal (Phong)", 0, 64);
+  cli::add_int_list(s, "--x-frac-bits", a.x_frac, "fraction bits of X (pixels)", 0, 64);
+  cli::add_int_list(s, "--depth-frac-bits", a.depth_frac, "fraction bits of the depth channel", 0, 64);
   s->add_option("--rule", a.rule, "vertex rule of flat and Gouraud shading (phong: eq. 3, the truth's illumination)")
       ->check(CLI::IsMember({"gouraud", "lambert", "warnock", "romney", "phong"}))
       ->capture_default_str();
-  s->add_option("--csv", a.csv, "CSV to write (one row per point)")->capture_default_str();
-  s->add_option("--md", a.md, "markdown table to write");
-  s->add_option("--jobs,-j", a.jobs, "points rendered at once (threads)")->check(CLI::Range(1, 256))->capture_default_str();
+  cli::add_file(s, "--csv", a.csv, "CSV to write (one row per point)")->capture_default_str();
+  cli::add_file(s, "--md", a.md, "markdown table to write");
+  s->add_option("--jobs,-j", a.jobs, "points rendered at once (threads)")
+      ->check(cli::integer_in(1, 256))
+      ->capture_default_str();
   s->add_option("--shard", a.shard, "i/N: run only points k with k mod N == i (0-based; e.g. $SLURM_ARRAY_TASK_ID/N)")
       ->capture_default_str();
   s->add_option("--max-active-edges", a.max_active_edges, "the model's active-edge list capacity")
-      ->check(CLI::Range(1, 1 << 16))
+      ->check(cli::integer_in(1, 1 << 16))
       ->capture_default_str();
   s->add_flag("--rtl", a.rtl, "cycles per frame from the Verilated RTL (points within its active-edge list)");
   s->add_flag("--full-frame", a.full_frame, "with --rtl: full-frame output instead of sparse");
   s->add_flag("--quiet,-q", a.quiet, "no progress bar");
-  s->add_option("--images", a.images,
+  cli::add_file(s, "--images", a.images,
                 "folder for PNGs: SCENE_SHADING_UxV.png (the fixed-point image) per point, SCENE_truth.png per scene");
   return s;
 }
 
-int run_sweep(const SweepArgs& in) {
-  SweepArgs a = in;
-  if (a.scenes.empty()) {
-    const std::string root = WATKINS_SOURCE_DIR;
-    a.scenes = {root + "/scenes/sphere.json", root + "/scenes/cone.json"};
-  }
+void check_sweep(const SweepArgs& a) {
   if (a.full_frame && !a.rtl) throw UsageError("--full-frame needs --rtl");
 #ifndef WATKINS_HAVE_RTL
   if (a.rtl) throw UsageError("--rtl: this build has no RTL simulation (install Verilator and SystemC)");
 #endif
   long long shard = 0, shards = 1;
-  parse_shard(a.shard, shard, shards);
+  cli::parse_shard("--shard", a.shard, shard, shards);
+}
+
+int run_sweep(const SweepArgs& in) {
+  check_sweep(in);
+  SweepArgs a = in;
+  if (a.scenes.empty()) {
+    const std::string root = WATKINS_SOURCE_DIR;
+    a.scenes = {root + "/scenes/sphere.json", root + "/scenes/cone.json"};
+  }
+  long long shard = 0, shards = 1;
+  cli::parse_shard("--shard", a.shard, shard, shards);
+  // Every scene is read, parsed and checked for a tessellated object before any point runs: a
+  // scene that cannot be read fails the run (exit code 1) with nothing written, while a point the
+  // model refuses (a format too narrow for its scene) keeps its message in its row.
+  RunFiles files;
+  for (const std::string& path : a.scenes) {
+    const Scene parsed = parse_scene_file(path);
+    files.input("the scene file " + path, path);
+    files.scene_inputs(parsed);
+    int u = 0, v = 0;
+    (void)retessellate(read_scene_text(path), path, 1.0, false, u, v);
+  }
+  files.output("--csv", a.csv);
+  if (!a.md.empty()) files.output("--md", a.md);
+  if (!a.images.empty()) files.output_folder("--images", a.images);
   const std::vector<Axis> axes = make_axes(a);
   std::vector<long long> points;
   for (long long k = shard; k < grid_size(axes); k += shards) points.push_back(k);
@@ -550,11 +557,9 @@ int run_sweep(const SweepArgs& in) {
   worker();
   for (std::thread& t : threads) t.join();
 
-  OutputFiles files;  // both or neither, each complete (image_io.hpp)
   files.add(a.csv, csv_text(axes, rows));
   if (!a.md.empty()) files.add(a.md, markdown_text(rows));
   if (!a.images.empty()) {
-    std::filesystem::create_directories(a.images);
     const bool one_format = a.attr_frac.size() == 1 && a.x_frac.size() == 1 && a.depth_frac.size() == 1;
     std::set<std::string> truths;
     for (Result& r : rows) {
@@ -562,9 +567,9 @@ int run_sweep(const SweepArgs& in) {
       std::string name = stem + "_" + r.axis_values[1] + "_" + std::to_string(r.u) + "x" + std::to_string(r.v);
       if (!one_format)
         name += "_f" + std::to_string(r.attr_frac) + "-" + std::to_string(r.x_frac) + "-" + std::to_string(r.depth_frac);
-      if (!r.png.empty()) files.add(a.images + "/" + name + ".png", std::move(r.png));
+      if (!r.png.empty()) files.add_in(a.images, name + ".png", std::move(r.png));
       if (!r.truth_png.empty() && truths.insert(stem).second)
-        files.add(a.images + "/" + stem + "_truth.png", std::move(r.truth_png));
+        files.add_in(a.images, stem + "_truth.png", std::move(r.truth_png));
     }
   }
   files.commit();
@@ -581,7 +586,7 @@ int run_sweep(const SweepArgs& in) {
   std::printf("sweep         %zu of %lld points (shard %lld/%lld), %d failed%s; wrote %s%s%s\n", rows.size(),
               grid_size(axes), shard, shards, failed, rtl_bad ? ", RTL MISMATCH" : "", a.csv.c_str(),
               a.md.empty() ? "" : ", ", a.md.c_str());
-  return rtl_bad ? 1 : 0;
+  return rtl_bad ? 3 : 0;
 }
 
 }  // namespace watkins::sweep

@@ -38,7 +38,10 @@ struct SweepArgs {
 
 // Registers `watkins sweep` and its options on `app`; returns the subcommand.
 CLI::App* add_sweep_command(CLI::App& app, SweepArgs& args);
-// Runs the sweep; returns the exit code (1 when the RTL differs from the model at some point).
+// The checks of the command line that need no file: UsageError (exit code 2) naming the option.
+void check_sweep(const SweepArgs& args);
+// Runs the sweep; returns the exit code (3 when the RTL differs from the model at some point).
+// A scene that cannot be read is std::runtime_error (exit code 1) before anything is written.
 int run_sweep(const SweepArgs& args);
 
 }  // namespace watkins::sweep

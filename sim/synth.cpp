@@ -55,7 +55,8 @@
 
 #include "config.hpp"
 #include "config_file.hpp"
-#include "image_io.hpp"
+#include "options.hpp"
+#include "run_files.hpp"
 #include "usage_error.hpp"
 
 namespace watkins::synth {
@@ -785,12 +786,16 @@ CLI::App* add_synth_command(CLI::App& app, SynthArgs& a) {
                                         "span_reciprocal, segment_interpolator, normalizer, phong_shader, "
                                         "scanline_buffer, smoother, top-gouraud, top-phong (default: all)");
   s->add_option("--targets", a.targets, "comma-separated: ice40-up5k, ice40-hx8k, ecp5-85")->capture_default_str();
-  s->add_option("--work", a.work, "directory for wrappers, netlists, logs and reports")->capture_default_str();
-  s->add_option("--md", a.md, "markdown table to write");
-  s->add_option("--csv", a.csv, "CSV table to write");
-  s->add_option("--jobs,-j", a.jobs, "runs at once (each tool is single-threaded)")->capture_default_str();
-  s->add_option("--timeout", a.timeout, "seconds allowed each tool run")->capture_default_str();
-  s->add_option("--rtl-dir", a.rtl_dir, "RTL to synthesize (default: the source tree's rtl/)");
+  cli::add_file(s, "--work", a.work, "directory for wrappers, netlists, logs and reports")->capture_default_str();
+  cli::add_file(s, "--md", a.md, "markdown table to write");
+  cli::add_file(s, "--csv", a.csv, "CSV table to write");
+  s->add_option("--jobs,-j", a.jobs, "runs at once (each tool is single-threaded)")
+      ->check(cli::integer_in(1, 256))
+      ->capture_default_str();
+  s->add_option("--timeout", a.timeout, "seconds allowed each tool run")
+      ->check(cli::integer_in(1, 1 << 30))
+      ->capture_default_str();
+  cli::add_file(s, "--rtl-dir", a.rtl_dir, "RTL to synthesize (default: the source tree's rtl/)");
   s->add_option_function<std::string>(
        "--nextpnr-options",
        [&a](const std::string& v) {
@@ -806,13 +811,22 @@ CLI::App* add_synth_command(CLI::App& app, SynthArgs& a) {
   return s;
 }
 
-int run_synth(const SynthArgs& a) {
-  if (a.jobs < 1) throw UsageError("--jobs: must be at least 1");
-  if (a.timeout < 1) throw UsageError("--timeout: must be at least 1 second");
+namespace {
+
+// What the command line asks for, every name checked (UsageError naming the option).
+struct Choices {
   std::vector<const Design*> designs;
+  std::vector<const Target*> targets;
+  std::vector<std::string> placer;  // --nextpnr-options
+  std::vector<int> seeds;           // {0}: one run at nextpnr's default seed
+  std::vector<std::string> configs;
+};
+
+Choices choose(const SynthArgs& a) {
+  Choices c;
   const std::vector<std::string> design_names = split_list("--designs", a.designs);
   if (design_names.empty()) {
-    for (const Design& d : kDesigns) designs.push_back(&d);
+    for (const Design& d : kDesigns) c.designs.push_back(&d);
   } else {
     for (const std::string& n : design_names) {
       auto it = std::find_if(std::begin(kDesigns), std::end(kDesigns), [&](const Design& d) { return n == d.name; });
@@ -821,33 +835,55 @@ int run_synth(const SynthArgs& a) {
         for (const Design& d : kDesigns) known += (known.empty() ? "" : ", ") + std::string(d.name);
         throw UsageError("--designs: unknown design \"" + n + "\" (" + known + ")");
       }
-      designs.push_back(&*it);
+      c.designs.push_back(&*it);
     }
     // Blocks before tops whatever order they were named in (a top's minutes come last).
-    std::stable_sort(designs.begin(), designs.end(), [](const Design* x, const Design* y) { return !x->top && y->top; });
+    std::stable_sort(c.designs.begin(), c.designs.end(), [](const Design* x, const Design* y) { return !x->top && y->top; });
   }
-  std::vector<const Target*> targets;
   for (const std::string& n : split_list("--targets", a.targets)) {
     auto it = std::find_if(std::begin(kTargets), std::end(kTargets), [&](const Target& t) { return n == t.name; });
     if (it == std::end(kTargets))
       throw UsageError("--targets: unknown target \"" + n + "\" (ice40-up5k, ice40-hx8k, ecp5-85)");
-    targets.push_back(&*it);
+    c.targets.push_back(&*it);
   }
-  if (targets.empty()) throw UsageError("--targets: none given");
-  const std::vector<std::string> given_placer = parse_nextpnr_options(a.nextpnr_options);
+  if (c.targets.empty()) throw UsageError("--targets: none given");
+  c.placer = parse_nextpnr_options(a.nextpnr_options);
+  c.seeds = parse_seeds(a.seeds);
+  if (c.seeds.empty()) c.seeds.push_back(0);  // one run, no --seed: nextpnr's default
+  c.configs = split_list("--config", a.configs);
+  if (c.configs.empty()) throw UsageError("--config: none given");
+  return c;
+}
+
+}  // namespace
+
+void check_synth(const SynthArgs& a) { (void)choose(a); }
+
+int run_synth(const SynthArgs& a) {
+  const Choices choices = choose(a);
+  const std::vector<const Design*>& designs = choices.designs;
+  const std::vector<const Target*>& targets = choices.targets;
+  const std::vector<std::string>& given_placer = choices.placer;
   auto placer_options = [&](const Target& t) { return a.nextpnr_options_given ? given_placer : t.placer; };
-  std::vector<int> seeds = parse_seeds(a.seeds);
-  if (seeds.empty()) seeds.push_back(0);  // one run, no --seed: nextpnr's default
+  const std::vector<int>& seeds = choices.seeds;
   struct NamedConfig {
     std::string arg, label;
     Config config;
   };
-  std::vector<NamedConfig> configs;
-  for (const std::string& c : split_list("--config", a.configs))
-    configs.push_back({c, config_label(c), c == "default" ? Config{} : load_config(c)});
-  if (configs.empty()) throw UsageError("--config: none given");
-
+  // The tables are the run's only outputs outside --work: never a configuration or an RTL file.
+  RunFiles tables;
   const Rtl rtl = find_rtl(a.rtl_dir.empty() ? std::string(WATKINS_SOURCE_DIR) + "/rtl" : a.rtl_dir);
+  for (const std::string& f : rtl.files) tables.input("the RTL file " + f, f);
+  for (const std::string& c : choices.configs)
+    if (c != "default") tables.input("the --config file " + c, c);
+  if (!a.md.empty()) tables.output("--md", a.md);
+  if (!a.csv.empty()) tables.output("--csv", a.csv);
+  if (fs::exists(a.work) && fs::equivalent(a.work, rtl.dir))
+    throw UsageError("--work " + a.work + " is the RTL folder; refusing to write into it");
+  std::vector<NamedConfig> configs;
+  for (const std::string& c : choices.configs)
+    configs.push_back({c, config_label(c), c == "default" ? Config{} : load_config(c)});
+
   if (!on_path("yosys")) throw std::runtime_error("yosys not found on PATH (scripts/setup installs it)");
   for (const Target* t : targets)
     if (!on_path(nextpnr_binary(*t)))
@@ -967,9 +1003,8 @@ int run_synth(const SynthArgs& a) {
     md << "\nParameters: a top's are what `watkins_gen_pkg --params CONFIG --shading S` prints; a block's are what "
           "that top gives it (the Gouraud top's instance; the normalizer's and the shader's from the Phong top):\n\n";
     for (const auto& [key, note] : notes) md << "- " << key << ": " << note << "\n";
-    // The user's tables, rewritten after every run, each replaced whole (OutputFiles): an
+    // The user's tables, rewritten after every run, each replaced whole (RunFiles): an
     // interrupted or failed write leaves the previous table, never a truncated one.
-    OutputFiles tables;
     if (!a.md.empty()) tables.add(a.md, md.str());
     if (print_it) std::printf("%s", md.str().c_str());
     if (!a.csv.empty()) {

@@ -31,6 +31,8 @@ struct SynthArgs {
 
 // Registers `watkins synth` and its options on `app`; returns the subcommand.
 CLI::App* add_synth_command(CLI::App& app, SynthArgs& args);
+// The checks of the command line that need no file: UsageError (exit code 2) naming the option.
+void check_synth(const SynthArgs& args);
 // Runs every (configuration, design, target); returns 0 when each one ran to a result (a design
 // that does not fit is a result), 1 when a tool failed or timed out. Bad input throws.
 int run_synth(const SynthArgs& args);

@@ -1,9 +1,10 @@
 // watkins voxel-compare (voxel_compare.hpp). Per scene, in process:
-//   flat     Gouraud pipeline, one shade per face (BuiltScene::flat), the scene's normals made "face"
-//            (no averaging: the front end does what Herman and Liu's display did before smoothing);
-//   gouraud  Gouraud pipeline on the scene's averaged vertex normals (eq. 3 at the vertices);
+//   flat     Gouraud pipeline, one shade per face (BuiltScene::flat), voxel face normals (no
+//            averaging: the front end does what Herman and Liu's display did before smoothing);
+//   gouraud  Gouraud pipeline on averaged vertex normals (eq. 3 at the vertices);
 //   phong    Phong pipeline on the same normals;
 //   smooth W the flat frame through the smoother twin (model/twins/smoother.hpp) at weight W.
+// BuildOptions::voxel_normals sets each row's voxel normals, whatever the scene's "normals" says.
 // Error against the analytic truth over the pixels both show the same object (compare_with_truth);
 // Mach-band measures on image - truth at face boundaries (error_stats.hpp): the largest jump and
 // the mean jump. Cost: the front end's wall time (parse, voxel faces, normals, projection and
@@ -26,21 +27,16 @@
 #include "cycle_model.hpp"
 #include "error_stats.hpp"
 #include "image_io.hpp"
+#include "options.hpp"
 #include "prepare.hpp"
+#include "run_files.hpp"
 #include "scene.hpp"
+#include "scene_types.hpp"
 #include "smoother.hpp"
 #include "watkins_top.hpp"
 
 namespace watkins::voxel_compare {
 namespace {
-
-// The scene text with every voxel object's averaged normals replaced by face normals.
-std::string face_normals(std::string text) {
-  const std::string from = "\"normals\": \"average\"", to = "\"normals\": \"face\"";
-  for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
-    text.replace(at, from.size(), to);
-  return text;
-}
 
 struct Row {
   std::string scene, shading;
@@ -98,13 +94,6 @@ Row measure(const std::string& stem, const std::string& shading, const Rendered&
   return row;
 }
 
-void write_png(const std::string& path, const Image& img) {
-  const std::vector<unsigned char> bytes = encode_png(img);
-  std::ofstream out(path, std::ios::binary);
-  out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-  if (!out) throw std::runtime_error(path + ": cannot write");
-}
-
 std::string number(double v, int digits) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*f", digits, v);
@@ -131,11 +120,12 @@ CLI::App* add_voxel_compare_command(CLI::App& app, VoxelCompareArgs& a) {
   auto* c = app.add_subcommand("voxel-compare", "Herman & Liu's comparison on voxel phantoms: flat, Gouraud "
                                                 "(averaged normals), Phong, flat + smoothing; error against the "
                                                 "analytic truth and cost");
-  c->add_option("scenes", a.scenes, "scene files (default: scenes/voxel_{ellipsoid,beaded,two_lobed}.json)");
-  c->add_option("--weights", a.weights, "W of the smoother sweep")->delimiter(',')->check(CLI::Range(0.0, fmt::SmoothWMax));
-  c->add_option("--md", a.md, "write the table (markdown) here");
-  c->add_option("--images", a.images, "folder for <scene>_{flat,gouraud,phong,smooth,truth}.png");
-  c->add_option("--repeat", a.repeat, "front-end timing: best of N builds")->check(CLI::Range(1, 1000));
+  c->add_option("scenes", a.scenes, "scene files (default: scenes/voxel_{ellipsoid,beaded,two_lobed}.json)")
+      ->check(cli::non_empty_name());
+  cli::add_real_list(c, "--weights", a.weights, "W of the smoother sweep", 0.0, fmt::SmoothWMax);
+  cli::add_file(c, "--md", a.md, "write the table (markdown) here");
+  cli::add_file(c, "--images", a.images, "folder for <scene>_{flat,gouraud,phong,smooth,truth}.png");
+  c->add_option("--repeat", a.repeat, "front-end timing: best of N builds")->check(cli::integer_in(1, 1000));
   return c;
 }
 
@@ -144,6 +134,14 @@ int run_voxel_compare(const VoxelCompareArgs& a) {
   if (scenes.empty())
     for (const char* s : {"voxel_ellipsoid", "voxel_beaded", "voxel_two_lobed"})
       scenes.push_back(std::string(WATKINS_SOURCE_DIR) + "/scenes/" + s + ".json");
+  // Every scene and the files it names are inputs, read before any output is declared or written.
+  RunFiles files;
+  for (const std::string& path : scenes) {
+    files.input("the scene file " + path, path);
+    files.scene_inputs(parse_scene_file(path));
+  }
+  if (!a.md.empty()) files.output("--md", a.md);
+  if (!a.images.empty()) files.output_folder("--images", a.images);
   std::vector<Row> rows;
   for (const std::string& path : scenes) {
     const std::string stem = std::filesystem::path(path).stem().string(), text = read_scene_text(path);
@@ -152,7 +150,9 @@ int run_voxel_compare(const VoxelCompareArgs& a) {
     gouraud.rule = flat.rule = phong.rule = ShadingRule::Phong;
     phong.shading = ShadingMode::Phong;
     flat.flat = true;
-    const Rendered f = render(face_normals(text), path, flat, a.repeat);
+    flat.voxel_normals = VoxelNormals::Face;
+    gouraud.voxel_normals = phong.voxel_normals = VoxelNormals::Average;
+    const Rendered f = render(text, path, flat, a.repeat);
     const Rendered g = render(text, path, gouraud, a.repeat);
     const Rendered p = render(text, path, phong, a.repeat);
     const AnalyticTruth truth = render_analytic_truth(g.scene);
@@ -179,21 +179,17 @@ int run_voxel_compare(const VoxelCompareArgs& a) {
       std::fprintf(stderr, "note: %s needs %d active edges, over the default hardware's %d (measured on a model "
                            "with a longer list)\n", stem.c_str(), needed, fmt::MaxActiveEdges);
     if (!a.images.empty()) {
-      const std::string base = a.images + "/" + stem;
-      write_png(base + "_flat.png", f.image);
-      write_png(base + "_gouraud.png", g.image);
-      write_png(base + "_phong.png", p.image);
-      if (smoothed08.width) write_png(base + "_smooth.png", smoothed08);
-      write_png(base + "_truth.png", truth.image);
+      files.add_in(a.images, stem + "_flat.png", encode_png(f.image));
+      files.add_in(a.images, stem + "_gouraud.png", encode_png(g.image));
+      files.add_in(a.images, stem + "_phong.png", encode_png(p.image));
+      if (smoothed08.width) files.add_in(a.images, stem + "_smooth.png", encode_png(smoothed08));
+      files.add_in(a.images, stem + "_truth.png", encode_png(truth.image));
     }
   }
   const std::string t = table(rows);
   std::fputs(t.c_str(), stdout);
-  if (!a.md.empty()) {
-    std::ofstream out(a.md);
-    out << t;
-    if (!out) throw std::runtime_error(a.md + ": cannot write");
-  }
+  if (!a.md.empty()) files.add(a.md, t);
+  files.commit();
   return 0;
 }
 

@@ -24,6 +24,8 @@ struct VoxelCompareArgs {
 };
 
 CLI::App* add_voxel_compare_command(CLI::App& app, VoxelCompareArgs& a);
+// Nothing to check beyond the option layer's rules (options.hpp): every option is one value.
+inline void check_voxel_compare(const VoxelCompareArgs&) {}
 int run_voxel_compare(const VoxelCompareArgs& a);
 
 }  // namespace watkins::voxel_compare

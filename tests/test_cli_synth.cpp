@@ -50,7 +50,10 @@ TEST_F(CliSynth, EmptyListItemsAreRefused) {
   expect_refused("--config ,default", "--config: empty item in \",default\"");
 }
 
-TEST_F(CliSynth, JobsMustBePositive) { expect_refused("--jobs 0", "--jobs: must be at least 1"); }
+TEST_F(CliSynth, JobsMustBePositive) {
+  expect_refused("--jobs 0", "--jobs: expected an integer in [1, 256], got \"0\"");
+  expect_refused("--timeout 0", "--timeout: expected an integer in [1, 1073741824], got \"0\"");
+}
 
 // nextpnr's --seed is an int: 1 .. 2^31 - 1, each once (a repeated seed would be the same run).
 TEST_F(CliSynth, SeedsMustBePositiveDistinctIntegers) {

@@ -2,15 +2,8 @@
 
 #include <stb_image_write.h>
 
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <cerrno>
-#include <cstdio>
 #include <cstdlib>
-#include <cstring>
-#include <filesystem>
 #include <stdexcept>
 
 // In libstb but declared only in stb_image_write.h's implementation part.
@@ -19,23 +12,6 @@ extern "C" unsigned char* stbi_write_png_to_mem(const unsigned char* pixels, int
 
 namespace watkins {
 
-namespace {
-
-// Writes all of `bytes` to `path` (created or truncated); every call checked. Messages name
-// `shown` (the output the user asked for, when `path` is its temporary).
-void write_bytes(const std::string& path, const std::vector<unsigned char>& bytes, const std::string& shown = "") {
-  const std::string name = shown.empty() ? path : shown + " (temporary " + path + ")";
-  std::FILE* f = std::fopen(path.c_str(), "wb");
-  if (!f) throw std::runtime_error(name + ": cannot write: " + std::strerror(errno));
-  const size_t n = std::fwrite(bytes.data(), 1, bytes.size(), f);
-  int err = n == bytes.size() ? 0 : errno;
-  if (std::fflush(f) != 0 && !err) err = errno;
-  if (std::fclose(f) != 0 && !err) err = errno;
-  if (n != bytes.size() || err) throw std::runtime_error(name + ": cannot write: " + std::strerror(err ? err : EIO));
-}
-
-}  // namespace
-
 std::vector<unsigned char> encode_png(const Image& img) {
   int len = 0;
   unsigned char* png = stbi_write_png_to_mem(img.rgb.data(), img.width * 3, img.width, img.height, 3, &len);
@@ -43,47 +19,6 @@ std::vector<unsigned char> encode_png(const Image& img) {
   std::vector<unsigned char> out(png, png + len);
   std::free(png);  // stb allocates with malloc (STBIW_FREE)
   return out;
-}
-
-void OutputFiles::add(const std::string& path, std::vector<unsigned char> bytes) {
-  files_.push_back({path, "", std::move(bytes)});
-}
-
-// The temporary beside `path`, or "" when path names an existing non-regular file (/dev/null, a
-// FIFO), which is written in place.
-std::string OutputFiles::temporary_for(const std::string& path) {
-  struct stat st {};
-  if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) return "";
-  const std::filesystem::path p(path);
-  return (p.parent_path() / ("." + p.filename().string() + ".tmp" + std::to_string(::getpid()))).string();
-}
-
-std::string OutputFiles::stage(const std::string& path) {
-  const std::string temp = temporary_for(path);
-  files_.push_back({path, temp, {}, true});
-  return temp.empty() ? path : temp;
-}
-
-void OutputFiles::commit() {
-  for (File& f : files_) {
-    if (f.staged) continue;
-    f.temp = temporary_for(f.path);  // set first: the destructor removes it if the write fails half-way
-    if (!f.temp.empty()) write_bytes(f.temp, f.bytes, f.path);
-  }
-  for (File& f : files_)
-    if (f.temp.empty() && !f.staged) write_bytes(f.path, f.bytes);
-  for (File& f : files_) {
-    if (f.temp.empty()) continue;
-    if (std::rename(f.temp.c_str(), f.path.c_str()) != 0)
-      throw std::runtime_error(f.path + ": cannot write (rename from " + f.temp + "): " + std::strerror(errno));
-    f.temp.clear();
-  }
-  files_.clear();
-}
-
-OutputFiles::~OutputFiles() {
-  for (const File& f : files_)
-    if (!f.temp.empty()) std::remove(f.temp.c_str());
 }
 
 namespace {

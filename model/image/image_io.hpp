@@ -13,32 +13,6 @@ namespace watkins {
 // The PNG file's bytes.
 std::vector<unsigned char> encode_png(const Image& img);
 
-// Output files written all or nothing: add() keeps each file's bytes; commit() writes each to a
-// temporary name beside it and renames them over their names only once all were written, so a
-// run that fails anywhere leaves no output (and no temporary) behind. A name that exists and is
-// not a regular file (/dev/null, a FIFO) is written in place. Throws std::runtime_error.
-class OutputFiles {
- public:
-  void add(const std::string& path, std::vector<unsigned char> bytes);
-  void add(const std::string& path, const std::string& text) { add(path, std::vector<unsigned char>(text.begin(), text.end())); }
-  // A file another writer streams out (e.g. the simulator's waveform): returns the name to write
-  // it under, a temporary beside `path` that commit() renames over it and a failed run removes
-  // (or `path` itself when it names a device). Every write and close is checked (a full disk is
-  // an error, not a truncated file).
-  std::string stage(const std::string& path);
-  void commit();
-  ~OutputFiles();
-
- private:
-  struct File {
-    std::string path, temp;
-    std::vector<unsigned char> bytes;
-    bool staged = false;  // written by someone else under temp (or in place): only renamed here
-  };
-  static std::string temporary_for(const std::string& path);
-  std::vector<File> files_;
-};
-
 // Difference between two renders of the same scene, in 8-bit levels over R, G, B.
 // Shading error is measured where both show the same polygon; pixels where quantization moved a
 // silhouette or flipped visibility between polygons are counted apart, since there a difference

@@ -425,6 +425,7 @@ void parse_voxels(const Reader& r, const json& j, const std::string& f, const st
     if (in) std::fclose(in);
     if (!ok) r.fail(ff, "cannot read " + quote_input(path));
     o.voxels = std::make_shared<const VoxelGrid>(threshold_volume(raw, bytes, dims, spacing, threshold));
+    o.file = path;  // the run's inputs include it (files_read)
     limit_field = f + ".threshold";
   }
   const std::size_t faces = o.voxels->boundary_faces() * (o.triangles ? 2 : 1);

@@ -100,7 +100,7 @@ struct SceneObject {
   double pier_x = 0.5, pier_z = 0.5, pier_height = 4.0;
   int bays = 1;                   // portico: bays in a row along +X
   std::array<int, 3> box_segments{1, 1, 1};  // pier faces: segments along x, y, z
-  std::string file;               // mesh: OBJ or STL path already resolved against the scene's folder
+  std::string file;               // mesh: OBJ or STL; voxels: the raw volume; resolved against the scene's folder
   MeshNormals normals = MeshNormals::File;  // analytic surfaces: File = exact normals, or Crease
   bool normals_given = false;     // mesh: "normals" was in the scene (an STL file has no normals)
   double crease_angle_deg = 0;    // MeshNormals::Crease: faces further apart are not smoothed
