@@ -34,6 +34,9 @@ std::optional<DepthTie> parse_depth_tie(const std::string& s);        // "arriva
 
 struct Scene;  // parsed scene, defined in scene_types.hpp
 
+// A voxel object's normals (scene-format.md, "voxels"): each face its own, or averaged at the corners.
+enum class VoxelNormals { Face, Average };
+
 // Options given on the command line override the scene file's own settings.
 struct BuildOptions {
   std::optional<ShadingRule> rule;
@@ -44,6 +47,9 @@ struct BuildOptions {
   std::optional<DepthTie> depth_tie;
   std::optional<double> smooth;  // Herman & Liu's W (BuiltScene::smooth)
   std::optional<bool> patches_as_curves;  // patch objects: Whitted's curves (true) or polygons (false)
+  // Every voxel object's normals, whatever its "normals" says (voxel-compare renders one phantom
+  // both ways); BuiltScene::source holds the objects as built.
+  std::optional<VoxelNormals> voxel_normals;
   // Zero-area polygons are skipped and counted (BuiltScene::degenerate), as GL skips them; with
   // strict, a zero-area polygon of a "polygons" command list is an error naming it.
   bool strict = false;
@@ -112,6 +118,18 @@ BuiltScene load_scene(const std::string& path, const BuildOptions& opt = {});
 // Same, from text; `name` is used in messages and `base_dir` for mesh and volume file paths.
 BuiltScene load_scene_text(const std::string& text, const std::string& name,
                            const std::string& base_dir, const BuildOptions& opt = {});
+// The same in two steps, so a caller learns every file the scene reads before building it: the
+// scene file parsed and validated (parse_scene_file; the embedded default scene when path is
+// empty), then built with the command line's options.
+Scene parse_scene_file(const std::string& path);
+BuiltScene build_scene(const Scene& parsed, const BuildOptions& opt = {});
+// A file a parsed scene reads besides the scene file itself: the object that names it
+// ("objects[2]"), what it is ("mesh file", "raw volume") and its path, resolved against the
+// scene's folder.
+struct SceneFile {
+  std::string field, kind, path;
+};
+std::vector<SceneFile> files_read(const Scene& parsed);
 // The scene compiled into the binary, used when `watkins render` gets no file.
 const std::string& default_scene_text();
 // load_scene(path), or the embedded default scene when path is empty.

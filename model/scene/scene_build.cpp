@@ -92,7 +92,11 @@ double signed_area(const ScreenPolygon& p) {
   return 0.5 * a2;
 }
 
-BuiltScene build(const Scene& sc, const BuildOptions& opt) {
+BuiltScene build(Scene sc, const BuildOptions& opt) {
+  if (opt.voxel_normals)
+    for (SceneObject& o : sc.objects)
+      if (o.type == ObjectType::Voxels)
+        o.normals = *opt.voxel_normals == VoxelNormals::Average ? MeshNormals::Average : MeshNormals::Face;
   BuiltScene out;
   out.name = sc.name;
   out.source = std::make_shared<const Scene>(sc);
@@ -423,6 +427,20 @@ std::string read_scene_text(const std::string& path) {
   if (text.size() > kMaxSceneBytes)
     throw SceneError(path + ": scene file is larger than " + std::to_string(kMaxSceneBytes >> 20) + " MiB (the limit)");
   return text;
+}
+
+Scene parse_scene_file(const std::string& path) {
+  if (path.empty()) return parse_scene(default_scene_text(), "<default scene>", ".");
+  return parse_scene(read_scene_text(path), path, std::filesystem::path(path).parent_path().string());
+}
+
+BuiltScene build_scene(const Scene& parsed, const BuildOptions& opt) { return build(parsed, opt); }
+
+std::vector<SceneFile> files_read(const Scene& parsed) {
+  std::vector<SceneFile> out;
+  for (const SceneObject& o : parsed.objects)
+    if (!o.file.empty()) out.push_back({o.field, o.type == ObjectType::Voxels ? "raw volume" : "mesh file", o.file});
+  return out;
 }
 
 BuiltScene load_scene(const std::string& path, const BuildOptions& opt) {
