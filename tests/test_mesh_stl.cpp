@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -22,6 +23,8 @@
 #include "mesh_obj.hpp"
 #include "mesh_stl.hpp"
 #include "scene_types.hpp"
+#include "shipped_scenes.hpp"
+#include "stl_export.hpp"
 #include "test_support.hpp"
 
 namespace {
@@ -268,12 +271,91 @@ TEST(Stl, MalformedAsciiIsRefusedNamingTheLine) {
   EXPECT_NE(err(head + loop + "endfacet\nendsolid\nsolid b\n").find("line 10: text after \"endsolid\" (line 9; one solid per file)"),
             std::string::npos);
   EXPECT_NE(err("solid a\nfacet 0 0 1\n").find("line 2: expected \"facet normal\", got \"facet\""), std::string::npos);
-  EXPECT_NE(err("solid a\nfacet normal 0 x 1\n").find("line 2: facet normal: expected a finite number, got \"x\""),
+  EXPECT_NE(err("solid a\nfacet normal 0 1\n").find("line 2: \"facet normal\": expected 3 numbers, got 2 tokens after it"),
+            std::string::npos);
+  EXPECT_NE(err("solid a\nfacet normal 0 1 0 1\n").find("line 2: \"facet normal\": expected 3 numbers, got 4 tokens"),
             std::string::npos);
   EXPECT_NE(err("solid a\nvertex 0 0 0\n").find("line 2: expected \"facet normal\" or \"endsolid\", got \"vertex\""),
             std::string::npos);
   EXPECT_NE(err("solid a\nendsolid a\n").find("has no facets"), std::string::npos);
   EXPECT_NE(err("").find("0 bytes, shorter than the 84-byte header"), std::string::npos);
+}
+
+// The cube in ASCII with each keyword spelt as given (lower case: ascii_stl's text) and each facet
+// normal's three tokens as given.
+std::string ascii_cube(const std::array<const char*, 9>& kw, const std::string& normal) {
+  std::ostringstream s;
+  s.precision(17);
+  s << kw[0] << " cube\n";
+  for (const Tri& t : cube_triangles()) {
+    s << " " << kw[1] << " " << kw[2] << " " << normal << "\n  " << kw[3] << " " << kw[4] << "\n";
+    for (const glm::dvec3& p : t) s << "   " << kw[5] << " " << p.x << " " << p.y << " " << p.z << "\n";
+    s << "  " << kw[6] << "\n " << kw[7] << "\n";
+  }
+  s << kw[8] << " cube\n";
+  return s.str();
+}
+
+const std::array<const char*, 9> kLower = {"solid", "facet", "normal", "outer", "loop", "vertex", "endloop", "endfacet",
+                                           "endsolid"};
+
+// The same faces on the same positions as the lower-case cube with numeric normals.
+void expect_same_cube(const IndexedMesh& m, const std::string& what) {
+  const IndexedMesh ref = stl(ascii_cube(kLower, "0 0 1"), stl_object());
+  ASSERT_EQ(ref.faces.size(), 12u);
+  ASSERT_EQ(m.faces.size(), ref.faces.size()) << what;
+  ASSERT_EQ(m.position.size(), ref.position.size()) << what;
+  for (std::size_t k = 0; k < m.position.size(); ++k) EXPECT_EQ(m.position[k], ref.position[k]) << what;
+  for (std::size_t f = 0; f < m.faces.size(); ++f) EXPECT_EQ(m.faces[f].idx, ref.faces[f].idx) << what;
+}
+
+TEST(Stl, KeywordsAreReadInAnyCaseAndSolidIsSniffedInAnyCase) {
+  const std::array<const char*, 9> upper = {"SOLID", "FACET", "NORMAL", "OUTER", "LOOP", "VERTEX", "ENDLOOP",
+                                            "ENDFACET", "ENDSOLID"};
+  const std::array<const char*, 9> mixed = {"Solid", "Facet", "Normal", "Outer", "Loop", "VeRtEx", "EndLoop",
+                                            "endFacet", "EndSolid"};
+  expect_same_cube(stl(ascii_cube(upper, "0 0 1"), stl_object()), "upper case");
+  expect_same_cube(stl(ascii_cube(mixed, "0 0 1"), stl_object()), "mixed case");
+  // A file not named .stl is STL when its first word is "solid" in any case (else OBJ).
+  ScratchDir dir;
+  for (const auto& kw : {upper, mixed, kLower}) {
+    SceneObject o = stl_object();
+    o.file = dir.write("cube.mesh", ascii_cube(kw, "0 0 1"));
+    int d = 0;
+    expect_same_cube(watkins::load_mesh_file(o, "w", 1000, false, d), std::string("sniffed: ") + kw[0]);
+  }
+  // "solid" as the start of a longer first word is not the keyword: read as OBJ, which refuses it.
+  SceneObject o = stl_object();
+  o.file = dir.write("cube.mesh", "solidity 1 2 3\n");
+  int d = 0;
+  try {
+    watkins::load_mesh_file(o, "w", 1000, false, d);
+    FAIL() << "\"solidity\" read as a mesh";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("OBJ"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Stl, FacetNormalsAreSkippedWhateverTheirText) {
+  for (const char* normal : {"nan nan nan", "NaN -nan inf", "1e999 -1e999 0", "x y z", "0 0 1e-400"})
+    expect_same_cube(stl(ascii_cube(kLower, normal), stl_object()), normal);
+  // Binary: the normal's floats are not read, NaN and inf included.
+  std::string b = binary_stl(cube_triangles());
+  const float weird[3] = {NAN, INFINITY, -INFINITY};
+  for (std::size_t f = 0; f < 12; ++f)
+    for (int c = 0; c < 3; ++c) std::memcpy(&b[84 + 50 * f + 4 * std::size_t(c)], &weird[c], 4);
+  const IndexedMesh m = stl(b, stl_object());
+  const IndexedMesh ref = stl(binary_stl(cube_triangles()), stl_object());
+  ASSERT_EQ(m.faces.size(), 12u);
+  ASSERT_EQ(m.position.size(), 8u);
+  for (std::size_t k = 0; k < m.position.size(); ++k) {
+    EXPECT_EQ(m.position[k], ref.position[k]);
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(std::fabs(m.position[k][c]), 1.0);  // the cube's corners
+  }
+  for (std::size_t f = 0; f < m.faces.size(); ++f) EXPECT_EQ(m.faces[f].idx, ref.faces[f].idx);
+  // Three tokens it must still be.
+  EXPECT_NE(stl_error(ascii_cube(kLower, "nan nan")).find("line 2: \"facet normal\": expected 3 numbers, got 2 tokens"),
+            std::string::npos);
 }
 
 TEST(Stl, FileNormalsAreRefusedAndWeldToleranceIsForStlOnly) {
@@ -579,6 +661,76 @@ TEST(StlCli, BadStlFileExitsOneAndWritesNothing) {
   EXPECT_NE(r.output.find("t.json: objects[0].file: STL file \"t.stl\": neither ASCII STL"),
             std::string::npos) << r.output;
   EXPECT_FALSE(dir.has("o.png"));
+}
+
+// Every file export-stl writes for a shipped scene, ASCII and binary, reads back through the mesh
+// reader facet for facet: the same facets in the same order at the same corners (within the weld
+// tolerance and float32), less those the welding makes zero-area (counted as degenerate).
+TEST(StlExport, EveryShippedSceneReadsBackFacetForFacet) {
+  int exported = 0, refused = 0;
+  for (const std::string& path : watkins::test::shipped_scene_paths()) {
+    const watkins::BuiltScene s = watkins::load_scene(path);
+    const std::string name = std::filesystem::path(path).stem().string();
+    bool world = false;
+    for (const SceneObject& o : s.source->objects) world = world || o.type != watkins::ObjectType::Polygons;
+    if (!world) {
+      EXPECT_NE(watkins::test::error_of([&] { watkins::export_stl(*s.source, std::size_t{1} << 22); })
+                    .find(path + ": no world-space surfaces to export ("),
+                std::string::npos) << name;
+      ++refused;
+      continue;
+    }
+    const watkins::StlExport e = watkins::export_stl(*s.source, std::size_t{1} << 22);
+    ASSERT_FALSE(e.facets.empty()) << name;
+    glm::dvec3 lo(INFINITY), hi(-INFINITY);
+    for (const watkins::StlFacet& f : e.facets)
+      for (const glm::dvec3& p : f.v) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    const double tol = 2e-6 * glm::length(hi - lo) + 1e-6 * std::max(glm::length(lo), glm::length(hi));
+    const std::vector<unsigned char> bin = watkins::stl_binary(e, "watkins export-stl " + name);
+    for (const std::string& bytes : {watkins::stl_ascii(e, name), std::string(bin.begin(), bin.end())}) {
+      const bool binary = watkins::is_binary_stl(bytes);
+      int degenerate = 0;
+      const IndexedMesh m = watkins::stl_mesh_from_bytes(bytes, stl_object(), name, std::size_t{1} << 22, false, degenerate);
+      EXPECT_EQ(m.faces.size() + std::size_t(degenerate), e.facets.size()) << name << (binary ? " binary" : " ASCII");
+      EXPECT_LE(degenerate * 100, int(e.facets.size())) << name;  // measured: 0 on every shipped scene
+      // Walk the facets in order: each face read is the next facet with its corners (the reader
+      // negates z back), the facets passed over are the degenerate ones.
+      std::size_t next = 0;
+      int passed = 0, mismatched = 0;
+      for (const auto& f : m.faces) {
+        auto matches = [&](const watkins::StlFacet& sf) {
+          for (int k = 0; k < 3; ++k) {
+            const glm::dvec3 p(sf.v[k].x, sf.v[k].y, -sf.v[k].z), q = m.position[std::size_t(f.idx[k])];
+            if (glm::length(p - q) > tol) return false;
+          }
+          return true;
+        };
+        while (next < e.facets.size() && !matches(e.facets[next])) ++next, ++passed;
+        if (next == e.facets.size()) {
+          ++mismatched;
+          break;
+        }
+        ++next;
+      }
+      EXPECT_EQ(mismatched, 0) << name << (binary ? " binary" : " ASCII");
+      EXPECT_EQ(passed + int(e.facets.size() - next), degenerate) << name << (binary ? " binary" : " ASCII");
+    }
+    ++exported;
+  }
+  EXPECT_GE(exported, 15);
+  EXPECT_GE(refused, 1);  // coplanar, overdraw, screen_polygons: command lists only
+}
+
+TEST(StlCli, ExportOfOnlyScreenPolygonsExitsOneAndWritesNothing) {
+  ScratchDir dir;
+  const std::string out = std::filesystem::path(dir.write("empty", "")).parent_path().string() + "/s.stl";
+  for (const char* ascii : {"", " --ascii"}) {
+    const CliRun r = run_cli("export-stl " + kScenes + "screen_polygons.json --out " + out + ascii);
+    EXPECT_EQ(r.exit_code, 1) << r.output;
+    EXPECT_EQ(r.output, "watkins: error: " + kScenes + "screen_polygons.json: no world-space surfaces to export (1 "
+                        "screen-space polygons object(s) have no world geometry)\n");
+    EXPECT_FALSE(dir.has("s.stl"));
+  }
 }
 
 TEST(StlCli, RtlRendersTheStlSceneBitExact) {

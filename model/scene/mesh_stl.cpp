@@ -35,18 +35,23 @@ float le_float(const std::string& b, std::size_t at) {
   return f;
 }
 
-bool starts_with_solid(const std::string& bytes) {
-  std::size_t i = 0;
-  while (i < bytes.size() && std::isspace(static_cast<unsigned char>(bytes[i]))) ++i;
-  return bytes.compare(i, 5, "solid") == 0;
-}
-
+// `k` in lower case; `t` matches it in any case (the format's keywords are case-insensitive).
 bool keyword(std::string_view t, const char* k) {
   const std::size_t n = std::strlen(k);
   if (t.size() != n) return false;
   for (std::size_t i = 0; i < n; ++i)
     if (std::tolower(static_cast<unsigned char>(t[i])) != k[i]) return false;
   return true;
+}
+
+// The first token is "solid" in any case (the rest of the line is the solid's name).
+bool starts_with_solid(const std::string& bytes) {
+  std::size_t i = 0;
+  auto space = [&](std::size_t k) { return std::isspace(static_cast<unsigned char>(bytes[k])) != 0; };
+  while (i < bytes.size() && space(i)) ++i;
+  const std::size_t b = i;
+  while (i < bytes.size() && !space(i)) ++i;
+  return keyword(std::string_view(bytes).substr(b, i - b), "solid");
 }
 
 std::vector<std::string_view> tokens(std::string_view line) {
@@ -124,7 +129,7 @@ class StlReader {
   }
 
   // solid [name] / { facet normal x y z / outer loop / vertex x y z (3 times) / endloop / endfacet }
-  // / endsolid [name], one statement a line, keywords in any case.
+  // / endsolid [name], one statement a line, keywords in any case; x y z of the normal any 3 tokens.
   void read_ascii() {
     std::size_t pos = 0;
     long line = 0;
@@ -162,11 +167,9 @@ class StlReader {
       if (keyword(t[0], "endsolid")) break;
       if (!keyword(t[0], "facet"))
         fail(line, "expected \"facet normal\" or \"endsolid\", got " + quote_input(std::string(t[0])));
+      // The normal's three tokens are skipped unread, whatever their text (nan, 1e999, ...): the
+      // winding gives the facet's side and the shading normals are computed.
       expect(t, "facet normal", "facet", "normal", 3);
-      for (int c = 0; c < 3; ++c) {
-        double ignored;
-        if (std::string e = mesh_number(t[2 + c], ignored); !e.empty()) fail(line, "facet normal: " + e);
-      }
       if (facets.size() == max_faces_)
         fail(line, "the file has more than " + std::to_string(max_faces_) +
                        " facets, the faces left for it (see the pipeline's polygon limit)");

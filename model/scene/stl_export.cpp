@@ -51,6 +51,15 @@ StlExport export_stl(const Scene& sc, std::size_t max_faces) {
         out.facets.push_back(s);
       }
   }
+  // An STL file of no facets is one no reader (this one included) accepts: refused, nothing written.
+  if (out.facets.empty()) {
+    if (sc.objects.empty()) throw SceneError(sc.name + ": no world-space surfaces to export (the scene has no objects)");
+    if (out.screen_polygons == int(sc.objects.size()))
+      throw SceneError(sc.name + ": no world-space surfaces to export (" + std::to_string(out.screen_polygons) +
+                       " screen-space polygons object(s) have no world geometry)");
+    throw SceneError(sc.name + ": no facets to export (all " + std::to_string(out.degenerate) +
+                     " triangles have zero area)");
+  }
   return out;
 }
 

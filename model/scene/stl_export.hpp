@@ -27,7 +27,8 @@ struct StlExport {
 };
 
 // Every analytic surface and mesh of `sc`, tessellated as the builder does (quads split into
-// (v0, v1, v2), (v0, v2, v3)) and transformed to world space; the camera plays no part.
+// (v0, v1, v2), (v0, v2, v3)) and transformed to world space; the camera plays no part. A scene
+// that gives no facet (only screen-space "polygons" objects) is a SceneError naming it.
 StlExport export_stl(const Scene& sc, std::size_t max_faces);
 
 // Binary STL (80-byte header, little-endian float32) and ASCII STL ("solid name" ... "endsolid").
