@@ -4,9 +4,12 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdlib>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <stdexcept>
 
 #include "scene.hpp"
@@ -166,9 +169,20 @@ std::string RunFiles::temporary_for(const std::string& path) {
 
 std::string RunFiles::stage(const std::string& path) {
   if (!declared(path)) throw std::logic_error("RunFiles::stage: " + path + " was not declared as an output");
-  const std::string temp = temporary_for(path);
-  pending_.push_back({path, temp, {}, true});
-  return temp.empty() ? path : temp;
+  std::string temp = temporary_for(path);
+  bool copy = false;
+  if (temp.empty()) {
+    // A streaming writer may unlink and rename its file when it closes (an FST writer repacks):
+    // it never gets a device's name. It writes a private temporary, copied into the device at
+    // commit.
+    const char* dir = std::getenv("TMPDIR");
+    temp = (fs::path(dir && *dir ? dir : "/tmp") / ("watkins-" + std::to_string(::getpid()) + "-" +
+                                                     std::to_string(pending_.size()) + ".stream"))
+               .string();
+    copy = true;
+  }
+  pending_.push_back({path, temp, {}, true, copy});
+  return temp;
 }
 
 void RunFiles::commit() {
@@ -183,14 +197,29 @@ void RunFiles::commit() {
     p.temp = temporary_for(p.path);  // set first: the destructor removes it if the write fails half-way
     if (!p.temp.empty()) write_bytes(p.temp, p.bytes, p.path);
   }
-  for (Pending& p : pending_)
-    if (p.temp.empty() && !p.staged) write_bytes(p.path, p.bytes);
   for (Pending& p : pending_) {
-    if (p.temp.empty()) continue;
+    if (p.copy_to_device) {  // a streamed file meant for a device: its bytes, written in place
+      std::ifstream in(p.temp, std::ios::binary);
+      const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      if (!in.eof() && in.fail()) throw std::runtime_error(p.path + ": cannot read back " + p.temp);
+      write_bytes(p.path, bytes);
+    } else if (p.temp.empty() && !p.staged) {
+      write_bytes(p.path, p.bytes);
+    }
+  }
+  for (Pending& p : pending_) {
+    if (p.temp.empty() || p.copy_to_device) continue;
+    // Only a regular file (or nothing) is replaced: a device or FIFO that appeared meanwhile keeps
+    // its place.
+    struct stat st {};
+    if (::lstat(p.path.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISLNK(st.st_mode))
+      throw std::runtime_error(p.path + ": cannot write: it is no longer a regular file");
     if (std::rename(p.temp.c_str(), p.path.c_str()) != 0)
       throw std::runtime_error(p.path + ": cannot write (rename from " + p.temp + "): " + std::strerror(errno));
     p.temp.clear();
   }
+  for (Pending& p : pending_)
+    if (p.copy_to_device) std::remove(p.temp.c_str());
   pending_.clear();
 }
 

@@ -45,7 +45,8 @@ class RunFiles {
   }
   void add_in(const std::string& folder, const std::string& name, std::vector<unsigned char> bytes);
   // The name another writer streams the declared output `path` under: a temporary beside it that
-  // commit() renames over it and a failed run removes (or `path` itself when it names a device).
+  // commit() renames over it and a failed run removes (for a device, a private temporary whose
+  // bytes commit() writes into it: a streaming writer never gets a device's name).
   std::string stage(const std::string& path);
   // Writes every kept file and renames every temporary over its name. May be called again after
   // more add()s (`watkins synth` rewrites its tables after every run): each call replaces the
@@ -73,7 +74,8 @@ class RunFiles {
   struct Pending {
     std::string path, temp;
     std::vector<unsigned char> bytes;
-    bool staged = false;  // written by someone else under temp (or in place): only renamed here
+    bool staged = false;  // written by someone else under temp: only renamed here
+    bool copy_to_device = false;  // staged for a device: temp is private, its bytes copied at commit
   };
   static Identity identity(const std::string& path);
   void check_output(const Output& o) const;

@@ -557,22 +557,6 @@ int run_sweep(const SweepArgs& in) {
   worker();
   for (std::thread& t : threads) t.join();
 
-  files.add(a.csv, csv_text(axes, rows));
-  if (!a.md.empty()) files.add(a.md, markdown_text(rows));
-  if (!a.images.empty()) {
-    const bool one_format = a.attr_frac.size() == 1 && a.x_frac.size() == 1 && a.depth_frac.size() == 1;
-    std::set<std::string> truths;
-    for (Result& r : rows) {
-      const std::string stem = std::filesystem::path(r.axis_values[0]).stem().string();
-      std::string name = stem + "_" + r.axis_values[1] + "_" + std::to_string(r.u) + "x" + std::to_string(r.v);
-      if (!one_format)
-        name += "_f" + std::to_string(r.attr_frac) + "-" + std::to_string(r.x_frac) + "-" + std::to_string(r.depth_frac);
-      if (!r.png.empty()) files.add_in(a.images, name + ".png", std::move(r.png));
-      if (!r.truth_png.empty() && truths.insert(stem).second)
-        files.add_in(a.images, stem + "_truth.png", std::move(r.truth_png));
-    }
-  }
-  files.commit();
   int failed = 0, rtl_bad = 0;
   for (const Result& r : rows) {
     if (!r.error.empty()) {
@@ -583,9 +567,30 @@ int run_sweep(const SweepArgs& in) {
     }
     if (r.rtl_mismatches > 0 || r.error.rfind("RTL run failed", 0) == 0) ++rtl_bad;
   }
-  std::printf("sweep         %zu of %lld points (shard %lld/%lld), %d failed%s; wrote %s%s%s\n", rows.size(),
-              grid_size(axes), shard, shards, failed, rtl_bad ? ", RTL MISMATCH" : "", a.csv.c_str(),
-              a.md.empty() ? "" : ", ", a.md.c_str());
+  // As `render --rtl`: an RTL that disagrees with its model is a bug, and a run that finds one
+  // writes nothing.
+  if (!rtl_bad) {
+    files.add(a.csv, csv_text(axes, rows));
+    if (!a.md.empty()) files.add(a.md, markdown_text(rows));
+    if (!a.images.empty()) {
+      const bool one_format = a.attr_frac.size() == 1 && a.x_frac.size() == 1 && a.depth_frac.size() == 1;
+      std::set<std::string> truths;
+      for (Result& r : rows) {
+        const std::string stem = std::filesystem::path(r.axis_values[0]).stem().string();
+        std::string name = stem + "_" + r.axis_values[1] + "_" + std::to_string(r.u) + "x" + std::to_string(r.v);
+        if (!one_format)
+          name += "_f" + std::to_string(r.attr_frac) + "-" + std::to_string(r.x_frac) + "-" + std::to_string(r.depth_frac);
+        if (!r.png.empty()) files.add_in(a.images, name + ".png", std::move(r.png));
+        if (!r.truth_png.empty() && truths.insert(stem).second)
+          files.add_in(a.images, stem + "_truth.png", std::move(r.truth_png));
+      }
+    }
+    files.commit();
+  }
+  std::printf("sweep         %zu of %lld points (shard %lld/%lld), %d failed%s; %s%s%s%s\n", rows.size(),
+              grid_size(axes), shard, shards, failed, rtl_bad ? ", RTL MISMATCH" : "",
+              rtl_bad ? "nothing written" : "wrote ", rtl_bad ? "" : a.csv.c_str(), a.md.empty() || rtl_bad ? "" : ", ",
+              rtl_bad ? "" : a.md.c_str());
   return rtl_bad ? 3 : 0;
 }
 

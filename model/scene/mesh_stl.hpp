@@ -24,7 +24,7 @@ IndexedMesh stl_mesh_from_bytes(const std::string& bytes, const SceneObject& o, 
                                 std::size_t max_faces, bool strict, int& degenerate);
 
 // o.file as a mesh: STL when its name ends in ".stl" (any case), OBJ when in ".obj", otherwise
-// STL when the content is binary STL or starts with "solid", else OBJ. `degenerate` and `strict`
+// STL when the content is binary STL or its first word is "solid" (any case), else OBJ. `degenerate` and `strict`
 // as for stl_mesh_from_bytes (an OBJ file's faces are never skipped here).
 IndexedMesh load_mesh_file(const SceneObject& o, const std::string& where, std::size_t max_faces, bool strict,
                            int& degenerate);

@@ -53,6 +53,7 @@ def parse_options(entries):
         default = None
         if "=" in rest:
             default = rest.rsplit("=", 1)[1]
+            default = re.sub(r"\s+Excludes:.*$", "", default)  # CLI11 names the options it excludes
             default = re.sub(r"\s*\.\.\.$", "", default).strip()
             default = default[1:-1] if default.startswith("[") and default.endswith("]") else default
         for name in names.split(","):
