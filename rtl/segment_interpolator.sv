@@ -27,7 +27,9 @@
 // (the scanline_buffer's equal-depth rule) and material id, and both readings of the three
 // attribute channels: frag_rgb_o (Gouraud shade levels) and frag_normal_o (Phong normal, the
 // channel rescaled to FracBits fraction bits and saturated to NormalInBits); a top uses one
-// and synthesis drops the other.
+// and synthesis drops the other. AttrOut = 1 adds frag_attr_o, the three attribute words
+// themselves (the shade divider's numerators, Gouraud's eq. (2)), stored with the span's head in
+// the FIFO; AttrOut = 0 leaves it 0 and stores nothing.
 // Widths from the configuration (model/twins/segment_interpolator.hpp lists them): slot words
 // XBits (X, XFracBits fraction bits), ZBits (depth), AttrBits (slots 2..4); every delta, product,
 // FIFO word and stepper register is sized per slot from its own word. "Interpolated vectors" hold
@@ -46,6 +48,7 @@ module segment_interpolator #(
   parameter int unsigned DepthBits      = watkins_pkg::DepthBits,     // fragment depth
   parameter int unsigned PolyIdBits     = watkins_pkg::PolyIdBits,
   parameter int unsigned MaterialIdBits = watkins_pkg::MaterialIdBits,
+  parameter bit          AttrOut        = 1'b0,  // 1: frag_attr_o carries the attribute words
   localparam int unsigned VectorBits = watkins_pkg::vector_bits(XBits, ZBits, AttrBits)
 ) (
   input  logic                                   clk_i,
@@ -64,6 +67,7 @@ module segment_interpolator #(
   output logic [DepthBits-1:0]                   frag_depth_o,
   output watkins_pkg::rgb_t                      frag_rgb_o,       // Gouraud shade
   output logic [3*watkins_pkg::NormalInBits-1:0] frag_normal_o,    // {Nz,Ny,Nx}
+  output logic [3*AttrBits-1:0]                  frag_attr_o,      // AttrOut: slots {4, 3, 2}
   output logic [PolyIdBits-1:0]                  frag_poly_o,      // its segment's
   output logic [MaterialIdBits-1:0]              frag_material_o,
   output logic                                   frag_eol_o,       // end-of-line marker, no
@@ -86,6 +90,8 @@ module segment_interpolator #(
   localparam int unsigned PixelCompareBits  = (XPixelBits > LineBits + 1) ? XPixelBits
                                                                           : LineBits + 1;
   localparam int unsigned NormalBits        = watkins_pkg::NormalInBits;
+  // The FIFO's copy of the head's attribute words: only with AttrOut (one constant bit without).
+  localparam int unsigned HeadAttrBits      = AttrOut ? 3 * AttrBits : 1;
 
   // Interpolated vectors: slot c (1..4) at ilo(c, zw, aw), Z zw bits wide, each attribute aw.
   function automatic int unsigned ilo(int unsigned c, int unsigned zw, int unsigned aw);
@@ -601,6 +607,7 @@ module segment_interpolator #(
     logic [DepthBits-1:0]        depth;   // pixel xs's readings (g_frag)
     logic [3*8-1:0]              rgb;
     logic [3*NormalBits-1:0]     normal;
+    logic [HeadAttrBits-1:0]     attr;    // AttrOut: pixel xs's attribute words
     logic [InterpVectorBits-1:0] value1;  // slots Z.. at pixel xs + 1 (wrapped as the stepper
                                           // wraps)
     logic [InterpVectorBits-1:0] step;    // per-pixel increments
@@ -785,6 +792,11 @@ module segment_interpolator #(
   assign f_in.depth    = depth_src[DepthBits +: DepthBits];
   assign f_in.rgb      = rgb_src[24 +: 24];
   assign f_in.normal   = normal_src[3*NormalBits +: 3*NormalBits];
+  if (AttrOut) begin : g_attr_in
+    assign f_in.attr = sd_value_q[ZBits +: 3*AttrBits];
+  end else begin : g_no_attr_in
+    assign f_in.attr = '0;
+  end
   assign f_in.value1   = hd_value1;
   assign f_in.step     = sd_step_q;
 
@@ -825,8 +837,20 @@ module segment_interpolator #(
 
   `WATKINS_ASSERT_HOLD(a_in_hold, seg_valid_i, seg_ready_o, {seg_e_i, seg_f_i, seg_poly_i, seg_material_i,
     seg_eol_i})
+  // The attribute words, as the other readings: the stepper's registers or the head's stored copy.
+  if (AttrOut) begin : g_attr_out
+    always_ff @(posedge clk_i) begin
+      if (emit_frag[CopyFragment])
+        frag_attr_o <= st_active_q[CopyFragment] ? st_value_q[ZBits +: 3*AttrBits] : f_out.attr;
+    end
+  end else begin : g_no_attr_out
+    assign frag_attr_o = '0;
+    logic unused_attr;
+    assign unused_attr = ^f_out.attr;
+  end
+
   `WATKINS_ASSERT_HOLD(a_out_hold, frag_valid_o, frag_ready_i, {frag_x_o, frag_depth_o, frag_rgb_o,
-    frag_normal_o, frag_poly_o, frag_material_o, frag_eol_o})
+    frag_normal_o, frag_attr_o, frag_poly_o, frag_material_o, frag_eol_o})
   `WATKINS_ASSERT(a_x_on_screen, frag_valid_o && !frag_eol_o |-> frag_x_o < width_i)
   `WATKINS_COVER(c_back_to_back_spans, emit_frag[CopyControl] && !st_active_q[CopyControl]
     && frag_valid_o && !frag_eol_o)

@@ -5,7 +5,8 @@
 // Pipelined, one input per clock: a stage of leading-one detection, a stage of normalization,
 // then a restoring divider whose first stage takes quotient bits R and R-1 (both decided by m
 // alone) and whose R-1 further stages take one bit each.
-// Latency 26 cycles (RecipBits + 2). Every stage is registered; one global stall (ready_o =
+// Latency 26 cycles (RecipBits + 2; RecipBits is watkins_pkg::RecipBits unless given: the
+// shade divider takes 1/depth from this block with its own mantissa width). Every stage is registered; one global stall (ready_o =
 // ready_i || !valid_o, stall_pipe) holds the whole pipe (with LookAhead that stall is a flop of
 // its own, loaded a clock ahead from ready_next_i), and a stage's registers load only for a
 // valid beat (stall_pipe's ce_o). payload_i travels alongside, so the caller keeps its span data
@@ -19,8 +20,8 @@ module span_reciprocal #(
   parameter int unsigned DxBits      = watkins_pkg::ChannelBits + 1,  // unsigned width of dx
   parameter int unsigned PayloadBits = 1,
   parameter bit          LookAhead   = 1'b0,  // stall_pipe's: the stall from a flop of its own
-  localparam int unsigned RecipBits    = watkins_pkg::RecipBits,  // R below
-  localparam int unsigned ExponentBits = $clog2(DxBits)           // width of p
+  parameter int unsigned RecipBits   = watkins_pkg::RecipBits,  // R below
+  localparam int unsigned ExponentBits = $clog2(DxBits)         // width of p
 ) (
   input  logic                   clk_i,
   input  logic                   rst_ni,

@@ -22,6 +22,7 @@ package watkins_pkg;
   localparam int ChanNz = 4;  // phong: channel index of the normal's z
   localparam int RecipBits = 24;  // span reciprocal: mantissa bits of 1/(X_F - X_E), relative error < 2^-23
   localparam int AlphaBits = 24;  // fraction bits of the prestep coefficient alpha0 = (x_c - X_E)/(X_F - X_E)
+  localparam int Eq2RecipBits = 16;  // eq. (2) shade divider: mantissa bits of 1/depth, relative error < 2^-(Eq2RecipBits-1)
   localparam int PolyIdBits = 16;  // polygon id bits: at most 65536 polygons per frame
   localparam int EdgeIdBits = 18;  // edge id bits: position of a record in the frame's edge stream (262144 records)
   localparam int MaxActiveEdges = 64;  // default capacity of the active-edge list

@@ -44,6 +44,12 @@
 // configuration (rtl/watkins_pkg.sv); edge_i is laid out as watkins_pkg::edge_bits says.
 // EdgeOrder 3 (Config::edge_order): Whitted's curved edges, each a cubic in the scan line stepped
 // by forward differences in the active-edge list's incrementer; everything after it is the same.
+// HasEq2 = 1 (Config::eq2, Gouraud top only): the shade divider (rtl/shade_divider.sv) after the
+// interpolator, adding Eq2RecipBits + 4 cycles of latency to every fragment (20 by default),
+// not throughput. eq2_i (sampled with the frame size) picks Gouraud's eq. (2) for the frame: the
+// shade slots carry S Z, and each fragment's shade is their quotient by its depth; eq2_i = 0
+// keeps the interpolated shade (eq. (1)). HasEq2 = 0: no divider, eq2_i must be 0 at every
+// frame start (asserted).
 `include "watkins_assert.svh"
 
 module watkins_top #(
@@ -62,6 +68,8 @@ module watkins_top #(
   parameter int unsigned EdgeIdBits     = watkins_pkg::EdgeIdBits,      // records per frame
   parameter int unsigned EdgeOrder      = 1,  // 1: straight edges (slope); 3: cubic edges (d1, d2, d3)
   parameter int          Smoothing      = 1,  // 0: no smoother (smooth_w_i must be 0 at every frame start)
+  parameter int          HasEq2         = 0,  // 1 (Gouraud): the eq. (2) shade divider, eq2_i per frame
+  parameter int unsigned Eq2RecipBits   = watkins_pkg::Eq2RecipBits,  // its 1/depth mantissa
   localparam int unsigned XBits    = XIntBits + XFracBits,
   localparam int unsigned ZBits    = DepthIntBits + DepthFracBits,
   localparam int unsigned AttrBits = AttrIntBits + AttrFracBits,
@@ -76,6 +84,7 @@ module watkins_top #(
   input  logic                               sparse_i,        // frame configuration: covered pixels only
   input  logic                               tie_submission_i, // frame configuration: a depth tie goes to the smaller polygon id
   input  logic [watkins_pkg::SmoothWBits-1:0] smooth_w_i,     // frame configuration: smoothing weight W (0: off)
+  input  logic                               eq2_i,           // frame configuration: Gouraud's eq. (2) (HasEq2)
   input  logic [EdgeBits-1:0]                edge_i,          // edge records, sorted by y0 (ties in stream order)
   input  logic                               edge_eof_i,      // with valid: this beat ends the frame's stream, carries no edge
   input  logic                               edge_valid_i,
@@ -237,6 +246,7 @@ module watkins_top #(
   logic [DepthBits-1:0]                   fr_depth    /*verilator public_flat_rd*/;
   watkins_pkg::rgb_t                      fr_rgb      /*verilator public_flat_rd*/;
   logic [3*watkins_pkg::NormalInBits-1:0] fr_normal   /*verilator public_flat_rd*/;
+  logic [3*AttrBits-1:0]                  fr_attr;     // the shade slots' words (HasEq2)
   logic [PolyIdBits-1:0]                  fr_poly     /*verilator public_flat_rd*/;
   logic [MaterialIdBits-1:0]              fr_material /*verilator public_flat_rd*/;
   logic                                   fr_eol      /*verilator public_flat_rd*/;
@@ -252,7 +262,8 @@ module watkins_top #(
     .AttrFracBits  (AttrFracBits),
     .DepthBits     (DepthBits),
     .PolyIdBits    (PolyIdBits),
-    .MaterialIdBits(MaterialIdBits)
+    .MaterialIdBits(MaterialIdBits),
+    .AttrOut       (HasEq2 != 0 && Phong == 0)
   ) u_segment_interpolator (
     .clk_i, .rst_ni,
     .width_i     (width_q),
@@ -267,6 +278,7 @@ module watkins_top #(
     .frag_depth_o(fr_depth),
     .frag_rgb_o  (fr_rgb),
     .frag_normal_o(fr_normal),
+    .frag_attr_o (fr_attr),
     .frag_poly_o (fr_poly),
     .frag_material_o(fr_material),
     .frag_eol_o  (fr_eol),
@@ -365,6 +377,47 @@ module watkins_top #(
       .ready_next_o(nm_ready_next)
     );
     assign {sh_eol, sh_x, sh_depth, sh_poly} = sh_payload;
+    logic unused_eq2;
+    assign unused_eq2 = ^{eq2_i, fr_attr};
+    `WATKINS_ASSERT(a_phong_no_eq2, start |-> !eq2_i)
+  end else if (HasEq2 != 0) begin : g_eq2
+    // Gouraud with the eq. (2) divider: every fragment passes through it (the same latency in
+    // both modes); eq2_q picks its quotient or the interpolated shade riding along.
+    localparam int unsigned DividePayloadBits = 1 + LineBits + DepthBits + PolyIdBits + watkins_pkg::RgbBits;
+    logic eq2_q;
+    always_ff @(posedge clk_i) begin
+      if (start) eq2_q <= eq2_i;
+    end
+    watkins_pkg::rgb_t dv_rgb, dv_interpolated;
+    /* verilator lint_off UNUSEDSIGNAL */
+    logic dv_ready_next_unused;  // the interpolator's stall is not a flop
+    /* verilator lint_on UNUSEDSIGNAL */
+    shade_divider #(
+      .DepthBits   (DepthBits),
+      .AttrBits    (AttrBits),
+      .AttrFracBits(AttrFracBits),
+      .RecipBits   (Eq2RecipBits),
+      .PayloadBits (DividePayloadBits),
+      .LookAhead   (1'b1)
+    ) u_shade_divider (
+      .clk_i, .rst_ni,
+      .depth_i     (fr_depth),
+      .num_i       (fr_attr),
+      .payload_i   ({fr_eol, fr_x, fr_depth, fr_poly, fr_rgb}),
+      .valid_i     (fr_valid),
+      .ready_o     (fr_ready),
+      .ready_next_o(dv_ready_next_unused),
+      .rgb_o       (dv_rgb),
+      .payload_o   ({sh_eol, sh_x, sh_depth, sh_poly, dv_interpolated}),
+      .valid_o     (sh_valid),
+      .ready_i     (sh_ready),
+      .ready_next_i(sh_ready_next)
+    );
+    assign sh_rgb = eq2_q ? dv_rgb : dv_interpolated;
+    logic unused_phong;
+    assign unused_phong = ^{fr_normal, fr_material, light_i, eye_i, material_we_i, material_addr_i,
+                            material_cp_i, material_d_i, material_w_i, material_n_i};
+    `WATKINS_COVER(c_eq2_frame, eq2_q && sh_valid && sh_ready && !sh_eol)
   end else begin : g_gouraud
     assign sh_x     = fr_x;
     assign sh_depth = fr_depth;
@@ -373,10 +426,13 @@ module watkins_top #(
     assign sh_eol   = fr_eol;
     assign sh_valid = fr_valid;
     assign fr_ready = sh_ready;
-    // The normal reading of the channels and the Phong inputs serve Phong = 1 only.
+    // The normal reading of the channels and the Phong inputs serve Phong = 1 only; the
+    // attribute words and eq2_i the divider only.
     logic unused_phong;
     assign unused_phong = ^{fr_normal, fr_material, light_i, eye_i, material_we_i, material_addr_i,
-                            material_cp_i, material_d_i, material_w_i, material_n_i, sh_ready_next};
+                            material_cp_i, material_d_i, material_w_i, material_n_i, sh_ready_next,
+                            fr_attr, eq2_i};
+    `WATKINS_ASSERT(a_no_eq2, start |-> !eq2_i)
   end
 
   // ------------------------------------------------------------ fragment queue

@@ -212,6 +212,13 @@ BuildOptions build_options(const RenderArgs& a) {
     opt.depth = parse_depth_mode(a.depth);
     if (!opt.depth) throw UsageError("--depth: unknown depth mode \"" + a.depth + "\" (inverse-z, z)");
   }
+  if (!a.interpolation.empty()) {
+    opt.interpolation = parse_interpolation(a.interpolation);
+    if (!opt.interpolation)
+      throw UsageError("--interpolation: unknown interpolation " + quote_input(a.interpolation) + " (eq1, eq2)");
+    if (*opt.interpolation == Interpolation::Eq2 && opt.depth == DepthMode::InverseZ)
+      throw UsageError("--depth inverse-z: contradicts --interpolation eq2, which divides by the interpolated Z");
+  }
   if (a.depth_tie_given) {
     opt.depth_tie = parse_depth_tie(a.depth_tie);
     if (!opt.depth_tie)
@@ -249,6 +256,9 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& ra) {
   r->add_option("--rule", ra.rule, "vertex shading rule of the gouraud pipeline: gouraud, lambert, warnock, romney, "
                                    "phong (eq. 3 at the vertices)");
   r->add_option("--depth", ra.depth, "depth channel: inverse-z (Gouraud eq. 1) or z (eq. 2)");
+  r->add_option("--interpolation", ra.interpolation,
+                "gouraud pipeline: eq1 (interpolate the shade, Gouraud's eq. 1) or eq2 (interpolate S*Z and Z, one "
+                "division per pixel: his eq. 2, the top's shade divider; depth Z/far); overrides shading.interpolation");
   r->add_option_function<std::string>(
        "--depth-tie",
        [&ra](const std::string& v) {
@@ -317,6 +327,7 @@ int run_render(const RenderArgs& a) {
   std::printf("scene         %s  %dx%d  shading %s  rule %s  depth %s  depth-tie %s\n", scene.name.c_str(),
               scene.width, scene.height, to_string(scene.shading), to_string(scene.rule), to_string(scene.depth),
               to_string(scene.depth_tie));
+  if (scene.interpolation == Interpolation::Eq2) std::printf("interpolation eq2 (Gouraud's eq. 2: S*Z / Z per pixel)\n");
   if (scene.shading == ShadingMode::Phong)
     std::printf("phong         %zu material(s), light (%.4f, %.4f, %.4f), eye (%.4f, %.4f, %.4f); the rule is unused\n",
                 scene.materials.size(), scene.light[0], scene.light[1], scene.light[2], scene.eye[0], scene.eye[1],

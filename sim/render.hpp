@@ -31,6 +31,7 @@ struct RenderArgs {
   std::string model = "fixed";
   std::string shading, rule, depth, diff, truth, truth_diff;
   std::string depth_tie;  // equal-depth rule: arrival or submission
+  std::string interpolation;  // eq1 or eq2 (Gouraud's equations); else the scene's
   bool depth_tie_given = false;  // else the scene's shading.depth_tie
   double smooth = -1;            // --smooth W (else the scene's shading.smooth)
   bool cull = false, no_cull = false;

@@ -1,4 +1,5 @@
-// watkins size SCENE [--bound L] [--shading S] [--patches curves|polygons] [--out F]: the smallest
+// watkins size SCENE [--bound L] [--shading S] [--interpolation eq1|eq2] [--patches curves|polygons]
+// [--out F]: the smallest
 // configuration whose fixed-point image stays within L levels of the double reference.
 //
 // The criterion, per pixel, against the double reference of the same algorithm:
@@ -9,7 +10,8 @@
 //    configuration's differ too (a subset of the default's pixel set, not just its count).
 // The search: start at the default, lower x.frac_bits, the attribute group's frac_bits (shade in a
 // Gouraud frame, normal in a Phong frame), depth_bits and depth.frac_bits one bit at a time while
-// the criterion holds, coordinate descent until no width can drop a bit; in four orders of the
+// the criterion holds (and, for a scene interpolating by Gouraud's eq. (2), eq2_recip_bits, the
+// shade divider's mantissa), coordinate descent until no width can drop a bit; in four orders of the
 // widths, keeping the smallest edge record (then line buffer). Integer bits are exactly
 // what SceneNeeds reports at the chosen fractions; capacities are the scene's needs; the smoother
 // (smoothing) only when the scene's shading.smooth turns it on.
@@ -45,7 +47,7 @@ namespace watkins::size {
 namespace {
 
 // The widths the search lowers; a point of the search.
-enum Dim { DimX, DimAttr, DimDepthBits, DimDepth, NumDims };
+enum Dim { DimX, DimAttr, DimDepthBits, DimDepth, DimRecip, NumDims };
 using Widths = std::array<int, NumDims>;
 
 const char* dim_name(int d, ShadingMode shading) {
@@ -53,13 +55,14 @@ const char* dim_name(int d, ShadingMode shading) {
     case DimX: return "x.frac_bits";
     case DimAttr: return shading == ShadingMode::Phong ? "normal.frac_bits" : "shade.frac_bits";
     case DimDepthBits: return "depth_bits";
+    case DimRecip: return "eq2_recip_bits";
     default: return "depth.frac_bits";
   }
 }
 
 Widths default_widths() {
   const Config d;
-  return {d.x.frac_bits, d.shade.frac_bits, d.depth_bits, d.depth.frac_bits};
+  return {d.x.frac_bits, d.shade.frac_bits, d.depth_bits, d.depth.frac_bits, d.eq2_recip_bits};
 }
 
 // One rendered point of the search.
@@ -162,6 +165,7 @@ class Judge {
     attr(c).frac_bits = w[DimAttr];
     c.depth_bits = w[DimDepthBits];
     c.depth.frac_bits = w[DimDepth];
+    c.eq2_recip_bits = w[DimRecip];  // read by the divider only (fit_int_bits adds it for an eq2 scene)
     PreparedScene probe;
     c = fit_int_bits(scene_, c, &probe);  // the integer bits, as the sweep derives them
     const SceneNeeds& needs = probe.needs;
@@ -242,6 +246,9 @@ CLI::App* add_size_command(CLI::App& app, SizeArgs& a) {
   s->add_option("--bound", a.bound, "levels: the largest |fixed - double| allowed at a pixel showing the same polygon")
       ->capture_default_str();
   s->add_option("--shading", a.shading, "gouraud or phong; overrides the scene's shading.mode");
+  s->add_option("--interpolation", a.interpolation,
+                "gouraud: eq1 or eq2 (Gouraud's eq. 2, sizing the shade divider's eq2_recip_bits too); overrides "
+                "shading.interpolation");
   cli::add_file(s, "--out,-o", a.out, "configuration file to write (default: <scene>.config.json)");
   s->add_option("--patches", a.patches, "patch objects drawn as curves (Whitted's edges; sized at edge_order 3) or "
                                         "polygons; overrides each object's \"draw\"")
@@ -255,6 +262,11 @@ BuildOptions build_options(const SizeArgs& a) {
   if (!a.shading.empty()) {
     opt.shading = parse_shading_mode(a.shading);
     if (!opt.shading) throw UsageError("--shading: unknown shading mode \"" + a.shading + "\" (gouraud, phong)");
+  }
+  if (!a.interpolation.empty()) {
+    opt.interpolation = parse_interpolation(a.interpolation);
+    if (!opt.interpolation)
+      throw UsageError("--interpolation: unknown interpolation \"" + a.interpolation + "\" (eq1, eq2)");
   }
   if (!a.patches.empty()) opt.patches_as_curves = a.patches == "curves";
   return opt;
@@ -284,16 +296,21 @@ int run_size(const SizeArgs& a) {
   // depth_bits (line buffer and edge record) or in depth.frac_bits (edge record only) — so the
   // descent runs in a few orders and keeps the smallest edge record (then line buffer, then the
   // sum of the widths). Every result is a local minimum: no width can drop one bit.
-  const std::array<std::array<int, NumDims>, 4> orders{{{DimX, DimAttr, DimDepthBits, DimDepth},
-                                                        {DimX, DimAttr, DimDepth, DimDepthBits},
-                                                        {DimDepthBits, DimDepth, DimAttr, DimX},
-                                                        {DimDepth, DimDepthBits, DimAttr, DimX}}};
+  std::vector<std::vector<int>> orders{{DimX, DimAttr, DimDepthBits, DimDepth},
+                                       {DimX, DimAttr, DimDepth, DimDepthBits},
+                                       {DimDepthBits, DimDepth, DimAttr, DimX},
+                                       {DimDepth, DimDepthBits, DimAttr, DimX}};
+  // The shade divider's mantissa, last, when the frame divides (eq2): other frames never read it.
+  const bool eq2 = shading == ShadingMode::Gouraud && scene.interpolation == Interpolation::Eq2;
+  if (eq2)
+    for (std::vector<int>& order : orders) order.push_back(DimRecip);
+  const std::vector<int> dims = orders[0];
   if (!judge.evaluate(default_widths()).passes())  // the default passes by construction
     throw std::runtime_error("the default configuration fails its own criterion: " +
                              broke(judge.evaluate(default_widths()), bound));
   auto cost = [&](const Point& p) {
     const Widths& w = p.w;
-    return std::make_tuple(p.cfg.edge_record_bits(shading), line_buffer_bits(p.cfg), w[0] + w[1] + w[2] + w[3]);
+    return std::make_tuple(p.cfg.edge_record_bits(shading), line_buffer_bits(p.cfg), w[0] + w[1] + w[2] + w[3] + w[4]);
   };
   Widths cur{};
   std::string tried;
@@ -321,7 +338,7 @@ int run_size(const SizeArgs& a) {
   const Point chosen = judge.evaluate(cur);
   // One bit below the chosen point, per width: the error there and which limit broke.
   std::array<Point, NumDims> below;
-  for (int d = 0; d < NumDims; ++d) {
+  for (int d : dims) {
     Widths w = cur;
     --w[d];
     below[d] = judge.evaluate(w);
@@ -351,6 +368,9 @@ int run_size(const SizeArgs& a) {
   group("shade", c.shade, def.shade, phong ? "  unused by a Phong frame: default kept" : "");
   group("normal", c.normal, def.normal, phong ? "" : "  unused by a Gouraud frame: default kept");
   std::printf("              depth_bits %d (default %d)\n", c.depth_bits, def.depth_bits);
+  if (eq2)
+    std::printf("eq2           the shade divider (Gouraud's eq. 2): eq2_recip_bits %d (default %d)\n", c.eq2_recip_bits,
+                def.eq2_recip_bits);
   std::printf("capacities    max_active_edges %d, max_width %d (the screen width; the line buffer takes any width), "
               "max_materials %d (%d-bit id%s), max_polygons %d (%d-bit id), max_edges %d (%d-bit id)\n",
               c.max_active_edges, c.max_width, c.max_materials, id_bits(c.max_materials),
@@ -374,7 +394,7 @@ int run_size(const SizeArgs& a) {
   std::printf("error default %s\n", error(judge.evaluate(default_widths())).c_str());
   std::printf("error chosen  %s\n", error(chosen).c_str());
   std::printf("one bit below\n");
-  for (int d = 0; d < NumDims; ++d) {
+  for (int d : dims) {
     const Point& p = below[d];
     std::printf("  %-17s %2d: %s\n", dim_name(d, shading), p.w[d],
                 p.refused.empty() ? (error(p) + "\n                       broke " + broke(p, bound)).c_str()

@@ -17,6 +17,7 @@ struct SizeArgs {
   std::string bound = "1";    // levels; parsed by run_size so bad input is one line
   std::string out;            // configuration file; default <scene stem>.config.json
   std::string shading;        // gouraud | phong; default the scene's
+  std::string interpolation;  // eq1 or eq2 (Gouraud's equations); else the scene's
   std::string patches;        // curves | polygons; default each patch object's "draw"
 };
 

@@ -12,8 +12,9 @@
 // or prepare() refuses leaves its message in the point's `error` and the sweep goes on.
 //
 // Each point: the scene text with its first object's "u", "v" scaled (or set, --uv), built with the
-// point's shading (flat: Gouraud pipeline with one shade per polygon; gouraud-eq1 / -eq2: the depth
-// channel interpolates 1/Z (Gouraud's eq. 1) or Z (eq. 2); phong: the Phong pipeline; whitted: the
+// point's shading (flat: Gouraud pipeline with one shade per polygon; gouraud-eq1: the shade
+// interpolated, depth 1/Z (Gouraud's eq. 1); gouraud-eq2: his eq. 2, S·Z and Z interpolated and
+// divided per pixel (interpolation eq2, the top's shade divider); phong: the Phong pipeline; whitted: the
 // Phong pipeline with the patch objects drawn by Whitted's curved edges, the first one's k_u = u
 // and k_v = v subpatches per patch, so its cells are the polygons' at the same point), prepared,
 // rendered by the fixed-point model (WatkinsTop), the double reference and the analytic truth,
@@ -251,7 +252,9 @@ Result evaluate(const SweepArgs& a, const std::vector<Axis>& axes, long long k) 
   try {
     BuildOptions opt;
     opt.rule = parse_shading_rule(a.rule);
-    opt.depth = shading == "gouraud-eq2" ? DepthMode::Z : DepthMode::InverseZ;
+    const bool eq2 = shading == "gouraud-eq2";
+    opt.interpolation = eq2 ? Interpolation::Eq2 : Interpolation::Eq1;
+    opt.depth = eq2 ? DepthMode::Z : DepthMode::InverseZ;
     opt.shading = shading == "phong" || curves ? ShadingMode::Phong : ShadingMode::Gouraud;
     opt.flat = shading == "flat";
     opt.patches_as_curves = curves;  // the polygon shadings tessellate a scene's "draw": "curves" too
@@ -471,7 +474,8 @@ CLI::App* add_sweep_command(CLI::App& app, SweepArgs& a) {
   s->add_option("scenes", a.scenes, "scene files (JSON); default: scenes/sphere.json scenes/cone.json")
       ->check(cli::non_empty_name());
   cli::add_name_list(s, "--shadings", a.shadings,
-                     "flat, gouraud-eq1 (depth 1/Z), gouraud-eq2 (depth Z), phong, whitted (patches by curved edges, "
+                     "flat, gouraud-eq1 (Gouraud's eq. 1: the shade interpolated, depth 1/Z), gouraud-eq2 (his eq. 2: S*Z and Z "
+                     "interpolated, divided per pixel), phong, whitted (patches by curved edges, "
                      "k_u = u, k_v = v subpatches, Phong)",
                      {"flat", "gouraud-eq1", "gouraud-eq2", "phong", "whitted"});
   CLI::Option* tess = cli::add_real_list(

@@ -28,13 +28,14 @@ class CcTopPins final : public TopPins {
 
   void reset_pin(bool v) override { dut_.rst_ni = v; }
   void frame_pins(std::uint32_t w, std::uint32_t h, std::uint32_t bg, bool sparse, bool tie_submission,
-                  std::uint32_t smooth_w) override {
+                  std::uint32_t smooth_w, bool eq2) override {
     dut_.width_i = w;
     dut_.height_i = h;
     dut_.background_i = bg;
     dut_.sparse_i = sparse;
     dut_.tie_submission_i = tie_submission;
     dut_.smooth_w_i = smooth_w;
+    dut_.eq2_i = eq2;
   }
   void phong_pins(std::uint64_t light, std::uint64_t eye) override {
     dut_.light_i = light;

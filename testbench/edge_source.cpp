@@ -39,7 +39,7 @@ bool FrameConfig::operator==(const FrameConfig& o) const {
     return a.cp == b.cp && a.d == b.d && a.w == b.w && a.shininess == b.shininess;
   };
   return width == o.width && height == o.height && background == o.background && sparse == o.sparse &&
-         tie_submission == o.tie_submission && smooth_w == o.smooth_w &&
+         tie_submission == o.tie_submission && smooth_w == o.smooth_w && eq2 == o.eq2 &&
          light == o.light && eye == o.eye && materials.size() == o.materials.size() &&
          std::equal(materials.begin(), materials.end(), o.materials.begin(), same_material);
 }
@@ -64,6 +64,7 @@ FrameConfig EdgeSource::needs(int f) const {
   k.sparse = sparse_frame(opt_, f);
   k.tie_submission = s.depth_tie == DepthTie::Submission;
   k.smooth_w = std::uint32_t(s.smooth_w);
+  k.eq2 = s.eq2;
   if (s.shading == ShadingMode::Phong) {
     k.light = pack_unit(s.light);
     k.eye = pack_unit(s.eye);
@@ -80,7 +81,7 @@ void EdgeSource::drive(long long cycle, int frames_done, std::vector<RtlFrame>& 
   if (may_start && starts && !same && loading_ == 0) {
     config_ = needs(frame_);
     pins_.frame_pins(config_.width, config_.height, config_.background, config_.sparse, config_.tie_submission,
-                     config_.smooth_w);
+                     config_.smooth_w, config_.eq2);
     pins_.phong_pins(config_.light, config_.eye);
     configured_ = true;
     loading_ = config_.materials.size() + 1;  // the writes, then write enable low again

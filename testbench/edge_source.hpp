@@ -28,6 +28,7 @@ struct FrameConfig {
   bool sparse = false;
   bool tie_submission = false;  // the frame's depth_tie is Submission
   std::uint32_t smooth_w = 0;   // the frame's smoothing weight (smooth_w_i)
+  bool eq2 = false;             // Gouraud's eq. (2) (eq2_i)
   std::uint64_t light = 0, eye = 0;
   std::vector<QuantizedMaterial> materials;
   bool operator==(const FrameConfig& o) const;

@@ -121,7 +121,7 @@ void FrameDriver::run(const std::vector<const PreparedScene*>& scenes, const std
 
 void FrameDriver::reset(const EdgeWords& poison) {
   pins_.reset_pin(false);
-  pins_.frame_pins(0, 0, 0, false, false, 0);
+  pins_.frame_pins(0, 0, 0, false, false, 0, false);
   pins_.phong_pins(0, 0);
   pins_.material_pins(MaterialPins{});
   pins_.edge_pins(false, false, poison);

@@ -107,6 +107,12 @@ RtlResult run_rtl_frames(const std::vector<const PreparedScene*>& scenes, const 
         throw std::invalid_argument("RTL: smoothing: frame " + std::to_string(f) + " smooths (smooth_w " +
                                     std::to_string(scenes[f]->smooth_w) +
                                     ") but its configuration has smoothing false (the top has no smoother)");
+  // Likewise a top without the eq. (2) divider ignores eq2_i (and asserts it 0).
+  if (!config.eq2 || shading == ShadingMode::Phong)
+    for (std::size_t f = 0; f < scenes.size(); ++f)
+      if (scenes[f]->eq2)
+        throw std::invalid_argument("RTL: eq2: frame " + std::to_string(f) +
+                                    " divides by eq. (2) but its configuration has eq2 false (the top has no shade divider)");
   const std::vector<RtlParameter> params = rtl_parameters(config, shading);
   RtlResult r;
   const detail::CcModelEntry* m = find_cc_model(params);

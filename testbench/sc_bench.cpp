@@ -97,13 +97,15 @@ struct TopBench : sc_module, TopPins {
 
   // ---- TopPins (top_pins.hpp) ----
   void reset_pin(bool v) override { io.rst_n.write(v); }
-  void frame_pins(std::uint32_t w, std::uint32_t h, std::uint32_t bg, bool sp, bool tie, std::uint32_t sw) override {
+  void frame_pins(std::uint32_t w, std::uint32_t h, std::uint32_t bg, bool sp, bool tie, std::uint32_t sw,
+                  bool e2) override {
     io.width.write(w);
     io.height.write(h);
     io.background.write(bg);
     io.sparse.write(sp);
     io.tie_submission.write(tie);
     io.smooth_w.write(sw);
+    io.eq2.write(e2);
   }
   void phong_pins(std::uint64_t l, std::uint64_t e) override {
     io.light.write(l);

@@ -12,7 +12,7 @@
 namespace watkins::tb {
 
 struct TopSignals {
-  sc_signal<bool> rst_n{"rst_n"}, sparse{"sparse"}, tie_submission{"tie_submission"};
+  sc_signal<bool> rst_n{"rst_n"}, sparse{"sparse"}, tie_submission{"tie_submission"}, eq2{"eq2"};
   sc_signal<uint32_t> width{"width"}, height{"height"}, background{"background"}, smooth_w{"smooth_w"};
   sc_signal<sc_bv<fmt::EdgeRecordBits>> edge{"edge"};  // the default configuration's edge_t
   sc_signal<bool> edge_eof{"edge_eof"}, edge_valid{"edge_valid"}, edge_ready{"edge_ready"};
@@ -35,6 +35,7 @@ struct TopSignals {
     dut.sparse_i(sparse);
     dut.tie_submission_i(tie_submission);
     dut.smooth_w_i(smooth_w);
+    dut.eq2_i(eq2);
     dut.edge_i(edge);
     dut.edge_eof_i(edge_eof);
     dut.edge_valid_i(edge_valid);

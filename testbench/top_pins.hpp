@@ -44,9 +44,9 @@ class TopPins {
   virtual ~TopPins() = default;
   virtual void reset_pin(bool rst_n) = 0;
   // The frame configuration pins: width_i, height_i, background_i, sparse_i, tie_submission_i,
-  // smooth_w_i.
+  // smooth_w_i, eq2_i.
   virtual void frame_pins(std::uint32_t width, std::uint32_t height, std::uint32_t background_rgb, bool sparse,
-                          bool tie_submission, std::uint32_t smooth_w) = 0;
+                          bool tie_submission, std::uint32_t smooth_w, bool eq2) = 0;
   virtual void phong_pins(std::uint64_t light, std::uint64_t eye) = 0;  // {z, y, x} Q2.14 each
   virtual void material_pins(const MaterialPins& m) = 0;
   virtual void edge_pins(bool valid, bool eof, const EdgeWords& data) = 0;

@@ -65,7 +65,7 @@ Config parse_config(const std::string& text, const std::string& name) {
   const json root = parse_strict_json(text, name, /*comments=*/false);
   const ConfigReader r(name);
   r.keys(root, "", {"x", "depth", "shade", "normal", "depth_bits", "max_active_edges", "max_width",
-                    "max_materials", "max_polygons", "max_edges", "edge_order", "smoothing"});
+                    "max_materials", "max_polygons", "max_edges", "edge_order", "smoothing", "eq2", "eq2_recip_bits"});
   Config c;
   r.group(root, "x", c.x);
   r.group(root, "depth", c.depth);
@@ -79,6 +79,8 @@ Config parse_config(const std::string& text, const std::string& name) {
   r.integer(root, "", "max_edges", c.max_edges);
   r.integer(root, "", "edge_order", c.edge_order);
   r.boolean(root, "smoothing", c.smoothing);
+  r.boolean(root, "eq2", c.eq2);
+  r.integer(root, "", "eq2_recip_bits", c.eq2_recip_bits);
   if (const std::string e = c.check(); !e.empty()) throw SceneError(name + ": " + e);
   return c;
 }
@@ -116,6 +118,8 @@ std::string config_json(const Config& c) {
   if (c.edge_order != 1) o << ",\n  \"edge_order\": " << c.edge_order;
   // Likewise: absent means the smoother is there.
   if (!c.smoothing) o << ",\n  \"smoothing\": false";
+  // Likewise: absent means no eq. (2) divider (and its default mantissa).
+  if (c.eq2) o << ",\n  \"eq2\": true,\n  \"eq2_recip_bits\": " << c.eq2_recip_bits;
   o << "\n}\n";
   return o.str();
 }

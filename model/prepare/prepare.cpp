@@ -43,7 +43,7 @@ std::string where(int poly, int vertex) {
 
 }  // namespace
 
-QuantizedVertex quantize_vertex(const ScreenVertex& v, ShadingMode shading, const Config& cfg) {
+QuantizedVertex quantize_vertex(const ScreenVertex& v, ShadingMode shading, const Config& cfg, bool eq2) {
   QuantizedVertex q;
   auto in_range = [](double c) { return std::isfinite(c) && c >= -kVertexLimit && c < kVertexLimit; };
   if (!in_range(v.x) || !in_range(v.y))
@@ -67,10 +67,12 @@ QuantizedVertex quantize_vertex(const ScreenVertex& v, ShadingMode shading, cons
       q.ch[fmt::ChanNx + c] = quantize_unit(v.normal[c], cfg.normal.frac_bits, "vertex normal");
     return q;
   }
+  // Eq. (2)'s numerator: the shade times the depth the divider will see at the vertex.
+  const double z = eq2 ? std::ldexp(static_cast<double>(q.ch[fmt::ChanZ]), -(cfg.depth_bits + fz)) : 1.0;
   for (int c = 0; c < fmt::ShadeChannels; ++c) {
     if (!(v.rgb[c] >= 0.0 && v.rgb[c] <= fmt::ShadeMax))
       throw SceneError("vertex shade " + std::to_string(v.rgb[c]) + " is outside [0, 255]");
-    q.ch[fmt::ChanR + c] = quantize(v.rgb[c], cfg.shade.frac_bits);
+    q.ch[fmt::ChanR + c] = quantize(v.rgb[c] * z, cfg.shade.frac_bits);
   }
   return q;
 }
@@ -175,6 +177,7 @@ PreparedScene prepare(const BuiltScene& scene, const PrepareOptions& opt) {
 
 Config with_scene_edge_order(const BuiltScene& scene, Config base) {
   if (!scene.curves.empty()) base.edge_order = 3;
+  if (scene.shading == ShadingMode::Gouraud && scene.interpolation == Interpolation::Eq2) base.eq2 = true;
   return base;
 }
 
@@ -228,6 +231,9 @@ static void check_channel_bits(const std::array<int, fmt::NumChannels>& need, co
 static void prepare_curves(const BuiltScene& scene, const Config& cfg, PreparedScene& out,
                            std::array<int, fmt::NumChannels>& edge_bits) {
   if (scene.curves.empty()) return;
+  if (out.eq2)
+    throw SceneError("interpolation: the scene has " + std::to_string(scene.curves.size()) +
+                     " curved edges; eq2 divides the shade of polygons only (draw the patches as polygons)");
   if (cfg.edge_order != 3)
     throw SceneError("edge_order: the scene has " + std::to_string(scene.curves.size()) +
                      " curved edges, which need edge_order 3 (cubic forward differences); the configuration's is " +
@@ -291,6 +297,10 @@ static PreparedScene prepare_unnamed(const BuiltScene& scene, const Config& cfg)
                      std::to_string(1 << fmt::SmoothWFracBits) +
                      ", shading.smooth or --smooth); the configuration has smoothing false (no smoother)");
   const bool phong = scene.shading == ShadingMode::Phong;
+  out.eq2 = !phong && scene.interpolation == Interpolation::Eq2;
+  if (out.eq2 && !cfg.eq2)
+    throw SceneError("interpolation: the scene uses eq2 (Gouraud's eq. (2), a division per pixel); the "
+                     "configuration has eq2 false (no shade divider)");
   if (phong) prepare_phong_constants(scene, cfg, out);
   const ChannelFormats formats = cfg.channels(scene.shading);
   std::array<int, fmt::NumChannels> edge_bits{};  // bits the edge values need, before any wrap
@@ -303,7 +313,7 @@ static PreparedScene prepare_unnamed(const BuiltScene& scene, const Config& cfg)
     std::vector<QuantizedVertex> q;
     for (std::size_t i = 0; i < poly.v.size(); ++i) {
       try {
-        q.push_back(quantize_vertex(poly.v[i], scene.shading, cfg));
+        q.push_back(quantize_vertex(poly.v[i], scene.shading, cfg, out.eq2));
       } catch (const SceneError& e) {
         throw SceneError(where(static_cast<int>(p), static_cast<int>(i)) + ": " + e.what());
       }

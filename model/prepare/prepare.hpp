@@ -33,10 +33,12 @@ struct PreparedScene : Frame {
 };
 
 // Channels ChanR.. carry the shade (Gouraud) or the unit normal (Phong, ChanNx..); throws
-// SceneError when a value is out of range.
+// SceneError when a value is out of range. With eq2 (Gouraud's eq. (2), Frame::eq2) they carry
+// the numerator S·Z instead, Z the vertex's quantized depth as a fraction of 1
+// (model/twins/shade_divider.hpp divides it by the interpolated depth).
 // Each channel is rounded to its group's fraction bits in `config` and must fit its word.
 QuantizedVertex quantize_vertex(const ScreenVertex& v, ShadingMode shading = ShadingMode::Gouraud,
-                                const Config& config = Config{});
+                                const Config& config = Config{}, bool eq2 = false);
 // A material in the phong_shader's formats; throws SceneError when a value does not fit.
 QuantizedMaterial quantize_material(const PhongMaterial& m);
 // Herman & Liu's weight W in the smoother's format (Frame::smooth_w): W · 2^SmoothWFracBits
@@ -70,7 +72,8 @@ PreparedScene prepare(const BuiltScene& scene, const PrepareOptions& opt = {});
 // Throws SceneError when base's fractions are no valid configuration or the scene cannot be
 // prepared at them; `probe` (optional) receives that widest preparation.
 // `base` with the edge order the scene needs: 3 (cubic forward differences) when it has curved
-// edges (BuiltScene::curves), else base's. `watkins render` without --config and fit_int_bits use it.
+// edges (BuiltScene::curves), else base's; and with the eq. (2) shade divider (eq2) when it is a
+// Gouraud scene interpolating by eq2. `watkins render` without --config and fit_int_bits use it.
 Config with_scene_edge_order(const BuiltScene& scene, Config base);
 
 Config fit_int_bits(const BuiltScene& scene, const Config& base, PreparedScene* probe = nullptr);

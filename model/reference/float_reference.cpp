@@ -23,19 +23,32 @@ struct FloatSegment {
   Attr ae, af;
 };
 
+// Gouraud's eq. (2) (BuiltScene::interpolation Eq2): the shade slots carry S·Z, divided by the
+// interpolated Z per pixel.
+bool eq2(const BuiltScene& scene) {
+  return scene.shading == ShadingMode::Gouraud && scene.interpolation == Interpolation::Eq2;
+}
+
 // The vertex attributes the mode interpolates, in the slots the edge record uses.
-Attr attributes(const ScreenVertex& v, ShadingMode mode) {
-  const double* c = mode == ShadingMode::Phong ? v.normal : v.rgb;
-  return Attr(v.depth, c[0], c[1], c[2]);
+Attr attributes(const ScreenVertex& v, const BuiltScene& scene) {
+  const double* c = scene.shading == ShadingMode::Phong ? v.normal : v.rgb;
+  const double k = eq2(scene) ? v.depth : 1.0;  // eq. (2)'s numerator S·Z
+  return Attr(v.depth, c[0] * k, c[1] * k, c[2] * k);
 }
 
 // Depth between two ends, exact when they are equal (a plane of constant depth stays exactly that
 // depth, so coplanar polygons tie as they do in the fixed-point pipeline).
 double exact_lerp(double a, double b, double t) { return a + t * (b - a); }
 
-// The shade of a visible pixel from its interpolated attributes: the Gouraud shade itself, or
-// Phong's eq. (3) on the normalized normal (a null normal stays null, as in the normalizer).
+// The shade of a visible pixel from its interpolated attributes: the Gouraud shade itself, eq.
+// (2)'s quotient S = N/Z (the largest level where Z is 0 and N is not), or Phong's eq. (3) on the
+// normalized normal (a null normal stays null, as in the normalizer).
 std::array<double, 3> pixel_levels(const BuiltScene& scene, int material, const Attr& a) {
+  if (eq2(scene)) {
+    std::array<double, 3> s{};
+    for (int c = 0; c < 3; ++c) s[c] = a[0] > 0 ? a[c + 1] / a[0] : a[c + 1] > 0 ? 255.0 : 0.0;
+    return s;
+  }
   if (scene.shading == ShadingMode::Gouraud) return {a[1], a[2], a[3]};
   const glm::dvec3 n(a[1], a[2], a[3]);
   const double len = glm::length(n);
@@ -126,7 +139,7 @@ Image render_float_reference(const BuiltScene& scene, FloatReferenceStats* stats
         if (a->y > b->y) std::swap(a, b);  // top first, as the edge setup does
         if (!(a->y <= yc && yc < b->y)) continue;
         const double t = (yc - a->y) / (b->y - a->y);
-        Attr at = glm::mix(attributes(*a, scene.shading), attributes(*b, scene.shading), t);
+        Attr at = glm::mix(attributes(*a, scene), attributes(*b, scene), t);
         at.x = exact_lerp(a->depth, b->depth, t);
         xs.push_back({glm::mix(a->x, b->x, t), at, int(i)});
       }
@@ -139,7 +152,7 @@ Image render_float_reference(const BuiltScene& scene, FloatReferenceStats* stats
       const ScreenVertex& v = sc.lines[std::size_t(y - sc.y0)];
       auto& rx = region_xs[std::size_t(sc.region)];
       if (rx.empty()) regions_on_line.push_back(sc.region);
-      rx.push_back({v.x, attributes(v, scene.shading), c});
+      rx.push_back({v.x, attributes(v, scene), c});
     }
     for (int r : regions_on_line) {
       pair_crossings(n_poly + r, region_xs[std::size_t(r)], segs);

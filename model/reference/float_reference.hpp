@@ -4,7 +4,9 @@
 // (BuiltScene::depth_tie: first arrival, segments in closing-X order, or the smaller polygon id).
 // Phong shading (BuiltScene::shading): the vertex normal is interpolated the same way, normalized
 // in double and shaded with phong_levels (eq. 3). The fixed-point model's difference from it is
-// the cost of quantization alone. With BuiltScene::smooth > 0 the levels are then smoothed by
+// the cost of quantization alone. Gouraud's eq. (2) (BuiltScene::interpolation Eq2): the shade
+// slots carry S·Z, interpolated the same way, and a pixel's shade is their quotient by its
+// interpolated Z. With BuiltScene::smooth > 0 the levels are then smoothed by
 // Herman & Liu's 3x3 weighted mean in double (W unrounded; the smoother twin's rule for f_i).
 // Curved surfaces (BuiltScene::curves) as Whitted draws them: on each scan line the crossings of
 // each region's edges (found by Newton in model/curves) sorted by X and paired into segments,

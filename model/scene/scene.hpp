@@ -22,11 +22,17 @@ namespace watkins {
 // (light and eye at infinity), what Gouraud interpolates when compared with Phong shading.
 enum class ShadingRule { Gouraud, Lambert, Warnock, Romney, Phong };
 enum class DepthMode { InverseZ, Z };  // Gouraud's eq. (1): interpolate 1/Z; eq. (2): interpolate Z
+// How the Gouraud pipeline shades between vertices: Eq1 interpolates S itself (Gouraud's eq. (1));
+// Eq2 interpolates S·Z and Z and divides per pixel (his eq. (2), the top's shade divider). Eq2
+// carries Z in the depth channel as Z/far (proportional to Z, so the quotient is his), never 1/Z.
+enum class Interpolation { Eq1, Eq2 };
 
 const char* to_string(ShadingRule r);
 const char* to_string(DepthMode m);
 std::optional<ShadingRule> parse_shading_rule(const std::string& s);  // "gouraud", ..., "phong"
 std::optional<DepthMode> parse_depth_mode(const std::string& s);      // "inverse-z", "z"
+const char* to_string(Interpolation i);
+std::optional<Interpolation> parse_interpolation(const std::string& s);  // "eq1", "eq2"
 const char* to_string(ShadingMode m);
 std::optional<ShadingMode> parse_shading_mode(const std::string& s);  // "gouraud", "phong"
 const char* to_string(DepthTie t);
@@ -41,6 +47,7 @@ enum class VoxelNormals { Face, Average };
 struct BuildOptions {
   std::optional<ShadingRule> rule;
   std::optional<DepthMode> depth;
+  std::optional<Interpolation> interpolation;
   std::optional<bool> cull_backfaces;
   std::optional<ShadingMode> shading;
   std::optional<bool> flat;  // flat shading (see BuiltScene::flat)
@@ -72,6 +79,7 @@ struct BuiltScene {
   double background[3] = {0, 0, 0};  // 8-bit levels
   ShadingRule rule = ShadingRule::Gouraud;
   DepthMode depth = DepthMode::InverseZ;
+  Interpolation interpolation = Interpolation::Eq1;  // Eq2: depth is Z/far, and depth == Z
   ShadingMode shading = ShadingMode::Gouraud;
   // Equal depth at a pixel (depth_tie.hpp): Submission keeps the polygon that comes first in
   // `polygons`, which hold the scene's polygons in submission order -- objects in file order, each

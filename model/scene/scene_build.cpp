@@ -105,10 +105,20 @@ BuiltScene build(Scene sc, const BuildOptions& opt) {
   for (int c = 0; c < 3; ++c) out.background[c] = sc.background[c];
   out.rule = opt.rule.value_or(sc.shading.rule);
   out.depth = opt.depth.value_or(sc.shading.depth);
+  out.interpolation = opt.interpolation.value_or(sc.shading.interpolation);
+  if (out.interpolation == Interpolation::Eq2) {
+    if (out.depth == DepthMode::InverseZ && opt.depth)
+      throw SceneError(sc.name + ": --depth inverse-z contradicts interpolation eq2, which divides by the "
+                       "interpolated Z");
+    out.depth = DepthMode::Z;
+  }
   out.shading = opt.shading.value_or(sc.shading.mode);
   out.flat = opt.flat.value_or(sc.shading.flat);
   out.depth_tie = opt.depth_tie.value_or(sc.shading.depth_tie);
   out.smooth = opt.smooth.value_or(sc.shading.smooth);
+  if (out.interpolation == Interpolation::Eq2 && out.shading == ShadingMode::Phong)
+    throw SceneError(sc.name + ": shading.interpolation: eq2 is a mode of the gouraud pipeline (its shade "
+                     "divider); the phong pipeline shades every pixel");
   if (out.flat && out.shading == ShadingMode::Phong)
     throw SceneError(sc.name + ": shading.flat: flat shading gives one shade per polygon to the gouraud pipeline; "
                      "the phong pipeline shades every pixel");
@@ -210,9 +220,12 @@ BuiltScene build(Scene sc, const BuildOptions& opt) {
     for (int c = 0; c < 3; ++c) rgb[c] = std::clamp(255.0 * (mat.color[c] * diff + spec), 0.0, 255.0);
   };
 
-  // The depth a vertex or a curve crossing carries at camera-space Z (eq. (1) or (2)).
+  // The depth a vertex or a curve crossing carries at camera-space Z (eq. (1) or (2)); eq. (2)'s
+  // divider needs it proportional to Z: Z/far.
   auto depth_of = [&](double z) {
-    const double d = out.depth == DepthMode::InverseZ ? 1.0 - cam.near / z : (z - cam.near) / (cam.far - cam.near);
+    const double d = out.interpolation == Interpolation::Eq2 ? z / cam.far
+                     : out.depth == DepthMode::InverseZ    ? 1.0 - cam.near / z
+                                                           : (z - cam.near) / (cam.far - cam.near);
     return std::min(d, std::nextafter(1.0, 0.0));  // rounding only; Z < far already holds
   };
 

@@ -16,6 +16,14 @@ const char* to_string(ShadingRule r) {
 
 const char* to_string(DepthMode m) { return m == DepthMode::InverseZ ? "inverse-z" : "z"; }
 
+const char* to_string(Interpolation i) { return i == Interpolation::Eq1 ? "eq1" : "eq2"; }
+
+std::optional<Interpolation> parse_interpolation(const std::string& s) {
+  for (Interpolation i : {Interpolation::Eq1, Interpolation::Eq2})
+    if (s == to_string(i)) return i;
+  return std::nullopt;
+}
+
 const char* to_string(DepthTie t) { return t == DepthTie::Arrival ? "arrival" : "submission"; }
 
 std::optional<DepthTie> parse_depth_tie(const std::string& s) {

@@ -215,7 +215,8 @@ void parse_light(const Reader& r, const json& j, Light& l) {
 void parse_shading(const Reader& r, const json& j, Shading& s) {
   const std::string f = "shading";
   r.expect_object(j, f);
-  r.check_keys(j, f, {"mode", "rule", "depth", "depth_tie", "cull_backfaces", "specular_m", "flat", "smooth"});
+  r.check_keys(j, f, {"mode", "rule", "depth", "interpolation", "depth_tie", "cull_backfaces", "specular_m", "flat",
+                     "smooth"});
   opt(j, f, "mode", [&](const json& v, const std::string& ff) {
     auto mode = parse_shading_mode(r.string(v, ff));
     if (!mode) r.fail(ff, "expected \"gouraud\" or \"phong\", got " + show(v));
@@ -232,6 +233,18 @@ void parse_shading(const Reader& r, const json& j, Shading& s) {
     if (!d) r.fail(ff, "expected \"inverse-z\" or \"z\", got " + show(v));
     s.depth = *d;
   });
+  opt(j, f, "interpolation", [&](const json& v, const std::string& ff) {
+    auto i = parse_interpolation(r.string(v, ff));
+    if (!i) r.fail(ff, "expected \"eq1\" or \"eq2\", got " + show(v));
+    s.interpolation = *i;
+  });
+  // Eq. (2) divides by the interpolated Z: its depth channel carries Z, never 1/Z.
+  if (s.interpolation == Interpolation::Eq2) {
+    if (j.contains("depth") && s.depth == DepthMode::InverseZ)
+      r.fail(f + ".depth", "\"inverse-z\" contradicts \"interpolation\": \"eq2\", which divides by the "
+                           "interpolated Z (give \"z\" or leave it out)");
+    s.depth = DepthMode::Z;
+  }
   opt(j, f, "depth_tie", [&](const json& v, const std::string& ff) {
     auto t = parse_depth_tie(r.string(v, ff));
     if (!t) r.fail(ff, "expected \"arrival\" or \"submission\", got " + show(v));

@@ -48,6 +48,7 @@ struct Light {
 struct Shading {
   ShadingRule rule = ShadingRule::Gouraud;
   DepthMode depth = DepthMode::InverseZ;
+  Interpolation interpolation = Interpolation::Eq1;  // "interpolation": eq1 or eq2 (depth then z)
   bool cull_backfaces = true;
   double specular_m = 8.0;
   ShadingMode mode = ShadingMode::Gouraud;  // "mode": which pipeline shades

@@ -11,7 +11,7 @@ namespace watkins {
 struct ScreenVertex {
   double x = 0;        // pixels, +x right; pixel (i, j) has its centre at (i + 0.5, j + 0.5)
   double y = 0;        // pixels, +y down (scan lines are numbered top to bottom)
-  double depth = 0;    // [0, 1): smaller is nearer. Eq. (1) mode: 1 - near/Z; eq. (2): (Z-near)/(far-near)
+  double depth = 0;    // [0, 1): smaller is nearer. Eq. (1) mode: 1 - near/Z; eq. (2): (Z-near)/(far-near); interpolation eq2: Z/far
   double eye_z = 0;    // camera-space Z of the vertex (0 for polygons given in screen space)
   double rgb[3] = {0, 0, 0};  // shade in 8-bit levels, [0, 255] (Gouraud)
   double normal[3] = {0, 0, -1};  // camera-space unit normal of the side seen (Phong)

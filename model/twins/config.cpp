@@ -54,6 +54,11 @@ std::vector<RtlParameter> rtl_parameters(const Config& c, ShadingMode shading) {
   if (c.edge_order != 1) p.push_back({"EdgeOrder", c.edge_order});
   // Likewise Smoothing (RTL default 1): only a top without the smoother lists it.
   if (!c.smoothing) p.push_back({"Smoothing", 0});
+  // Likewise the eq. (2) divider (RTL default HasEq2 = 0), a block of the Gouraud top only.
+  if (c.eq2 && !phong) {
+    p.push_back({"HasEq2", 1});
+    p.push_back({"Eq2RecipBits", c.eq2_recip_bits});
+  }
   return p;
 }
 
@@ -97,6 +102,8 @@ std::string Config::check() const {
   if (std::string e = range("max_materials", max_materials, 1, fmt::MaxMaterials); !e.empty()) return e;
   if (std::string e = range("max_polygons", max_polygons, 1, fmt::MaxPolygons); !e.empty()) return e;
   if (std::string e = range("max_edges", max_edges, 1, fmt::MaxEdges); !e.empty()) return e;
+  if (std::string e = range("eq2_recip_bits", eq2_recip_bits, MinEq2RecipBits, MaxEq2RecipBits); !e.empty())
+    return e;
   if (edge_order != 1 && edge_order != 3)
     return "edge_order: " + std::to_string(edge_order) + " is neither 1 (straight edges) nor 3 (cubic forward differences)";
   return "";

@@ -23,6 +23,9 @@
 //   smoothing        Smoothing: false builds the top without Herman & Liu's smoother (a frame
 //                    that smooths is refused, prepare() and the RTL benches); listed only when
 //                    false, so a smoothing configuration's list is that of one without it
+//   eq2, eq2_recip_bits  HasEq2, Eq2RecipBits (Gouraud top only): the shade divider of Gouraud's
+//                    eq. (2) after the interpolator (shade_divider.hpp), its reciprocal's mantissa
+//                    bits; listed only when eq2, so every other list is unchanged
 // Each twin's header lists which of its registers takes which of these.
 #pragma once
 
@@ -53,6 +56,7 @@ struct ChannelFormats {
   std::array<int, fmt::NumChannels> frac{};
   int depth_bits = fmt::DepthBits;  // fragment depth: clamp(round(Z), 0, 2^depth_bits - 1)
   int edge_order = 1;  // 1: value += slope; 3: value += d1, d1 += d2, d2 += d3 (edge_incrementer)
+  int eq2_recip_bits = fmt::Eq2RecipBits;  // the shade divider's 1/depth mantissa (shade_divider.hpp)
   int x_frac() const { return frac[fmt::ChanX]; }
 };
 
@@ -74,6 +78,11 @@ struct Config {
   // Whether the hardware has Herman & Liu's 3x3 smoother after the scanline buffer (Frame::smooth_w
   // != 0 needs it). A scene that never smooths is built without it: a top's largest optional block.
   bool smoothing = true;
+  // Whether the Gouraud hardware has the shade divider of Gouraud's eq. (2) (shade_divider.hpp,
+  // the top's HasEq2): a frame with Frame::eq2 needs it. Off by default: the top without it is
+  // today's. eq2_recip_bits: the mantissa bits of its reciprocal of the depth.
+  bool eq2 = false;
+  int eq2_recip_bits = fmt::Eq2RecipBits;
 
   // Limits a configuration must respect (validate() checks them).
   static constexpr int MaxWordBits = 62;      // the model keeps every word in 64 bits, products in 128
@@ -85,6 +94,9 @@ struct Config {
   // question, answered by prepare() (vertices, edge values on every line, span values).
   static constexpr int MinIntBits = 1;
   static constexpr int MaxDepthBits = 32;     // the fragment's depth word
+  // The divider's mantissa: at least 9 bits, so a quotient whose shift is not positive is above
+  // 255 (shade_divider.hpp); at most 30, so its products fit the model's 128-bit words.
+  static constexpr int MinEq2RecipBits = 9, MaxEq2RecipBits = 30;
 
   // The slot formats of the edge record for `shading`.
   ChannelFormats channels(ShadingMode shading) const {
@@ -97,6 +109,7 @@ struct Config {
     }
     f.depth_bits = depth_bits;
     f.edge_order = edge_order;
+    f.eq2_recip_bits = eq2_recip_bits;
     return f;
   }
   // Bits of one edge record ($bits(edge_t) of the RTL built for this configuration).
@@ -108,7 +121,8 @@ struct Config {
     return x == o.x && depth == o.depth && shade == o.shade && normal == o.normal &&
            depth_bits == o.depth_bits && max_active_edges == o.max_active_edges &&
            max_width == o.max_width && max_materials == o.max_materials && max_polygons == o.max_polygons &&
-           max_edges == o.max_edges && edge_order == o.edge_order && smoothing == o.smoothing;
+           max_edges == o.max_edges && edge_order == o.edge_order && smoothing == o.smoothing && eq2 == o.eq2 &&
+           eq2_recip_bits == o.eq2_recip_bits;
   }
   bool operator!=(const Config& o) const { return !(*this == o); }
 };

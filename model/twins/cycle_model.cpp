@@ -107,6 +107,10 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
   const long long smooth_lead = static_cast<long long>(frame.width) + 1;
   long long lead_load = -1;
   const bool phong = frame.shading == ShadingMode::Phong;
+  // Two stall pipes after the interpolator: the normalizer and the shader (Phong), or the shade
+  // divider's reciprocal and its tail (a Gouraud top with the eq. (2) divider, every frame).
+  const bool divided = !phong && cfg.eq2;
+  const bool piped = phong || divided;
   const Streams st = front_half(frame, sparse, max_active_edges, cfg);
   const int height = frame.height;
   const std::size_t records = st.record_y0.size();
@@ -144,7 +148,9 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
   int step_left = 0;
   bool frag_valid = false, frag_eol = false;  // frag_valid_o, frag_eol_o
   // ---- Phong: normalizer -> phong_shader
-  StallPipe norm{0, 0, NormalizerStages}, shade{0, 0, ShaderStages};
+  // ---- or the shade divider: span_reciprocal -> sm, sr
+  StallPipe norm{0, 0, phong ? NormalizerStages : divider_recip_stages(cfg.eq2_recip_bits)},
+      shade{0, 0, phong ? ShaderStages : DividerTailStages};
   // ---- the fragment queue (stream_fifo) in front of the scanline buffer: each entry's marker flag
   int q_count = 0;
   std::array<bool, FragQueueDepth> q_eol{};
@@ -174,8 +180,8 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
     // ================= combinational, from the outputs back =================
     const bool rd_last = rd_busy_q && rd_left == 1;
     const bool eol_ok = !sb_read_q && !sb_swap_q && (!rd_busy_q || rd_last);
-    const bool sh_valid = phong ? shade.out_valid() : frag_valid;
-    const bool sh_eol = phong ? shade.out_eol() : frag_eol;
+    const bool sh_valid = piped ? shade.out_valid() : frag_valid;
+    const bool sh_eol = piped ? shade.out_eol() : frag_eol;
     // The queue's head goes to the scanline buffer, which refuses only a marker waiting on the
     // reader; the queue's ready is registered (not full).
     const bool q_valid = q_count > 0;
@@ -184,7 +190,7 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
     const bool sh_ready = q_count != FragQueueDepth;
     const bool q_push = sh_valid && sh_ready;
     bool fr_ready = sh_ready, en_shade = false, en_norm = false;
-    if (phong) {
+    if (piped) {
       en_shade = sh_ready || !shade.out_valid();
       en_norm = en_shade || !norm.out_valid();
       fr_ready = en_norm;
@@ -283,8 +289,8 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
       --q_count;
     }
     if (q_push) q_eol[std::size_t(q_count++)] = sh_eol;
-    // Phong pipes (each stage's valid shifts on its own enable)
-    if (phong) {
+    // Phong or divider pipes (each stage's valid shifts on its own enable)
+    if (piped) {
       const bool nv = norm.out_valid(), ne = norm.out_eol();
       if (en_norm) norm.shift(frag_valid, frag_eol);
       if (en_shade) shade.shift(nv, ne);

@@ -8,7 +8,8 @@
 // the ping-pong line buffer for the reader), so this is a clocked model of the pipeline's
 // control only — every valid/ready register and counter of active_edge_list, edge_incrementer,
 // segment_former, the segment skid (stream_skid), segment_interpolator (s0, span_reciprocal,
-// sa .. sd, stream_fifo, stepper), [Phong: normalizer, phong_shader], the fragment queue and
+// sa .. sd, stream_fifo, stepper), [Phong: normalizer, phong_shader; Gouraud with cfg.eq2: the
+// shade divider's reciprocal and tail, whatever frame.eq2 says], the fragment queue and
 // scanline_buffer — driven by the twins' own streams (walk_scan_lines: each line's active edges
 // with their retire flags, the segment former's pairing, each span's pixel range). No channel
 // arithmetic runs per cycle, so it is exact and far faster than Verilator.
@@ -32,6 +33,11 @@ constexpr int ShaderStages = 42;                 // phong_shader: dots (3), cos(
 constexpr int SmootherStages = fmt::ShadeBits + 6;  // smoother: line read, window, pairs, sums, products, dividend, a divider
                                                     // stage per quotient bit
 constexpr int FragQueueDepth = 2;                // watkins_top's u_frag_queue (registered ready)
+// shade_divider (HasEq2, Gouraud): span_reciprocal of Eq2RecipBits (Config::eq2_recip_bits) + 2
+// stages, then sm and sr; DividerStages at the default mantissa.
+constexpr int DividerTailStages = 2;
+constexpr int divider_recip_stages(int eq2_recip_bits) { return eq2_recip_bits + 2; }
+constexpr int DividerStages = fmt::Eq2RecipBits + 2 + DividerTailStages;
 }  // namespace rtl_timing
 
 enum class PixelOutput { FullFrame, Sparse };  // watkins_top's sparse_i = 0 / 1

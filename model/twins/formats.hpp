@@ -31,6 +31,7 @@
   X(ChanNz, 4, "phong: channel index of the normal's z")                                         \
   X(RecipBits, 24, "span reciprocal: mantissa bits of 1/(X_F - X_E), relative error < 2^-23")    \
   X(AlphaBits, 24, "fraction bits of the prestep coefficient alpha0 = (x_c - X_E)/(X_F - X_E)")  \
+  X(Eq2RecipBits, 16, "eq. (2) shade divider: mantissa bits of 1/depth, relative error < 2^-(Eq2RecipBits-1)") \
   X(PolyIdBits, 16, "polygon id bits: at most 65536 polygons per frame")                         \
   X(EdgeIdBits, 18, "edge id bits: position of a record in the frame's edge stream (262144 records)")   \
   X(MaxActiveEdges, 64, "default capacity of the active-edge list")                              \

@@ -34,6 +34,10 @@ struct Frame {
   // Herman & Liu's 3x3 smoothing of the finished image (model/twins/smoother.hpp, the top's
   // smooth_w_i): W with SmoothWFracBits fraction bits; 0 = off (the smoother is bypassed).
   int smooth_w = 0;
+  // Gouraud's eq. (2) (the top's eq2_i, a Gouraud top built with HasEq2): the shade slots carry
+  // each vertex's S·Z and the depth slot Z, and every pixel's shade is their quotient
+  // (model/twins/shade_divider.hpp). false: eq. (1), the shade slots interpolated as they are.
+  bool eq2 = false;
   // Whether the frame is smoothed: the pin's SmoothWBits word is not zero (as the RTL tests it).
   bool smoothed() const { return (smooth_w & ((1 << fmt::SmoothWBits) - 1)) != 0; }
   std::vector<EdgeRecord> edges;  // sorted by (y0, id)

@@ -6,8 +6,10 @@
 //
 // Widths from the configuration (config.hpp), as the RTL takes them: DxBits = bits[ChanX] + 1
 // (the X slot's word plus one), so ExpBits = clog2(DxBits) and the leading-one search shrink
-// with X (a dx narrower than R bits is widened before normalization). RecipBits (R) stays a package constant: the reciprocal's error is in
-// units of the span, not of any channel.
+// with X (a dx narrower than R bits is widened before normalization). R is RecipBits, a package
+// constant, for the span (the reciprocal's error is in units of the span, not of any channel); the
+// eq. (2) shade divider (shade_divider.hpp) takes 1/depth from the same block with R =
+// Config::eq2_recip_bits (the RTL's RecipBits parameter).
 #pragma once
 
 #include "fixed_point.hpp"
@@ -16,15 +18,14 @@
 namespace watkins {
 
 struct SpanReciprocal {
-  i64 recip = 0;  // in (2^(R-1), 2^R], R = RecipBits
+  i64 recip = 0;  // in (2^(R-1), 2^R], R = RecipBits unless given
   int p = 0;      // floor(log2 dx)
 
-  static SpanReciprocal of(i64 dx) {
-    constexpr int R = fmt::RecipBits;
+  static SpanReciprocal of(i64 dx, int R = fmt::RecipBits) {
     SpanReciprocal r;
     r.p = msb_index(static_cast<std::uint64_t>(dx));
     const i64 m = r.p >= R - 1 ? (dx >> (r.p - (R - 1))) : (dx << ((R - 1) - r.p));
-    static_assert(2 * R - 1 <= 62, "the dividend 2^(2R-1) is a 64-bit number");
+    static_assert(2 * fmt::RecipBits - 1 <= 62, "the dividend 2^(2R-1) is a 64-bit number");  // R <= 31 given
     r.recip = (i64{1} << (2 * R - 1)) / m;
     return r;
   }

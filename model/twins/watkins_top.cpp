@@ -6,6 +6,7 @@
 #include "normalizer.hpp"
 #include "phong_shader.hpp"
 #include "scan_lines.hpp"
+#include "shade_divider.hpp"
 #include "smoother.hpp"
 
 namespace watkins {
@@ -55,14 +56,20 @@ struct DeferredPhong {
   std::vector<std::array<i64, 3>> normal;  // per pixel of the line
   std::vector<int> material;
 };
-template <bool Observed, ShadingMode Shading>
+// The pipeline a frame takes: Gouraud's eq. (1), his eq. (2) (the shade divider after the
+// interpolator) or Phong.
+enum class Pipe { Gouraud, Eq2, Phong };
+template <bool Observed, Pipe P>
 LineCounts draw_segments(const Frame& frame, const std::vector<Segment>& segments, const ChannelFormats& formats,
-                        const PixelPath& path, const PhongFrame& phong, ScanlineBuffer& line, int y,
-                        const PipelineObserver& observe, DeferredPhong& later) {
+                        const PixelPath& path, const PhongFrame& phong, const ShadeDivider& divider,
+                        ScanlineBuffer& line, int y, const PipelineObserver& observe, DeferredPhong& later) {
+  constexpr ShadingMode Shading = P == Pipe::Phong ? ShadingMode::Phong : ShadingMode::Gouraud;
   constexpr bool defer = !Observed && Shading == ShadingMode::Phong;
+  // Eq. (2) reads the shade slots' words, not a reading of them: only their words' range matters
+  // (the Normal reading's range check), and no reading is filled unless a bench observes.
   constexpr auto readings = Observed ? PixelPath::Readings::Both
-                            : Shading == ShadingMode::Phong ? PixelPath::Readings::Normal
-                                                            : PixelPath::Readings::Shade;
+                            : P != Pipe::Gouraud ? PixelPath::Readings::Normal
+                                                 : PixelPath::Readings::Shade;
   // Local copies: the line buffer's stores cannot alias them, so the loop keeps them in registers.
   const PixelPath p = path;
   LineCounts n;
@@ -83,7 +90,12 @@ LineCounts draw_segments(const Frame& frame, const std::vector<Segment>& segment
         const std::uint64_t key = ScanlineBuffer::key(f.depth, tie_bits);
         const bool won = line.wins_key(x, key);
         if (won || Observed) {
-          p.fill<readings, InRange>(f, v);
+          if (P != Pipe::Eq2 || Observed) p.fill<readings, InRange>(f, v);
+          if (P == Pipe::Eq2) {
+            const std::array<std::uint8_t, 3> rgb =
+                divider.shade(f.depth, {v[fmt::ChanR], v[fmt::ChanG], v[fmt::ChanB]});
+            for (int c = 0; c < 3; ++c) f.rgb[c] = rgb[c];
+          }
           if (defer) {
             later.normal[static_cast<std::size_t>(x)] = f.normal;
             later.material[static_cast<std::size_t>(x)] = phong.check(f.material);  // shade(f)'s check
@@ -107,13 +119,14 @@ LineCounts draw_segments(const Frame& frame, const std::vector<Segment>& segment
 }
 
 using DrawSegments = LineCounts (*)(const Frame&, const std::vector<Segment>&, const ChannelFormats&,
-                                   const PixelPath&, const PhongFrame&, ScanlineBuffer&, int, const PipelineObserver&,
-                                   DeferredPhong&);
+                                   const PixelPath&, const PhongFrame&, const ShadeDivider&, ScanlineBuffer&, int,
+                                   const PipelineObserver&, DeferredPhong&);
 
-DrawSegments draw_segments_for(bool observed, ShadingMode shading) {
-  if (shading == ShadingMode::Phong)
-    return observed ? draw_segments<true, ShadingMode::Phong> : draw_segments<false, ShadingMode::Phong>;
-  return observed ? draw_segments<true, ShadingMode::Gouraud> : draw_segments<false, ShadingMode::Gouraud>;
+DrawSegments draw_segments_for(bool observed, const Frame& frame) {
+  if (frame.shading == ShadingMode::Phong)
+    return observed ? draw_segments<true, Pipe::Phong> : draw_segments<false, Pipe::Phong>;
+  if (frame.eq2) return observed ? draw_segments<true, Pipe::Eq2> : draw_segments<false, Pipe::Eq2>;
+  return observed ? draw_segments<true, Pipe::Gouraud> : draw_segments<false, Pipe::Gouraud>;
 }
 
 }  // namespace
@@ -157,7 +170,8 @@ void WatkinsTop::render_into(const Frame& frame, Image& img, const PipelineObser
   // benches compare the interpolator's ports, which carry both).
   const bool observing = static_cast<bool>(observe.fragment);
   const PixelPath path(formats);
-  const DrawSegments draw = draw_segments_for(observing, frame.shading);
+  const DrawSegments draw = draw_segments_for(observing, frame);
+  const ShadeDivider divider(formats);
   const PhongFrame phong(frame);
   const bool deferred = !observing && frame.shading == ShadingMode::Phong;
   DeferredPhong later;
@@ -177,7 +191,7 @@ void WatkinsTop::render_into(const Frame& frame, Image& img, const PipelineObser
       for (const Segment& s : sl.segments) observe.segment(y, s);
     if (observe.segments_end) observe.segments_end(y);
     line.clear();
-    const LineCounts n = draw(frame, sl.segments, formats, path, phong, line, y, observe, later);
+    const LineCounts n = draw(frame, sl.segments, formats, path, phong, divider, line, y, observe, later);
     stats_.fragments += n.fragments;
     stats_.visible += n.visible;
     if (observe.fragments_end) observe.fragments_end(y);

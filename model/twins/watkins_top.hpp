@@ -7,6 +7,9 @@
 // (frame.depth_tie, the top's tie_submission_i): first arrival, or the smaller polygon id.
 // frame.smooth_w != 0: Herman & Liu's 3x3 smoother (smoother.hpp) after the scanline buffer; it
 // needs the full raster, so a smoothed frame is always emitted in full (sparse_i is ignored).
+// frame.eq2 (Gouraud, the top's eq2_i): Gouraud's eq. (2), each fragment's shade the quotient of
+// its shade slots (S·Z) by its depth (shade_divider.hpp) instead of the slots' rounding. A
+// configuration with eq2 (the top's HasEq2) changes only the cycles (cycle_model.hpp), not a value.
 //
 // From the configuration (config.hpp), as rtl/watkins_top.sv takes it (rtl_parameters()): one
 // format per group -- XIntBits/XFracBits, DepthIntBits/DepthFracBits, and the attribute slots'

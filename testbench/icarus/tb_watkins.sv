@@ -36,6 +36,7 @@ module tb_watkins #(
     .sparse_i(1'b0),
     .tie_submission_i(1'b0),
     .smooth_w_i(8'd0),
+    .eq2_i(1'b0),
     .edge_i(edge_d), .edge_eof_i(eof_d), .edge_valid_i(edge_valid), .edge_ready_o(edge_ready),
     .pixel_rgb_o(rgb), .pixel_covered_o(covered), .pixel_x_o(), .pixel_y_o(), .pixel_last_o(last),
     .pixel_valid_o(pixel_valid), .pixel_ready_i(1'b1), .overflow_o(overflow),

@@ -167,6 +167,8 @@ if all(k in timing for k in need) and "RsqrtStages" in formats:
     expect("normalizer = NormalizerStages", fixed("normalizer"), timing["NormalizerStages"])
     expect("phong_shader = ShaderStages", fixed("phong_shader"), timing["ShaderStages"])
     expect("rsqrt_unit = fmt::RsqrtStages", fixed("rsqrt_unit"), formats["RsqrtStages"])
+    if "DividerStages" in timing:
+        expect("shade_divider = DividerStages", fixed("shade_divider"), timing["DividerStages"])
     fifo = fixed("stream_fifo")
     if fifo is not None:
         # s0, the reciprocal, sa .. sd, the span FIFO's write, the stepper's output register
