@@ -43,7 +43,7 @@ module shade_divider #(
   localparam int unsigned DxBits       = DepthBits + 1;                   // the divisor, unsigned
   localparam int unsigned ExponentBits = $clog2(DxBits);                  // p
   localparam int unsigned ProdBits     = NumBits + RecipBits + 1;         // n recip
-  localparam int          ShiftOffset  = int'(RecipBits) + int'(AttrFracBits) - int'(DepthBits);
+  localparam int          ShiftOffset  = RecipBits + AttrFracBits - DepthBits;  // may be negative
   // s - 1 for s >= 1 is below RecipBits + AttrFracBits (p < DepthBits).
   localparam int unsigned ShiftBits    = $clog2(RecipBits + AttrFracBits);
   localparam int unsigned CmpBits      = (AttrBits > NumBits + 1) ? AttrBits : NumBits + 1;
