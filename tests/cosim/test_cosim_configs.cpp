@@ -146,6 +146,33 @@ TEST(CosimConfigs, SmoothedFrameRefusedWithoutTheSmoother) {
   }
 }
 
+// Herman and Liu at their own resolution (64 x 64 x 28 voxels, about 200 active edges): one top,
+// sized to hold the smoothed ellipsoid and the three phantoms with averaged normals, runs them back
+// to back, with the smoother (W = 0.8) and without it (smooth_w 0: the smoother passes pixels
+// through), bit for bit and cycle for cycle.
+TEST(CosimConfigs, HermanLiuAtThePapersResolution) {
+  const std::string file = "scenes/sized/voxel_smoothed_64.gouraud.json";
+  const Config cfg = load_config(WATKINS_SOURCE_DIR "/" + file);
+  ASSERT_TRUE(cfg.smoothing);
+  ASSERT_GE(cfg.max_active_edges, 196);
+  std::vector<PreparedScene> frames;
+  for (const char* scene : {"voxel_smoothed_64", "voxel_ellipsoid_64", "voxel_beaded_64", "voxel_two_lobed_64"})
+    frames.push_back(prepare(load_scene(std::string(WATKINS_SOURCE_DIR "/scenes/") + scene + ".json",
+                                        shading_options(ShadingMode::Gouraud)),
+                             cfg));
+  BuildOptions unsmoothed = shading_options(ShadingMode::Gouraud);
+  unsmoothed.smooth = 0.0;
+  frames.push_back(prepare(load_scene(WATKINS_SOURCE_DIR "/scenes/voxel_smoothed_64.json", unsmoothed), cfg));
+  ASSERT_GT(frames[0].smooth_w, 0);
+  ASSERT_EQ(frames[4].smooth_w, 0);
+  for (const PreparedScene& p : frames) EXPECT_GE(p.needs.max_active_edges, 190);
+  REQUIRE_TOP(cfg, ShadingMode::Gouraud, file);
+  std::vector<const PreparedScene*> ptrs;
+  for (const PreparedScene& p : frames) ptrs.push_back(&p);
+  expect_clean_frames("Herman and Liu 64 x 64 x 28", ptrs);
+  expect_predicted("Herman and Liu 64 x 64 x 28", ptrs);
+}
+
 // Random scenes (tests/support/random_scene) that fit `cfg`, `count` of them from `seed` on.
 std::vector<PreparedScene> random_frames(const Config& cfg, bool phong, std::uint64_t seed, int count) {
   std::vector<PreparedScene> v;
