@@ -54,8 +54,9 @@ bool RunFiles::Identity::operator==(const Identity& o) const {
 }
 
 // The file's device and inode (stat follows links: a link to an input is that input); for a name
-// that does not exist, its folder's device and inode and the name in it; for a name whose folder
-// does not exist either, the normalized path (it can only clash with another such output).
+// that does not exist, its folder's device and inode and the name in it (a dangling symbolic link
+// names its target's, so it clashes with an output of that name); for a name whose folder does
+// not exist either, the normalized path (it can only clash with another such output).
 RunFiles::Identity RunFiles::identity(const std::string& path) {
   Identity id;
   struct stat st {};
@@ -65,13 +66,21 @@ RunFiles::Identity RunFiles::identity(const std::string& path) {
     id.ino = st.st_ino;
     return id;
   }
-  id.name = fs::path(path).filename().string();
-  if (::stat(folder_of(path).c_str(), &st) == 0) {
+  std::string named = path;
+  for (int hops = 0; hops < 40; ++hops) {  // as many as the kernel follows
+    std::error_code ec;
+    if (!fs::is_symlink(named, ec)) break;
+    const fs::path target = fs::read_symlink(named, ec);
+    if (ec) break;
+    named = target.is_absolute() ? target.string() : (fs::path(named).parent_path() / target).string();
+  }
+  id.name = fs::path(named).filename().string();
+  if (::stat(folder_of(named).c_str(), &st) == 0) {
     id.dev = st.st_dev;
     id.ino = st.st_ino;
   } else {
     std::error_code ec;
-    id.name = fs::weakly_canonical(fs::absolute(path, ec), ec).string();
+    id.name = fs::weakly_canonical(fs::absolute(named, ec), ec).string();
   }
   return id;
 }
@@ -148,13 +157,18 @@ void RunFiles::add(const std::string& path, std::vector<unsigned char> bytes) {
 
 void RunFiles::add_in(const std::string& folder, const std::string& name, std::vector<unsigned char> bytes) {
   const std::string path = (fs::path(folder) / name).string();
-  if (!declared(path)) {
-    const Output* f = nullptr;
-    for (const Output& o : outputs_)
-      if (o.folder && o.path == folder) f = &o;
-    if (!f) throw std::logic_error("RunFiles::add_in: " + folder + " was not declared as an output folder");
-    output(f->option + " file", path);
+  const Output* f = nullptr;
+  for (const Output& o : outputs_)
+    if (o.folder && o.path == folder) f = &o;
+  if (!f) throw std::logic_error("RunFiles::add_in: " + folder + " was not declared as an output folder");
+  // A file of the folder that another output names, or that the run already put there, is
+  // refused like any two outputs of one file, never replaced: the name alike (declared() matches
+  // names) or not (output() matches identities).
+  if (const Output* o = declared(path)) {
+    if (o->option == f->option + " file") throw UsageError(f->option + ": two files of the run are named " + path);
+    throw UsageError(f->option + " file and " + o->option + " name the same file " + path);
   }
+  output(f->option + " file", path);
   add(path, std::move(bytes));
 }
 

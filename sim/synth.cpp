@@ -41,6 +41,7 @@
 #include <cstring>
 #include <ctime>
 #include <deque>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -1031,6 +1032,7 @@ int run_synth(const SynthArgs& a) {
   std::atomic<size_t> next{0};
   std::atomic<size_t> done{0};
   std::mutex print;
+  std::exception_ptr table_error;  // the first failed write of the tables (under `print`)
   auto worker = [&] {
     for (size_t i; (i = next++) < jobs.size();) {
       const Job& j = jobs[i];
@@ -1061,7 +1063,16 @@ int run_synth(const SynthArgs& a) {
       std::lock_guard<std::mutex> lock(print);
       r.finished = true;
       rows[i] = r;
-      write_tables(false);
+      // A table that cannot be written ends the run from the main thread (exit code 1, RunFiles
+      // removing its temporaries): an exception leaving a worker would terminate the program.
+      if (!table_error) {
+        try {
+          write_tables(false);
+        } catch (...) {
+          table_error = std::current_exception();
+          next = jobs.size();  // no further run starts
+        }
+      }
       std::fprintf(stderr, "[%zu/%zu] %s %s %s%s: %s%s%s (yosys %.0f s, nextpnr %.0f s)\n", ++done, jobs.size(),
                    r.config.c_str(), r.design.c_str(), r.target.c_str(),
                    r.seed > 0 ? (" seed " + std::to_string(r.seed)).c_str() : "", r.result.c_str(),
@@ -1071,6 +1082,7 @@ int run_synth(const SynthArgs& a) {
   std::vector<std::thread> pool;
   for (int k = 0; k < std::min<int>(a.jobs, static_cast<int>(jobs.size())); ++k) pool.emplace_back(worker);
   for (std::thread& t : pool) t.join();
+  if (table_error) std::rethrow_exception(table_error);
 
   write_tables(true);
   return std::all_of(rows.begin(), rows.end(), [](const Row& r) { return r.ok; }) ? 0 : 1;
