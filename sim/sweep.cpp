@@ -164,6 +164,7 @@ struct Result {
   ErrorStats truth, double_truth, vs_double;  // model vs truth, double reference vs truth, model vs double
   double truth_mach = 0, double_truth_mach = 0, vs_double_mach = 0, image_mach = 0;
   int truth_coverage_differs = 0, double_truth_coverage_differs = 0;
+  double truth_ssim = 0, double_truth_ssim = 0;  // structural similarity to the truth (error_stats.hpp)
   int vs_double_visibility_differs = 0, vs_double_coverage_differs = 0;
   bool has_truth = false;
   long long cycles = -1;
@@ -335,6 +336,8 @@ Result evaluate(const SweepArgs& a, const std::vector<Axis>& axes, long long k) 
       r.double_truth = error_stats(ref, truth.image);
       r.double_truth_mach = mach_band(ref, reference.owner, &truth.image);
       r.double_truth_coverage_differs = compare_images(ref, truth.image).coverage_differs;
+      r.truth_ssim = ssim(mine, truth.image);
+      r.double_truth_ssim = ssim(ref, truth.image);
       if (!a.images.empty()) r.truth_png = encode_png(truth.image);
     }
   } catch (const std::exception& e) {
@@ -364,6 +367,7 @@ std::string csv_text(const std::vector<Axis>& axes, const std::vector<Result>& r
          ",double_max,double_mean,double_rmse,double_psnr,double_mach,double_visibility_differs,double_coverage_differs"
          ",image_mach,cycles,cycles_source,rtl_mismatches,edge_record_bits,line_buffer_bits,active_list_bits"
          ",edge_order,regions,curve_edge_records,curve_active_edges,double_truth_coverage_differs"
+         ",truth_ssim,double_truth_ssim,truth_over_one,double_truth_over_one"
          ",seconds,error\n";
   for (const Result& r : rows) {
     out << r.point;
@@ -402,7 +406,11 @@ std::string csv_text(const std::vector<Axis>& axes, const std::vector<Result>& r
       out << r.edge_order << ',' << r.regions << ',' << r.curve_edge_records << ',' << r.curve_active_edges << ',';
     else
       out << ",,,,";
-    out << (ok && r.has_truth ? std::to_string(r.double_truth_coverage_differs) : "") << ',' << fixed(r.seconds, 3)
+    out << (ok && r.has_truth ? std::to_string(r.double_truth_coverage_differs) : "") << ',';
+    out << (ok && r.has_truth ? fixed(r.truth_ssim, 5) + "," + fixed(r.double_truth_ssim, 5) + "," +
+                                    std::to_string(r.truth.over_one) + "," + std::to_string(r.double_truth.over_one)
+                              : std::string(",,,"))
+        << ',' << fixed(r.seconds, 3)
         << ",\"";
     for (char c : r.error) out << (c == '"' ? '\'' : c == '\n' ? ' ' : c);
     out << "\"\n";

@@ -84,16 +84,36 @@ TEST(ErrorStats, PsnrAndRmse) {
   ErrorStats e = error_stats(a, b);
   EXPECT_EQ(e.compared, 4);
   EXPECT_EQ(e.max_abs, 10);
+  EXPECT_EQ(e.over_one, 4);
   EXPECT_DOUBLE_EQ(e.rmse, 10.0);
   EXPECT_NEAR(e.psnr, 20 * std::log10(25.5), 1e-12);  // 28.13 dB
   b = row({100, 100, 102, 102}, {0, 0, 0, 0});
   e = error_stats(a, b);
   EXPECT_DOUBLE_EQ(e.mean_abs, 1.0);
+  EXPECT_EQ(e.over_one, 2);  // the two pixels 2 levels off; none at exactly 1
   EXPECT_NEAR(e.rmse, std::sqrt(2.0), 1e-12);
   EXPECT_NEAR(e.psnr, 20 * std::log10(255 / std::sqrt(2.0)), 1e-12);  // 45.12 dB
   EXPECT_TRUE(std::isinf(error_stats(a, a).psnr));
   b.owner[0] = 5;  // another polygon: not compared
   EXPECT_EQ(error_stats(a, b).compared, 3);
+}
+
+// SSIM's three factors on hand-worked cases: equal images give 1; a uniform offset leaves only the
+// luminance factor (2 mu_a mu_b + C1) / (mu_a^2 + mu_b^2 + C1); a ramp against its mean loses the
+// structure factor; uncompared pixels (another owner) do not count.
+TEST(ErrorStats, StructuralSimilarity) {
+  const Image a = row({100, 100, 100, 100, 100, 100, 100, 100}, {0, 0, 0, 0, 0, 0, 0, 0});
+  EXPECT_DOUBLE_EQ(ssim(a, a), 1.0);
+  const Image b = row({110, 110, 110, 110, 110, 110, 110, 110}, {0, 0, 0, 0, 0, 0, 0, 0});
+  const double c1 = 2.55 * 2.55;
+  EXPECT_NEAR(ssim(a, b), (2 * 100.0 * 110 + c1) / (100.0 * 100 + 110.0 * 110 + c1), 1e-12);  // 0.99548
+  const Image ramp = row({40, 60, 80, 100, 120, 140, 160, 180}, {0, 0, 0, 0, 0, 0, 0, 0});
+  const Image mean = row({110, 110, 110, 110, 110, 110, 110, 110}, {0, 0, 0, 0, 0, 0, 0, 0});
+  EXPECT_LT(ssim(ramp, mean), 0.2);  // the mean is right, the structure is gone
+  EXPECT_GT(ssim(ramp, ramp), 0.999999);
+  Image other = b;
+  for (int& o : other.owner) o = 7;  // nothing shows the same owner
+  EXPECT_EQ(ssim(a, other), 0.0);
 }
 
 std::string sphere_text(bool flat) {

@@ -29,12 +29,15 @@ ErrorStats error_stats(const Image& a, const Image& b) {
   for (std::size_t i = 0; i < n; ++i) {
     if (!same_owner(a, b, i)) continue;
     ++e.compared;
+    int worst = 0;
     for (int c = 0; c < 3; ++c) {
       const int d = std::abs(int(a.rgb[i * 3 + c]) - int(b.rgb[i * 3 + c]));
-      e.max_abs = std::max(e.max_abs, d);
+      worst = std::max(worst, d);
       sum_abs += d;
       sum_sq += double(d) * d;
     }
+    e.max_abs = std::max(e.max_abs, worst);
+    e.over_one += worst > 1;
   }
   if (e.compared) {
     e.mean_abs = sum_abs / (3.0 * e.compared);
@@ -82,6 +85,61 @@ double mach_band_mean(const Image& img, const std::vector<int>& polygon, const I
   long long n = 0;
   for_each_edge_jump(img, polygon, ref, [&](double a, double b) { sum += a + b, n += 2; });
   return n ? sum / double(n) : 0;
+}
+
+namespace {
+
+// The image's intensity filtered by the normalized Gaussian `g` along rows, then columns, the
+// border clamped (a window reaching past the frame sees its edge pixels).
+std::vector<double> gaussian_filter(const std::vector<double>& v, int w, int h, const std::vector<double>& g) {
+  const int r = static_cast<int>(g.size() / 2);
+  std::vector<double> rows(v.size()), out(v.size());
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      double sum = 0;
+      for (int k = -r; k <= r; ++k) sum += g[std::size_t(k + r)] * v[std::size_t(y) * w + std::clamp(x + k, 0, w - 1)];
+      rows[std::size_t(y) * w + x] = sum;
+    }
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      double sum = 0;
+      for (int k = -r; k <= r; ++k) sum += g[std::size_t(k + r)] * rows[std::size_t(std::clamp(y + k, 0, h - 1)) * w + x];
+      out[std::size_t(y) * w + x] = sum;
+    }
+  return out;
+}
+
+}  // namespace
+
+double ssim(const Image& a, const Image& b) {
+  if (a.width != b.width || a.height != b.height || a.width == 0 || a.height == 0) return 0;
+  const int w = a.width, h = a.height;
+  const std::size_t n = std::size_t(w) * h;
+  std::vector<double> g(11);
+  double total = 0;
+  for (int k = -5; k <= 5; ++k) total += g[std::size_t(k + 5)] = std::exp(-k * k / (2 * 1.5 * 1.5));
+  for (double& x : g) x /= total;
+  std::vector<double> ia(n), ib(n), aa(n), bb(n), ab(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    ia[i] = intensity(a, i);
+    ib[i] = intensity(b, i);
+    aa[i] = ia[i] * ia[i];
+    bb[i] = ib[i] * ib[i];
+    ab[i] = ia[i] * ib[i];
+  }
+  const std::vector<double> ma = gaussian_filter(ia, w, h, g), mb = gaussian_filter(ib, w, h, g),
+                            saa = gaussian_filter(aa, w, h, g), sbb = gaussian_filter(bb, w, h, g),
+                            sab = gaussian_filter(ab, w, h, g);
+  const double c1 = (0.01 * 255) * (0.01 * 255), c2 = (0.03 * 255) * (0.03 * 255);
+  double sum = 0;
+  long long count = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!same_owner(a, b, i)) continue;
+    const double va = saa[i] - ma[i] * ma[i], vb = sbb[i] - mb[i] * mb[i], cov = sab[i] - ma[i] * mb[i];
+    sum += (2 * ma[i] * mb[i] + c1) * (2 * cov + c2) / ((ma[i] * ma[i] + mb[i] * mb[i] + c1) * (va + vb + c2));
+    ++count;
+  }
+  return count ? sum / count : 0;
 }
 
 }  // namespace watkins

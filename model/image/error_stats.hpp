@@ -13,6 +13,7 @@ namespace watkins {
 // R, G, B, in 8-bit levels. psnr = 20 log10(255 / rmse): +infinity when the images agree.
 struct ErrorStats {
   long long compared = 0;  // pixels
+  long long over_one = 0;  // compared pixels with some channel off by more than 1 level (a visible step)
   int max_abs = 0;
   double mean_abs = 0, rmse = 0, psnr = 0;
 };
@@ -31,5 +32,11 @@ double mach_band(const Image& img, const std::vector<int>& polygon, const Image*
 // The same jumps averaged instead of their maximum: how strong the bands are over the whole image
 // (a surface of thousands of voxel faces has one worst edge whatever the shading).
 double mach_band_mean(const Image& img, const std::vector<int>& polygon, const Image* ref = nullptr);
+
+// Structural similarity (Wang, Bovik, Sheikh and Simoncelli 2004) of the intensities (the mean of
+// R, G, B), with their constants: an 11 x 11 Gaussian window of sigma 1.5, C1 = (0.01 * 255)^2,
+// C2 = (0.03 * 255)^2. The SSIM map is averaged over the pixels where a and b show the same owner
+// (as error_stats compares them); 1 when the images agree there, 0 when no pixel compares.
+double ssim(const Image& a, const Image& b);
 
 }  // namespace watkins
