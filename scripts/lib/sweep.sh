@@ -88,8 +88,9 @@ else
     echo "\`$command\`: every point rendered in process by the fixed-point model, the double reference"
     echo "and the analytic truth, with its cycles per frame from the cycle model (equal to the RTL's:"
     echo "[verify.md](verify.md)). Shadings: **flat** (one shade per polygon: the vertex rule at its"
-    echo "centroid and plane normal), **gouraud-eq1** and **gouraud-eq2** (Gouraud's pipeline; the"
-    echo "depth channel interpolates 1/Z, eq. 1, or Z, eq. 2), **phong**; all under Phong's"
+    echo "centroid and plane normal), **gouraud-eq1** and **gouraud-eq2** (Gouraud's pipeline: eq. 1"
+    echo "interpolates each vertex's shade; eq. 2 interpolates S·Z and Z and divides per pixel in the"
+    echo "shade divider), **phong**; all under Phong's"
     echo "illumination (eq. 3), so the truth applies. Tessellation: the scene's first object's u and v"
     echo "times each factor. Errors in 8-bit levels over pixels showing the same object as the"
     echo "truth; Mach is the largest jump of the first difference of (image − truth) across a polygon"
@@ -113,8 +114,9 @@ else
     echo
     echo "# Gouraud's eq. (1) against eq. (2)"
     echo
-    echo "The depth channel interpolating 1/Z (eq. 1) or Z (eq. 2), both against the analytic truth,"
-    echo "per scene and tessellation; the shade is interpolated the same way in both. From"
+    echo "Eq. (1) interpolating each vertex's shade, eq. (2) interpolating S·Z and Z and dividing per"
+    echo "pixel (the shade divider), both against the analytic truth, per scene and tessellation; the"
+    echo "deep scenes where the two part most are in [gouraud_eq2.md](gouraud_eq2.md). From"
     echo "[$name.csv]($name.csv)."
     echo
     cat "$tmp/eq1_eq2.md"
