@@ -69,7 +69,9 @@ module watkins_top #(
   parameter int unsigned EdgeOrder      = 1,  // 1: straight edges (slope); 3: cubic edges (d1, d2, d3)
   parameter int          Smoothing      = 1,  // 0: no smoother (smooth_w_i must be 0 at every frame start)
   parameter int          HasEq2         = 0,  // 1 (Gouraud): the eq. (2) shade divider, eq2_i per frame
+  /* verilator lint_off UNUSEDPARAM */  // read by the divider only, so unused where HasEq2 = 0
   parameter int unsigned Eq2RecipBits   = watkins_pkg::Eq2RecipBits,  // its 1/depth mantissa
+  /* verilator lint_on UNUSEDPARAM */
   localparam int unsigned XBits    = XIntBits + XFracBits,
   localparam int unsigned ZBits    = DepthIntBits + DepthFracBits,
   localparam int unsigned AttrBits = AttrIntBits + AttrFracBits,
