@@ -15,13 +15,14 @@
 #include <string>
 #include <vector>
 
-#include "shipped_scenes.hpp"
 #include "config_file.hpp"
 #include "float_reference.hpp"
+#include "holding_config.hpp"
 #include "image_io.hpp"
 #include "prepare.hpp"
 #include "random_scene.hpp"
 #include "scene.hpp"
+#include "shipped_scenes.hpp"
 #include "test_support.hpp"
 #include "watkins_top.hpp"
 
@@ -34,6 +35,7 @@ using watkins::test::error_of;
 std::vector<std::string> shipped_scenes() { return watkins::test::shipped_scene_paths(); }
 
 Image render(const PreparedScene& p, const Config& cfg) { return WatkinsTop(cfg).render(p); }
+using watkins::test::default_holding;
 
 TEST(Config, DefaultIsTodaysFormats) {
   const Config c;
@@ -177,7 +179,7 @@ TEST(NarrowConfig, ShadeErrorGrowsWithinTheDerivedBound) {
     const BuiltScene scene = load_scene(path);
     if (scene.shading != ShadingMode::Gouraud) continue;
     ++gouraud_scenes;
-    const Config wide;
+    const Config wide = default_holding(scene);
     const PreparedScene pw = prepare(scene, wide);
     const Image iw = render(pw, wide);
     const Image ref = render_float_reference(scene);
@@ -192,7 +194,7 @@ TEST(NarrowConfig, ShadeErrorGrowsWithinTheDerivedBound) {
     double previous_mean = ew.mean_abs;
     for (int f : {12, 8, 5, 3, 1}) {
       SCOPED_TRACE("shade.frac_bits " + std::to_string(f));
-      Config narrow;
+      Config narrow = wide;
       narrow.shade.frac_bits = f;
       const PreparedScene pn = prepare(scene, narrow);
       const Image in = render(pn, narrow);
@@ -231,19 +233,22 @@ TEST(NarrowConfig, NormalErrorGrowsUnderPhong) {
     opt.shading = ShadingMode::Phong;
     const BuiltScene scene = load_scene(path, opt);
     const Image ref = render_float_reference(scene);
-    const Image iw = render(prepare(scene, Config{}), Config{});
+    const Config base = default_holding(scene);
+    const Image iw = render(prepare(scene, base), base);
     double previous = compare_images(iw, ref).mean_abs;
     const double wide = previous;
     // From 16 to 12 bits the extra error is far below the existing one and the mean may move
-    // either way by a hundredth of a level (hypar); from 8 bits down it grows every time.
+    // either way by a hundredth of a level (hypar); from 8 bits down it grows, step by step within
+    // 5 %: a large smooth sheet's coarsely quantized normals can land closer on average at one
+    // step (deep_horizon: 6.41 levels at 6 bits, 6.18 at 4).
     for (int f : {8, 6, 4}) {
-      Config c;
+      Config c = base;
       c.normal.frac_bits = f;
       const Image in = render(prepare(scene, c), c);
       ASSERT_EQ(in.covered, iw.covered);
       ASSERT_EQ(in.owner, iw.owner);
       const double mean = compare_images(in, ref).mean_abs;
-      EXPECT_GE(mean, previous - 1e-3) << "normal.frac_bits " << f;
+      EXPECT_GE(mean, 0.95 * previous - 1e-3) << "normal.frac_bits " << f;
       previous = mean;
     }
     EXPECT_GT(previous, wide);
@@ -255,10 +260,11 @@ TEST(NarrowConfig, UnusedGroupChangesNothing) {
   for (const std::string& path : shipped_scenes()) {
     SCOPED_TRACE(path);
     const BuiltScene scene = load_scene(path);
-    Config c;
+    const Config base = default_holding(scene);
+    Config c = base;
     if (scene.shading == ShadingMode::Phong) c.shade = {1, 0};
     else c.normal = {1, 0};
-    const Image a = render(prepare(scene, Config{}), Config{});
+    const Image a = render(prepare(scene, base), base);
     const Image b = render(prepare(scene, c), c);
     EXPECT_EQ(a.rgb, b.rgb);
     EXPECT_EQ(a.covered, b.covered);

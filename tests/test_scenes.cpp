@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "float_reference.hpp"
+#include "holding_config.hpp"
 #include "watkins_top.hpp"
 #include "prepare.hpp"
 
@@ -34,8 +35,9 @@ TEST_P(ShippedScene, RendersWithinErrorBoundsOfTheDoubleReference) {
   using namespace watkins;
   const BuiltScene scene = load_scene(GetParam());
   ASSERT_FALSE(scene.polygons.empty());
-  const PreparedScene prepared = prepare(scene);  // default capacities: throws if exceeded
-  WatkinsTop pipe;
+  const Config cfg = watkins::test::default_holding(scene);  // the default, with the active edges it needs
+  const PreparedScene prepared = prepare(scene, cfg);
+  WatkinsTop pipe(cfg);
   const Image fixed = pipe.render(prepared);
   EXPECT_GT(pipe.stats().fragments, 1000);
   const Image ref = render_float_reference(scene);
@@ -74,8 +76,9 @@ TEST_P(ShippedScene, FastPathEqualsTheObservedPath) {
       continue;  // a screen-space command list without the other mode's vertex data
     }
     ++modes;
-    const PreparedScene prepared = prepare(scene);
-    WatkinsTop fast, observed;
+    const Config cfg = watkins::test::default_holding(scene);
+    const PreparedScene prepared = prepare(scene, cfg);
+    WatkinsTop fast(cfg), observed(cfg);
     const Image a = fast.render(prepared);
     long long seen = 0, won = 0;
     const Image b = observed.render(prepared, [&](int, const Fragment&, bool w) { ++seen, won += w; });
