@@ -232,7 +232,9 @@ std::string with_subpatches(const std::string& text, int u, int v) {
   return text.substr(0, begin) + object + text.substr(end);
 }
 
+#ifdef WATKINS_HAVE_RTL
 std::mutex rtl_mutex;  // the SystemC bench is one per process
+#endif
 
 Result evaluate(const SweepArgs& a, const std::vector<Axis>& axes, long long k) {
   using Clock = std::chrono::steady_clock;
