@@ -877,10 +877,19 @@ int run_synth(const SynthArgs& a) {
   for (const std::string& f : rtl.files) tables.input("the RTL file " + f, f);
   for (const std::string& c : choices.configs)
     if (c != "default") tables.input("the --config file " + c, c);
-  if (!a.md.empty()) tables.output("--md", a.md);
-  if (!a.csv.empty()) tables.output("--csv", a.csv);
   if (fs::exists(a.work) && fs::equivalent(a.work, rtl.dir))
     throw UsageError("--work " + a.work + " is the RTL folder; refusing to write into it");
+  // --work is synth's own folder, made when missing: a table inside it has its folder made first,
+  // so that the table is declared (and checked against the inputs) like any other output.
+  const fs::path work_lexical = fs::absolute(a.work).lexically_normal();
+  for (const std::string* table : {&a.md, &a.csv}) {
+    if (table->empty()) continue;
+    const fs::path folder = fs::absolute(*table).lexically_normal().parent_path();
+    const fs::path inside = folder.lexically_relative(work_lexical);
+    if (!inside.empty() && *inside.begin() != "..") fs::create_directories(folder);
+  }
+  if (!a.md.empty()) tables.output("--md", a.md);
+  if (!a.csv.empty()) tables.output("--csv", a.csv);
   std::vector<NamedConfig> configs;
   for (const std::string& c : choices.configs)
     configs.push_back({c, config_label(c), c == "default" ? Config{} : load_config(c)});
