@@ -74,7 +74,7 @@ void FrameDriver::run(const std::vector<const PreparedScene*>& scenes, const std
 
   source.idle();
   source.drive(cycle_ - start, sink.frame(), r.frames);
-  pins_.ready_pin(sink.next_ready());
+  pins_.ready_pin(sink.next_ready(cycle_ - start));
   for (;;) {
     const long long c = cycle_;
     pins_.settle(tick_time(c));
@@ -105,7 +105,7 @@ void FrameDriver::run(const std::vector<const PreparedScene*>& scenes, const std
       break;
     }
     source.drive(cycle_ - start, sink.frame(), r.frames);
-    pins_.ready_pin(sink.next_ready());
+    pins_.ready_pin(sink.next_ready(cycle_ - start));
   }
   stage_check.end();
   r.sim_cycles = cycle_ - start;

@@ -26,7 +26,7 @@ void put_pixel(Image& img, int x, int y, std::uint32_t rgb) {
 
 PixelSink::PixelSink(const std::vector<const PreparedScene*>& scenes, const std::vector<const Image*>& expected,
                      const RtlOptions& opt, RtlResult& r)
-    : r_(r), expected_(expected), sparse_want_(scenes.size()), stall_rng_(opt.seed * 2 + 2),
+    : r_(r), expected_(expected), sparse_want_(scenes.size()), opt_(opt), stall_rng_(opt.seed * 2 + 2),
       stall_threshold_(Rng::threshold(opt.stall)), stall_burst_(opt.stall_burst) {
   r.frames.assign(scenes.size(), RtlFrame{});
   for (std::size_t f = 0; f < scenes.size(); ++f) {
@@ -44,9 +44,12 @@ PixelSink::PixelSink(const std::vector<const PreparedScene*>& scenes, const std:
   }
 }
 
-bool PixelSink::next_ready() {
+bool PixelSink::next_ready(long long cycle) {
   if (drain_left_ >= 0) {
     ready_ = true;
+  } else if (opt_.pixel_ready) {
+    const long long first = r_.frames[std::size_t(frame_)].first_edge_cycle;
+    ready_ = first < 0 || opt_.pixel_ready(cycle - first, pixel_);
   } else if (burst_left_ > 0) {
     ready_ = false;
     --burst_left_;
@@ -123,6 +126,7 @@ void PixelSink::dense(const PinsOut& o, long long cycle) {
   ++fr.pixels;
   ++r_.pixels;
   const Image* want = frame_ < static_cast<int>(expected_.size()) ? expected_[frame_] : nullptr;
+  if (fr.first_edge_cycle >= 0) fr.take_cycles.push_back(cycle - fr.first_edge_cycle);
   if (want) {
     const std::uint8_t* m = want->at(x, y);
     const std::uint32_t mrgb = pack_rgb({m[0], m[1], m[2]});
@@ -158,6 +162,7 @@ bool PixelSink::sparse(const PinsOut& o, long long cycle) {
                          std::to_string(cycle);
   ++fr.pixels;
   ++r_.pixels;
+  if (fr.first_edge_cycle >= 0) fr.take_cycles.push_back(cycle - fr.first_edge_cycle);
   const bool inside = o.pixel_x < std::uint32_t(w) && o.pixel_y < std::uint32_t(h);
   const long long pos = inside ? static_cast<long long>(o.pixel_y) * w + o.pixel_x : -1;
   if (!inside)

@@ -26,7 +26,7 @@ class PixelSink {
   PixelSink(const std::vector<const PreparedScene*>& scenes, const std::vector<const Image*>& expected,
             const RtlOptions& opt, RtlResult& r);
 
-  bool next_ready();  // pixel_ready_i for the next cycle
+  bool next_ready(long long cycle);  // pixel_ready_i for cycle `cycle` (counted from the run's start)
   bool ready() const { return ready_; }
   // Every cycle, the outputs before the rising edge (`cycle` counted from the run's start).
   void watch(const PinsOut& o, long long cycle);
@@ -50,6 +50,7 @@ class PixelSink {
   RtlResult& r_;
   const std::vector<const Image*>& expected_;
   std::vector<std::vector<SparseBeat>> sparse_want_;  // sparse frames: the model's beats
+  const RtlOptions& opt_;
   Rng stall_rng_;
   std::uint64_t stall_threshold_;
   int stall_burst_;

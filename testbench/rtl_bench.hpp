@@ -90,6 +90,11 @@ struct RtlOptions {
   // run (a test corrupts one item and checks that the report names that stage).
   std::function<void(int frame, StageStreams&)> edit_stage_streams;
   RtlHarness harness = RtlHarness::SystemC;  // the default configuration's bench (last: tests list the fields above in order)
+  // pixel_ready_i chosen by the test instead of the seeded stalls when set: called every cycle
+  // with the cycle counted from the current output frame's first edge beat offered (its
+  // RtlFrame::first_edge_cycle; the cycle model's count) and the pixels (beats) of that frame
+  // taken before it. Before that frame's first beat and in the drain, ready is high.
+  std::function<bool(long long cycle, long long pixels_taken)> pixel_ready;
 };
 
 struct RtlFrame {
@@ -100,6 +105,7 @@ struct RtlFrame {
   long long first_edge_cycle = -1; // cycle the frame's first beat is offered (edge_valid_i rises:
                                    // the RTL starts the frame then and may emit empty lines early)
   long long last_pixel_cycle = -1; // cycle of its last pixel
+  std::vector<long long> take_cycles;  // the cycle each pixel (beat) was taken, from first_edge_cycle
   long long cycles() const {       // frame cycles: first edge beat offered to last pixel, inclusive
     return last_pixel_cycle < 0 || first_edge_cycle < 0 ? 0 : last_pixel_cycle - first_edge_cycle + 1;
   }

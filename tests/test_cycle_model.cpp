@@ -93,3 +93,80 @@ TEST(CycleModel, OverflowIsACapacityError) {
 }
 
 }  // namespace
+
+namespace {
+
+class AlwaysHigh : public PixelReady {
+ public:
+  bool ready(long long, long long) override { return true; }
+};
+
+// The clocked pixel path with pixel_ready_i held high takes every pixel in the cycle the closed
+// count says: same cycles, first pixel and beats, on every shipped scene in both shadings and
+// output modes, smoothed (W = 0.8) and not; the takes are strictly increasing, one per beat.
+TEST(CycleModel, ClockedPixelPathEqualsTheFastCount) {
+  int checked = 0;
+  for (const auto& e : std::filesystem::directory_iterator(WATKINS_SOURCE_DIR "/scenes")) {
+    if (e.path().extension() != ".json") continue;
+    for (const ShadingMode mode : {ShadingMode::Gouraud, ShadingMode::Phong})
+      for (const double w : {0.0, 0.8}) {
+        BuildOptions bo = shading_options(mode);
+        bo.smooth = w;
+        PreparedScene p;
+        try {
+          p = prepare(load_scene(e.path().string(), bo));
+        } catch (const SceneError&) {
+          continue;
+        }
+        for (const PixelOutput out : {PixelOutput::FullFrame, PixelOutput::Sparse}) {
+          const std::string what = e.path().filename().string() + (mode == ShadingMode::Phong ? " phong" : " gouraud") +
+                                   (w > 0 ? " smoothed" : "") + (out == PixelOutput::Sparse ? " sparse" : " full");
+          const CyclePrediction fast = predict_cycles(p, out);
+          AlwaysHigh high;
+          std::vector<long long> takes;
+          CycleOptions o;
+          o.output = out;
+          o.pixel_ready = &high;
+          o.take_cycles = &takes;
+          const CyclePrediction clocked = predict_cycles(p, Config{}, o);
+          EXPECT_EQ(clocked.cycles, fast.cycles) << what;
+          EXPECT_EQ(clocked.first_pixel, fast.first_pixel) << what;
+          EXPECT_EQ(clocked.pixels, fast.pixels) << what;
+          ASSERT_EQ(static_cast<long long>(takes.size()), fast.pixels) << what;
+          EXPECT_EQ(takes.front(), fast.first_pixel) << what;
+          EXPECT_EQ(takes.back(), fast.cycles - 1) << what;
+          for (std::size_t i = 1; i < takes.size(); ++i) ASSERT_LT(takes[i - 1], takes[i]) << what << " pixel " << i;
+          ++checked;
+        }
+      }
+  }
+  EXPECT_GT(checked, 40);
+}
+
+// A consumer that takes one pixel in three: the frame's last pixel leaves no earlier than three
+// cycles a pixel after the first, and the clocked model never takes a pixel the consumer refused.
+class OneInThree : public PixelReady {
+ public:
+  bool ready(long long cycle, long long) override {
+    asked.push_back(cycle);
+    return cycle % 3 == 0;
+  }
+  std::vector<long long> asked;
+};
+
+TEST(CycleModel, ClockedPixelPathHonoursTheConsumer) {
+  const PreparedScene p = prepare(load_scene(WATKINS_SOURCE_DIR "/scenes/sphere.json", shading_options(ShadingMode::Gouraud)));
+  OneInThree third;
+  std::vector<long long> takes;
+  CycleOptions o;
+  o.pixel_ready = &third;
+  o.take_cycles = &takes;
+  const CyclePrediction c = predict_cycles(p, Config{}, o);
+  ASSERT_EQ(static_cast<long long>(takes.size()), static_cast<long long>(p.width) * p.height);
+  for (const long long t : takes) ASSERT_EQ(t % 3, 0);
+  EXPECT_EQ(c.cycles, takes.back() + 1);
+  EXPECT_GE(takes.back() - takes.front(), 3 * (static_cast<long long>(takes.size()) - 1));
+  for (std::size_t i = 1; i < third.asked.size(); ++i) ASSERT_LT(third.asked[i - 1], third.asked[i]);
+}
+
+}  // namespace

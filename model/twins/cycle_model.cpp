@@ -93,10 +93,31 @@ struct StallPipe {
   }
 };
 
+// pixel_ready_i held high.
+class AlwaysReady : public PixelReady {
+ public:
+  bool ready(long long, long long) override { return true; }
+};
+
 }  // namespace
 
 CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_active_edges,
                                const Config& cfg) {
+  CycleOptions opt;
+  opt.output = output;
+  opt.max_active_edges = max_active_edges;
+  return predict_cycles(frame, cfg, opt);
+}
+
+CyclePrediction predict_cycles(const Frame& frame, const Config& cfg, const CycleOptions& opt) {
+  const PixelOutput output = opt.output;
+  const int max_active_edges = opt.max_active_edges;
+  // Exact: the pixel path is clocked (the scanline buffer's pixel register, the smoother, the
+  // pixel skid, the consumer's ready) and every cycle is run. Otherwise pixel_ready_i is high,
+  // so the skid never fills and a smoothed frame's output follows from its input in closed form.
+  const bool exact = opt.pixel_ready != nullptr || opt.take_cycles != nullptr;
+  AlwaysReady always;
+  PixelReady& consumer = opt.pixel_ready ? *opt.pixel_ready : always;
   if (frame.width < 1 || frame.height < 1)  // the top asserts a_frame_size: no frame to time
     throw std::invalid_argument("cycle model: frame size " + std::to_string(frame.width) + "x" +
                                 std::to_string(frame.height));
@@ -159,6 +180,15 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
   bool sb_swap_q = false;  // sparse: the swap's second clock, the reader's registers handed over
   bool rd_busy_q = false;
   int rd_left = 0, rline_q = 0, lines_written = 0;
+  bool reader_done = false;  // the last line's last step was taken
+  // ---- exact: scanline_buffer's pixel_valid_o, the smoother, the pixel skid's full_q
+  bool sb_valid = false, px_full = false;
+  std::uint64_t sm_pipe = 0;  // the smoother's stages, one valid bit each (v2 .. dv_q[DivStages])
+  const std::uint64_t sm_mask = (std::uint64_t{1} << SmootherStages) - 1;
+  long long sm_lead = 0, sm_emitted = 0, sm_in = 0;  // lead_q; pixels emitted; input beats taken
+  bool sm_flush = false;
+  const long long frame_pixels = static_cast<long long>(frame.width) * frame.height;
+  long long loads = 0, taken = 0;
 
   // Every register but the two down-counters (reader steps, stepper pixels left). When a cycle
   // leaves all of them as they were and only counts down, the cycles after it repeat it until a
@@ -178,8 +208,22 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
   long long last_progress = 0;
   for (long long t = 1;; ++t) {
     // ================= combinational, from the outputs back =================
+    // The pixel path: the reader steps unless its pixel register holds a pixel its consumer
+    // (the smoother or the skid) refuses; the skid's ready is its empty slot, the smoother's
+    // its enable outside the flush.
+    const bool rd_emit = rd_busy_q && (st.read_emits[std::size_t(rline_q)] || rline_q == height - 1);
+    bool rd_step = rd_busy_q, take = false, sb_ready = true, sm_en = true, top_valid = false;
+    if (exact) {
+      const bool sm_valid_o = smooth && ((sm_pipe >> (SmootherStages - 1)) & 1);
+      const bool px_ready = !px_full;
+      top_valid = (smooth ? sm_valid_o : sb_valid) || px_full;
+      take = top_valid && consumer.ready(t, taken);
+      sm_en = !sm_valid_o || px_ready;
+      sb_ready = smooth ? sm_en && !sm_flush : px_ready;
+      rd_step = rd_busy_q && (!rd_emit || !sb_valid || sb_ready);
+    }
     const bool rd_last = rd_busy_q && rd_left == 1;
-    const bool eol_ok = !sb_read_q && !sb_swap_q && (!rd_busy_q || rd_last);
+    const bool eol_ok = !sb_read_q && !sb_swap_q && (!rd_busy_q || (rd_step && rd_last));
     const bool sh_valid = piped ? shade.out_valid() : frag_valid;
     const bool sh_eol = piped ? shade.out_eol() : frag_eol;
     // The queue's head goes to the scanline buffer, which refuses only a marker waiting on the
@@ -250,24 +294,62 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
     const bool rd_counts = rd_busy_q && !rd_last;
     const bool step_counts = emit_frag && !from_head;
     // (Worth a look only when a counter has some way to go.)
-    const bool may_repeat = (rd_counts && rd_left > 8) || (step_counts && step_left > 8);
+    const bool may_repeat = !exact && ((rd_counts && rd_left > 8) || (step_counts && step_left > 8));
     decltype(key()) before;
     if (may_repeat) before = key();
-    // scanline_buffer reader (pixel_ready_i high: it steps every cycle it is busy)
-    if (rd_busy_q) {
-      if (st.read_emits[std::size_t(rline_q)] || rline_q == height - 1) {  // rd_load
-        if (out.pixels == smooth_lead) lead_load = t;
-        if (out.pixels++ == 0) out.first_pixel = t + 1;
+    // scanline_buffer reader (not exact: pixel_ready_i high, it steps every cycle it is busy)
+    if (rd_step) {
+      if (rd_emit) {  // rd_load
+        if (exact) {
+          ++loads;
+        } else {
+          if (out.pixels == smooth_lead) lead_load = t;
+          if (out.pixels++ == 0) out.first_pixel = t + 1;
+        }
       }
       if (rd_last) {
         if (rline_q == height - 1) {
-          out.cycles = t + 2;  // the pixel loaded now is taken next cycle; cycle 0 counts
-          break;
+          if (!exact) {
+            out.cycles = t + 2;  // the pixel loaded now is taken next cycle; cycle 0 counts
+            break;
+          }
+          reader_done = true;
+        } else {
+          ++rline_q;
         }
         rd_busy_q = false;
-        ++rline_q;
       } else {
         --rd_left;
+      }
+    }
+    if (exact) {
+      // The pixel register loads when its pixel leaves or it is empty; the skid holds a pixel
+      // offered and not taken; the smoother's stages move together on its enable, a column
+      // entering on each input beat and, after the frame's last, on each flush step.
+      const bool in_fire = smooth && sb_valid && sb_ready;
+      const bool adv = smooth && sm_en && (sm_flush || sb_valid);
+      if (!sb_valid || sb_ready) sb_valid = rd_step && rd_emit;
+      px_full = top_valid && !take;
+      if (smooth && sm_en) {
+        const bool emit0 = sm_lead == smooth_lead;
+        sm_pipe = ((sm_pipe << 1) | std::uint64_t(adv && emit0)) & sm_mask;
+        if (adv) {
+          if (!emit0) ++sm_lead;
+          if (in_fire && sm_in == frame_pixels - 1) sm_flush = true;
+          if (emit0 && ++sm_emitted == frame_pixels) sm_lead = sm_emitted = 0, sm_flush = false;
+        }
+      }
+      if (in_fire) ++sm_in;
+      if (take) {
+        if (taken == 0) out.first_pixel = t;
+        if (opt.take_cycles) opt.take_cycles->push_back(t);
+        ++taken;
+        last_progress = t;
+        if (smooth ? taken == frame_pixels : reader_done && taken == loads) {
+          out.cycles = t + 1;
+          out.pixels = taken;
+          break;
+        }
       }
     }
     // The marker's swap starts the reader on the next clock in full mode; in sparse mode on the
@@ -395,7 +477,7 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
     if (t - last_progress > 10'000'000)
       throw std::logic_error("cycle model: no progress for 10^7 cycles at cycle " + std::to_string(t));
   }
-  if (smooth) {
+  if (smooth && !exact) {
     // The buffer's last pixel is taken at cycles - 1; the width + 1 flush steps follow one per
     // clock, and each column's pixel leaves SmootherStages clocks after it entered.
     const long long n = out.pixels;

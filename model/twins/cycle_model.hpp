@@ -15,6 +15,8 @@
 // arithmetic runs per cycle, so it is exact and far faster than Verilator.
 #pragma once
 
+#include <vector>
+
 #include "config.hpp"
 #include "frame.hpp"
 #include "formats.hpp"
@@ -48,6 +50,27 @@ struct CyclePrediction {
   long long pixels = 0;       // beats on the pixel stream
 };
 
+// pixel_ready_i of the top as its consumer drives it, clock by clock.
+class PixelReady {
+ public:
+  virtual ~PixelReady() = default;
+  // pixel_ready_i in cycle `cycle` (counted as predict_cycles counts: 0 = the cycle the frame's
+  // first edge beat is offered), the pixels (beats) taken in the cycles before it given. Asked
+  // only in cycles the top offers a pixel (pixel_valid_o high: elsewhere the RTL ignores the
+  // pin), in increasing cycle order, once per cycle; it must be a function of its arguments
+  // and the consumer's own state.
+  virtual bool ready(long long cycle, long long pixels_taken_before) = 0;
+};
+
+struct CycleOptions {
+  PixelOutput output = PixelOutput::FullFrame;  // sparse_i (ignored for a smoothed frame)
+  int max_active_edges = fmt::MaxActiveEdges;
+  // The consumer's ready; null: always high (the results of the overload without options).
+  PixelReady* pixel_ready = nullptr;
+  // When not null: filled with the cycle each pixel (beat) is taken, in stream order.
+  std::vector<long long>* take_cycles = nullptr;
+};
+
 // Predicts the frame's cycles on watkins_top with Phong = (frame.shading == Phong), sparse_i as
 // `output` (ignored when frame.smooth_w != 0: a smoothed frame is emitted in full), starting idle (after reset or a finished frame), no input gaps and no output stalls.
 // Throws CapacityError when the frame overflows an active-edge list of `max_active_edges`, and
@@ -55,5 +78,11 @@ struct CyclePrediction {
 // for (its channel widths step the edges; its X fraction bits place the spans' pixel centres).
 CyclePrediction predict_cycles(const Frame& frame, PixelOutput output,
                                int max_active_edges = fmt::MaxActiveEdges, const Config& cfg = Config{});
+
+// The same frame clocked with the pixel path of watkins_top (scanline_buffer's pixel register,
+// [smoother,] the pixel skid) under opt.pixel_ready: exact for any ready pattern, every cycle
+// clocked (no cycles skipped). With a null pixel_ready and take_cycles it equals the overload
+// above and records each pixel's take.
+CyclePrediction predict_cycles(const Frame& frame, const Config& cfg, const CycleOptions& opt);
 
 }  // namespace watkins

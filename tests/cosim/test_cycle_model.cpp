@@ -1,8 +1,12 @@
 // The cycle model (model/twins/cycle_model.hpp) against the Verilated top: with no input gaps and
 // no output stalls, the predicted cycles per frame must equal the bench's `rtl cycles` exactly,
 // on every shipped scene and on random scenes, Gouraud and Phong tops, full-frame and sparse.
+// Under output back-pressure (any pixel_ready_i pattern, random or a function of the pixels
+// taken, as a line buffer drives it), the cycle of every pixel taken must equal the model's.
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <functional>
 #include <random>
 #include <string>
 #include <vector>
@@ -142,6 +146,130 @@ TEST(CycleModel, CornerFramesEqualRtl) {
   expect_predicted("slivers", prepare(screen(64, 48, slivers, "slivers")));
   expect_predicted("tall", prepare(screen(8, 400, {poly({vtx(1, 350, 0.3, 1, 2, 3), vtx(7, 352, 0.3, 1, 2, 3),
                                                          vtx(4, 399, 0.3, 1, 2, 3)})}, "tall")));
+}
+
+// ---------------------------------------------------------------- under back-pressure
+
+// A pixel_ready_i pattern: one function for the bench and the model.
+using ReadyPattern = std::function<bool(long long cycle, long long taken)>;
+
+class PatternReady : public PixelReady {
+ public:
+  explicit PatternReady(const ReadyPattern& f) : f_(f) {}
+  bool ready(long long cycle, long long taken) override { return f_(cycle, taken); }
+
+ private:
+  const ReadyPattern& f_;
+};
+
+std::uint64_t mix(std::uint64_t x) {  // splitmix64's finalizer: a stateless random bit per cycle
+  x += 0x9e3779b97f4a7c15ull;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+  return x ^ (x >> 31);
+}
+
+struct NamedPattern {
+  std::string name;
+  ReadyPattern ready;
+};
+
+// Random stalls light and heavy, every other cycle, long all-stall bursts, a stall at each
+// line's last pixel, and a line buffer's back-pressure: a line may be written while fewer than
+// two taken lines wait for a reader that frees one every 1.5 line widths.
+std::vector<NamedPattern> ready_patterns(int width) {
+  const long long w = width;
+  return {
+      {"random 30 %", [](long long c, long long) { return mix(std::uint64_t(c) * 3 + 1) % 100 >= 30; }},
+      {"random 85 %", [](long long c, long long) { return mix(std::uint64_t(c) * 5 + 2) % 100 >= 85; }},
+      {"every other cycle", [](long long c, long long) { return c % 2 == 1; }},
+      {"bursts", [](long long c, long long) { return (c / 97) % 3 != 1; }},
+      {"line ends", [w](long long c, long long n) { return n % w != w - 1 || c % 5 == 0; }},
+      {"two line slots", [w](long long c, long long n) { return n / w - (2 * c) / (3 * w) < 2; }},
+  };
+}
+
+void expect_takes(const std::string& what, const PreparedScene& p, bool sparse, const NamedPattern& pattern) {
+  RtlOptions o;
+  o.gap = 0;
+  o.stall = 0;
+  o.sparse = sparse;
+  o.compare = false;
+  o.pixel_ready = pattern.ready;
+  const RtlResult r = run_rtl(p, o);
+  const std::string at = what + (sparse ? " sparse" : " full-frame") + ", ready " + pattern.name;
+  ASSERT_TRUE(r.ok()) << at << ": " << r.summary();
+  PatternReady ready(pattern.ready);
+  std::vector<long long> takes;
+  CycleOptions co;
+  co.output = sparse ? PixelOutput::Sparse : PixelOutput::FullFrame;
+  co.pixel_ready = &ready;
+  co.take_cycles = &takes;
+  const CyclePrediction c = predict_cycles(p, Config{}, co);
+  const std::vector<long long>& rtl = r.frames.at(0).take_cycles;
+  EXPECT_EQ(c.cycles, r.cycles) << at;
+  ASSERT_EQ(takes.size(), rtl.size()) << at;
+  for (std::size_t i = 0; i < takes.size(); ++i)
+    ASSERT_EQ(takes[i], rtl[i]) << at << ": pixel (beat) " << i << " of " << takes.size();
+}
+
+void expect_takes_shipped(const std::string& name, ShadingMode mode, double smooth) {
+  if (name == "<none>") GTEST_SKIP() << "no scenes/*.json";
+  PreparedScene p;
+  try {
+    BuildOptions bo = shading_options(mode);
+    if (smooth > 0) bo.smooth = smooth;
+    p = prepare(load_scene(WATKINS_SOURCE_DIR "/scenes/" + name, bo));
+  } catch (const SceneError& e) {
+    GTEST_SKIP() << "the scene does not load or fit in this mode: " << e.what();
+  }
+  if (p.width > rtl_max_width()) GTEST_SKIP() << "wider than the RTL line buffer";
+  const std::string what = name + (mode == ShadingMode::Phong ? " phong" : " gouraud") + (p.smoothed() ? " smoothed" : "");
+  const std::vector<NamedPattern> patterns = ready_patterns(p.width);
+  for (std::size_t k = 0; k < patterns.size(); ++k) {
+    expect_takes(what, p, false, patterns[k]);
+    if (k % 3 == 0 && !p.smoothed()) expect_takes(what, p, true, patterns[k]);  // sparse: three of them
+    if (::testing::Test::HasFailure()) return;
+  }
+}
+
+class CycleModelStalled : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(CycleModelStalled, GouraudTakesEqualRtl) { expect_takes_shipped(GetParam(), ShadingMode::Gouraud, 0); }
+TEST_P(CycleModelStalled, PhongTakesEqualRtl) { expect_takes_shipped(GetParam(), ShadingMode::Phong, 0); }
+
+INSTANTIATE_TEST_SUITE_P(Scenes, CycleModelStalled, ::testing::ValuesIn(shipped_scenes()), scene_test_name);
+
+// Herman & Liu's smoother between the buffer and the skid, stalled by the consumer.
+TEST(CycleModelStalled, SmoothedSphereTakesEqualRtl) {
+  expect_takes_shipped("sphere.json", ShadingMode::Gouraud, 0.8);
+  expect_takes_shipped("sphere.json", ShadingMode::Phong, 0.8);
+  expect_takes_shipped("screen_polygons.json", ShadingMode::Gouraud, 1.5);
+}
+
+// Random scenes (many small polygons: the front half sets the pace as often as the output).
+TEST(CycleModelStalled, RandomScenesTakesEqualRtl) {
+  int ran = 0;
+  for (int k = 0; k < 12; ++k) {
+    std::mt19937_64 rng(88000 + static_cast<std::uint64_t>(k));
+    RandomSceneSpec spec;
+    if (k % 2) spec.min_polygons = 20, spec.max_polygons = 40, spec.convex_quads = false;
+    const BuiltScene scene = k % 3 == 2 ? random_phong_scene(88000 + k) : random_scene(rng, spec);
+    PreparedScene p;
+    try {
+      p = prepare(scene);
+    } catch (const SceneError&) {
+      continue;
+    }
+    if (p.width > rtl_max_width()) continue;
+    const std::vector<NamedPattern> patterns = ready_patterns(p.width);
+    const NamedPattern& pattern = patterns[std::size_t(k) % patterns.size()];
+    expect_takes(scene.name + " " + std::to_string(k), p, false, pattern);
+    expect_takes(scene.name + " " + std::to_string(k), p, true, pattern);
+    if (HasFailure()) return;
+    ++ran;
+  }
+  EXPECT_GE(ran, 8);
 }
 
 }  // namespace
