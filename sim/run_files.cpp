@@ -53,6 +53,21 @@ bool RunFiles::Identity::operator==(const Identity& o) const {
   return exists == o.exists && dev == o.dev && ino == o.ino && name == o.name;
 }
 
+// The file a name leads to through symbolic links (the name itself when it is no link): an output
+// named by a link is written where the link points, as a shell's redirection writes it, and the
+// link stays.
+std::string RunFiles::through_links(const std::string& path) {
+  std::string named = path;
+  for (int hops = 0; hops < 40; ++hops) {  // as many as the kernel follows
+    std::error_code ec;
+    if (!fs::is_symlink(named, ec)) break;
+    const fs::path target = fs::read_symlink(named, ec);
+    if (ec) break;
+    named = target.is_absolute() ? target.string() : (fs::path(named).parent_path() / target).string();
+  }
+  return named;
+}
+
 // The file's device and inode (stat follows links: a link to an input is that input); for a name
 // that does not exist, its folder's device and inode and the name in it (a dangling symbolic link
 // names its target's, so it clashes with an output of that name); for a name whose folder does
@@ -66,14 +81,7 @@ RunFiles::Identity RunFiles::identity(const std::string& path) {
     id.ino = st.st_ino;
     return id;
   }
-  std::string named = path;
-  for (int hops = 0; hops < 40; ++hops) {  // as many as the kernel follows
-    std::error_code ec;
-    if (!fs::is_symlink(named, ec)) break;
-    const fs::path target = fs::read_symlink(named, ec);
-    if (ec) break;
-    named = target.is_absolute() ? target.string() : (fs::path(named).parent_path() / target).string();
-  }
+  const std::string named = through_links(path);
   id.name = fs::path(named).filename().string();
   if (::stat(folder_of(named).c_str(), &st) == 0) {
     id.dev = st.st_dev;
@@ -177,7 +185,7 @@ void RunFiles::add_in(const std::string& folder, const std::string& name, std::v
 std::string RunFiles::temporary_for(const std::string& path) {
   struct stat st {};
   if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) return "";
-  const fs::path p(path);
+  const fs::path p(through_links(path));
   return (p.parent_path() / ("." + p.filename().string() + ".tmp" + std::to_string(::getpid()))).string();
 }
 
@@ -225,10 +233,11 @@ void RunFiles::commit() {
     if (p.temp.empty() || p.copy_to_device) continue;
     // Only a regular file (or nothing) is replaced: a device or FIFO that appeared meanwhile keeps
     // its place.
+    const std::string dest = through_links(p.path);
     struct stat st {};
-    if (::lstat(p.path.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISLNK(st.st_mode))
+    if (::lstat(dest.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
       throw std::runtime_error(p.path + ": cannot write: it is no longer a regular file");
-    if (std::rename(p.temp.c_str(), p.path.c_str()) != 0)
+    if (std::rename(p.temp.c_str(), dest.c_str()) != 0)
       throw std::runtime_error(p.path + ": cannot write (rename from " + p.temp + "): " + std::strerror(errno));
     p.temp.clear();
   }

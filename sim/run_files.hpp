@@ -78,6 +78,7 @@ class RunFiles {
     bool copy_to_device = false;  // staged for a device: temp is private, its bytes copied at commit
   };
   static Identity identity(const std::string& path);
+  static std::string through_links(const std::string& path);
   void check_output(const Output& o) const;
   const Output* declared(const std::string& path) const;
   static std::string temporary_for(const std::string& path);

@@ -301,6 +301,24 @@ TEST_F(CliFiles, TwoOutputsNamingOneFileAreRefused) {
   EXPECT_EQ(contents("e.out"), "keep\n");
 }
 
+// An output named by a symbolic link is written where the link points, as a shell's redirection
+// writes it: the link stays a link, its target gets the image (a dangling link's target is made).
+TEST_F(CliFiles, AnOutputNamedByALinkIsWrittenThroughIt) {
+  write("old.png", "old\n");
+  fs::create_symlink("old.png", dir_ + "/to_old.png");
+  fs::create_symlink("new.png", dir_ + "/to_new.png");  // dangling
+  for (const std::string& link : {"to_old.png", "to_new.png"}) {
+    SCOPED_TRACE(link);
+    const Outcome r = run({"render", "s.json", "--out", link});
+    EXPECT_EQ(r.code, 0) << r.out << r.err;
+    EXPECT_TRUE(fs::is_symlink(dir_ + "/" + link));
+  }
+  for (const char* target : {"old.png", "new.png"}) {
+    SCOPED_TRACE(target);
+    EXPECT_TRUE(starts_with(contents(target), "\x89PNG"));
+  }
+}
+
 // A file of an --images folder is an output too: another output of that name is refused, not
 // silently replaced by the image (or the image by it).
 TEST_F(CliFiles, AnOutputNamingAFileOfTheImagesFolderIsRefused) {
