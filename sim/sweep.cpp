@@ -548,9 +548,10 @@ int run_sweep(const SweepArgs& in) {
     int u = 0, v = 0;
     (void)retessellate(read_scene_text(path), path, 1.0, false, u, v);
   }
+  // The folder first: a table inside a folder the run makes is then declared as one of its files.
+  if (!a.images.empty()) files.output_folder("--images", a.images);
   files.output("--csv", a.csv);
   if (!a.md.empty()) files.output("--md", a.md);
-  if (!a.images.empty()) files.output_folder("--images", a.images);
   const std::vector<Axis> axes = make_axes(a);
   std::vector<long long> points;
   for (long long k = shard; k < grid_size(axes); k += shards) points.push_back(k);

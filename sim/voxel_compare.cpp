@@ -140,8 +140,9 @@ int run_voxel_compare(const VoxelCompareArgs& a) {
     files.input("the scene file " + path, path);
     files.scene_inputs(parse_scene_file(path));
   }
-  if (!a.md.empty()) files.output("--md", a.md);
+  // The folder first: a table inside a folder the run makes is then declared as one of its files.
   if (!a.images.empty()) files.output_folder("--images", a.images);
+  if (!a.md.empty()) files.output("--md", a.md);
   std::vector<Row> rows;
   for (const std::string& path : scenes) {
     const std::string stem = std::filesystem::path(path).stem().string(), text = read_scene_text(path);

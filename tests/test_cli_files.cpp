@@ -319,6 +319,21 @@ TEST_F(CliFiles, AnOutputNamedByALinkIsWrittenThroughIt) {
   }
 }
 
+// A table inside the --images folder the run makes is written there, whatever the options' order.
+TEST_F(CliFiles, ATableInsideTheImagesFolderTheRunMakesIsWritten) {
+  const std::vector<Args> runs = {
+      {"sweep", "s.json", "--tess", "1", "--shadings", "flat", "-q", "--md", "im1/t.md", "--images", "im1"},
+      {"voxel-compare", "s.json", "--repeat", "1", "--weights", "0.8", "--md", "im2/t.md", "--images", "im2"}};
+  for (const Args& args : runs) {
+    SCOPED_TRACE(shown(args));
+    const Outcome r = run(args);
+    EXPECT_EQ(r.code, 0) << r.out << r.err;
+    const std::string folder = args[args.size() - 1];
+    EXPECT_NE(contents(folder + "/t.md").find("| "), std::string::npos);  // a table
+    EXPECT_TRUE(fs::exists(dir_ + "/" + folder + "/s_truth.png"));
+  }
+}
+
 // A file of an --images folder is an output too: another output of that name is refused, not
 // silently replaced by the image (or the image by it).
 TEST_F(CliFiles, AnOutputNamingAFileOfTheImagesFolderIsRefused) {
