@@ -4,7 +4,8 @@
 # writes a list of labels unquoted, so only the first of several would arrive).
 # One GoogleTest bench around one Verilated RTL unit (--cc, -O3, --assert), linked with the
 # bit-exact model so the bench compares the unit with its twin (tests/rtl); one Verilated model
-# per unit top. Verilator searches rtl/ (-y) for the includes
+# per unit top. SOURCES are relative to rtl/ unless absolute (simulation stand-ins of device
+# primitives live in testbench/). Verilator searches rtl/ (-y) for the includes
 # (watkins_assert.svh) and for any module SOURCES does not list (e.g. stall_pipe).
 #
 # PARAMS is the one source of the unit's parameter overrides: each Name=value goes to Verilator
@@ -41,7 +42,11 @@ function(watkins_rtl_unit bench)
   endforeach()
   set(srcs ${CMAKE_SOURCE_DIR}/rtl/watkins_pkg.sv)
   foreach(s ${U_SOURCES})
-    list(APPEND srcs ${CMAKE_SOURCE_DIR}/rtl/${s})
+    if(IS_ABSOLUTE "${s}")
+      list(APPEND srcs ${s})
+    else()
+      list(APPEND srcs ${CMAKE_SOURCE_DIR}/rtl/${s})
+    endif()
   endforeach()
   verilate(${bench}
     SOURCES ${srcs}
