@@ -10,7 +10,7 @@
 // LineBits. Here every channel is held in an i64, already wrapped to its slot's width.
 // Curved edges (Config::edge_order 3, Whitted 1978): the channel is a cubic in the scan-line
 // index, stepped by forward differences: slope is d1, and d2, d3 follow it in the record
-// (watkins_pkg::edge_bits, testbench/edge_packing.hpp); a straight edge has d2 = d3 = 0, and an
+// (watkins_pkg::edge_bits, model/twins/edge_packing.hpp); a straight edge has d2 = d3 = 0, and an
 // order-1 record carries neither.
 #pragma once
 

@@ -1,4 +1,4 @@
-// The edge packer (testbench/edge_packing.hpp): the default layout against the edge_t declaration
+// The edge packer (model/twins/edge_packing.hpp): the default layout against the edge_t declaration
 // in rtl/watkins_pkg.sv, and a narrow configuration's layout (per-slot widths) round trip.
 #include <gtest/gtest.h>
 

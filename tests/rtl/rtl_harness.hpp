@@ -31,7 +31,7 @@ struct Harness {
   }
 };
 
-// Fields of Verilator wide signals: the benches' one bit packer (testbench/bit_field.hpp).
+// Fields of Verilator wide signals: the benches' one bit packer (model/twins/bit_field.hpp).
 using tb::get_bits;
 using tb::get_signed;
 using tb::set_bits;
