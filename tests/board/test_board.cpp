@@ -5,6 +5,8 @@
 // every pixel clock, and no line misses its deadline. A 640 x 480 native scene built to miss
 // (tests/board/miss.json at tests/board/native.gouraud.json, Doubling 1) shows missed lines, the
 // same ones every frame, and the model's pixels on every other line.
+// Both runs equal the cycle model's beam schedule line for line (completion edges, missed lines),
+// shifted by the reset synchronizers' clocks.
 // WATKINS_BOARD_PNG=FILE writes the captured frame of the default scene as a PNG
 // (docs/results/images/board_default.png); WATKINS_BOARD_LINES=FILE writes every rendered line's
 // completion (pipeline clocks from its frame's start pulse) and every missed line as CSV.
@@ -20,6 +22,7 @@
 #include <gtest/gtest.h>
 
 #include "board_bench.hpp"
+#include "beam_schedule.hpp"
 #include "board_image.hpp"
 #include "config_file.hpp"
 #include "image_io.hpp"
@@ -67,6 +70,37 @@ long long timing_mismatches(const BoardRun& r) {
     }
   }
   return bad;
+}
+
+// The RTL against the cycle model's beam schedule (model/board/beam_schedule.hpp), which starts
+// the video timing at pixel edge 0. On the board top the resets leave their two-flip-flop
+// synchronizers first: the video's first state is sampled at pixel edge 2 (tick 100), so every
+// pixel-domain event comes 2 pixel clocks later, and the pipeline edges that see it 7 later
+// (each event is at h = 639 or 799, whose ticks fall at one phase of the pipeline clock).
+constexpr long long ResetPixelEdges = 2, ResetPipeEdges = 7;
+
+void expect_model_schedule(const BoardRun& r, const board::BeamSchedule& b, int rendered_frames) {
+  ASSERT_GE(b.frames.size(), std::size_t(rendered_frames));
+  for (int f = 0; f < rendered_frames; ++f) {
+    EXPECT_EQ(r.request_pixel_clocks.at(f), b.frames[f].request + ResetPixelEdges) << "request " << f;
+    EXPECT_EQ(r.start_clocks.at(f), b.frames[f].start_pulse + ResetPipeEdges) << "start pulse " << f;
+    EXPECT_EQ(r.begin_clocks.at(f), b.frames[f].begin + ResetPipeEdges) << "begin " << f;
+  }
+  const std::size_t lines = std::size_t(rendered_frames) * b.height;
+  ASSERT_GE(r.lines.size(), lines);
+  long long differ = 0;
+  std::set<long long> model_missed;
+  for (std::size_t i = 0; i < lines; ++i) {
+    if (r.lines[i].pipe_clock != b.lines[i].completion + ResetPipeEdges && differ++ == 0)
+      ADD_FAILURE() << "line " << i << " done at pipeline edge " << r.lines[i].pipe_clock << ", the model's "
+                    << b.lines[i].completion << " + " << ResetPipeEdges;
+    if (b.lines[i].missed) model_missed.insert(static_cast<long long>(i));
+  }
+  EXPECT_EQ(differ, 0);
+  std::set<long long> rtl_missed;
+  for (const MissedLine& m : r.missed)
+    if (m.line < static_cast<long long>(lines)) rtl_missed.insert(m.line);
+  EXPECT_EQ(rtl_missed, model_missed) << "missed lines: RTL " << rtl_missed.size() << ", model " << model_missed.size();
 }
 
 long long pixel_mismatches(const Image& got, const Image& want) {
@@ -129,6 +163,8 @@ TEST(Board, DefaultSceneFrameByFrame) {
     EXPECT_EQ(r.lines[i].line, static_cast<long long>(i));
     EXPECT_GT(r.lines[i].from_start, 0) << "line " << i;
   }
+  // Every line's completion and the deadline checks exactly as the beam schedule has them.
+  expect_model_schedule(r, board::beam_schedule(s.frame, s.frame.config), 2);
   if (const char* png = std::getenv("WATKINS_BOARD_PNG")) {
     const std::vector<unsigned char> bytes = encode_png(r.frames[1]);
     std::ofstream(png, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()),
@@ -175,6 +211,9 @@ TEST(Board, SceneThatMissesItsDeadline) {
           << "frame " << f << " line " << y;
     }
   }
+  board::BoardTiming timing;
+  timing.doubling = 1;
+  expect_model_schedule(r, board::beam_schedule(s.frame, s.frame.config, timing), 2);
   if (const char* csv = std::getenv("WATKINS_BOARD_LINES")) write_lines_csv(csv, "miss", r, s.frame.height, true);
 }
 
