@@ -6,6 +6,7 @@
 #include <new>
 #include <stdexcept>
 
+#include "board.hpp"
 #include "export_stl.hpp"
 #include "render.hpp"
 #include "size.hpp"
@@ -23,6 +24,7 @@ struct Commands::Args {
   size::SizeArgs size;
   synth::SynthArgs synth;
   voxel_compare::VoxelCompareArgs voxel_compare;
+  board_command::BoardArgs board;
   CLI::App *render_app = nullptr, *export_stl_app = nullptr, *sweep_app = nullptr, *size_app = nullptr,
            *synth_app = nullptr, *voxel_compare_app = nullptr;
 };
@@ -36,6 +38,7 @@ Commands::Commands(CLI::App& app) : args_(std::make_unique<Args>()) {
   a.size_app = size::add_size_command(app, a.size);
   a.synth_app = synth::add_synth_command(app, a.synth);
   a.voxel_compare_app = voxel_compare::add_voxel_compare_command(app, a.voxel_compare);
+  board_command::add_board_command(app, a.board);
 }
 
 Commands::~Commands() = default;
@@ -47,6 +50,7 @@ void Commands::check() const {
   if (*a.size_app) size::check_size(a.size);
   if (*a.synth_app) synth::check_synth(a.synth);
   if (*a.voxel_compare_app) voxel_compare::check_voxel_compare(a.voxel_compare);
+  if (*a.board.board_app) board_command::check_board(a.board);
 }
 
 int Commands::run() const {
@@ -57,6 +61,7 @@ int Commands::run() const {
   if (*a.size_app) return size::run_size(a.size);
   if (*a.synth_app) return synth::run_synth(a.synth);
   if (*a.voxel_compare_app) return voxel_compare::run_voxel_compare(a.voxel_compare);
+  if (*a.board.board_app) return board_command::run_board(a.board);
   return 0;
 }
 
@@ -67,7 +72,7 @@ int main_entry(int argc, char** argv) {
   app.failure_message([](const CLI::App*, const CLI::Error& e) { return std::string("watkins: usage: ") + e.what() + "\n"; });
   // Exit codes (docs/guide/cli.md): 0 ok, 1 bad input (a scene, mesh, volume or configuration
   // file; an output that cannot be written), 2 usage (the command line, an output naming an
-  // input), 3 internal error or RTL mismatch.
+  // input), 3 internal error or RTL mismatch, 4 `board check`: a line misses its deadline.
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -237,6 +237,66 @@ std::string format(const ChannelFormat& f) {
   return std::to_string(f.int_bits) + "." + std::to_string(f.frac_bits);
 }
 
+// The search's result: the chosen widths, the edge records each order reached, its rounds.
+struct Descent {
+  std::vector<int> dims;  // the widths searched, in the first order
+  std::size_t orders = 0;
+  bool eq2 = false;       // the shade divider's mantissa searched too
+  Widths widths{};
+  std::string tried;
+  int rounds = 0;
+};
+
+Descent descend(Judge& judge, const BuiltScene& scene, int bound) {
+  const ShadingMode shading = scene.shading;
+  // Coordinate descent: each width lowered while the criterion holds, rounds until none moves.
+  // Where it ends depends on the order the widths are lowered in — depth resolution can sit in
+  // depth_bits (line buffer and edge record) or in depth.frac_bits (edge record only) — so the
+  // descent runs in a few orders and keeps the smallest edge record (then line buffer, then the
+  // sum of the widths). Every result is a local minimum: no width can drop one bit.
+  std::vector<std::vector<int>> orders{{DimX, DimAttr, DimDepthBits, DimDepth},
+                                       {DimX, DimAttr, DimDepth, DimDepthBits},
+                                       {DimDepthBits, DimDepth, DimAttr, DimX},
+                                       {DimDepth, DimDepthBits, DimAttr, DimX}};
+  // The shade divider's mantissa, last, when the frame divides (eq2): other frames never read it.
+  const bool eq2 = shading == ShadingMode::Gouraud && scene.interpolation == Interpolation::Eq2;
+  if (eq2)
+    for (std::vector<int>& order : orders) order.push_back(DimRecip);
+  Descent out;
+  out.dims = orders[0];
+  out.orders = orders.size();
+  out.eq2 = eq2;
+  if (!judge.evaluate(default_widths()).passes())  // the default passes by construction
+    throw std::runtime_error("the default configuration fails its own criterion: " +
+                             broke(judge.evaluate(default_widths()), bound));
+  auto cost = [&](const Point& p) {
+    const Widths& w = p.w;
+    return std::make_tuple(p.cfg.edge_record_bits(shading), line_buffer_bits(p.cfg), w[0] + w[1] + w[2] + w[3] + w[4]);
+  };
+  Widths& cur = out.widths;
+  for (std::size_t o = 0; o < orders.size(); ++o) {
+    Widths w = default_widths();
+    int r = 0;
+    for (bool moved = true; moved; ++r) {
+      moved = false;
+      for (int d : orders[o])
+        for (;;) {
+          Widths lower = w;
+          --lower[d];
+          if (!judge.evaluate(lower).passes()) break;
+          w = lower;
+          moved = true;
+        }
+    }
+    out.tried += (o ? ", " : "") + std::to_string(judge.evaluate(w).cfg.edge_record_bits(shading));
+    if (o == 0 || cost(judge.evaluate(w)) < cost(judge.evaluate(cur))) {
+      cur = w;
+      out.rounds = r;
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 CLI::App* add_size_command(CLI::App& app, SizeArgs& a) {
@@ -277,6 +337,11 @@ void check_size(const SizeArgs& a) {
   (void)build_options(a);
 }
 
+Config sized_config(const BuiltScene& scene, int bound) {
+  Judge judge(scene, bound);
+  return judge.evaluate(descend(judge, scene, bound).widths).cfg;
+}
+
 int run_size(const SizeArgs& a) {
   const int bound = parse_bound(a.bound);
   const BuildOptions opt = build_options(a);
@@ -291,50 +356,11 @@ int run_size(const SizeArgs& a) {
   const ShadingMode shading = scene.shading;
 
   Judge judge(scene, bound);
-  // Coordinate descent: each width lowered while the criterion holds, rounds until none moves.
-  // Where it ends depends on the order the widths are lowered in — depth resolution can sit in
-  // depth_bits (line buffer and edge record) or in depth.frac_bits (edge record only) — so the
-  // descent runs in a few orders and keeps the smallest edge record (then line buffer, then the
-  // sum of the widths). Every result is a local minimum: no width can drop one bit.
-  std::vector<std::vector<int>> orders{{DimX, DimAttr, DimDepthBits, DimDepth},
-                                       {DimX, DimAttr, DimDepth, DimDepthBits},
-                                       {DimDepthBits, DimDepth, DimAttr, DimX},
-                                       {DimDepth, DimDepthBits, DimAttr, DimX}};
-  // The shade divider's mantissa, last, when the frame divides (eq2): other frames never read it.
-  const bool eq2 = shading == ShadingMode::Gouraud && scene.interpolation == Interpolation::Eq2;
-  if (eq2)
-    for (std::vector<int>& order : orders) order.push_back(DimRecip);
-  const std::vector<int> dims = orders[0];
-  if (!judge.evaluate(default_widths()).passes())  // the default passes by construction
-    throw std::runtime_error("the default configuration fails its own criterion: " +
-                             broke(judge.evaluate(default_widths()), bound));
-  auto cost = [&](const Point& p) {
-    const Widths& w = p.w;
-    return std::make_tuple(p.cfg.edge_record_bits(shading), line_buffer_bits(p.cfg), w[0] + w[1] + w[2] + w[3] + w[4]);
-  };
-  Widths cur{};
-  std::string tried;
-  int rounds = 0;
-  for (std::size_t o = 0; o < orders.size(); ++o) {
-    Widths w = default_widths();
-    int r = 0;
-    for (bool moved = true; moved; ++r) {
-      moved = false;
-      for (int d : orders[o])
-        for (;;) {
-          Widths lower = w;
-          --lower[d];
-          if (!judge.evaluate(lower).passes()) break;
-          w = lower;
-          moved = true;
-        }
-    }
-    tried += (o ? ", " : "") + std::to_string(judge.evaluate(w).cfg.edge_record_bits(shading));
-    if (o == 0 || cost(judge.evaluate(w)) < cost(judge.evaluate(cur))) {
-      cur = w;
-      rounds = r;
-    }
-  }
+  const Descent found = descend(judge, scene, bound);
+  const std::vector<int>& dims = found.dims;
+  const Widths& cur = found.widths;
+  const std::string& tried = found.tried;
+  const int rounds = found.rounds;
   const Point chosen = judge.evaluate(cur);
   // One bit below the chosen point, per width: the error there and which limit broke.
   std::array<Point, NumDims> below;
@@ -356,7 +382,7 @@ int run_size(const SizeArgs& a) {
               bound, judge.default_over(), b.max_abs, judge.default_flips());
   std::printf("search        %d configurations rendered, coordinate descent in %zu orders of the widths (edge records "
               "%s bits), the smallest kept (%d rounds), %.2f s\n",
-              judge.evaluations(), orders.size(), tried.c_str(), rounds, seconds);
+              judge.evaluations(), found.orders, tried.c_str(), rounds, seconds);
   std::printf("chosen        group   int.frac  bits   (default int.frac bits)\n");
   auto group = [&](const char* name, const ChannelFormat& f, const ChannelFormat& d, const char* note) {
     std::printf("              %-7s %-9s %-6d (%s %d)%s\n", name, format(f).c_str(), f.bits(), format(d).c_str(), d.bits(),
@@ -368,7 +394,7 @@ int run_size(const SizeArgs& a) {
   group("shade", c.shade, def.shade, phong ? "  unused by a Phong frame: default kept" : "");
   group("normal", c.normal, def.normal, phong ? "" : "  unused by a Gouraud frame: default kept");
   std::printf("              depth_bits %d (default %d)\n", c.depth_bits, def.depth_bits);
-  if (eq2)
+  if (found.eq2)
     std::printf("eq2           the shade divider (Gouraud's eq. 2): eq2_recip_bits %d (default %d)\n", c.eq2_recip_bits,
                 def.eq2_recip_bits);
   std::printf("capacities    max_active_edges %d, max_width %d (the screen width; the line buffer takes any width), "

@@ -6,6 +6,9 @@
 
 #include <string>
 
+#include "config.hpp"
+#include "scene.hpp"
+
 namespace CLI {
 class App;
 }
@@ -28,5 +31,8 @@ void check_size(const SizeArgs& args);
 // Runs the search, prints the report and writes the configuration; returns the exit code.
 // Bad input throws (one line, no file written).
 int run_size(const SizeArgs& args);
+// The configuration run_size chooses for a built scene at `bound` levels (its search, without the
+// report and the file): what `watkins board` sizes a scene with.
+Config sized_config(const BuiltScene& scene, int bound = 1);
 
 }  // namespace watkins::size

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""docs/guide/cli.md against the built `watkins`: the reference lists every subcommand, every option
-and every positional argument that `watkins --help` and `watkins SUBCOMMAND --help` print, and
+"""docs/guide/cli.md against the built `watkins`: the reference lists every subcommand (and every
+subcommand of a subcommand, as `watkins board check`, in its own section), every option and every
+positional argument that `watkins --help` and `watkins SUBCOMMAND [SUBCOMMAND] --help` print, and
 nothing they do not; where --help prints a default, the reference's default column gives the same
 value; the sweep's CSV column table names exactly the columns a sweep writes.
 
@@ -62,8 +63,8 @@ def parse_options(entries):
 
 
 def doc_sections(text):
-    """{subcommand: section text} for every '## `watkins SUB`' heading."""
-    parts = re.split(r"^## `watkins ([\w-]+)`\s*$", text, flags=re.M)
+    """{subcommand: section text} for every '## `watkins SUB`' or '## `watkins SUB NESTED`' heading."""
+    parts = re.split(r"^## `watkins ([\w-]+(?: [\w-]+)?)`\s*$", text, flags=re.M)
     return {parts[i]: parts[i + 1] for i in range(1, len(parts), 2)}
 
 
@@ -96,9 +97,14 @@ def main():
         doc = doc_sections(f.read())
     errors = []
 
-    subcommands = [e.split(" ")[0] for e in help_sections(run_help(watkins)).get("Subcommands", [])]
-    if not subcommands:
+    top = [e.split(" ")[0] for e in help_sections(run_help(watkins)).get("Subcommands", [])]
+    if not top:
         sys.exit("watkins --help lists no subcommands")
+    subcommands = []
+    for sub in top:
+        subcommands.append(sub)
+        nested = help_sections(run_help(watkins, sub)).get("Subcommands", [])
+        subcommands += [f"{sub} {e.split(' ')[0]}" for e in nested]
     for sub in subcommands:
         if sub not in doc:
             errors.append(f"{sub}: `watkins --help` lists it; {DOC} has no section '## `watkins {sub}`'")
@@ -109,7 +115,7 @@ def main():
     for sub in subcommands:
         if sub not in doc:
             continue
-        sections = help_sections(run_help(watkins, sub))
+        sections = help_sections(run_help(watkins, *sub.split(" ")))
         options = parse_options(sections.get("Options", []))
         positionals = {e.split(" ")[0].upper() for e in sections.get("Positionals", [])}
         documented, doc_positionals = {}, set()

@@ -1,0 +1,68 @@
+// `watkins board check` as users run it: the default scene's report and exit 0, a native scene
+// too heavy for the beam named line by line with exit 4, and sizes and options refused.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "cli_run.hpp"
+
+using namespace watkins::test;
+
+namespace {
+
+// `layers` quads over the whole 640 x 480 screen, stacked: layers x 640 fragments a line.
+std::string stacked_scene(int layers) {
+  std::string polys;
+  for (int i = 0; i < layers; ++i) {
+    const std::string z = std::to_string(0.2 + 0.1 * i), c = std::to_string(40 * i);
+    polys += std::string(i ? "," : "") + "{\"vertices\": [" + "{\"x\": 0, \"y\": 0, \"depth\": " + z + ", \"rgb\": [" + c +
+             ", 90, 30]}, {\"x\": 640, \"y\": 0, \"depth\": " + z + ", \"rgb\": [" + c +
+             ", 90, 30]}, {\"x\": 640, \"y\": 480, \"depth\": " + z + ", \"rgb\": [" + c +
+             ", 90, 30]}, {\"x\": 0, \"y\": 480, \"depth\": " + z + ", \"rgb\": [" + c + ", 90, 30]}]}";
+  }
+  return "{\"screen\": {\"width\": 640, \"height\": 480, \"background\": [0, 0, 0]}, \"objects\": [{\"type\": "
+         "\"polygons\", \"polygons\": [" + polys + "]}]}";
+}
+
+TEST(CliBoard, DefaultSceneMakesEveryLine) {
+  const CliRun r = run_cli("board check " WATKINS_SOURCE_DIR "/scenes/default.json --board ulx3s");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("clk_pipe 78.75 MHz (25/8 of clk_pixel)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("doubling 2, 2 line slots"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("budget        5000 pipeline clocks per rendered line"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("worst line    frame "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("missed        0 lines"), std::string::npos) << r.output;
+}
+
+TEST(CliBoard, HeavyNativeSceneMissesWithExitFour) {
+  ScratchDir dir;
+  const std::string heavy = dir.write("stacked.json", stacked_scene(5));
+  const CliRun r = run_cli("board check " + heavy);
+  EXPECT_EQ(r.exit_code, 4) << r.output;
+  EXPECT_NE(r.output.find("doubling 1"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("budget        2500 pipeline clocks"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("missed        "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(" lines: frame 0 line "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("slack -"), std::string::npos) << r.output;
+}
+
+TEST(CliBoard, RefusesOtherSizesAndOptions) {
+  ScratchDir dir;
+  const std::string scene = WATKINS_SOURCE_DIR "/scenes/default.json";
+  CliRun r = run_cli("board check " + scene + " --doubling 1");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("screen.width 320"), std::string::npos) << r.output;
+  const std::string odd = dir.write("odd.json", "{\"screen\": {\"width\": 320, \"height\": 200}, \"objects\": []}");
+  r = run_cli("board check " + odd);
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("screen.height 200"), std::string::npos) << r.output;
+  for (const char* bad : {"--slots 3", "--slots 0", "--doubling 3", "--board icebreaker"}) {
+    r = run_cli("board check " + scene + " " + bad);
+    EXPECT_EQ(r.exit_code, 2) << bad << ": " << r.output;
+    EXPECT_NE(r.output.find(std::string(bad).substr(0, std::string(bad).find(' '))), std::string::npos) << r.output;
+  }
+  r = run_cli("board");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+}
+
+}  // namespace
