@@ -56,3 +56,47 @@ TEST(FramePacket, BankWordsLittleEndianAfterTheHeader) {
 }
 
 }  // namespace
+
+// The turntable of the host link's animations (model/board/turntable.hpp).
+#include "camera.hpp"
+#include "scene.hpp"
+#include "turntable.hpp"
+
+namespace {
+
+TEST(Turntable, EulerDegreesRoundTrip) {
+  for (const glm::dvec3 d : {glm::dvec3(-15, 0, 0), glm::dvec3(10, 20, 30), glm::dvec3(-170, 80, 45),
+                             glm::dvec3(30, 90, 0), glm::dvec3(0, -90, 20)}) {
+    const glm::dmat3 m = rotation(d), back = rotation(board::euler_degrees(m));
+    for (int c = 0; c < 3; ++c)
+      for (int r = 0; r < 3; ++r) EXPECT_NEAR(back[c][r], m[c][r], 1e-12) << d.x << " " << d.y << " " << d.z;
+  }
+}
+
+TEST(Turntable, DefaultSceneTurnsAboutItsCentre) {
+  const Scene s = parse_scene_file("");
+  const glm::dvec3 c = board::turntable_centre(s);
+  // The sphere's centre (-0.55, -0.25, 3.8) and the cone's base (0.75, -1.55, 4.4), which the
+  // cone's rotation (-15 degrees about X) moves with the rest of it.
+  const glm::dvec3 cone = rotation(glm::dvec3(-15, 0, 0)) * glm::dvec3(0.75, -1.55, 4.4);
+  EXPECT_NEAR(c.x, 0.1, 1e-12);
+  EXPECT_NEAR(c.z, (3.8 + cone.z) / 2, 1e-12);
+  const Scene q = board::turntable(s, 90);
+  // A quarter turn about +y takes (dx, dz) to (dz, -dx) about the centre.
+  const SceneObject& sphere = q.objects[0];
+  const glm::dvec3 p = sphere.transform.translate + rotation(sphere.transform.rotate_deg) * sphere.center;
+  EXPECT_NEAR(p.x, c.x + (3.8 - c.z), 1e-9);
+  EXPECT_NEAR(p.z, c.z - (-0.55 - c.x), 1e-9);
+  EXPECT_NEAR(p.y, -0.25, 1e-9);
+  // A whole turn is the scene again.
+  const Scene w = board::turntable(s, 360);
+  for (std::size_t i = 0; i < s.objects.size(); ++i) {
+    const glm::dmat3 a = rotation(s.objects[i].transform.rotate_deg), b = rotation(w.objects[i].transform.rotate_deg);
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_NEAR(w.objects[i].transform.translate[k], s.objects[i].transform.translate[k], 1e-9);
+      for (int r = 0; r < 3; ++r) EXPECT_NEAR(b[k][r], a[k][r], 1e-12);
+    }
+  }
+}
+
+}  // namespace

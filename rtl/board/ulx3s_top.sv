@@ -1,6 +1,7 @@
 // ulx3s_top: the ULX3S board top (docs/reference/board.md): watkins_top, unchanged, replays the
-// scene in bank 0 once per video frame and races the beam into a LineSlots-line buffer that the
-// 640 x 480 at 60 Hz DVI output reads, with no frame buffer.
+// active scene bank once per video frame and races the beam into a LineSlots-line buffer that the
+// 640 x 480 at 60 Hz DVI output reads, with no frame buffer. Bank 0 starts with the scene; the
+// host link (ftdi_txd, 8N1 at Baud) writes frames into the other bank and swaps them.
 // Clocks (ulx3s_pll): clk_pipe 78.75 MHz (frame player, scene bank, watkins_top, line-buffer
 // write), clk_pixel 25.2 MHz (video timing, line-buffer read, TMDS encoders), clk_tmds 126 MHz
 // (serializers, reset from the pixel domain). clk_pipe and clk_pixel each have a reset, released
@@ -12,7 +13,7 @@
 // Parameters: every watkins_top parameter, passed through (so `watkins_gen_pkg --params F
 // --shading S` -G lists apply here too); Doubling D (1: the frame is 640 x 480; 2: 320 x 240,
 // each pixel and line shown twice); LineSlots; BankWords (per bank); BankFile (bank 0's
-// $readmemh file, `watkins board image`).
+// $readmemh file, `watkins board image`); Baud (the host link's serial rate).
 
 module ulx3s_top #(
   parameter int unsigned MaxActiveEdges = watkins_pkg::MaxActiveEdges,
@@ -35,10 +36,11 @@ module ulx3s_top #(
   parameter int unsigned Doubling       = 2,    // 1 or 2
   parameter int unsigned LineSlots      = 2,    // line-buffer lines, a power of two
   parameter int unsigned BankWords      = 512,  // words per scene bank, a power of two
-  parameter              BankFile       = ""    // bank 0's $readmemh file
+  parameter              BankFile       = "",   // bank 0's $readmemh file
+  parameter int unsigned Baud           = 3_000_000  // the host link's serial rate (8N1)
 ) (
   input  logic       clk_25mhz,
-  /* verilator lint_off UNUSEDSIGNAL */  // btn[6:1] and the UART's receive line are spare
+  /* verilator lint_off UNUSEDSIGNAL */  // btn[6:1] are spare
   input  logic [6:0] btn,
   output logic [7:0] led,
   output logic [3:0] gpdi_dp,     // 0 blue, 1 green, 2 red, 3 clock (the _dn pins follow)
@@ -208,9 +210,29 @@ module ulx3s_top #(
   logic                     line_done /*verilator public_flat_rd*/;  // this clock takes a line's last pixel
   logic                     frame_begin /*verilator public_flat_rd*/;
 
-  // The host link writes bank 1 and swaps the banks; without it bank 0 is shown.
-  logic bank_active;
-  assign bank_active = 1'b0;
+  // The host link (docs/reference/board.md, "Host link"): frames from the FT231X into the bank
+  // the frame player is not reading, the banks swapped when the player begins a frame.
+  logic                    bank_active /*verilator public_flat_rd*/;
+  logic                    bank_we, bank_wr_bank;
+  logic [BankAddrBits-1:0] bank_wr_addr;
+  logic [EdgeBits-1:0]     bank_wr_data;
+  logic [15:0]             link_frames /*verilator public_flat_rd*/;  // good packets
+  logic [15:0]             link_errors /*verilator public_flat_rd*/;  // dropped packets
+
+  // crossing: the asynchronous serial line, two flip-flops inside host_link's uart_rx.
+  host_link #(.ClockHz(78_750_000), .Baud(Baud), .BankWords(BankWords), .WordBits(EdgeBits)) u_host_link (
+    .clk_i        (clk_pipe),
+    .rst_ni       (rst_pipe_n),
+    .rx_i         (ftdi_txd),
+    .begin_i      (frame_begin),
+    .bank_active_o(bank_active),
+    .wr_en_o      (bank_we),
+    .wr_bank_o    (bank_wr_bank),
+    .wr_addr_o    (bank_wr_addr),
+    .wr_data_o    (bank_wr_data),
+    .frame_count_o(link_frames),
+    .error_count_o(link_errors)
+  );
 
   scene_bank #(.Words(BankWords), .Bits(EdgeBits), .File(BankFile)) u_scene_bank (
     .clk_i    (clk_pipe),
@@ -218,10 +240,10 @@ module ulx3s_top #(
     .rd_bank_i(bank_active),
     .rd_addr_i(rd_addr),
     .rd_data_o(rd_data),
-    .wr_en_i  (1'b0),
-    .wr_bank_i(1'b1),
-    .wr_addr_i('0),
-    .wr_data_i('0)
+    .wr_en_i  (bank_we),
+    .wr_bank_i(bank_wr_bank),
+    .wr_addr_i(bank_wr_addr),
+    .wr_data_i(bank_wr_data)
   );
 
   frame_player #(.BankWords(BankWords), .EdgeBits(EdgeBits), .MaterialIdBits(MaterialIdBits)) u_frame_player (
@@ -374,10 +396,10 @@ module ulx3s_top #(
     .pad_o(gpdi_dp[3]));
 
   // ------------------------------------------------------------ board I/O
-  // led[0] frame shown, led[1] a line missed (sticky), led[2] link error (the host link's),
-  // led[3] PLL locked, led[7:4] the missed-line count's low bits.
-  assign led        = {missed_count_q[3:0], locked, 1'b0, missed_q, request_toggle_q};
-  assign ftdi_rxd   = 1'b1;
+  // led[0] frame shown, led[1] a line missed (sticky), led[2] link error (sticky: the host link
+  // dropped a packet), led[3] PLL locked, led[7:4] the missed-line count's low bits.
+  assign led        = {missed_count_q[3:0], locked, link_errors != 16'd0, missed_q, request_toggle_q};
+  assign ftdi_rxd   = 1'b1;  // the FPGA's transmit line: idle
   assign wifi_gpio0 = 1'b1;
 
   if (Doubling != 1 && Doubling != 2) begin : g_check_doubling

@@ -87,6 +87,7 @@ BoardRun run_top(std::unique_ptr<VerilatedContext>& context, const BoardOptions&
   dut->eval();
 
   long long pixel_clock = 0, pipe_clock = 0;
+  long long cycle_ticks = 0;  // the tick at which this period of the clocks starts
   const long long frames = opt.video_frames;
   long long frame_pixels_left = -1;  // pixel clocks still to capture once the first is seen
   long long start_clock = -1;
@@ -106,11 +107,14 @@ BoardRun run_top(std::unique_ptr<VerilatedContext>& context, const BoardOptions&
       }
       if (e.pixel_rise && root.ulx3s_top__DOT__line_missed)
         r.missed.push_back({root.ulx3s_top__DOT__s_q, pixel_clock});
+      if (opt.ftdi_txd) dut->ftdi_txd = opt.ftdi_txd((static_cast<double>(cycle_ticks) + e.tick) / 1.26e9);
+      const bool begin = e.pipe_rise && root.ulx3s_top__DOT__frame_begin;
       clk_tmds = e.tmds;
       clk_pixel = e.pixel;
       clk_pipe = e.pipe;
       dut->eval();
       ++r.evals;
+      if (begin) r.begin_banks.push_back(root.ulx3s_top__DOT__bank_active);  // as the edge swapped it
       if (e.pipe_rise) ++pipe_clock;
       if (!e.pixel_rise) continue;
       // The encoders' inputs of this pixel clock.
@@ -147,9 +151,12 @@ BoardRun run_top(std::unique_ptr<VerilatedContext>& context, const BoardOptions&
       if (frame_pixels_left == 0) break;
     }
     if (frame_pixels_left == 0) break;
+    cycle_ticks += PeriodTicks;
     if (context->gotFinish()) throw std::runtime_error("board bench: the RTL called $finish");
   }
   r.missed_count = root.ulx3s_top__DOT__missed_count_q;
+  r.link_frames = root.ulx3s_top__DOT__link_frames;
+  r.link_errors = root.ulx3s_top__DOT__link_errors;
   r.overflow = root.ulx3s_top__DOT__overflow;
   r.pixel_clocks = pixel_clock;
   r.pipe_clocks = pipe_clock;

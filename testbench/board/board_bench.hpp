@@ -15,6 +15,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -33,6 +34,9 @@ struct BoardOptions {
   std::string bank_file;     // +watkins_bank=FILE (empty: the BankFile the top was built with)
   int video_frames = 3;      // video frames from the first visible pixel after reset
   bool tmds_clock = true;    // toggle clk_tmds (false: hold it low; the serializers idle)
+  // The FT231X's transmit line (ftdi_txd) at a time in seconds from tick 0, set before every
+  // eval() (e.g. UartLine::level, uart_line.hpp); empty: held high (idle).
+  std::function<bool(double)> ftdi_txd;
 };
 
 // A pixel clock's signals at the encoders' inputs.
@@ -62,6 +66,8 @@ struct BoardRun {
   std::vector<LineDone> lines;
   std::vector<MissedLine> missed;
   int missed_count = 0;  // the RTL's counter at the end
+  int link_frames = 0, link_errors = 0;  // the host link's good and dropped packets at the end
+  std::vector<int> begin_banks;          // the bank each begun frame reads (after the begin's edge)
   bool overflow = false;
   long long pixel_clocks = 0, pipe_clocks = 0, evals = 0;
   double wall_seconds = 0;
