@@ -4,11 +4,19 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <numeric>
+#include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "beam_schedule.hpp"
+#include "board_build.hpp"
+#include "board_image.hpp"
+#include "fpga_flow.hpp"
 #include "config_file.hpp"
 #include "options.hpp"
 #include "prepare.hpp"
@@ -28,31 +36,53 @@ std::string line_name(const board::LineSlack& l) {
   return "frame " + std::to_string(l.frame) + " line " + std::to_string(l.y);
 }
 
-int run_check(const CheckArgs& a) {
-  const auto t0 = std::chrono::steady_clock::now();
-  RunFiles files;  // no output: the inputs are named for the messages
+// A scene on the board: parsed, its size checked against the video mode, its configuration
+// (sized, or the --config file) and its prepared frame. The inputs are declared in `files`.
+struct BoardScene {
+  BuiltScene scene;
+  std::string name;  // for messages
+  std::string stem;  // for default output names
+  int doubling = 2;
+  Config cfg;
+  PreparedScene prepared;
+};
+
+BoardScene load_board_scene(const CheckArgs& a, RunFiles& files) {
   const Scene parsed = parse_scene_file(a.scene);
   if (!a.scene.empty()) files.input("the scene file", a.scene);
   files.scene_inputs(parsed);
   files.input("the --config file", a.config);
-  const BuiltScene scene = build_scene(parsed);
-  const std::string name = a.scene.empty() ? std::string("the default scene") : a.scene;
+  BoardScene b;
+  b.scene = build_scene(parsed);
+  const BuiltScene& scene = b.scene;
+  b.name = a.scene.empty() ? std::string("the default scene") : a.scene;
+  b.stem = a.scene.empty() ? std::string("default") : std::filesystem::path(a.scene).stem().string();
   // The board shows 640 x 480: the frame is that, or half of it doubled.
   int doubling = a.doubling;
   if (doubling == 0) doubling = scene.width == board::HVisible / 2 ? 2 : 1;
   const int want_w = board::HVisible / doubling, want_h = board::VVisible / doubling;
   const std::string shows = "the board shows 640x480 (--doubling 1) or 320x240 (--doubling 2)";
   if (scene.width != want_w)
-    throw std::runtime_error(name + ": screen.width " + std::to_string(scene.width) + ": " + shows +
+    throw std::runtime_error(b.name + ": screen.width " + std::to_string(scene.width) + ": " + shows +
                              (a.doubling ? "; --doubling " + std::to_string(doubling) + " needs " + std::to_string(want_w)
                                          : std::string()));
   if (scene.height != want_h)
-    throw std::runtime_error(name + ": screen.height " + std::to_string(scene.height) + ": " + shows +
+    throw std::runtime_error(b.name + ": screen.height " + std::to_string(scene.height) + ": " + shows +
                              (a.doubling ? "; --doubling " + std::to_string(doubling) + " needs " + std::to_string(want_h)
                                          : std::string()));
-  const Config cfg = a.config.empty() ? size::sized_config(scene) : load_config(a.config);
-  const PreparedScene prepared = prepare(scene, cfg);
+  b.doubling = doubling;
+  b.cfg = a.config.empty() ? size::sized_config(scene) : load_config(a.config);
+  b.prepared = prepare(scene, b.cfg);
+  return b;
+}
 
+// Runs the beam schedule of `b` and prints it; the number of missed lines.
+long long report_schedule(const CheckArgs& a, const BoardScene& b) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const BuiltScene& scene = b.scene;
+  const Config& cfg = b.cfg;
+  const PreparedScene& prepared = b.prepared;
+  const int doubling = b.doubling;
   board::BoardTiming t;
   t.doubling = doubling;
   t.line_slots = a.slots;
@@ -94,7 +124,107 @@ int run_check(const CheckArgs& a) {
     first += (named++ ? ", " : "") + line_name(l) + " (" + std::to_string(l.slack) + ")";
   }
   std::printf("missed        %lld lines: %s\n", s.missed, first.c_str());
-  return MissedExit;
+  return s.missed;
+}
+
+int run_check(const CheckArgs& a) {
+  RunFiles files;  // no output: the inputs are named for the messages
+  const BoardScene b = load_board_scene(a, files);
+  return report_schedule(a, b) == 0 ? 0 : MissedExit;
+}
+
+// The smallest power of two, at least 512 (one block RAM deep), that holds `words`.
+int bank_words_for(int words) {
+  int n = 512;
+  while (n < words) n *= 2;
+  return n;
+}
+
+int run_image(const ImageArgs& a) {
+  RunFiles files;
+  const BoardScene b = load_board_scene(a.target, files);
+  const std::string out = a.out.empty() ? b.stem + ".bank.hex" : a.out;
+  files.output(a.out.empty() ? "the default output (--out)" : "--out", out);
+  const board::BankImage bank = board::bank_image(b.prepared, b.cfg, a.bank_words);
+  std::ostringstream hex;
+  board::write_readmemh(hex, bank);
+  const std::string text = hex.str();
+  files.add(out, std::vector<unsigned char>(text.begin(), text.end()));
+  files.commit();
+  std::printf("%s: %zu words of %d bits (%d edge records, %d materials); BankWords %d\n", out.c_str(), bank.words.size(),
+              bank.word_bits, bank.edges, bank.materials,
+              a.bank_words ? a.bank_words : bank_words_for(static_cast<int>(bank.words.size())));
+  return 0;
+}
+
+int run_build(const BuildArgs& a) {
+  namespace fs = std::filesystem;
+  const auto t0 = std::chrono::steady_clock::now();
+  RunFiles files;
+  const BoardScene b = load_board_scene(a.target, files);
+  const std::string rtl = fs::absolute(a.rtl_dir.empty() ? std::string(WATKINS_SOURCE_DIR) + "/rtl" : a.rtl_dir).string();
+  if (!fs::is_directory(fs::path(rtl) / "board"))
+    throw std::runtime_error("--rtl-dir " + rtl + ": no board/ folder (the board top's sources)");
+  for (const auto& dir : {fs::path(rtl), fs::path(rtl) / "board"})
+    for (const auto& e : fs::directory_iterator(dir))
+      if (e.is_regular_file()) files.input("the RTL file " + e.path().string(), e.path().string());
+  const std::string out = a.out.empty() ? b.stem + "." + a.target.board + ".bit" : a.out;
+  files.output(a.out.empty() ? "the default output (--out)" : "--out", out);
+  if (!a.md.empty()) files.output("--md", a.md);
+  if (fs::exists(a.work) && fs::equivalent(a.work, rtl))
+    throw UsageError("--work " + a.work + " is the RTL folder; refusing to write into it");
+  for (const char* tool : {"yosys", "yowasp-ecppack"})
+    if (!flow::on_path(tool)) throw std::runtime_error(std::string(tool) + " not found on PATH (scripts/setup installs it)");
+  if (!flow::on_path(flow::nextpnr_binary(*flow::find_target("ecp5-85"))))
+    throw std::runtime_error(flow::nextpnr_binary(*flow::find_target("ecp5-85")) + " not found on PATH (scripts/setup installs it)");
+
+  // The deadline first: a scene that misses a line is refused before minutes of place and route.
+  if (const long long missed = report_schedule(a.target, b); missed > 0) {
+    std::fprintf(stderr, "watkins: error: %s misses %lld line deadline%s on the board (above); no bitstream built\n",
+                 b.name.c_str(), missed, missed > 1 ? "s" : "");
+    return MissedExit;
+  }
+
+  BitstreamJob job;
+  job.config = b.cfg;
+  job.shading = b.scene.shading;
+  job.doubling = b.doubling;
+  job.line_slots = a.target.slots;
+  job.work = fs::absolute(a.work).string();
+  job.rtl_dir = rtl;
+  job.seed = a.seed;
+  job.timeout_s = a.timeout;
+  fs::create_directories(job.work);
+  const board::BankImage bank = board::bank_image(b.prepared, b.cfg);
+  job.bank_words = bank_words_for(static_cast<int>(bank.words.size()));
+  job.bank_file = (fs::path(job.work) / "bank0.hex").string();
+  board::write_readmemh_file(job.bank_file, bank);
+  std::printf("bank          %zu words of %d bits in %d (%s)\n", bank.words.size(), bank.word_bits, job.bank_words,
+              job.bank_file.c_str());
+  std::fflush(stdout);
+
+  const BitstreamResult r = build_bitstream(job);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::ostringstream md;
+  md << "`watkins board build` of " << b.name << " for the " << a.target.board << ": " << r.result << " ("
+     << static_cast<long>(seconds) << " s).\n\n";
+  if (r.nextpnr.routed) md << bitstream_report(job, r);
+  std::printf("\n%s", md.str().c_str());
+  if (!r.ok) {
+    std::fprintf(stderr, "watkins: error: %s: %s (logs in %s)\n", b.name.c_str(), r.result.c_str(), job.work.c_str());
+    return 1;
+  }
+  std::ifstream bit(r.bit, std::ios::binary);
+  std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(bit)), std::istreambuf_iterator<char>());
+  if (bytes.empty()) throw std::runtime_error(r.bit + ": the bitstream is empty");
+  files.add(out, std::move(bytes));
+  if (!a.md.empty()) {
+    const std::string text = md.str();
+    files.add(a.md, std::vector<unsigned char>(text.begin(), text.end()));
+  }
+  files.commit();
+  std::printf("bitstream     %s\n", out.c_str());
+  return 0;
 }
 
 }  // namespace
@@ -103,30 +233,60 @@ CLI::App* add_board_command(CLI::App& app, BoardArgs& a) {
   auto* b = app.add_subcommand("board", "the pipeline on an FPGA board, racing the beam (docs/reference/board.md)");
   b->require_subcommand(1);
   a.board_app = b;
+  // The scene and board options every subcommand shares.
+  auto target_options = [](CLI::App* sub, CheckArgs& t) {
+    cli::add_file(sub, "scene", t.scene, "scene file (JSON), 640x480 or 320x240; default: the embedded default scene");
+    sub->add_option("--board", t.board, "the board")->check(CLI::IsMember({"ulx3s"}))->capture_default_str();
+    sub->add_option("--doubling", t.doubling, "1: 640x480 native; 2: 320x240 shown doubled (default: from the scene's size)")
+        ->check(cli::integer_in(1, 2));
+    sub->add_option("--slots", t.slots, "line-buffer slots, a power of two")
+        ->check(cli::integer_in(1, 1024))
+        ->capture_default_str();
+    cli::add_file(sub, "--config", t.config, "hardware configuration (JSON) instead of sizing the scene");
+  };
   CheckArgs& c = a.check;
   auto* check = b->add_subcommand("check", "each rendered line's completion against the moment the video shows it "
                                            "(exit 4 when a line misses)");
-  cli::add_file(check, "scene", c.scene, "scene file (JSON), 640x480 or 320x240; default: the embedded default scene");
-  check->add_option("--board", c.board, "the board")->check(CLI::IsMember({"ulx3s"}))->capture_default_str();
-  check->add_option("--doubling", c.doubling, "1: 640x480 native; 2: 320x240 shown doubled (default: from the scene's size)")
-      ->check(cli::integer_in(1, 2));
-  check->add_option("--slots", c.slots, "line-buffer slots, a power of two")
-      ->check(cli::integer_in(1, 1024))
-      ->capture_default_str();
-  cli::add_file(check, "--config", c.config, "hardware configuration (JSON) instead of sizing the scene");
+  target_options(check, c);
   a.check_app = check;
+
+  auto* image = b->add_subcommand("image", "the scene bank's $readmemh file (bank 0 of the board top)");
+  target_options(image, a.image.target);
+  cli::add_file(image, "--out,-o", a.image.out, "the file to write (default: <scene>.bank.hex)");
+  image->add_option("--bank-words", a.image.bank_words, "refuse a frame of more words than this (0: no limit)")
+      ->check(cli::integer_in(0, 1 << 20))
+      ->capture_default_str();
+  a.image_app = image;
+
+  auto* build = b->add_subcommand("build", "the bitstream: size, check the deadline, the bank image, yosys, nextpnr-ecp5, "
+                                           "ecppack; prints resources and every clock's Fmax (exit 4 when a line misses)");
+  target_options(build, a.build.target);
+  cli::add_file(build, "--out,-o", a.build.out, "the bitstream to write (default: <scene>.<board>.bit)");
+  cli::add_file(build, "--work", a.build.work, "folder for yosys's and nextpnr's scripts, netlist, logs and reports")
+      ->capture_default_str();
+  cli::add_file(build, "--md", a.build.md, "the report as markdown");
+  cli::add_file(build, "--rtl-dir", a.build.rtl_dir, "the RTL (default: the source tree's rtl/)");
+  build->add_option("--seed", a.build.seed, "nextpnr's placement seed (0: nextpnr's default)")
+      ->check(cli::integer_in(0, 1 << 30))
+      ->capture_default_str();
+  build->add_option("--timeout", a.build.timeout, "seconds per tool run")
+      ->check(cli::integer_in(1, 86400))
+      ->capture_default_str();
+  a.build_app = build;
   return b;
 }
 
 void check_board(const BoardArgs& a) {
-  if (a.check_app && *a.check_app) {
-    if ((a.check.slots & (a.check.slots - 1)) != 0)
-      throw UsageError("--slots: " + std::to_string(a.check.slots) + " is not a power of two");
-  }
+  for (const auto& [app, t] : {std::pair<CLI::App*, const CheckArgs*>{a.check_app, &a.check},
+                               {a.image_app, &a.image.target}, {a.build_app, &a.build.target}})
+    if (app && *app && (t->slots & (t->slots - 1)) != 0)
+      throw UsageError("--slots: " + std::to_string(t->slots) + " is not a power of two");
 }
 
 int run_board(const BoardArgs& a) {
   if (a.check_app && *a.check_app) return run_check(a.check);
+  if (a.image_app && *a.image_app) return run_image(a.image);
+  if (a.build_app && *a.build_app) return run_build(a.build);
   return 0;
 }
 

@@ -1,6 +1,8 @@
 // watkins board: the pipeline on an FPGA board racing the beam (docs/reference/board.md).
 // `board check` sizes a scene, prepares its frame and runs the board's beam schedule
 // (model/board/beam_schedule.hpp): the worst line's slack and the lines that miss their deadline.
+// `board image` writes the frame's scene bank; `board build` checks the deadline, then builds the
+// bitstream through the shared FPGA flow (board_build.hpp) and reports resources and clocks.
 #pragma once
 
 #include <string>
@@ -22,10 +24,32 @@ struct CheckArgs {
   std::string config;         // a configuration file instead of sizing the scene (`watkins size`, bound 1)
 };
 
+// `board image`: the scene bank's $readmemh file, as the board build initializes bank 0.
+struct ImageArgs {
+  CheckArgs target;           // the scene and the board it is prepared for
+  std::string out;            // the $readmemh file; default <scene stem>.bank.hex
+  int bank_words = 0;         // 0: the smallest power of two (at least 512) that holds the frame
+};
+
+// `board build`: size, check the deadline, the bank image, yosys, nextpnr, ecppack, report.
+struct BuildArgs {
+  CheckArgs target;
+  std::string work = "board-build";  // yosys's and nextpnr's folder (scripts, netlist, logs, reports)
+  std::string out;                   // the bitstream; default <scene stem>.<board>.bit
+  std::string md;                    // the report as markdown (none when empty)
+  std::string rtl_dir;               // default: the source tree's rtl/
+  int seed = 0;                      // nextpnr --seed; 0: none
+  int timeout = 3600;                // seconds per tool
+};
+
 struct BoardArgs {
   CheckArgs check;
+  ImageArgs image;
+  BuildArgs build;
   CLI::App* board_app = nullptr;
   CLI::App* check_app = nullptr;
+  CLI::App* image_app = nullptr;
+  CLI::App* build_app = nullptr;
 };
 
 // Registers `watkins board` and its subcommands on `app`; returns the `board` subcommand.

@@ -1,0 +1,140 @@
+// The board top through the shared FPGA flow to a bitstream (board_build.hpp).
+#include "board_build.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+#include <stdexcept>
+
+namespace watkins::board_command {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kTop = "ulx3s_top";
+constexpr const char* kTarget = "ecp5-85";
+
+// The sources yosys reads: the package first (every module uses it), the pipeline, the board.
+std::vector<std::string> board_sources(const fs::path& rtl) {
+  std::vector<std::string> files{(rtl / "watkins_pkg.sv").string()}, rest;
+  for (const fs::path& dir : {rtl, rtl / "board"})
+    for (const auto& e : fs::directory_iterator(dir))
+      if (e.path().extension() == ".sv" && e.path().filename() != "watkins_pkg.sv") rest.push_back(e.path().string());
+  std::sort(rest.begin(), rest.end());
+  files.insert(files.end(), rest.begin(), rest.end());
+  return files;
+}
+
+std::string mhz(double f) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.1f", f);
+  return b;
+}
+
+}  // namespace
+
+std::vector<std::pair<std::string, std::string>> board_top_parameters(const BitstreamJob& job) {
+  std::vector<std::pair<std::string, std::string>> p;
+  for (const RtlParameter& r : rtl_parameters(job.config, job.shading)) p.emplace_back(r.name, std::to_string(r.value));
+  p.emplace_back("Doubling", std::to_string(job.doubling));
+  p.emplace_back("LineSlots", std::to_string(job.line_slots));
+  p.emplace_back("BankWords", std::to_string(job.bank_words));
+  p.emplace_back("BankFile", "\"" + job.bank_file + "\"");
+  return p;
+}
+
+BitstreamResult build_bitstream(const BitstreamJob& job) {
+  const flow::Target* target = flow::find_target(kTarget);
+  const fs::path work = job.work, rtl = job.rtl_dir;
+  fs::create_directories(work);
+  BitstreamResult r;
+
+  // yosys: the ECP5 primitives (EHXPLLL, ODDRX1F, MULT18X18D) as black boxes, every source with
+  // WATKINS_ECP5 (the multipliers with their own product register), the top's parameters set
+  // before the hierarchy is elaborated.
+  flow::SynthesisJob y;
+  y.target = target;
+  y.dir = work;
+  y.reads.push_back(flow::read_primitives(*target));
+  std::string read = "read_verilog -sv -DWATKINS_ECP5 -I" + rtl.string();
+  for (const std::string& f : board_sources(rtl)) read += " " + f;
+  y.reads.push_back(read);
+  std::string chparam = "chparam";
+  for (const auto& [name, value] : board_top_parameters(job)) chparam += " -set " + name + " " + value;
+  y.reads.push_back(chparam + " " + kTop);
+  y.top = kTop;
+  y.timeout_s = job.timeout_s;
+  r.yosys = flow::synthesize(y);
+  if (!r.yosys.ok) {
+    r.result = r.yosys.result;
+    return r;
+  }
+
+  // nextpnr: the board's pins and the oscillator's frequency from the constraint file; every PLL
+  // output gets the constraint nextpnr derives from it. The textual configuration for ecppack.
+  flow::PlaceJob p;
+  p.target = target;
+  p.placer = target->placer;
+  p.netlist = r.yosys.netlist;
+  p.dir = work;
+  p.seed = job.seed;
+  p.freq_mhz = 0;
+  const fs::path lpf = rtl / "board" / "ulx3s_top.lpf";
+  p.extra = {"--lpf", fs::relative(lpf, work).string(), "--textcfg", "ulx3s.config"};
+  p.timeout_s = job.timeout_s;
+  p.netlist_top = kTop;
+  fs::remove(work / "ulx3s.config");
+  r.nextpnr = flow::place_and_route(p);
+  if (!r.nextpnr.routed) {
+    r.result = r.nextpnr.result;
+    return r;
+  }
+  if (!fs::exists(work / "ulx3s.config")) {
+    r.result = "failed (nextpnr): no textual configuration written";
+    return r;
+  }
+
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::string packed = flow::pack_ecp5(work / "ulx3s.config", work / "ulx3s.bit", work, job.timeout_s);
+  r.ecppack_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (!packed.empty()) {
+    r.result = packed;
+    return r;
+  }
+  r.bit = (work / "ulx3s.bit").string();
+  bool met = true;
+  for (const flow::ClockFmax& c : r.nextpnr.clocks) met &= c.achieved >= c.constraint;
+  r.ok = met;
+  r.result = met ? "bitstream, every clock's constraint met" : "bitstream, a clock misses its constraint";
+  return r;
+}
+
+std::string bitstream_report(const BitstreamJob& job, const BitstreamResult& r) {
+  std::ostringstream md;
+  md << "| resource | used | available | % |\n|---|---|---|---|\n";
+  for (const auto& [type, ua] : r.nextpnr.utilisation) {
+    if (ua.first == 0) continue;
+    char pct[16];
+    std::snprintf(pct, sizeof pct, "%.0f", 100.0 * ua.first / std::max(1L, ua.second));
+    md << "| " << type << " | " << ua.first << " | " << ua.second << " | " << pct << " |\n";
+  }
+  md << "\n| clock | constraint MHz | routed Fmax MHz | margin | met |\n|---|---|---|---|---|\n";
+  for (const flow::ClockFmax& c : r.nextpnr.clocks) {
+    char margin[32];
+    std::snprintf(margin, sizeof margin, "%+.0f %%", c.constraint > 0 ? 100.0 * (c.achieved / c.constraint - 1) : 0.0);
+    md << "| `" << c.clock << "` | " << mhz(c.constraint) << " | " << mhz(c.achieved) << " | " << margin << " | "
+       << (c.achieved >= c.constraint ? "yes" : "**no**") << " |\n";
+  }
+  char times[160];
+  std::snprintf(times, sizeof times, "\nyosys %.0f s, nextpnr %.0f s, ecppack %.0f s (seed %s); doubling %d, %d line slots, "
+                                     "%d bank words.\n",
+                r.yosys.seconds, r.nextpnr.seconds, r.ecppack_s, job.seed > 0 ? std::to_string(job.seed).c_str() : "default",
+                job.doubling, job.line_slots, job.bank_words);
+  md << times;
+  return md.str();
+}
+
+}  // namespace watkins::board_command
