@@ -273,6 +273,7 @@ CLI::App* add_board_command(CLI::App& app, BoardArgs& a) {
       ->check(cli::integer_in(1, 86400))
       ->capture_default_str();
   a.build_app = build;
+  a.stream_app = add_stream_command(b, a.stream);
   return b;
 }
 
@@ -287,6 +288,7 @@ int run_board(const BoardArgs& a) {
   if (a.check_app && *a.check_app) return run_check(a.check);
   if (a.image_app && *a.image_app) return run_image(a.image);
   if (a.build_app && *a.build_app) return run_build(a.build);
+  if (a.stream_app && *a.stream_app) return run_stream(a.stream);
   return 0;
 }
 

@@ -2,10 +2,13 @@
 // `board check` sizes a scene, prepares its frame and runs the board's beam schedule
 // (model/board/beam_schedule.hpp): the worst line's slack and the lines that miss their deadline.
 // `board image` writes the frame's scene bank; `board build` checks the deadline, then builds the
-// bitstream through the shared FPGA flow (board_build.hpp) and reports resources and clocks.
+// bitstream through the shared FPGA flow (board_build.hpp) and reports resources and clocks;
+// `board stream` sends frames to the board's host link (board_stream.hpp).
 #pragma once
 
 #include <string>
+
+#include "board_stream.hpp"
 
 namespace CLI {
 class App;
@@ -46,10 +49,12 @@ struct BoardArgs {
   CheckArgs check;
   ImageArgs image;
   BuildArgs build;
+  StreamArgs stream;  // `board stream` (board_stream.hpp)
   CLI::App* board_app = nullptr;
   CLI::App* check_app = nullptr;
   CLI::App* image_app = nullptr;
   CLI::App* build_app = nullptr;
+  CLI::App* stream_app = nullptr;
 };
 
 // Registers `watkins board` and its subcommands on `app`; returns the `board` subcommand.

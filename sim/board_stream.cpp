@@ -207,7 +207,7 @@ int run_stream(const StreamArgs& a) {
   const double link_fps = 1.0 / board::packet_seconds(largest, Baud);
   std::printf("frames        %zu at %dx%d (doubling %d), edge record %d bits, bank %d words\n", frames.size(), first.width,
               first.height, doubling, cfg.edge_record_bits(first.shading), bank_words);
-  std::printf("packets       %zu bytes in all, the largest %zu (%.1f ms at %d baud: at most %.1f frames/s)\n", total,
+  std::printf("packets       %zu bytes in all, the largest %zu (%.1f ms at %d baud: the link carries %.1f frames/s)\n", total,
               largest, 1e3 * board::packet_seconds(largest, Baud), Baud, link_fps);
 
   if (!tty) {
