@@ -112,7 +112,9 @@ TEST(BeamSchedule, CoincidentEdgesSampleTheOldValue) {
 
   // The first release: h = 639 on video line 1 (D = 2) of video frame 1, pixel edge 421,439,
   // tick 21,071,950 = pipeline edge 1,316,996.875: sampled at 1,316,997, read from 1,316,999.
+  // (The video's first state at pixel edge 0 here; the board top's is at edge 2, below.)
   BoardTiming t;
+  t.video_start = 0;
   const long long m = 420000 + 800 + 639;
   EXPECT_EQ(releases_seen(t, 1316998), 0);
   EXPECT_EQ(releases_seen(t, 1316999), 1);
@@ -140,6 +142,13 @@ TEST(BeamSchedule, CoincidentEdgesSampleTheOldValue) {
   // 1,312,490.
   EXPECT_EQ(b.lines[0].check, 419999);
   EXPECT_EQ(b.lines[0].deadline, 1312490);
+  // The board top's video starts at pixel edge 2 (its reset synchronizer): every video event two
+  // pixel clocks later, the request (tick 19,192,050) pulsing at pipeline edge 1,199,506.
+  BoardTiming board;
+  const BeamSchedule late = beam_schedule(light_scene(), Config{}, board);
+  EXPECT_EQ(late.frames[0].request, 383841);
+  EXPECT_EQ(late.frames[0].start_pulse, 1199506);
+  EXPECT_EQ(late.lines[0].check, 420001);
 }
 
 TEST(BeamSchedule, RefusesAFrameOfAnotherSize) {

@@ -16,16 +16,17 @@ long long floor_div(long long a, long long b) { return a / b - ((a % b != 0) && 
 // the video line before its first.
 class Video {
  public:
-  explicit Video(int doubling) : d_(doubling), lines_(VVisible / doubling) {}
+  Video(int doubling, int start) : d_(doubling), lines_(VVisible / doubling), start_(start) {}
 
-  long long request(int f) const { return f * FramePixelClocks + (VVisible - 1) * HTotal + (HVisible - 1); }
+  long long request(int f) const { return start_ + f * FramePixelClocks + (VVisible - 1) * HTotal + (HVisible - 1); }
   long long check(int frame, int y) const {
-    return y == 0 ? frame * FramePixelClocks + (VTotal - 1) * HTotal + (HTotal - 1)
-                  : (frame + 1) * FramePixelClocks + static_cast<long long>(d_ * y - 1) * HTotal + (HTotal - 1);
+    return start_ + (y == 0 ? frame * FramePixelClocks + (VTotal - 1) * HTotal + (HTotal - 1)
+                            : (frame + 1) * FramePixelClocks + static_cast<long long>(d_ * y - 1) * HTotal + (HTotal - 1));
   }
-  // Releases at pixel edges 0 .. m. The request arms the counts: video frame 0 releases nothing
+  // Releases at pixel edges up to m. The request arms the counts: video frame 0 releases nothing
   // (its request is at its last release's edge, which sees the count not yet armed).
   long long releases_by(long long m) const {
+    m -= start_;
     if (m < 0) return 0;
     const long long f = m / FramePixelClocks, pos = m % FramePixelClocks;
     if (f == 0) return 0;
@@ -35,7 +36,7 @@ class Video {
   }
 
  private:
-  int d_, lines_;
+  int d_, lines_, start_;
 };
 
 // pixel_ready_i on the board: the slot of the line being written is free, (w - r_sync) < S,
@@ -71,7 +72,7 @@ long long visible_from(long long tick, long long period, int stages) { return fi
 long long releases_seen(const BoardTiming& t, long long edge) {
   // Releases at pixel edges m with t_pixel m < t_pipe (edge - stages): visible_from <= edge.
   const long long limit = static_cast<long long>(t.ticks_per_pipe) * (edge - t.sync_stages);
-  return limit <= 0 ? 0 : Video(t.doubling).releases_by(floor_div(limit - 1, t.ticks_per_pixel));
+  return limit <= 0 ? 0 : Video(t.doubling, t.video_start).releases_by(floor_div(limit - 1, t.ticks_per_pixel));
 }
 
 int start_to_first_beat(const Config& cfg) { return 11 + (1 << id_bits(cfg.max_materials)); }
@@ -87,7 +88,7 @@ BeamSchedule beam_schedule(const Frame& frame, const Config& cfg, const BoardTim
   if (t.line_slots < 1 || (t.line_slots & (t.line_slots - 1)) != 0 || t.line_slots >= (1 << (t.line_count_bits - 1)))
     throw std::invalid_argument("board: line slots " + std::to_string(t.line_slots) + " (a power of two)");
   if (t.frames < 3) throw std::invalid_argument("board: frames " + std::to_string(t.frames) + " (at least 3)");
-  if (t.ticks_per_pixel < 1 || t.ticks_per_pipe < 1 || t.sync_stages < 1)
+  if (t.ticks_per_pixel < 1 || t.ticks_per_pipe < 1 || t.sync_stages < 1 || t.video_start < 0)
     throw std::invalid_argument("board: clock periods and synchronizer stages must be positive");
   const int width = HVisible / t.doubling, height = VVisible / t.doubling;
   if (frame.width != width)
@@ -98,7 +99,7 @@ BeamSchedule beam_schedule(const Frame& frame, const Config& cfg, const BoardTim
                                 std::to_string(t.doubling) + " shows " + std::to_string(height) + ")");
   if (t.start_to_first_beat < 0) t.start_to_first_beat = start_to_first_beat(cfg);
 
-  const Video video(t.doubling);
+  const Video video(t.doubling, t.video_start);
   BeamSchedule s;
   s.width = width;
   s.height = height;

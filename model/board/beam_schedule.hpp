@@ -3,7 +3,8 @@
 //
 // Three clocks from one VCO, in ticks of 1/1260 us, all rising at tick 0: clk_pixel (an edge every
 // ticks_per_pixel), clk_pipe (every ticks_per_pipe). The video timing runs from reset: the pixel
-// edge m samples the state (h, v) = (m mod 800, (m div 800) mod 525) of video frame m div 420000.
+// edge video_start + m samples the state (h, v) = (m mod 800, (m div 800) mod 525) of video frame
+// m div 420000.
 // A flip-flop samples the value from before its edge: an edge coinciding with the sender's
 // samples the old value. From that:
 //  - frame request k: the toggle flips at the pixel edge of (639, 479) of video frame k; two
@@ -45,6 +46,9 @@ struct BoardTiming {
   // contract's 11 + 2^MaterialIdBits of the configuration.
   int start_to_first_beat = -1;
   int frames = 3;              // K rendered frames simulated (at least 3)
+  // The pixel edge that samples the video's first state (0, 0): the pixel domain's reset leaves
+  // its two-flip-flop synchronizer at edge 2 on the board top (every video event 2 clocks later).
+  int video_start = 2;
 };
 
 // The first edge of a clock of `period` ticks (rising at tick 0) strictly after tick `tick`:

@@ -6,8 +6,7 @@
 // (tests/board/miss.json at tests/board/native.gouraud.json, Doubling 1) shows missed lines, the
 // same ones every frame, and the model's pixels on every other line; one whose frame outlasts a
 // video frame (tests/board/slow.json) makes the frame player wait for the frame before to leave.
-// Both runs equal the cycle model's beam schedule line for line (completion edges, missed lines),
-// shifted by the reset synchronizers' clocks.
+// Both runs equal the cycle model's beam schedule line for line (completion edges, missed lines).
 // WATKINS_BOARD_PNG=FILE writes the captured frame of the default scene as a PNG
 // (docs/results/images/board_default.png); WATKINS_BOARD_LINES=FILE writes every rendered line's
 // completion (pipeline clocks from its frame's start pulse) and every missed line as CSV.
@@ -74,30 +73,23 @@ long long timing_mismatches(const BoardRun& r) {
   return bad;
 }
 
-// The RTL against the cycle model's beam schedule (model/board/beam_schedule.hpp), which starts
-// the video timing at pixel edge 0. On the board top the resets leave their two-flip-flop
-// synchronizers first: the video's first state is sampled at pixel edge 2 (tick 100), so every
-// pixel-domain event comes 2 pixel clocks later, and the pipeline edges that see it 7 later
-// (each event is at h = 639 or 799, whose ticks fall at one phase of the pipeline clock).
-constexpr long long ResetPixelEdges = 2, ResetPipeEdges = 7;
-
 // Compares the first `rendered_frames` frames' requests, start pulses and begins, and every line
 // the RTL completed in the run (the lines of those frames, or fewer when the frames lag the video);
 // the missed lines among them but the last LineSlots (their checks may come after the run).
 void expect_model_schedule(const BoardRun& r, const board::BeamSchedule& b, int rendered_frames) {
   ASSERT_GE(b.frames.size(), std::size_t(rendered_frames));
   for (int f = 0; f < rendered_frames; ++f) {
-    EXPECT_EQ(r.request_pixel_clocks.at(f), b.frames[f].request + ResetPixelEdges) << "request " << f;
-    EXPECT_EQ(r.start_clocks.at(f), b.frames[f].start_pulse + ResetPipeEdges) << "start pulse " << f;
-    EXPECT_EQ(r.begin_clocks.at(f), b.frames[f].begin + ResetPipeEdges) << "begin " << f;
+    EXPECT_EQ(r.request_pixel_clocks.at(f), b.frames[f].request) << "request " << f;
+    EXPECT_EQ(r.start_clocks.at(f), b.frames[f].start_pulse) << "start pulse " << f;
+    EXPECT_EQ(r.begin_clocks.at(f), b.frames[f].begin) << "begin " << f;
   }
   const std::size_t lines = std::min(r.lines.size(), std::size_t(rendered_frames) * b.height);
   ASSERT_GE(lines, std::size_t(b.height)) << "not one frame done";
   long long differ = 0;
   for (std::size_t i = 0; i < lines; ++i) {
-    if (r.lines[i].pipe_clock != b.lines[i].completion + ResetPipeEdges && differ++ == 0)
+    if (r.lines[i].pipe_clock != b.lines[i].completion && differ++ == 0)
       ADD_FAILURE() << "line " << i << " done at pipeline edge " << r.lines[i].pipe_clock << ", the model's "
-                    << b.lines[i].completion << " + " << ResetPipeEdges;
+                    << b.lines[i].completion;
   }
   EXPECT_EQ(differ, 0);
   const long long checked = static_cast<long long>(lines) - LineSlots;
