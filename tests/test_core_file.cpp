@@ -15,17 +15,22 @@ TEST(CoreFile, ListsEveryRtlSource) {
   ASSERT_TRUE(f) << "watkins.core missing";
   std::stringstream core;
   core << f.rdbuf();
-  DIR* d = opendir(WATKINS_SOURCE_DIR "/rtl");
-  ASSERT_NE(d, nullptr);
-  int n = 0;
-  while (dirent* e = readdir(d)) {
-    const std::string name = e->d_name;
-    if (name.size() < 3 || name.substr(name.size() - 3) != ".sv") continue;
-    ++n;
-    EXPECT_NE(core.str().find("- rtl/" + name + "\n"), std::string::npos) << "rtl/" << name << " is not in watkins.core";
+  // The pipeline (rtl/) and the board tops (rtl/board/, with their constraint files).
+  for (const std::string folder : {"rtl/", "rtl/board/"}) {
+    DIR* d = opendir((WATKINS_SOURCE_DIR "/" + folder).c_str());
+    ASSERT_NE(d, nullptr) << folder;
+    int n = 0;
+    while (dirent* e = readdir(d)) {
+      const std::string name = e->d_name;
+      const bool source = name.size() > 3 && name.substr(name.size() - 3) == ".sv";
+      const bool pins = name.size() > 4 && name.substr(name.size() - 4) == ".lpf";
+      if (!source && !pins) continue;
+      ++n;
+      EXPECT_NE(core.str().find("- " + folder + name + "\n"), std::string::npos) << folder << name << " is not in watkins.core";
+    }
+    closedir(d);
+    EXPECT_GE(n, 8) << folder;
   }
-  closedir(d);
-  EXPECT_GE(n, 8);
 }
 
 // Users set the top's parameters through the core (`--XFracBits=15`): it must declare every one
