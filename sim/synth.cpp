@@ -84,6 +84,9 @@ struct Design {
   const char* module;  // RTL module
   ShadingMode shading; // which parameter set of the configuration it gets
   bool top;
+  // The block of watkins_top whose parameters it takes (nullptr: its own module's). A compact
+  // block is measured at the parameters its pipelined counterpart has in the top.
+  const char* params_of = nullptr;
 };
 // Blocks first, tops last: the tops take minutes per target, the blocks seconds.
 const Design kDesigns[] = {
@@ -96,6 +99,12 @@ const Design kDesigns[] = {
     {"phong_shader", "phong_shader", ShadingMode::Phong, false},
     {"scanline_buffer", "scanline_buffer", ShadingMode::Gouraud, false},
     {"smoother", "smoother", ShadingMode::Gouraud, false},
+    // The compact micro-architecture's blocks (docs/reference/compact.md).
+    {"compact_active_edge_list", "compact_active_edge_list", ShadingMode::Gouraud, false, "active_edge_list"},
+    {"compact_segment_former", "compact_segment_former", ShadingMode::Gouraud, false, "segment_former"},
+    {"compact_segment_interpolator", "compact_segment_interpolator", ShadingMode::Gouraud, false,
+     "segment_interpolator"},
+    {"compact_scanline_buffer", "compact_scanline_buffer", ShadingMode::Gouraud, false, "scanline_buffer"},
     {"top-gouraud", "watkins_top", ShadingMode::Gouraud, true},
     {"top-phong", "watkins_top", ShadingMode::Phong, true},
 };
@@ -684,9 +693,9 @@ int run_synth(const SynthArgs& a) {
             for (const RtlParameter& p : rtl_parameters(with, d->shading)) elab.emplace_back(p.name, p.value);
             in_top[key] = block_parameters(rtl, add_smoother ? elab : top, tdir, a.timeout);
           }
-          if (!in_top[key].count(d->module))
-            throw std::runtime_error(std::string("watkins_top does not instantiate ") + d->module);
-          wanted = in_top[key][d->module];
+          const char* from = d->params_of ? d->params_of : d->module;
+          if (!in_top[key].count(from)) throw std::runtime_error(std::string("watkins_top does not instantiate ") + from);
+          wanted = in_top[key][from];
         }
         const Elaborated e = elaborate(rtl, *d, wanted, ddir, a.timeout);
         std::string note;
