@@ -115,6 +115,7 @@ TEST(BeamSchedule, CoincidentEdgesSampleTheOldValue) {
   // (The video's first state at pixel edge 0 here; the board top's is at edge 2, below.)
   BoardTiming t;
   t.video_start = 0;
+  t.count_stages = 2;  // the counts read from the second flip-flop here; the board top's add a register
   const long long m = 420000 + 800 + 639;
   EXPECT_EQ(releases_seen(t, 1316998), 0);
   EXPECT_EQ(releases_seen(t, 1316999), 1);
@@ -149,6 +150,11 @@ TEST(BeamSchedule, CoincidentEdgesSampleTheOldValue) {
   EXPECT_EQ(late.frames[0].request, 383841);
   EXPECT_EQ(late.frames[0].start_pulse, 1199506);
   EXPECT_EQ(late.lines[0].check, 420001);
+  // Its counts cross through gray_sync's three registers: line 0's completion must be sampled by
+  // pixel edge 420,001 - 3 (tick 20,999,900): the last pipeline edge strictly before it, 1,312,493.
+  EXPECT_EQ(late.lines[0].deadline, 1312493);
+  EXPECT_EQ(releases_seen(board, visible_from(50LL * (420000 + 800 + 639 + 2), 16, 3) - 1), 0);
+  EXPECT_EQ(releases_seen(board, visible_from(50LL * (420000 + 800 + 639 + 2), 16, 3)), 1);
 }
 
 TEST(BeamSchedule, RefusesAFrameOfAnotherSize) {

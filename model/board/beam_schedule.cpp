@@ -71,7 +71,7 @@ long long visible_from(long long tick, long long period, int stages) { return fi
 
 long long releases_seen(const BoardTiming& t, long long edge) {
   // Releases at pixel edges m with t_pixel m < t_pipe (edge - stages): visible_from <= edge.
-  const long long limit = static_cast<long long>(t.ticks_per_pipe) * (edge - t.sync_stages);
+  const long long limit = static_cast<long long>(t.ticks_per_pipe) * (edge - t.count_stages);
   return limit <= 0 ? 0 : Video(t.doubling, t.video_start).releases_by(floor_div(limit - 1, t.ticks_per_pixel));
 }
 
@@ -88,7 +88,7 @@ BeamSchedule beam_schedule(const Frame& frame, const Config& cfg, const BoardTim
   if (t.line_slots < 1 || (t.line_slots & (t.line_slots - 1)) != 0 || t.line_slots >= (1 << (t.line_count_bits - 1)))
     throw std::invalid_argument("board: line slots " + std::to_string(t.line_slots) + " (a power of two)");
   if (t.frames < 3) throw std::invalid_argument("board: frames " + std::to_string(t.frames) + " (at least 3)");
-  if (t.ticks_per_pixel < 1 || t.ticks_per_pipe < 1 || t.sync_stages < 1 || t.video_start < 0)
+  if (t.ticks_per_pixel < 1 || t.ticks_per_pipe < 1 || t.sync_stages < 1 || t.count_stages < 1 || t.video_start < 0)
     throw std::invalid_argument("board: clock periods and synchronizer stages must be positive");
   const int width = HVisible / t.doubling, height = VVisible / t.doubling;
   if (frame.width != width)
@@ -129,7 +129,7 @@ BeamSchedule beam_schedule(const Frame& frame, const Config& cfg, const BoardTim
       l.completion = run.first_beat + takes[std::size_t(y) * width + width - 1];
       l.check = video.check(k, y);
       // The last pipeline edge E with visible_from(t_pipe E, t_pixel) <= check.
-      l.deadline = floor_div(static_cast<long long>(t.ticks_per_pixel) * (l.check - t.sync_stages) - 1, t.ticks_per_pipe);
+      l.deadline = floor_div(static_cast<long long>(t.ticks_per_pixel) * (l.check - t.count_stages) - 1, t.ticks_per_pipe);
       l.slack = l.deadline - l.completion;
       l.missed = l.slack < 0;
       s.missed += l.missed;

@@ -17,7 +17,7 @@
 //  - w counts the lines whose last pixel was taken (edge that takes it); r counts the lines
 //    released: pixel edge of h = 639 on video line D y + D - 1 of every video frame after the
 //    first request; each count is visible to the other domain from edge
-//    first_edge_after(its tick) + sync_stages on (two flip-flops);
+//    first_edge_after(its tick) + count_stages on (two flip-flops and gray_sync's binary register);
 //  - rendered line y of frame k is started (and checked) at the pixel edge of h = 799 on video
 //    line D y - 1 of video frame k + 1 (y = 0: v = 524 of video frame k): it is missed unless
 //    its completion is visible there.
@@ -40,7 +40,8 @@ struct BoardTiming {
   int line_slots = 2;          // S: the line buffer's slots (a power of two)
   int ticks_per_pixel = 50;    // clk_pixel period (25.2 MHz)
   int ticks_per_pipe = 16;     // clk_pipe period (78.75 MHz)
-  int sync_stages = 2;         // flip-flops of gray_sync and toggle_sync
+  int sync_stages = 2;         // flip-flops of toggle_sync (the frame request)
+  int count_stages = 3;        // gray_sync: two flip-flops and the binary register (the line counts)
   int line_count_bits = 12;    // LineCountBits: the counts compared as signed differences
   // frame_player's clocks from the start pulse to the first edge beat offered; -1: its
   // contract's 11 + 2^MaterialIdBits of the configuration.

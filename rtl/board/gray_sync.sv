@@ -1,7 +1,8 @@
 // gray_sync: a Gray-coded counter carried into another clock domain (a multi-bit crossing).
-// Latency 2 clocks of clk_i: two flip-flops sample the sender's Gray-code register, so a count
+// Latency 3 clocks of clk_i: two flip-flops sample the sender's Gray-code register, so a count
 // sampled while it changes is the old count or the new one, never another (one bit changes per
-// step); count_o is their binary value, converted combinationally after the second flip-flop.
+// step); a third register holds its binary value (count_o registered), so the Gray-to-binary
+// chain of XORs ends at a flip-flop instead of running into the receiver's compare.
 // The sender keeps gray_i in a register of its own domain (no logic between it and meta_q).
 
 module gray_sync #(
@@ -10,20 +11,12 @@ module gray_sync #(
   input  logic            clk_i,   // the receiving domain
   input  logic            rst_ni,  // active-low synchronous reset (the receiving domain's)
   input  logic [Bits-1:0] gray_i,  // the sender's Gray-code register
-  output logic [Bits-1:0] count_o  // the count, binary, 2 clocks late
+  output logic [Bits-1:0] count_o  // the count, binary, 3 clocks late (a register)
 );
   (* async_reg = "true" *) logic [Bits-1:0] meta_q;
   (* async_reg = "true" *) logic [Bits-1:0] sync_q;
 
-  always_ff @(posedge clk_i) begin
-    if (!rst_ni) begin
-      meta_q <= '0;
-      sync_q <= '0;
-    end else begin
-      meta_q <= gray_i;  // crossing: Gray code, first of two flip-flops
-      sync_q <= meta_q;
-    end
-  end
+  logic [Bits-1:0] count_q;
 
   // Binary bit i is the XOR of Gray bits i and above.
   function automatic logic [Bits-1:0] gray_to_binary(logic [Bits-1:0] g);
@@ -33,5 +26,17 @@ module gray_sync #(
     gray_to_binary = b;
   endfunction
 
-  assign count_o = gray_to_binary(sync_q);
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      meta_q  <= '0;
+      sync_q  <= '0;
+      count_q <= '0;
+    end else begin
+      meta_q  <= gray_i;  // crossing: Gray code, first of two flip-flops
+      sync_q  <= meta_q;
+      count_q <= gray_to_binary(sync_q);
+    end
+  end
+
+  assign count_o = count_q;
 endmodule
