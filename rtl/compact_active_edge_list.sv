@@ -1,0 +1,411 @@
+// compact_active_edge_list: active_edge_list's streams (the edges crossing each scan line in
+// (X, edge id) order, then an end-of-line marker, lines 0..height-1) from one block RAM and a
+// sequential insertion sort, no parallel comparators: the compact micro-architecture's list.
+// Ports, parameters, streams, edge ids, the skipped late records and the sticky overflow_o are
+// active_edge_list's (model/twins/active_edge_list.hpp; the cycle twin
+// model/twins/compact_active_edge_list_timing.hpp).
+//
+// Storage: one array A[0..Entries-1] of entries {remaining, id, polygon, material, value, slope}
+// in (X, id) order, plus a scratch word at index Entries, in a RAM with one write port and one
+// synchronous read port with an enable (block RAM). The sort key is {X with its sign bit
+// inverted, id}: unsigned order is (X, id) order, total since ids are unique. Each line runs
+// three phases in turn, one RAM access of each port per clock:
+//   INS   the records with y0 == y join the list: each from the end of A, every entry whose key
+//         is greater moves up one word (read, then written one word higher) until the record's
+//         place is found; the record is written there from edge_i itself (held: not ready yet).
+//   OUT   A streams out from the RAM's read register (out_* are its fields), one edge per
+//         accepted beat; each accepted edge is stepped (value += slope, remaining -= 1, at edge
+//         order 3 by forward differences, as edge_incrementer) on the way back to the RAM's write
+//         port and, unless it retires, written at A[kept], kept += 1 (in place: kept <= read).
+//         The running maximum of the kept keys finds the first one that sorts before an earlier
+//         one (a crossing), D. Then the end-of-line marker.
+//   FIX   (only a line with a crossing, not the last) an insertion sort over A[D..K-1]: each entry
+//         below the maximum before it goes to the scratch word, the greater ones move up one
+//         word each, and it is copied back from the scratch word into its place.
+// Then the next line's INS. After the last line's marker the block reads the input up to its
+// EOF beat (records past the last line); busy_o falls on the clock after that beat.
+// Timing (clocks; "beat" = a clock the input is valid, output stalls and input gaps add clocks):
+//   INS   one clock per record with y0 below the line (skipped) or at the line with the list
+//         full (dropped, overflow_o set); a record placed into a list of L entries, m of them
+//         greater: 1 clock when L == 0, else m + 2; one clock for the head beat past the line
+//         (y0 > y, or EOF), which ends the phase and reads A[0].
+//   OUT   K edges one per clock from the clock after INS ends, then the marker on the next.
+//   FIX   from the clock after the marker is taken: K - D clocks (one per scanned entry), plus
+//         for each entry that moves back past m others m + 2 clocks (m + 1 when it goes to the
+//         front).
+// A line (not the last) with no stall takes I + K + 1 + F clocks from its INS's first clock to
+// the next one: I = sum over its head beats of the INS costs above (at least 1), F = 0 without
+// a crossing. The first edge is presented the clock after INS sees the head past the line.
+// Ready: edge_ready_o is combinational from the state, the head's y0 and the list's count;
+// out_valid_o is a register's decode; the outputs are the RAM's read register.
+`include "watkins_assert.svh"
+
+module compact_active_edge_list #(
+  parameter int unsigned MaxActiveEdges = watkins_pkg::MaxActiveEdges,
+  parameter int unsigned XBits          = watkins_pkg::ChannelBits,
+  parameter int unsigned ZBits          = watkins_pkg::ChannelBits,
+  parameter int unsigned AttrBits       = watkins_pkg::ChannelBits,
+  parameter int unsigned PolyIdBits     = watkins_pkg::PolyIdBits,
+  parameter int unsigned MaterialIdBits = watkins_pkg::MaterialIdBits,
+  parameter int unsigned EdgeIdBits     = watkins_pkg::EdgeIdBits,
+  parameter int unsigned EdgeOrder      = 1,  // forward differences per edge: 1 (slope) or 3
+                                              // (cubic)
+  localparam int unsigned VectorBits = watkins_pkg::vector_bits(XBits, ZBits, AttrBits),
+  // the slope field: {d3, d2, d1} at order 3
+  localparam int unsigned SlopeBits = EdgeOrder * VectorBits,
+  localparam int unsigned EdgeBits = watkins_pkg::edge_bits(XBits, ZBits, AttrBits, PolyIdBits,
+                                                            MaterialIdBits, EdgeOrder)
+) (
+  input  logic                             clk_i,
+  input  logic                             rst_ni,
+  input  logic                             start_i,         // begin a frame (when !busy_o)
+  input  logic [watkins_pkg::LineBits-1:0] height_i,        // lines of the frame, stable while
+                                                            // busy_o
+  output logic                             busy_o,          // a frame is in progress (until its
+                                                            // EOF beat is read)
+  input  logic [EdgeBits-1:0]              edge_i,          // y-sorted edge records
+  input  logic                             edge_eof_i,      // this beat ends the frame's stream
+  input  logic                             edge_valid_i,
+  output logic                             edge_ready_o,
+  output logic [PolyIdBits-1:0]            out_poly_o,      // polygon of the edge
+  output logic [MaterialIdBits-1:0]        out_material_o,  // its material
+  output logic [VectorBits-1:0]            out_value_o,     // channels on this line
+  output logic                             out_eol_o,       // end-of-line marker, no edge
+  output logic                             out_valid_o,
+  input  logic                             out_ready_i,
+  output logic                             overflow_o       // sticky: an edge was dropped
+);
+  localparam int unsigned Entries   = MaxActiveEdges;
+  localparam int unsigned AddrBits  = $clog2(Entries + 1);  // A[0..Entries-1] and the scratch
+  localparam int unsigned CountBits = $clog2(Entries + 1);
+  localparam int unsigned LineBits  = watkins_pkg::LineBits;
+  localparam int unsigned XLow      = watkins_pkg::slot_lo(watkins_pkg::ChanX, XBits, ZBits,
+                                                           AttrBits);
+  localparam logic [AddrBits-1:0] Scratch = AddrBits'(Entries);
+
+  // The record's fields (watkins_pkg::edge_bits): {y0, n, poly, material, value, slope}.
+  typedef struct packed {
+    logic [LineBits-1:0]       y0;
+    logic [LineBits-1:0]       n;
+    logic [PolyIdBits-1:0]     poly;
+    logic [MaterialIdBits-1:0] material;
+    logic [VectorBits-1:0]     value;
+    logic [SlopeBits-1:0]      slope;
+  } record_t;
+  record_t rec;
+  assign rec = edge_i;
+
+  typedef struct packed {
+    logic [LineBits-1:0]       remaining;  // lines left including the current one
+    logic [EdgeIdBits-1:0]     id;
+    logic [PolyIdBits-1:0]     poly;
+    logic [MaterialIdBits-1:0] material;
+    logic [VectorBits-1:0]     value;
+    logic [SlopeBits-1:0]      slope;
+  } entry_t;
+  localparam int unsigned BodyBits = LineBits + EdgeIdBits + PolyIdBits + MaterialIdBits
+                                     + VectorBits + SlopeBits;  // $bits(entry_t)
+
+  localparam int unsigned KeyBits = XBits + EdgeIdBits;
+  localparam logic [XBits-1:0] XSign = XBits'(1) << (XBits - 1);
+
+  typedef enum logic [3:0] {
+    SIdle,    // no frame
+    SIns,     // INS: look at the input's head
+    SShift,   // INS: ram_q = A[pos_q]; move it up or place the record above it
+    SPlace,   // INS: every entry moved up: the record goes to A[0]
+    SOut,     // OUT: ram_q = A[rd_q], presented
+    SEol,     // OUT: the end-of-line marker
+    SScan,    // FIX: ram_q = A[rd_q]; below the maximum before it?
+    SFShift,  // FIX: ram_q = A[pos_q]; move it up or stop
+    SFPlace,  // FIX: ram_q = the scratch word: write it to A[pos_q]
+    SDrain    // after the last line: read the input up to EOF
+  } state_t;
+  state_t state_q, state_d;
+
+  // no_rw_check: no clock reads the word it writes (a_no_ram_collision), so yosys need not
+  // emulate either read-during-write behaviour around the block RAM.
+  (* no_rw_check *) logic [BodyBits-1:0] mem [2 ** AddrBits];
+  entry_t                ram_q;  // the read register: the outputs and the stepper read it
+  logic                  re, we;
+  logic [AddrBits-1:0]   ra, wa;
+  logic                  w_rec, w_step;  // write the record / the stepped ram_q (else ram_q)
+
+  logic                  frame_q;
+  logic [LineBits-1:0]   line_q;
+  logic [CountBits-1:0]  cnt_q, cnt_d;  // entries in A
+  logic [CountBits-1:0]  kept_q, kept_d;  // OUT: stepped entries written back
+  logic [AddrBits-1:0]   rd_q, rd_d;    // OUT / FIX: the entry ram_q holds (SOut, SScan)
+  logic [AddrBits-1:0]   pos_q, pos_d;  // SShift / SFShift: the entry ram_q holds; SFPlace: place
+  logic [AddrBits-1:0]   first_q, first_d;  // D: the first crossing's position
+  logic                  cross_q, cross_d;  // this line has a crossing
+  logic [KeyBits-1:0]    max_q, max_d;  // OUT / FIX: the greatest key of the entries before
+  logic [KeyBits-1:0]    mov_q, mov_d;  // INS / FIX: the key of the entry being placed
+  logic [EdgeIdBits-1:0] id_q;
+  logic                  take, ov_set;  // the input's head beat is taken; a record dropped full
+
+  // ------------------------------------------------------------ the step (edge_incrementer's)
+  // value += d1 in every slot (order 3 also d1 += d2, d2 += d3, from this line's values; d3 is
+  // constant), each slot wrapping at its own word; remaining -= 1. Straight from the read
+  // register to the write port: the adders need no register of their own.
+  logic [VectorBits-1:0] value_s;
+  logic [SlopeBits-1:0]  slope_s;
+  logic                  retire;
+  for (genvar c = 0; c < watkins_pkg::NumChannels; c++) begin : g_slot
+    localparam int unsigned Lo = watkins_pkg::slot_lo(c, XBits, ZBits, AttrBits);
+    localparam int unsigned W  = watkins_pkg::slot_bits(c, XBits, ZBits, AttrBits);
+    assign value_s[Lo +: W] = ram_q.value[Lo +: W] + ram_q.slope[Lo +: W];
+    if (EdgeOrder == 3) begin : g_cubic
+      assign slope_s[Lo +: W] = ram_q.slope[Lo +: W] + ram_q.slope[VectorBits + Lo +: W];
+      assign slope_s[VectorBits + Lo +: W] = ram_q.slope[VectorBits + Lo +: W]
+                                             + ram_q.slope[2 * VectorBits + Lo +: W];
+      assign slope_s[2 * VectorBits + Lo +: W] = ram_q.slope[2 * VectorBits + Lo +: W];
+    end else begin : g_linear
+      assign slope_s[Lo +: W] = ram_q.slope[Lo +: W];
+    end
+  end
+  // The model retires when the decremented count is <= 0; n = 0 (malformed) retires too.
+  assign retire = ram_q.remaining <= LineBits'(1);
+
+  // ------------------------------------------------------------ keys
+  logic [KeyBits-1:0] key_ram, key_step, key_rec, key_cmp;
+  logic               ram_below, step_below;
+  assign key_ram  = {ram_q.value[XLow +: XBits] ^ XSign, ram_q.id};
+  assign key_step = {value_s[XLow +: XBits] ^ XSign, ram_q.id};
+  assign key_rec  = {rec.value[XLow +: XBits] ^ XSign, id_q};
+  // One comparator for ram_q: below the maximum (SScan), or, in the shifts, not above the key
+  // being placed (keys are unique: not below is above).
+  assign key_cmp    = (state_q == SScan) ? max_q : mov_q;
+  assign ram_below  = key_ram < key_cmp;
+  assign step_below = key_step < max_q;
+
+  // ------------------------------------------------------------ control
+  logic head_late, head_past, full, last_line;
+  assign head_late = !edge_eof_i && rec.y0 < line_q;
+  assign head_past = edge_eof_i || rec.y0 > line_q;
+  assign full      = cnt_q == CountBits'(Entries);
+  assign out_valid_o = state_q == SOut || state_q == SEol;
+  assign out_eol_o   = state_q != SOut;
+  assign last_line   = line_q + 1'b1 == height_i;
+  assign out_poly_o     = ram_q.poly;
+  assign out_material_o = ram_q.material;
+  assign out_value_o    = ram_q.value;
+
+  always_comb begin
+    state_d = state_q;
+    cnt_d   = cnt_q;
+    kept_d  = kept_q;
+    rd_d    = rd_q;
+    pos_d   = pos_q;
+    first_d = first_q;
+    cross_d = cross_q;
+    max_d   = max_q;
+    mov_d   = mov_q;
+    re      = 1'b0;
+    ra      = rd_q;
+    we      = 1'b0;
+    wa      = pos_q + 1'b1;
+    w_rec   = 1'b0;
+    w_step  = 1'b0;
+    take    = 1'b0;
+    ov_set  = 1'b0;
+    unique case (state_q)
+      SIdle: ;
+      SIns: if (edge_valid_i) begin
+        if (head_past) begin
+          // The line is complete: stream it, its first entry read now.
+          re      = 1'b1;
+          ra      = '0;
+          rd_d    = '0;
+          kept_d  = '0;
+          cross_d = 1'b0;
+          state_d = (cnt_q == '0) ? SEol : SOut;
+        end else if (head_late || full) begin
+          take   = 1'b1;
+          ov_set = !head_late;
+        end else if (cnt_q == '0) begin
+          we    = 1'b1;
+          wa    = '0;
+          w_rec = 1'b1;
+          take  = 1'b1;
+          cnt_d = CountBits'(1);
+        end else begin
+          re      = 1'b1;
+          ra      = AddrBits'(cnt_q - 1'b1);
+          pos_d   = AddrBits'(cnt_q - 1'b1);
+          mov_d   = key_rec;
+          state_d = SShift;
+        end
+      end
+      SShift: begin
+        we = 1'b1;
+        wa = pos_q + 1'b1;
+        if (ram_below) begin  // ram_q sorts before the record: its place is above ram_q
+          w_rec   = 1'b1;
+          take    = 1'b1;
+          cnt_d   = cnt_q + 1'b1;
+          state_d = SIns;
+        end else if (pos_q == '0) begin
+          state_d = SPlace;
+        end else begin
+          re    = 1'b1;
+          ra    = pos_q - 1'b1;
+          pos_d = pos_q - 1'b1;
+        end
+      end
+      SPlace: begin
+        we      = 1'b1;
+        wa      = '0;
+        w_rec   = 1'b1;
+        take    = 1'b1;
+        cnt_d   = cnt_q + 1'b1;
+        state_d = SIns;
+      end
+      SOut: if (out_ready_i) begin
+        // The edge leaves, steps and, unless it retires, is written back at A[kept].
+        re     = 1'b1;
+        ra     = rd_q + 1'b1;
+        rd_d   = rd_q + 1'b1;
+        we     = !retire;
+        wa     = AddrBits'(kept_q);
+        w_step = 1'b1;
+        if (!retire) begin
+          kept_d = kept_q + 1'b1;
+          if (kept_q == '0 || (!cross_q && !step_below)) begin
+            max_d = key_step;
+          end else if (!cross_q) begin
+            cross_d = 1'b1;  // max_q stays the greatest key before A[first]
+            first_d = AddrBits'(kept_q);
+          end
+        end
+        if (CountBits'(rd_q) + 1'b1 == cnt_q) state_d = SEol;
+      end
+      SEol: if (out_ready_i) begin
+        cnt_d = kept_q;
+        if (last_line) begin
+          state_d = SDrain;
+        end else if (cross_q) begin
+          re      = 1'b1;
+          ra      = first_q;
+          rd_d    = first_q;
+          state_d = SScan;
+        end else begin
+          state_d = SIns;
+        end
+      end
+      SScan: begin
+        if (ram_below) begin
+          // Out of order: to the scratch word; the entries above its place move up.
+          we      = 1'b1;
+          wa      = Scratch;
+          mov_d   = key_ram;
+          re      = 1'b1;
+          ra      = rd_q - 1'b1;
+          pos_d   = rd_q - 1'b1;
+          state_d = SFShift;
+        end else begin
+          max_d = key_ram;
+          if (CountBits'(rd_q) + 1'b1 == cnt_q) begin
+            state_d = SIns;
+          end else begin
+            re   = 1'b1;
+            ra   = rd_q + 1'b1;
+            rd_d = rd_q + 1'b1;
+          end
+        end
+      end
+      SFShift: begin
+        re = 1'b1;
+        if (ram_below) begin  // its place is above ram_q
+          ra      = Scratch;
+          pos_d   = pos_q + 1'b1;
+          state_d = SFPlace;
+        end else begin
+          we = 1'b1;
+          wa = pos_q + 1'b1;
+          if (pos_q == '0) begin
+            ra      = Scratch;
+            state_d = SFPlace;
+          end else begin
+            ra    = pos_q - 1'b1;
+            pos_d = pos_q - 1'b1;
+          end
+        end
+      end
+      SFPlace: begin
+        we = 1'b1;
+        wa = pos_q;
+        if (CountBits'(rd_q) + 1'b1 == cnt_q) begin
+          state_d = SIns;
+        end else begin
+          re      = 1'b1;
+          ra      = rd_q + 1'b1;
+          rd_d    = rd_q + 1'b1;
+          state_d = SScan;
+        end
+      end
+      SDrain: if (edge_valid_i) begin
+        take = 1'b1;
+        if (edge_eof_i) state_d = SIdle;
+      end
+      default: ;
+    endcase
+  end
+  assign edge_ready_o = take;
+
+  // ------------------------------------------------------------ the RAM
+  logic [BodyBits-1:0] wdata;
+  always_comb begin
+    if (w_rec) wdata = {rec.n, id_q, rec.poly, rec.material, rec.value, rec.slope};
+    else if (w_step) wdata = {ram_q.remaining - 1'b1, ram_q.id, ram_q.poly, ram_q.material, value_s,
+                              slope_s};
+    else             wdata = ram_q;
+  end
+  always_ff @(posedge clk_i) begin
+    if (we) mem[wa] <= wdata;
+  end
+  always_ff @(posedge clk_i) begin
+    if (re) ram_q <= mem[ra];
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni || (start_i && !frame_q)) begin
+      // Reset and frame start clear the same per-frame state; only reset also clears the sticky
+      // overflow flag, and a frame start leaves frame_q set.
+      frame_q <= rst_ni;
+      state_q <= rst_ni ? SIns : SIdle;
+      line_q  <= '0;
+      cnt_q   <= '0;
+      id_q    <= '0;
+      if (!rst_ni) overflow_o <= 1'b0;
+    end else begin
+      state_q <= state_d;
+      cnt_q   <= cnt_d;
+      if (state_q == SEol && out_ready_i && !last_line) line_q <= line_q + 1'b1;
+      if (take && !edge_eof_i) id_q <= id_q + 1'b1;
+      if (ov_set) overflow_o <= 1'b1;
+      if (take && edge_eof_i) frame_q <= 1'b0;
+    end
+  end
+  always_ff @(posedge clk_i) begin
+    kept_q  <= kept_d;
+    rd_q    <= rd_d;
+    pos_q   <= pos_d;
+    first_q <= first_d;
+    cross_q <= cross_d;
+    max_q   <= max_d;
+    mov_q   <= mov_d;
+  end
+
+  assign busy_o = frame_q;
+
+  `WATKINS_ASSERT_HOLD(a_in_hold, edge_valid_i, edge_ready_o, {edge_i, edge_eof_i})
+  `WATKINS_ASSERT_HOLD(a_out_hold, out_valid_o, out_ready_i, {out_poly_o, out_material_o,
+    out_value_o, out_eol_o})
+  `WATKINS_ASSERT(a_no_ram_collision, (we && re) |-> wa != ra)
+  `WATKINS_ASSERT(a_count, CountBits'(Entries) >= cnt_q)
+  `WATKINS_ASSERT(a_kept, (state_q == SOut) |-> kept_q <= CountBits'(rd_q))
+  `WATKINS_ASSERT(a_busy, frame_q == (state_q != SIdle))
+  `WATKINS_COVER(c_overflow, ov_set)
+  `WATKINS_COVER(c_crossing, state_q == SFPlace)
+endmodule
