@@ -1,0 +1,383 @@
+// rtl/compact_segment_interpolator.sv against SegmentInterpolator::setup/fragment/step (every
+// fragment's values, in order) and against its cycle twin CompactSegmentInterpolatorTiming (every
+// cycle's seg_ready_o, frag_valid_o, and each beat's marker flag and x): the segment streams the
+// twins produce for the shipped scenes that prepare at the unit's configuration and for random
+// scenes, and random segments (spans narrower than a pixel, clipped at 0 and at the width, empty
+// and reversed, full-range channel words), at full rate and under random valid gaps and
+// back-pressure. Prints each shipped scene's fragment rate and longest line at full rate.
+// Built at the sized default scene's parameters and at the default configuration's
+// (tests/rtl/CMakeLists.txt).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <deque>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "Vcompact_segment_interpolator.h"
+#include "build_options.hpp"
+#include "compact_segment_interpolator_timing.hpp"
+#include "config_file.hpp"
+#include "edge_packing.hpp"
+#include "prepare.hpp"
+#include "random_scene.hpp"
+#include "rtl_harness.hpp"
+#include "scene.hpp"
+#include "segment_interpolator.hpp"
+#include "watkins_top.hpp"
+
+using namespace watkins;
+using namespace watkins::rtl;
+
+namespace {
+
+constexpr int NC = fmt::NumChannels;
+#ifdef WATKINS_RTL_PARAM_QuotientBitsPerClock
+constexpr int QuotientBitsPerClock = WATKINS_RTL_PARAM_QuotientBitsPerClock;
+#else
+constexpr int QuotientBitsPerClock = 2;
+#endif
+#ifdef WATKINS_RTL_PARAM_PolyIdBits
+constexpr int PolyIdBits = WATKINS_RTL_PARAM_PolyIdBits;
+constexpr int MaterialIdBits = WATKINS_RTL_PARAM_MaterialIdBits;
+#else
+constexpr int PolyIdBits = fmt::PolyIdBits;
+constexpr int MaterialIdBits = fmt::MaterialIdBits;
+#endif
+
+// The configuration the unit was built at: the sized default scene's when PARAMS set the widths.
+const Config& unit_config() {
+#ifdef WATKINS_RTL_PARAM_XBits
+  static const Config c = load_config(WATKINS_SOURCE_DIR "/scenes/sized/default.gouraud.json");
+#else
+  static const Config c;
+#endif
+  return c;
+}
+const ChannelFormats& formats() {
+  static const ChannelFormats f = unit_config().channels(ShadingMode::Gouraud);
+  return f;
+}
+
+struct Item {
+  bool eol = false;
+  Segment seg;
+};
+
+struct Frag {
+  bool eol;
+  int x;
+  std::uint32_t depth, rgb;
+  std::uint64_t normal;  // {Nz, Ny, Nx}, NormalInBits each
+  int material;
+  int poly;
+};
+
+// 1.0 in slot c's unit; a value wrapped to the slot's word.
+i64 one(int c) { return i64{1} << formats().frac[c]; }
+i64 word(int c, i128 v) { return wrap_signed(v, formats().bits[c]); }
+
+Segment random_segment(std::mt19937_64& rng, int width) {
+  Segment s;
+  auto rnd = [&](i64 lo, i64 hi) { return lo + static_cast<i64>(rng() % static_cast<std::uint64_t>(hi - lo + 1)); };
+  const i64 One = one(fmt::ChanX);
+  const i64 XMax = (i64{1} << (formats().bits[fmt::ChanX] - 1)) - 1;  // the X word's range
+  const int kind = static_cast<int>(rng() % 10);
+  i64 xe, xf;
+  switch (kind) {
+    case 0:  // narrower than a pixel, anywhere
+      xe = rnd(-2 * One, (width + 2) * One);
+      xf = xe + rnd(1, One);
+      break;
+    case 1:  // clipped at both ends, up to the word's range
+      xe = rnd(-XMax, 0);
+      xf = rnd(width * One, XMax);
+      break;
+    case 2:  // reversed or zero width: empty
+      xe = rnd(0, width * One);
+      xf = xe - rnd(0, 4 * One);
+      break;
+    case 3:  // full-range words (wrapped accumulations)
+      xe = word(fmt::ChanX, static_cast<i128>(rng()));
+      xf = word(fmt::ChanX, static_cast<i128>(rng()));
+      break;
+    case 4:  // tiny widths in X units
+      xe = rnd(-One, width * One);
+      xf = xe + rnd(1, 64);
+      break;
+    default:  // ordinary span
+      xe = rnd(-4 * One, (width + 4) * One);
+      xf = xe + rnd(1, (width / 2 + 2) * One);
+      break;
+  }
+  s.e[fmt::ChanX] = word(fmt::ChanX, xe);
+  s.f[fmt::ChanX] = word(fmt::ChanX, xf);
+  const int depth_bits = formats().depth_bits;
+  for (int c = fmt::ChanZ; c < NC; ++c) {
+    const i64 u = one(c);
+    if (rng() % 6 == 0) {
+      s.e[c] = word(c, static_cast<i128>(rng()));
+      s.f[c] = word(c, static_cast<i128>(rng()));
+    } else if (c == fmt::ChanZ) {
+      const i64 range = (i64{1} << depth_bits) * u;
+      s.e[c] = word(c, rnd(-range / 16, range + range / 16));
+      s.f[c] = word(c, rnd(-range / 16, range + range / 16));
+    } else {
+      s.e[c] = word(c, rnd(-40 * u, 300 * u));
+      s.f[c] = word(c, rnd(-40 * u, 300 * u));
+    }
+  }
+  s.poly = static_cast<int>(rng() % (1u << PolyIdBits));
+  s.material = static_cast<int>(rng() % (1u << MaterialIdBits));
+  return s;
+}
+
+void expected(const Item& it, int width, std::deque<Frag>& out) {
+  if (it.eol) {
+    out.push_back({true, 0, 0, 0, 0, 0, 0});
+    return;
+  }
+  const SpanSetup span = SegmentInterpolator::setup(it.seg, width, formats());
+  ChannelVector v = span.value;
+  for (int x = span.x_start; x < span.x_end; ++x) {
+    const Fragment f = SegmentInterpolator::fragment(span, x, v);
+    std::uint64_t n = 0;
+    for (int c = 0; c < 3; ++c) n |= wrap_unsigned(f.normal[c], fmt::NormalInBits) << (c * fmt::NormalInBits);
+    out.push_back({false, x, f.depth, (std::uint32_t(f.rgb[0]) << 16) | (std::uint32_t(f.rgb[1]) << 8) | f.rgb[2], n,
+                   f.material, f.poly});
+    SegmentInterpolator::step(span, v);
+  }
+}
+
+struct Result {
+  std::uint64_t cycles = 0, fragments = 0, items = 0;
+  int worst_line = 0;  // clocks between two markers leaving, at most
+};
+
+class Bench {
+ public:
+  std::uint64_t checked = 0, mismatches = 0, timing_mismatches = 0;
+
+  explicit Bench(std::uint64_t seed) : rng_(seed) {}
+
+  // The items through the unit from reset, offered with gap_pct % gaps, taken with bp_pct %
+  // back-pressure; each output beat against the twin, each cycle against the cycle twin.
+  Result run(const std::vector<Item>& items, int width, int gap_pct, int bp_pct) {
+    Harness<Vcompact_segment_interpolator> h;
+    const ChannelFormats& f = formats();
+    CompactSegmentInterpolatorTiming twin(f.bits[fmt::ChanX], f.bits[fmt::ChanZ], f.bits[fmt::ChanR],
+                                          QuotientBitsPerClock);
+    const tb::ChannelLayout slots = tb::ChannelLayout::of(f);
+    Stalls gaps{rng_, gap_pct}, bp{rng_, bp_pct};
+    auto& d = h.dut;
+    d.seg_valid_i = 0;
+    d.frag_ready_i = 0;
+    d.width_i = width;
+    h.reset();
+    std::deque<Frag> want;
+    std::size_t next = 0;
+    bool offered = false;
+    CompactSegmentInterpolatorTiming::Item titem;
+    Result res;
+    std::uint64_t moved = 0, last_marker = 0;
+    int reported = 0;
+    auto fail = [&](const std::string& what) {
+      if (reported++ < 8) ADD_FAILURE() << "cycle " << res.cycles << ": " << what;
+    };
+    while (next < items.size() || offered || !want.empty()) {
+      if (!offered && next < items.size() && !gaps.stall()) {
+        const Item& it = items[next];
+        for (int c = 0; c < NC; ++c) {
+          set_bits(d.seg_e_i, slots.lsb[c], slots.bits[c], to_bits(it.seg.e[c], slots.bits[c]));
+          set_bits(d.seg_f_i, slots.lsb[c], slots.bits[c], to_bits(it.seg.f[c], slots.bits[c]));
+        }
+        d.seg_poly_i = static_cast<std::remove_reference_t<decltype(d.seg_poly_i)>>(it.seg.poly);
+        d.seg_material_i = static_cast<std::remove_reference_t<decltype(d.seg_material_i)>>(it.seg.material);
+        d.seg_eol_i = it.eol;
+        const auto px = SegmentInterpolator::pixels(it.seg, width, f.x_frac());
+        titem = {it.eol, px.first, px.second};
+        offered = true;
+      }
+      d.seg_valid_i = offered;
+      d.frag_ready_i = !bp.stall();
+      d.eval();
+      const CompactSegmentInterpolatorTiming::Pins t = twin.clock(offered, titem, d.frag_ready_i);
+      if ((offered && t.seg_ready != bool(d.seg_ready_o)) || t.frag_valid != bool(d.frag_valid_o) ||
+          (t.frag_valid && (t.frag_eol != bool(d.frag_eol_o) || (!t.frag_eol && t.frag_x != int(d.frag_x_o))))) {
+        ++timing_mismatches;
+        fail("rtl seg_ready/frag_valid/eol/x " + std::to_string(d.seg_ready_o) + std::to_string(d.frag_valid_o) +
+             std::to_string(d.frag_eol_o) + " " + std::to_string(d.frag_x_o) + ", cycle twin " +
+             std::to_string(t.seg_ready) + std::to_string(t.frag_valid) + std::to_string(t.frag_eol) + " " +
+             std::to_string(t.frag_x));
+      }
+      if (d.frag_valid_o && d.frag_ready_i) {
+        if (want.empty()) {
+          ADD_FAILURE() << "output without an expected beat";
+          return res;
+        }
+        const Frag& w = want.front();
+        const bool ok = d.frag_eol_o == w.eol &&
+                        (w.eol || (int(d.frag_x_o) == w.x && d.frag_depth_o == w.depth && d.frag_rgb_o == w.rgb &&
+                                   d.frag_normal_o == w.normal && int(d.frag_material_o) == w.material &&
+                                   int(d.frag_poly_o) == w.poly));
+        if (!ok) {
+          ++mismatches;
+          std::ostringstream diff;
+          diff << "beat " << checked << ": rtl eol " << int(d.frag_eol_o) << " x " << d.frag_x_o << " depth "
+               << d.frag_depth_o << " rgb " << std::hex << d.frag_rgb_o << " normal " << d.frag_normal_o << std::dec
+               << " material " << int(d.frag_material_o) << " poly " << int(d.frag_poly_o) << "; model eol " << w.eol
+               << " x " << w.x << " depth " << w.depth << " rgb " << std::hex << w.rgb << " normal " << w.normal
+               << std::dec << " material " << w.material << " poly " << w.poly;
+          fail(diff.str());
+        }
+        if (w.eol) {
+          res.worst_line = std::max(res.worst_line, static_cast<int>(res.cycles + 1 - last_marker));
+          last_marker = res.cycles + 1;
+        } else {
+          ++res.fragments;
+        }
+        want.pop_front();
+        ++checked;
+        moved = res.cycles;
+      }
+      const bool in_fire = offered && d.seg_ready_o;
+      h.tick();
+      ++res.cycles;
+      if (in_fire) {
+        expected(items[next], width, want);
+        ++next;
+        ++res.items;
+        offered = false;
+        moved = res.cycles;
+      }
+      if (res.cycles - moved > 10000) {
+        ADD_FAILURE() << "hang: " << want.size() << " expected beats left, item " << next << " of " << items.size();
+        return res;
+      }
+    }
+    return res;
+  }
+
+  std::mt19937_64& rng() { return rng_; }
+
+ private:
+  std::mt19937_64 rng_;
+};
+
+// The segment stream a frame's segment former hands the interpolator, with its markers.
+std::vector<Item> segment_stream(const PreparedScene& p, const Config& cfg) {
+  std::vector<Item> items;
+  PipelineObserver ob;
+  ob.segment = [&](int, const Segment& s) { items.push_back({false, s}); };
+  ob.segments_end = [&](int) { items.push_back({true, Segment{}}); };
+  WatkinsTop(cfg).render(p, ob);
+  return items;
+}
+
+std::vector<Item> random_items(std::mt19937_64& rng, int n, int width, int eol_every) {
+  std::vector<Item> items(static_cast<std::size_t>(n));
+  for (Item& it : items) {
+    it.eol = rng() % static_cast<std::uint64_t>(eol_every) == 0;
+    it.seg = random_segment(rng, width);
+  }
+  return items;
+}
+
+}  // namespace
+
+TEST(RtlCompactSegmentInterpolator, UnitConfiguration) {
+  // The bench's formats are the unit's parameters.
+  const ChannelFormats f = formats();
+#ifdef WATKINS_RTL_PARAM_XBits
+  EXPECT_EQ(f.bits[fmt::ChanX], WATKINS_RTL_PARAM_XBits);
+  EXPECT_EQ(f.frac[fmt::ChanX], WATKINS_RTL_PARAM_XFracBits);
+  EXPECT_EQ(f.bits[fmt::ChanZ], WATKINS_RTL_PARAM_ZBits);
+  EXPECT_EQ(f.frac[fmt::ChanZ], WATKINS_RTL_PARAM_ZFracBits);
+  EXPECT_EQ(f.bits[fmt::ChanR], WATKINS_RTL_PARAM_AttrBits);
+  EXPECT_EQ(f.frac[fmt::ChanR], WATKINS_RTL_PARAM_AttrFracBits);
+  EXPECT_EQ(f.depth_bits, WATKINS_RTL_PARAM_DepthBits);
+#endif
+  const ChannelFormats g = formats();
+  const CompactSegmentInterpolatorTiming t(g.bits[fmt::ChanX], g.bits[fmt::ChanZ], g.bits[fmt::ChanR],
+                                           QuotientBitsPerClock);
+  std::printf("issue %d clocks, %d divider iterations, a span every %d clocks\n", t.issue_clocks(), t.iterations(),
+              t.span_clocks());
+}
+
+TEST(RtlCompactSegmentInterpolator, RandomSegmentsFullRate) {
+  Bench b(1);
+  b.run(random_items(b.rng(), 4000, 97, 6), 97, 0, 0);
+  EXPECT_EQ(b.mismatches, 0u);
+  EXPECT_EQ(b.timing_mismatches, 0u);
+  EXPECT_GT(b.checked, 4000u);
+}
+
+TEST(RtlCompactSegmentInterpolator, RandomSegmentsGapsAndBackPressure) {
+  Bench b(2);
+  b.run(random_items(b.rng(), 3000, 64, 5), 64, 35, 35);
+  b.run(random_items(b.rng(), 1000, 320, 8), 320, 10, 70);
+  b.run(random_items(b.rng(), 1000, 1, 3), 1, 20, 20);  // one pixel wide
+  EXPECT_EQ(b.mismatches, 0u);
+  EXPECT_EQ(b.timing_mismatches, 0u);
+}
+
+// Random scenes prepared at the unit's configuration: their segment streams, full rate and stalled.
+TEST(RtlCompactSegmentInterpolator, RandomScenes) {
+  Bench b(3);
+  const Config& cfg = unit_config();
+  int ran = 0;
+  for (std::uint64_t seed = 1; seed <= 60; ++seed) {
+    PreparedScene p;
+    try {
+      p = prepare(test::random_scene(seed), cfg);
+    } catch (const std::exception&) {
+      continue;
+    }
+    const std::vector<Item> items = segment_stream(p, cfg);
+    b.run(items, p.width, 0, 0);
+    b.run(items, p.width, 30, 30);
+    ++ran;
+  }
+  std::printf("%d random scenes, %llu beats\n", ran, static_cast<unsigned long long>(b.checked));
+  EXPECT_GT(ran, 20);
+  EXPECT_EQ(b.mismatches, 0u);
+  EXPECT_EQ(b.timing_mismatches, 0u);
+}
+
+// Every shipped scene (scenes/*.json) that prepares at the unit's configuration: at full rate (its
+// fragments per clock and longest line printed) and under gaps and back-pressure.
+TEST(RtlCompactSegmentInterpolator, ShippedScenes) {
+  Bench b(4);
+  const Config& cfg = unit_config();
+  std::vector<std::string> files;
+  for (const auto& e : std::filesystem::directory_iterator(WATKINS_SOURCE_DIR "/scenes"))
+    if (e.path().extension() == ".json") files.push_back(e.path().string());
+  std::sort(files.begin(), files.end());
+  int ran = 0;
+  for (const std::string& file : files) {
+    PreparedScene p;
+    try {
+      p = prepare(load_scene(file, test::shading_options(ShadingMode::Gouraud)), cfg);
+      if (p.config.edge_order != cfg.edge_order) continue;
+    } catch (const std::exception&) {
+      continue;  // needs more than this configuration
+    }
+    const std::vector<Item> items = segment_stream(p, cfg);
+    const Result r = b.run(items, p.width, 0, 0);
+    std::printf("  %s: %llu segments, %llu fragments in %llu clocks (%.3f per clock), longest line %d clocks\n",
+                std::filesystem::path(file).filename().c_str(),
+                static_cast<unsigned long long>(r.items - static_cast<std::uint64_t>(p.height)),
+                static_cast<unsigned long long>(r.fragments), static_cast<unsigned long long>(r.cycles),
+                double(r.fragments) / double(std::max<std::uint64_t>(r.cycles, 1)), r.worst_line);
+    b.run(items, p.width, 25, 25);
+    ++ran;
+  }
+  std::printf("%d shipped scenes\n", ran);
+  EXPECT_GT(ran, 0);
+  EXPECT_EQ(b.mismatches, 0u);
+  EXPECT_EQ(b.timing_mismatches, 0u);
+}
