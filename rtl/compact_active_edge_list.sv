@@ -17,27 +17,29 @@
 //         accepted beat; each accepted edge is stepped (value += slope, remaining -= 1, at edge
 //         order 3 by forward differences, as edge_incrementer) on the way back to the RAM's write
 //         port and, unless it retires, written at A[kept], kept += 1 (in place: kept <= read).
-//         The running maximum of the kept keys finds the first one that sorts before an earlier
-//         one (a crossing), D. Then the end-of-line marker.
+//         The running maximum of the kept keys (compared a clock after each write) finds the
+//         first one that sorts before an earlier one (a crossing), at position D. Then the
+//         end-of-line marker.
 //   FIX   (only a line with a crossing, not the last) an insertion sort over A[D..K-1]: each entry
 //         below the maximum before it goes to the scratch word, the greater ones move up one
 //         word each, and it is copied back from the scratch word into its place.
 // Then the next line's INS. After the last line's marker the block reads the input up to its
 // EOF beat (records past the last line); busy_o falls on the clock after that beat.
-// Timing (clocks; "beat" = a clock the input is valid, output stalls and input gaps add clocks):
-//   INS   one clock per record with y0 below the line (skipped) or at the line with the list
-//         full (dropped, overflow_o set); a record placed into a list of L entries, m of them
-//         greater: 1 clock when L == 0, else m + 2; one clock for the head beat past the line
+// Latency: data-dependent, by phase (clocks when the input is valid and the output ready; input
+// gaps and output stalls add their clocks):
+//   INS   1 clock per record with y0 below the line (skipped) or at the line with the list full
+//         (dropped, overflow_o set); a record placed into a list of L entries, m of them greater
+//         than it: 1 clock when L == 0, else m + 2; 1 clock for the head beat past the line
 //         (y0 > y, or EOF), which ends the phase and reads A[0].
-//   OUT   K edges one per clock from the clock after INS ends, then the marker on the next.
-//   FIX   from the clock after the marker is taken: K - D clocks (one per scanned entry), plus
-//         for each entry that moves back past m others m + 2 clocks (m + 1 when it goes to the
-//         front).
-// A line (not the last) with no stall takes I + K + 1 + F clocks from its INS's first clock to
-// the next one: I = sum over its head beats of the INS costs above (at least 1), F = 0 without
-// a crossing. The first edge is presented the clock after INS sees the head past the line.
-// Ready: edge_ready_o is combinational from the state, the head's y0 and the list's count;
-// out_valid_o is a register's decode; the outputs are the RAM's read register.
+//   OUT   K edges, one per clock from the clock after INS ends; the marker on the next clock.
+//   FIX   from the clock after the marker is taken: K' - D clocks (one per scanned entry of the
+//         K' kept), plus m + 2 for each entry that moves back past m others (m + 1 when it goes
+//         to the front).
+// So a line other than the last takes I + K + 1 + F clocks from its INS's first clock to the
+// next line's: I the sum of its INS costs (at least 1), F = 0 without a crossing.
+// Ready: edge_ready_o is combinational (state, the head's y0, the count, and in the shift the key
+// compare of the read register); out_valid_o and out_eol_o decode the state register; out_* are
+// the RAM's read register, which holds while a beat waits.
 `include "watkins_assert.svh"
 
 module compact_active_edge_list #(
@@ -141,6 +143,11 @@ module compact_active_edge_list #(
   logic                  cross_q, cross_d;  // this line has a crossing
   logic [KeyBits-1:0]    max_q, max_d;  // OUT / FIX: the greatest key of the entries before
   logic [KeyBits-1:0]    mov_q, mov_d;  // INS / FIX: the key of the entry being placed
+  // OUT: the key of the entry written back on the clock before (at A[pend_pos_q]), compared with
+  // max_q one clock later: the step's adders and the compare are then not in one clock.
+  logic                  pend_q, pend_d;
+  logic [KeyBits-1:0]    pend_key_q, pend_key_d;
+  logic [AddrBits-1:0]   pend_pos_q, pend_pos_d;
   logic [EdgeIdBits-1:0] id_q;
   logic                  take, ov_set;  // the input's head beat is taken; a record dropped full
 
@@ -169,7 +176,7 @@ module compact_active_edge_list #(
 
   // ------------------------------------------------------------ keys
   logic [KeyBits-1:0] key_ram, key_step, key_rec, key_cmp;
-  logic               ram_below, step_below;
+  logic               ram_below, pend_below;
   assign key_ram  = {ram_q.value[XLow +: XBits] ^ XSign, ram_q.id};
   assign key_step = {value_s[XLow +: XBits] ^ XSign, ram_q.id};
   assign key_rec  = {rec.value[XLow +: XBits] ^ XSign, id_q};
@@ -177,7 +184,7 @@ module compact_active_edge_list #(
   // being placed (keys are unique: not below is above).
   assign key_cmp    = (state_q == SScan) ? max_q : mov_q;
   assign ram_below  = key_ram < key_cmp;
-  assign step_below = key_step < max_q;
+  assign pend_below = pend_key_q < max_q;
 
   // ------------------------------------------------------------ control
   logic head_late, head_past, full, last_line;
@@ -201,6 +208,18 @@ module compact_active_edge_list #(
     cross_d = cross_q;
     max_d   = max_q;
     mov_d   = mov_q;
+    pend_d     = 1'b0;
+    pend_key_d = key_step;
+    pend_pos_d = AddrBits'(kept_q);
+    // The running maximum of the kept keys, until the first one below it (a crossing, D).
+    if (pend_q) begin
+      if (pend_pos_q == '0 || (!cross_q && !pend_below)) begin
+        max_d = pend_key_q;
+      end else if (!cross_q) begin
+        cross_d = 1'b1;  // max_q stays the greatest key before A[first]
+        first_d = pend_pos_q;
+      end
+    end
     re      = 1'b0;
     ra      = rd_q;
     we      = 1'b0;
@@ -271,12 +290,7 @@ module compact_active_edge_list #(
         w_step = 1'b1;
         if (!retire) begin
           kept_d = kept_q + 1'b1;
-          if (kept_q == '0 || (!cross_q && !step_below)) begin
-            max_d = key_step;
-          end else if (!cross_q) begin
-            cross_d = 1'b1;  // max_q stays the greatest key before A[first]
-            first_d = AddrBits'(kept_q);
-          end
+          pend_d = 1'b1;
         end
         if (CountBits'(rd_q) + 1'b1 == cnt_q) state_d = SEol;
       end
@@ -284,10 +298,10 @@ module compact_active_edge_list #(
         cnt_d = kept_q;
         if (last_line) begin
           state_d = SDrain;
-        end else if (cross_q) begin
+        end else if (cross_d) begin  // with the last edge's compare, if pending
           re      = 1'b1;
-          ra      = first_q;
-          rd_d    = first_q;
+          ra      = first_d;
+          rd_d    = first_d;
           state_d = SScan;
         end else begin
           state_d = SIns;
@@ -374,12 +388,14 @@ module compact_active_edge_list #(
       // overflow flag, and a frame start leaves frame_q set.
       frame_q <= rst_ni;
       state_q <= rst_ni ? SIns : SIdle;
+      pend_q  <= 1'b0;
       line_q  <= '0;
       cnt_q   <= '0;
       id_q    <= '0;
       if (!rst_ni) overflow_o <= 1'b0;
     end else begin
       state_q <= state_d;
+      pend_q  <= pend_d;
       cnt_q   <= cnt_d;
       if (state_q == SEol && out_ready_i && !last_line) line_q <= line_q + 1'b1;
       if (take && !edge_eof_i) id_q <= id_q + 1'b1;
@@ -395,6 +411,8 @@ module compact_active_edge_list #(
     cross_q <= cross_d;
     max_q   <= max_d;
     mov_q   <= mov_d;
+    pend_key_q <= pend_key_d;
+    pend_pos_q <= pend_pos_d;
   end
 
   assign busy_o = frame_q;
@@ -406,6 +424,7 @@ module compact_active_edge_list #(
   `WATKINS_ASSERT(a_count, CountBits'(Entries) >= cnt_q)
   `WATKINS_ASSERT(a_kept, (state_q == SOut) |-> kept_q <= CountBits'(rd_q))
   `WATKINS_ASSERT(a_busy, frame_q == (state_q != SIdle))
+  `WATKINS_ASSERT(a_pend, pend_q |-> (state_q == SOut || state_q == SEol))
   `WATKINS_COVER(c_overflow, ov_set)
   `WATKINS_COVER(c_crossing, state_q == SFPlace)
 endmodule

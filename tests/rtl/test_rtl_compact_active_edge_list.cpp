@@ -113,6 +113,57 @@ class Bench {
     return lines;
   }
 
+  // The clock of each line's end-of-line beat at full rate (no gaps, no stalls; clock 0 the
+  // start_i clock), by the RTL header's formula from the twin's lists: E(0) = I(0) + K(0) + 1,
+  // E(y+1) = E(y) + F(y) + I(y+1) + K(y+1) + 1.
+  std::vector<std::uint64_t> formula_eols(const EdgeFrame& f) const {
+    using Key = std::pair<i64, int>;
+    auto key = [](const ActiveEdge& e) { return Key{e.rec.value[fmt::ChanX], e.rec.id}; };
+    std::vector<std::uint64_t> eol;
+    ActiveEdgeList a(N, formats);
+    std::size_t next = 0;
+    std::uint64_t t = 0;
+    for (int y = 0; y < f.height; ++y) {
+      std::uint64_t ins = 1;  // the head beat past the line
+      for (; next < f.edges.size() && f.edges[next].y0 <= y; ++next) {
+        const EdgeRecord& r = f.edges[next];
+        if (r.y0 < y || a.size() == N) {
+          ins += 1;
+          continue;
+        }
+        const Key k{r.value[fmt::ChanX], r.id};
+        std::uint64_t m = 0;
+        for (const ActiveEdge& e : a.edges()) m += k < key(e);
+        ins += a.size() == 0 ? 1 : m + 2;
+        a.insert(r);
+      }
+      t += ins + static_cast<std::uint64_t>(a.size()) + 1;
+      eol.push_back(t);
+      // FIX: the stepped, kept keys in this line's order, sorted by insertion from the first
+      // crossing.
+      std::vector<Key> kept;
+      for (ActiveEdge e : a.edges()) {
+        EdgeIncrementer::step(e, formats);
+        if (e.remaining > 0) kept.push_back(key(e));
+      }
+      std::size_t d = 1;
+      while (d < kept.size() && !(kept[d] < *std::max_element(kept.begin(), kept.begin() + static_cast<long>(d)))) ++d;
+      if (y + 1 < f.height && d < kept.size()) {
+        t += kept.size() - d;
+        for (std::size_t j = d; j < kept.size(); ++j) {
+          if (!(kept[j] < kept[j - 1])) continue;
+          std::size_t m = 0;
+          while (m < j && kept[j] < kept[j - 1 - m]) ++m;
+          t += m + 2 - (m == j ? 1 : 0);
+          std::rotate(kept.begin() + static_cast<long>(j - m), kept.begin() + static_cast<long>(j),
+                      kept.begin() + static_cast<long>(j + 1));
+        }
+      }
+      a.advance();
+    }
+    return eol;
+  }
+
   static std::string show(const Line& l) {
     std::string s = "[";
     for (const auto& e : l) s += " p" + std::to_string(e.poly) + ":x" + std::to_string(e.value[fmt::ChanX]);
@@ -126,6 +177,8 @@ class Bench {
     Stalls gaps{rng, gap_pct}, bp{rng, bp_pct};
     int ov_line = -1;
     const std::vector<Line> want = model(f, ov_line);
+    const bool full_rate = gap_pct == 0 && bp_pct == 0 && !poke;
+    const std::vector<std::uint64_t> eols = full_rate ? formula_eols(f) : std::vector<std::uint64_t>{};
     CompactActiveEdgeListTiming::Inputs in;
     in.height = f.height;
     d.height_i = static_cast<std::uint16_t>(f.height);
@@ -167,6 +220,9 @@ class Bench {
       if (d.out_valid_o && d.out_ready_i) {
         if (line >= f.height) return fail(when + "output beyond the frame");
         if (d.out_eol_o) {
+          if (full_rate && h.cycles - start != eols[static_cast<std::size_t>(line)])
+            fail(when + "end of line at clock " + std::to_string(h.cycles - start) + ", the header's formula says " +
+                 std::to_string(eols[static_cast<std::size_t>(line)]));
           if (cur != want[static_cast<std::size_t>(line)])
             fail(when + "rtl " + show(cur) + " model " + show(want[static_cast<std::size_t>(line)]));
           ++line, ++tot.lines;
