@@ -1,0 +1,244 @@
+// compact_scanline_buffer: scanline_buffer's per-pixel visibility and raster-order pixel stream
+// with every per-pixel store in block RAM, for small parts. Drop-in for rtl/scanline_buffer.sv
+// (the same ports, parameters and streams; values twin: model/twins/scanline_buffer.hpp; cycle
+// twin: model/twins/compact_scanline_buffer_timing.hpp). Full-frame output only: sparse_i must
+// be 0 (asserted in simulation).
+// Two line banks (ping-pong): fragments of line y are depth-tested into the write bank (kept when
+// the pixel is unwritten or strictly nearer; at equal depth tie_submission_i: 0 keeps the first
+// arrival, 1 the smaller polygon id) while the read bank streams line y-1 out, x = 0..width-1;
+// the end-of-line marker swaps the banks once the reader has taken the previous line's last
+// pixel (in that clock at the earliest).
+// Storage: per bank a depth RAM of MaxWidth words {written, polygon id, depth}, one shade RAM of
+// 2 * 2^XBits words {bank, x}; synchronous reads, one read and one write port each (EBR). The
+// write bank's depth RAM serves the writer (read for the test, written by a winner); the read
+// bank's serves the reader (read for the written mark, written to clear it), so the written marks
+// are cleared as they are read, through the read bank's otherwise idle write port, with no clear
+// pass and no mark in a flip-flop. The shade RAM: the writer writes, the reader reads.
+// Timing (cycle twin): after reset the block clears the marks of both banks, one x per clock,
+// MaxWidth clocks with frag_ready_o low; then a fragment is taken every clock it is offered (the
+// writer never stalls). A marker is taken when the reader is idle, or in the clock the reader
+// loads the previous line's last pixel. The reader starts the clock after the marker: one clock
+// reads pixel 0 into the RAMs' read registers, then each clock the output register can take a
+// pixel (pixel_valid_o low or pixel_ready_i high) loads pixel x into it and reads pixel x + 1: a
+// line takes width + 1 clocks at full rate, and its last pixel's load lets the next marker in.
+// Latency: a fragment is read (accept clock), tested and written (next clock); a pixel is read one
+// clock or more before the load that registers it.
+// Registered: every pixel output. frag_ready_o is combinational from registers and pixel_ready_i
+// only (low for a marker waiting on the reader, and during the clear after reset).
+`include "watkins_assert.svh"
+
+module compact_scanline_buffer #(
+  parameter int unsigned MaxWidth   = watkins_pkg::DefaultMaxWidth,  // line-bank depth in pixels
+  parameter int unsigned DepthBits  = watkins_pkg::DepthBits,   // depth word (the configuration's)
+  parameter int unsigned PolyIdBits = watkins_pkg::PolyIdBits   // polygon id (the configuration's)
+) (
+  input  logic                              clk_i,
+  input  logic                              rst_ni,
+  input  logic [watkins_pkg::LineBits-1:0]  width_i,           // 1..MaxWidth, stable per frame
+  input  logic [watkins_pkg::LineBits-1:0]  height_i,          // lines per frame, for
+                                                               // pixel_last_o
+  input  watkins_pkg::rgb_t                 background_i,      // shade of uncovered pixels
+  /* verilator lint_off UNUSEDSIGNAL */
+  input  logic                              sparse_i,          // must be 0: full frames only
+  /* verilator lint_on UNUSEDSIGNAL */
+  input  logic                              tie_submission_i,  // equal depth: smaller id wins;
+                                                               // stable per frame
+  input  logic [watkins_pkg::LineBits-1:0]  frag_x_i,          // < width_i
+  input  logic [DepthBits-1:0]              frag_depth_i,      // smaller is nearer
+  input  logic [PolyIdBits-1:0]             frag_poly_i,       // polygon id: submission order
+  input  watkins_pkg::rgb_t                 frag_rgb_i,
+  input  logic                              frag_eol_i,        // end-of-line marker: the line is
+                                                               // complete
+  input  logic                              frag_valid_i,
+  output logic                              frag_ready_o,
+  output watkins_pkg::rgb_t                 pixel_rgb_o,
+  output logic                              pixel_covered_o,
+  output logic [watkins_pkg::LineBits-1:0]  pixel_x_o,
+  output logic [watkins_pkg::LineBits-1:0]  pixel_y_o,
+  output logic                              pixel_last_o,      // last pixel of the frame
+  output logic                              pixel_valid_o,
+  input  logic                              pixel_ready_i
+);
+  localparam int unsigned LineBits  = watkins_pkg::LineBits;
+  localparam int unsigned RgbBits   = watkins_pkg::RgbBits;
+  localparam int unsigned XBits     = (MaxWidth > 1) ? $clog2(MaxWidth) : 1;  // an x in a bank
+  localparam int unsigned KeyBits   = PolyIdBits + DepthBits;  // {polygon id, depth}
+  localparam int unsigned WordBits  = 1 + KeyBits;             // {written, polygon id, depth}
+
+  // ------------------------------------------------------------ control
+  logic                wsel_q;     // bank being written; the reader uses the other one
+  logic                clear_q;    // the clear after reset runs (rx_q is its x)
+  logic                rd_busy_q;  // a line is being read out
+  logic                pf_q;       // pixel rx_q is in the RAMs' read registers
+  logic [XBits-1:0]    rx_q;
+  logic [LineBits-1:0] rline_q;
+
+  logic frag_take, eol_take, eol_ok;
+  logic rd_load, rd_read, rd_last, rd_lastline;
+  logic [XBits-1:0] rx_next, rd_addr;
+
+  // x < width_i <= MaxWidth: the bank index is its low bits.
+  /* verilator lint_off UNUSEDSIGNAL */
+  logic [LineBits-1:0] frag_x;
+  assign frag_x = frag_x_i;
+  /* verilator lint_on UNUSEDSIGNAL */
+
+  assign rx_next     = rx_q + 1'b1;
+  assign rd_last     = LineBits'(rx_q) + 1'b1 == width_i;
+  assign rd_lastline = rline_q + 1'b1 == height_i;
+  // The output register takes a pixel when empty or emptied this clock.
+  assign rd_load = pf_q && (!pixel_valid_o || pixel_ready_i);
+  // Reads: pixel 0 on the line's first clock, pixel x + 1 with pixel x's load.
+  assign rd_read = rd_busy_q && (!pf_q || (rd_load && !rd_last));
+  assign rd_addr = pf_q ? rx_next : rx_q;
+
+  assign eol_ok       = !clear_q && (!rd_busy_q || (rd_load && rd_last));
+  assign frag_ready_o = !clear_q && (!frag_eol_i || eol_ok);
+  assign frag_take    = frag_valid_i && !frag_eol_i && !clear_q;
+  assign eol_take     = frag_valid_i && frag_eol_i && eol_ok;
+
+  // ------------------------------------------------------------ writer
+  // Accept: the write bank's depth word at x is read. Test (t_*, the next clock): the word from
+  // the RAM's read register -- or the word the fragment tested in the accept clock wrote at the
+  // same x, which the read did not see (written on the same edge) -- against the fragment; a
+  // winner writes its word and shade at the end of the clock. A marker takes an input clock, so
+  // the accept and the test of one fragment see the same write bank (wsel_q).
+  logic                t_valid_q, lw_valid_q;
+  logic [XBits-1:0]    t_x_q;
+  logic [KeyBits-1:0]  t_key_q, lw_key_q;  // lw: the last clock's winner
+  logic [RgbBits-1:0]  t_rgb_q;
+  logic                t_fw_q;   // the fragment tested in the accept clock was at the same x
+  logic                wins;
+  logic [WordBits-1:0] dq0_q, dq1_q;  // each bank's read register
+  logic [WordBits-1:0] old_word;
+
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      t_valid_q  <= 1'b0;
+      lw_valid_q <= 1'b0;
+    end else begin
+      t_valid_q  <= frag_take;
+      lw_valid_q <= wins;
+    end
+    if (frag_take) begin
+      t_x_q   <= XBits'(frag_x);
+      t_key_q <= {frag_poly_i, frag_depth_i};
+      t_rgb_q <= frag_rgb_i;
+      t_fw_q  <= t_valid_q && t_x_q == XBits'(frag_x);
+    end
+    lw_key_q <= t_key_q;
+  end
+
+  // Nearer, or at equal depth by the tie rule (a strictly smaller id only: equal ids, one
+  // polygon's own spans, keep the first arrival, as the model does).
+  function automatic logic beats(input logic [KeyBits-1:0] t, input logic [KeyBits-1:0] o,
+                                 input logic tie);
+    beats = t[DepthBits-1:0] < o[DepthBits-1:0]
+         || (tie && t[DepthBits-1:0] == o[DepthBits-1:0]
+             && t[KeyBits-1:DepthBits] < o[KeyBits-1:DepthBits]);
+  endfunction
+  assign old_word = (t_fw_q && lw_valid_q) ? {1'b1, lw_key_q} : (wsel_q ? dq1_q : dq0_q);
+  assign wins     = t_valid_q && (!old_word[WordBits-1]
+                                  || beats(t_key_q, old_word[KeyBits-1:0], tie_submission_i));
+
+  // ------------------------------------------------------------ depth RAMs, one per bank
+  // The write bank's ports belong to the writer, the read bank's to the reader (and both to the
+  // clear after reset). The reader's write clears the mark of the pixel it loads while its read
+  // fetches the next one, so a port never reads and writes one address in a clock.
+  // (Written out per bank: two memories, each with its own read register.)
+  logic [WordBits-1:0] mem0 [MaxWidth];
+  logic [WordBits-1:0] mem1 [MaxWidth];
+  logic                w0, w1;  // bank 0 / 1 is the write bank (not during the clear)
+  logic                re0, re1, we0, we1;
+  logic [XBits-1:0]    ra0, ra1, wa0, wa1;
+  assign w0  = !clear_q && !wsel_q;
+  assign w1  = !clear_q && wsel_q;
+  assign re0 = w0 ? frag_take : rd_read;
+  assign re1 = w1 ? frag_take : rd_read;
+  assign ra0 = w0 ? XBits'(frag_x) : rd_addr;
+  assign ra1 = w1 ? XBits'(frag_x) : rd_addr;
+  assign we0 = w0 ? wins : (rd_load || clear_q);
+  assign we1 = w1 ? wins : (rd_load || clear_q);
+  assign wa0 = w0 ? t_x_q : rx_q;
+  assign wa1 = w1 ? t_x_q : rx_q;
+  // A clear writes the mark 0 (the rest of the word is then never read as a value).
+  always_ff @(posedge clk_i) begin
+    if (re0) dq0_q <= mem0[ra0];
+    if (we0) mem0[wa0] <= {w0, t_key_q};
+  end
+  always_ff @(posedge clk_i) begin
+    if (re1) dq1_q <= mem1[ra1];
+    if (we1) mem1[wa1] <= {w1, t_key_q};
+  end
+
+  // ------------------------------------------------------------ shade RAM
+  logic [RgbBits-1:0] rgb_mem [2 << XBits];  // {bank, x}
+  logic [RgbBits-1:0] rgb_q;
+  always_ff @(posedge clk_i) begin
+    if (wins) rgb_mem[{wsel_q, t_x_q}] <= t_rgb_q;
+    if (rd_read) rgb_q <= rgb_mem[{!wsel_q, rd_addr}];
+  end
+
+  // ------------------------------------------------------------ reader
+  logic covered;  // the loaded pixel's mark, from the read bank's read register
+  assign covered = wsel_q ? dq0_q[WordBits-1] : dq1_q[WordBits-1];
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni) begin
+      wsel_q        <= 1'b0;
+      clear_q       <= 1'b1;
+      rd_busy_q     <= 1'b0;
+      pf_q          <= 1'b0;
+      rx_q          <= '0;
+      rline_q       <= '0;
+      pixel_valid_o <= 1'b0;
+    end else begin
+      if (clear_q) begin
+        rx_q <= rx_next;
+        if (LineBits'(rx_q) == LineBits'(MaxWidth - 1)) begin
+          clear_q <= 1'b0;
+          rx_q    <= '0;
+        end
+      end
+      if (rd_read) pf_q <= 1'b1;
+      if (rd_load) begin
+        rx_q <= rx_next;
+        if (rd_last) begin
+          rd_busy_q <= 1'b0;
+          pf_q      <= 1'b0;
+          rx_q      <= '0;
+          rline_q   <= rd_lastline ? '0 : rline_q + 1'b1;
+        end
+      end
+      if (!pixel_valid_o || pixel_ready_i) pixel_valid_o <= rd_load;
+      if (eol_take) begin
+        wsel_q    <= !wsel_q;
+        rd_busy_q <= 1'b1;
+      end
+    end
+  end
+  always_ff @(posedge clk_i) begin
+    if (rd_load) begin
+      pixel_rgb_o     <= covered ? rgb_q : background_i;
+      pixel_covered_o <= covered;
+      pixel_x_o       <= LineBits'(rx_q);
+      pixel_y_o       <= rline_q;
+      pixel_last_o    <= rd_last && rd_lastline;
+    end
+  end
+
+  `WATKINS_ASSERT(a_full_frame_only, !sparse_i)
+  `WATKINS_ASSERT_HOLD(a_in_hold, frag_valid_i, frag_ready_o, {frag_x_i, frag_depth_i, frag_poly_i,
+    frag_rgb_i, frag_eol_i})
+  `WATKINS_ASSERT_HOLD(a_out_hold, pixel_valid_o, pixel_ready_i, {pixel_rgb_o, pixel_covered_o,
+    pixel_last_o, pixel_x_o, pixel_y_o})
+  `WATKINS_ASSERT(a_x_in_line, frag_valid_i && !frag_eol_i |-> frag_x_i < width_i)
+  `WATKINS_ASSERT(a_width, width_i >= LineBits'(1) && width_i <= LineBits'(MaxWidth))
+  // Why one read register per bank serves both: the reader's prefetched pixel is loaded before
+  // the swap hands its bank to the writer.
+  `WATKINS_ASSERT(a_swap_after_last, eol_take |-> !pf_q || (rd_load && rd_last))
+  `WATKINS_COVER(c_same_x_back_to_back,
+    frag_take && $past(frag_take) && frag_x_i == $past(frag_x_i))
+  `WATKINS_COVER(c_forwarded, t_valid_q && t_fw_q && lw_valid_q)
+  `WATKINS_COVER(c_eol_waits, frag_valid_i && !frag_ready_o && !clear_q)
+  `WATKINS_COVER(c_swap_on_last, eol_take && rd_busy_q)
+endmodule
