@@ -246,7 +246,16 @@ module compact_segment_interpolator #(
   logic [InterpVectorBits-1:0] h_value_q, h_step_q;
   logic                        h_pop;  // the stepper takes the head
 
-  assign seg_ready_o = !m_busy_q && !h_valid_q && (d_done_q || !in_recip);
+  // The offered item is classified on its first clock (pk_seen_q, pk_recip_q), so seg_ready_o
+  // and the take are functions of flops: from the offer's compares they would run into every
+  // clock enable of the take (the block's longest path).
+  logic pk_seen_q, pk_recip_q;
+  always_ff @(posedge clk_i) begin
+    if (!rst_ni || take) pk_seen_q <= 1'b0;
+    else if (seg_valid_i) pk_seen_q <= 1'b1;
+    if (!pk_seen_q) pk_recip_q <= in_recip;
+  end
+  assign seg_ready_o = pk_seen_q && !m_busy_q && !h_valid_q && (d_done_q || !pk_recip_q);
   assign take        = seg_valid_i && seg_ready_o;
 
   // Per operation: its digits, and whether its operand is negative.
@@ -289,7 +298,7 @@ module compact_segment_interpolator #(
       x_valid_q <= 1'b0;
       s_valid_q <= 1'b0;
     end else begin
-      if (take && in_recip) m_busy_q <= 1'b1;
+      if (take && pk_recip_q) m_busy_q <= 1'b1;
       else if (s_valid_q && s_op_q == OpBits'(Ops - 1)) m_busy_q <= 1'b0;
       o_valid_q <= issue;
       p_valid_q <= o_valid_q;
@@ -454,7 +463,6 @@ module compact_segment_interpolator #(
   for (genvar c = 1; c <= InterpolatedSlots; c++) begin : g_w
     localparam int unsigned SlotBits     = watkins_pkg::slot_bits(c, XBits, ZBits, AttrBits);
     localparam int unsigned SlotLow      = ilo(c, ZBits, AttrBits);
-    localparam int unsigned ValueSumBits = SlotBits + AlphaBits;
     localparam logic signed [SlotBits-1:0] StepMax = {1'b0, {(SlotBits - 1){1'b1}}};
     localparam logic signed [SlotBits-1:0] StepMin = {1'b1, {(SlotBits - 1){1'b0}}};
     always_ff @(posedge clk_i) begin
@@ -471,13 +479,13 @@ module compact_segment_interpolator #(
       if (take) begin
         h_value_q[SlotLow +: SlotBits] <=
             seg_e_i[watkins_pkg::slot_lo(c, XBits, ZBits, AttrBits) +: SlotBits];
-      end else if (s_valid_q && s_op_q == OpBits'(c + 4)) begin : w_value
-        /* verilator lint_off UNUSEDSIGNAL */
-        logic [ValueSumBits-1:0] sum;
-        /* verilator lint_on UNUSEDSIGNAL */
-        sum = {h_value_q[SlotLow +: SlotBits], 1'b1, (AlphaBits - 1)'(0)}
-            + ValueSumBits'(s_u_q);
-        h_value_q[SlotLow +: SlotBits] <= sum[AlphaBits +: SlotBits];
+      end else if (s_valid_q && s_op_q == OpBits'(c + 4)) begin
+        // E + round_shift(X, AlphaBits) = E + X[AlphaBits +: SlotBits] + X[AlphaBits-1]: the
+        // rounding constant 2^(AlphaBits-1) carries out of X's low bits exactly when that bit
+        // is set, so only the slot's bits are added.
+        h_value_q[SlotLow +: SlotBits] <= h_value_q[SlotLow +: SlotBits]
+                                        + s_u_q[AlphaBits +: SlotBits]
+                                        + SlotBits'(s_u_q[AlphaBits-1]);
       end
     end
   end
@@ -629,4 +637,5 @@ module compact_segment_interpolator #(
         && !(x_valid_q && x_op_q == 0) && !(s_valid_q && s_op_q == 0))
   `WATKINS_COVER(c_back_to_back_spans, load && st_active_q)
   `WATKINS_COVER(c_take_empty, take && !seg_eol_i && in_empty)
+  `WATKINS_ASSERT(a_pk_recip, pk_seen_q && seg_valid_i |-> pk_recip_q == in_recip)
 endmodule

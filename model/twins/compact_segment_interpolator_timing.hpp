@@ -3,6 +3,7 @@
 // in that cycle (seg_valid_i, the offered item's marker flag and pixel range, frag_ready_i),
 // returns what the RTL shows in it (seg_ready_o, frag_valid_o, frag_eol_o, frag_x_o), and
 // advances every control register as the RTL's clock edge does:
+// - the offer's classification on its first clock (seen, needs a reciprocal);
 // - divider: idle, a normalize clock, Iterations restoring clocks, done until the item is taken;
 // - setup: busy from a span's take until its last operation's w stage, issuing one digit per
 //   clock through the o, p, x, s stages; the head (valid, marker, pixel range);
@@ -50,11 +51,12 @@ class CompactSegmentInterpolatorTiming {
   Pins clock(bool seg_valid, const Item& in, bool frag_ready) {
     const bool in_recip = !in.eol && in.x_end > in.x_start;
     Pins pins;
-    pins.seg_ready = !m_busy_ && !h_valid_ && (d_done_ || !in_recip);
+    pins.seg_ready = pk_seen_ && !m_busy_ && !h_valid_ && (d_done_ || !pk_recip_);
     pins.frag_valid = frag_valid_;
     pins.frag_eol = frag_eol_;
     pins.frag_x = frag_x_;
     const bool take = seg_valid && pins.seg_ready;
+    const bool pk_recip = pk_recip_;
     const bool issue = m_busy_ && m_op_ != Ops;
     const bool out_free = !frag_valid_ || frag_ready;
     const bool emit_frag = out_free && st_active_;
@@ -63,6 +65,11 @@ class CompactSegmentInterpolatorTiming {
     const bool emit_eol = out_free && !st_active_ && h_valid_ && h_eol_;
     const bool pop = load || emit_eol;
     const bool w_last = s_valid_ && s_op_ == Ops - 1;
+
+    // The offer's classification.
+    if (!pk_seen_) pk_recip_ = in_recip;
+    if (take) pk_seen_ = false;
+    else if (seg_valid) pk_seen_ = true;
 
     // Divider.
     if (take) {
@@ -92,7 +99,7 @@ class CompactSegmentInterpolatorTiming {
       o_op_ = m_op_;
       o_last_ = m_dig_ == last_digit(m_op_);
     }
-    if (take && in_recip) m_busy_ = true;
+    if (take && pk_recip) m_busy_ = true;
     else if (w_last) m_busy_ = false;
     if (take) {
       m_op_ = 0;
@@ -144,6 +151,8 @@ class CompactSegmentInterpolatorTiming {
   }
 
   int offset_digits_, z_digits_, attr_digits_, iterations_;
+  // The offered item: classified, and whether it needs a reciprocal.
+  bool pk_seen_ = false, pk_recip_ = false;
   // Divider.
   bool d_run_ = false, d_norm_ = false, d_done_ = false;
   int d_iter_ = 0;

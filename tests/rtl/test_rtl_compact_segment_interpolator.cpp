@@ -310,17 +310,17 @@ TEST(RtlCompactSegmentInterpolator, UnitConfiguration) {
 
 TEST(RtlCompactSegmentInterpolator, RandomSegmentsFullRate) {
   Bench b(1);
-  b.run(random_items(b.rng(), 4000, 97, 6), 97, 0, 0);
+  b.run(random_items(b.rng(), 30000, 97, 6), 97, 0, 0);
   EXPECT_EQ(b.mismatches, 0u);
   EXPECT_EQ(b.timing_mismatches, 0u);
-  EXPECT_GT(b.checked, 4000u);
+  EXPECT_GT(b.checked, 30000u);
 }
 
 TEST(RtlCompactSegmentInterpolator, RandomSegmentsGapsAndBackPressure) {
   Bench b(2);
-  b.run(random_items(b.rng(), 3000, 64, 5), 64, 35, 35);
-  b.run(random_items(b.rng(), 1000, 320, 8), 320, 10, 70);
-  b.run(random_items(b.rng(), 1000, 1, 3), 1, 20, 20);  // one pixel wide
+  b.run(random_items(b.rng(), 20000, 64, 5), 64, 35, 35);
+  b.run(random_items(b.rng(), 5000, 320, 8), 320, 10, 70);
+  b.run(random_items(b.rng(), 5000, 1, 3), 1, 20, 20);  // one pixel wide
   EXPECT_EQ(b.mismatches, 0u);
   EXPECT_EQ(b.timing_mismatches, 0u);
 }
@@ -380,4 +380,56 @@ TEST(RtlCompactSegmentInterpolator, ShippedScenes) {
   EXPECT_GT(ran, 0);
   EXPECT_EQ(b.mismatches, 0u);
   EXPECT_EQ(b.timing_mismatches, 0u);
+}
+
+// The cycle twin alone (no RTL) on each shipped scene's segment stream at its own sized Gouraud
+// configuration (scenes/sized/<scene>.gouraud.json), items offered back to back and fragments
+// taken every clock: fragments per clock and the longest line (clocks between two markers
+// leaving), the figures the compact top's throughput and line deadline build on.
+TEST(RtlCompactSegmentInterpolator, CycleTwinAtSizedConfigurations) {
+  std::vector<std::string> names;
+  for (const auto& e : std::filesystem::directory_iterator(WATKINS_SOURCE_DIR "/scenes/sized")) {
+    const std::string n = e.path().filename().string();
+    const std::string suffix = ".gouraud.json";
+    if (n.size() > suffix.size() && n.compare(n.size() - suffix.size(), suffix.size(), suffix) == 0)
+      names.push_back(n.substr(0, n.size() - suffix.size()));
+  }
+  std::sort(names.begin(), names.end());
+  int ran = 0;
+  for (const std::string& name : names) {
+    const std::string scene = WATKINS_SOURCE_DIR "/scenes/" + name + ".json";
+    if (!std::filesystem::exists(scene)) continue;
+    const Config cfg = load_config(WATKINS_SOURCE_DIR "/scenes/sized/" + name + ".gouraud.json");
+    const PreparedScene p = prepare(load_scene(scene, test::shading_options(ShadingMode::Gouraud)), cfg);
+    const ChannelFormats f = cfg.channels(ShadingMode::Gouraud);
+    CompactSegmentInterpolatorTiming t(f.bits[fmt::ChanX], f.bits[fmt::ChanZ], f.bits[fmt::ChanR],
+                                       QuotientBitsPerClock);
+    const std::vector<Item> items = segment_stream(p, cfg);
+    std::size_t next = 0;
+    long long cycle = 0, fragments = 0, last_marker = 0, markers = 0;
+    int worst = 0;
+    while (markers < p.height) {
+      CompactSegmentInterpolatorTiming::Item in;
+      const bool valid = next < items.size();
+      if (valid) {
+        const auto px = SegmentInterpolator::pixels(items[next].seg, p.width, f.x_frac());
+        in = {items[next].eol, px.first, px.second};
+      }
+      const CompactSegmentInterpolatorTiming::Pins pins = t.clock(valid, in, true);
+      if (pins.frag_valid && pins.frag_eol) {
+        worst = std::max(worst, static_cast<int>(cycle + 1 - last_marker));
+        last_marker = cycle + 1;
+        ++markers;
+      } else if (pins.frag_valid) {
+        ++fragments;
+      }
+      if (valid && pins.seg_ready) ++next;
+      ASSERT_LT(++cycle, 100000000);
+    }
+    std::printf("  %s (%dx%d, X %d bits): %lld fragments in %lld clocks (%.3f per clock), longest line %d clocks\n",
+                name.c_str(), p.width, p.height, f.bits[fmt::ChanX], fragments, cycle,
+                double(fragments) / double(cycle), worst);
+    ++ran;
+  }
+  EXPECT_GT(ran, 10);
 }
