@@ -32,9 +32,9 @@
 //         than it: 1 clock when L == 0, else m + 2; 1 clock for the head beat past the line
 //         (y0 > y, or EOF), which ends the phase and reads A[0].
 //   OUT   K edges, one per clock from the clock after INS ends; the marker on the next clock.
-//   FIX   from the clock after the marker is taken: K' - D clocks (one per scanned entry of the
-//         K' kept), plus m + 2 for each entry that moves back past m others (m + 1 when it goes
-//         to the front).
+//   FIX   from the clock after the marker is taken: 1 + K' - D clocks (the first read, then one
+//         per scanned entry of the K' kept), plus m + 2 for each entry that moves back past m
+//         others (m + 1 when it goes to the front).
 // So a line other than the last takes I + K + 1 + F clocks from its INS's first clock to the
 // next line's: I the sum of its INS costs (at least 1), F = 0 without a crossing.
 // Ready: edge_ready_o is combinational (state, the head's y0, the count, and in the shift the key
@@ -118,6 +118,7 @@ module compact_active_edge_list #(
     SPlace,   // INS: every entry moved up: the record goes to A[0]
     SOut,     // OUT: ram_q = A[rd_q], presented
     SEol,     // OUT: the end-of-line marker
+    SFix,     // FIX: read A[first_q]
     SScan,    // FIX: ram_q = A[rd_q]; below the maximum before it?
     SFShift,  // FIX: ram_q = A[pos_q]; move it up or stop
     SFPlace,  // FIX: ram_q = the scratch word: write it to A[pos_q]
@@ -257,8 +258,11 @@ module compact_active_edge_list #(
         end
       end
       SShift: begin
+        // The RAM reads A[pos - 1] on every clock (unused when the record's place is found).
         we = 1'b1;
         wa = pos_q + 1'b1;
+        re = 1'b1;
+        ra = pos_q - 1'b1;
         if (ram_below) begin  // ram_q sorts before the record: its place is above ram_q
           w_rec   = 1'b1;
           take    = 1'b1;
@@ -267,8 +271,6 @@ module compact_active_edge_list #(
         end else if (pos_q == '0) begin
           state_d = SPlace;
         end else begin
-          re    = 1'b1;
-          ra    = pos_q - 1'b1;
           pos_d = pos_q - 1'b1;
         end
       end
@@ -299,51 +301,48 @@ module compact_active_edge_list #(
         if (last_line) begin
           state_d = SDrain;
         end else if (cross_d) begin  // with the last edge's compare, if pending
-          re      = 1'b1;
-          ra      = first_d;
-          rd_d    = first_d;
-          state_d = SScan;
+          state_d = SFix;
         end else begin
           state_d = SIns;
         end
       end
+      SFix: begin
+        re      = 1'b1;
+        ra      = first_q;
+        rd_d    = first_q;
+        state_d = SScan;
+      end
       SScan: begin
+        // ram_q goes to the scratch word on every scan clock (only an entry out of order is read
+        // back from there): the write does not wait for the compare. The read does not either,
+        // but on the last entry, which may be next to the scratch word.
+        we = 1'b1;
+        wa = Scratch;
+        re = ram_below || CountBits'(rd_q) + 1'b1 != cnt_q;
         if (ram_below) begin
-          // Out of order: to the scratch word; the entries above its place move up.
-          we      = 1'b1;
-          wa      = Scratch;
+          // Out of order: the entries above its place move up.
           mov_d   = key_ram;
-          re      = 1'b1;
-          ra      = rd_q - 1'b1;
           pos_d   = rd_q - 1'b1;
           state_d = SFShift;
         end else begin
           max_d = key_ram;
-          if (CountBits'(rd_q) + 1'b1 == cnt_q) begin
-            state_d = SIns;
-          end else begin
-            re   = 1'b1;
-            ra   = rd_q + 1'b1;
-            rd_d = rd_q + 1'b1;
-          end
+          rd_d  = rd_q + 1'b1;
+          if (CountBits'(rd_q) + 1'b1 == cnt_q) state_d = SIns;
         end
       end
       SFShift: begin
+        // ram_q moves up one word on every clock: when its place is above ram_q, that word is
+        // the place, which SFPlace writes next.
         re = 1'b1;
+        we = 1'b1;
+        wa = pos_q + 1'b1;
         if (ram_below) begin  // its place is above ram_q
-          ra      = Scratch;
           pos_d   = pos_q + 1'b1;
           state_d = SFPlace;
+        end else if (pos_q == '0) begin
+          state_d = SFPlace;
         end else begin
-          we = 1'b1;
-          wa = pos_q + 1'b1;
-          if (pos_q == '0) begin
-            ra      = Scratch;
-            state_d = SFPlace;
-          end else begin
-            ra    = pos_q - 1'b1;
-            pos_d = pos_q - 1'b1;
-          end
+          pos_d = pos_q - 1'b1;
         end
       end
       SFPlace: begin
@@ -364,6 +363,10 @@ module compact_active_edge_list #(
       end
       default: ;
     endcase
+    // In the scan and the shift the read address is the last thing the compare decides: both
+    // candidates come from registers, the compare picks one.
+    if (state_q == SScan) ra = ram_below ? rd_q - 1'b1 : rd_q + 1'b1;
+    if (state_q == SFShift) ra = (ram_below || pos_q == '0) ? Scratch : pos_q - 1'b1;
   end
   assign edge_ready_o = take;
 

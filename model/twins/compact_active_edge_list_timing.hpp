@@ -83,7 +83,7 @@ class CompactActiveEdgeListTiming {
         written = ram_;
       }
     }
-    if (c.re) ram_ = mem_[static_cast<std::size_t>(c.ra)];
+    if (c.re && c.ra >= 0 && c.ra <= capacity_) ram_ = mem_[static_cast<std::size_t>(c.ra)];  // else unused
     if (c.we) mem_[static_cast<std::size_t>(c.wa)] = written;
     if (state_ == State::Eol && in.out_ready && !last_line(in)) ++line_;
     if (c.take && !in.edge_eof) id_ = (id_ + 1) & id_mask_;
@@ -102,7 +102,7 @@ class CompactActiveEdgeListTiming {
   int line() const { return line_; }
 
  private:
-  enum class State { Idle, Ins, Shift, Place, Out, Eol, Scan, FShift, FPlace, Drain };
+  enum class State { Idle, Ins, Shift, Place, Out, Eol, Fix, Scan, FShift, FPlace, Drain };
   struct Key {
     i64 x = 0;  // the X word, signed
     int id = 0;
@@ -155,14 +155,13 @@ class CompactActiveEdgeListTiming {
         }
         break;
       case State::Shift:
-        c.we = true, c.wa = pos_ + 1;
-        if (kram < mov_) {
+        c.we = true, c.wa = pos_ + 1, c.re = true, c.ra = pos_ - 1;
+        if (kram < mov_)
           c.w_rec = true, c.take = true, c.cnt = cnt_ + 1, c.state = State::Ins;
-        } else if (pos_ == 0) {
+        else if (pos_ == 0)
           c.state = State::Place;
-        } else {
-          c.re = true, c.ra = pos_ - 1, c.pos = pos_ - 1;
-        }
+        else
+          c.pos = pos_ - 1;
         break;
       case State::Place:
         c.we = true, c.wa = 0, c.w_rec = true, c.take = true, c.cnt = cnt_ + 1, c.state = State::Ins;
@@ -185,34 +184,32 @@ class CompactActiveEdgeListTiming {
         c.cnt = kept_;
         if (last_line(in))
           c.state = State::Drain;
-        else if (cross_)
-          c.re = true, c.ra = first_, c.rd = first_, c.state = State::Scan;
         else
-          c.state = State::Ins;
+          c.state = c.cross ? State::Fix : State::Ins;  // c.cross: with the last edge's compare
+        break;
+      case State::Fix:
+        c.re = true, c.ra = first_, c.rd = first_, c.state = State::Scan;
         break;
       case State::Scan:
+        c.we = true, c.wa = capacity_;  // every scanned entry to the scratch word
         if (kram < max_) {
-          c.we = true, c.wa = capacity_, c.mov = kram;
-          c.re = true, c.ra = rd_ - 1, c.pos = rd_ - 1, c.state = State::FShift;
+          c.mov = kram, c.re = true, c.ra = rd_ - 1, c.pos = rd_ - 1, c.state = State::FShift;
         } else {
-          c.max = kram;
+          c.max = kram, c.rd = rd_ + 1;
           if (rd_ + 1 == cnt_)
             c.state = State::Ins;
           else
-            c.re = true, c.ra = rd_ + 1, c.rd = rd_ + 1;
+            c.re = true, c.ra = rd_ + 1;
         }
         break;
       case State::FShift:
-        c.re = true;
-        if (kram < mov_) {
+        c.re = true, c.we = true, c.wa = pos_ + 1;  // ram_q moves up on every clock
+        if (kram < mov_)
           c.ra = capacity_, c.pos = pos_ + 1, c.state = State::FPlace;
-        } else {
-          c.we = true, c.wa = pos_ + 1;
-          if (pos_ == 0)
-            c.ra = capacity_, c.state = State::FPlace;
-          else
-            c.ra = pos_ - 1, c.pos = pos_ - 1;
-        }
+        else if (pos_ == 0)
+          c.ra = capacity_, c.state = State::FPlace;
+        else
+          c.ra = pos_ - 1, c.pos = pos_ - 1;
         break;
       case State::FPlace:
         c.we = true, c.wa = pos_;

@@ -149,7 +149,7 @@ class Bench {
       std::size_t d = 1;
       while (d < kept.size() && !(kept[d] < *std::max_element(kept.begin(), kept.begin() + static_cast<long>(d)))) ++d;
       if (y + 1 < f.height && d < kept.size()) {
-        t += kept.size() - d;
+        t += 1 + kept.size() - d;  // the first read, then one clock per scanned entry
         for (std::size_t j = d; j < kept.size(); ++j) {
           if (!(kept[j] < kept[j - 1])) continue;
           std::size_t m = 0;
