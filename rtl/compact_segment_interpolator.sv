@@ -2,30 +2,31 @@
 // iterative reciprocal, one multiplier stepped through the channels and one adder per channel,
 // for small parts: the same fragments, value for value and in the same order (model/twins/
 // segment_interpolator.cpp setup(), fragment(), step()); only the clocks differ. Every output and
-// every arithmetic stage is registered; seg_ready_o is a function of flops and the offered
-// segment. Cycle model: model/twins/compact_segment_interpolator_timing.hpp.
-// Units (docs/reference/compact.md), each holding one span:
-// - Divider (d_*): 1/dx of the segment offered on seg_*_i, before it is taken (the offer holds
-//   while valid and not ready): starts the clock after it finds an offered segment that needs a
-//   reciprocal while idle (not an end-of-line marker, not empty), latching dx; one clock
-//   normalizes; Iterations = ceil((RecipBits + 1) / QuotientBitsPerClock) clocks of restoring
-//   steps then leave the quotient ready (d_done_q), held until the segment is taken.
+// every arithmetic stage is registered; seg_ready_o comes from flops. Cycle model:
+// model/twins/compact_segment_interpolator_timing.hpp. Units, each holding one item:
+// - Offer (pk_*): the offered item is classified on its first clock (a marker, an empty span, a
+//   span that needs 1/dx); the offer holds while valid and not ready, so the divider and the
+//   take read it on the port.
+// - Divider (d_*): 1/dx of the offered span before it is taken: latches dx on the offer's first
+//   clock, normalizes on the next, then Iterations = ceil((RecipBits + 1) / QuotientBitsPerClock)
+//   clocks of restoring steps; the quotient is then held (d_done_q) until the take.
 // - Setup (m_*): takes the offered item when it is idle and its head is empty, a span only with
-//   its reciprocal ready (seg_ready_o). An empty span is dropped there; a marker goes straight to
-//   the head. A span loads its operands and its head's range, ids and E, then issues Ops = 9
-//   multiplications in order -- alpha0's offset * recip, the four steps delta * recip, the four
-//   values delta * alpha0 -- one operand digit (DigitBits bits, unsigned, the sign handled
-//   apart) per clock, through stages o (operands), p (the product, DigitBits x (RecipBits + 1)),
-//   x (the digit sums), s (the rounding shift), w (round, clamp, write). A span takes
-//   Issue = OffsetDigits + 2 (ZDigits + 3 AttrDigits) clocks of issue, its head is full 5 clocks
-//   after the last, and the setup takes the next item the clock after the stepper empties it.
+//   its reciprocal done (seg_ready_o). An empty span is dropped at the take; a marker goes
+//   straight to the head. A span loads its operands and its head's range, ids and E, then
+//   issues 9 multiplications in order -- alpha0's offset * recip, the four steps delta * recip,
+//   the four values delta * alpha0 -- one DigitBits-bit digit of the unsigned operand per clock
+//   (the sign handled apart), IssueClocks = OffsetDigits + 2 (ZDigits + 3 AttrDigits) clocks,
+//   through stages o (operands), p (the digit's product, DigitBits x (RecipBits + 1)), x (the
+//   digit sums), s (the rounding shift) and w (round, clamp, write the head).
 // - Stepper (st_*): loads the head when idle (one clock, no fragment), or on the clock it emits
-//   its span's last fragment (no bubble between spans); then one fragment per clock while
+//   its span's last fragment (no bubble between spans); one fragment per clock while
 //   frag_ready_i allows. A marker leaves from the head when the stepper is idle.
-// A span: taken at clock T (the divider ready), its first fragment on frag_*_o from T + Issue + 7
-// when the stepper is idle; one span per max(Issue + 6, 3 + Iterations) clocks while spans are
-// shorter than that, one fragment per clock while they are longer. The sized default
-// configuration: Issue 10, Iterations 13, a span every 16 clocks.
+// Latency: with every unit idle, a span offered at clock t is taken at t + 2 + Iterations and
+// its first fragment is on frag_*_o at the take + IssueClocks + 7 (t + 32 at the sized default
+// configuration: Iterations 13, IssueClocks 10); a marker at t + 3.
+// Throughput: one span per max(IssueClocks + 6, Iterations + 3) clocks (16 at the sized default
+// configuration) while spans are shorter, one fragment per clock while they are longer; an
+// empty span or a marker takes 2 clocks of the setup.
 // FifoDepth is accepted for the drop-in and unused: the head is the one span queued.
 `include "watkins_assert.svh"
 
@@ -134,7 +135,8 @@ module compact_segment_interpolator #(
                                                          // normalize clock; its quotient ready
   logic [IterBits-1:0]     d_iter_q;                     // restoring clocks left
   logic [DxBits-1:0]       d_dx_q;
-  logic [RecipBits-1:0]    d_m_q, d_rem_q;
+  logic [RecipBits-1:0]    d_m_q;
+  logic [RecipBits:0]      d_rem_q;  // partial remainder in [-m, m), signed
   logic [QuotientBits-1:0] d_quo_q;
   logic [ExponentBits-1:0] d_p_q;
   logic [RecipBits:0]      d_recip;
@@ -180,21 +182,24 @@ module compact_segment_interpolator #(
       {p, sh}  = lead_of(d_dx_q);
       d_p_q    <= p;
       d_m_q    <= RecipBits'((NormalizedBits'(d_dx_q) << sh) >> (NormalizedBits - RecipBits));
-      d_rem_q  <= RecipBits'(1) << (RecipBits - 2);
+      d_rem_q  <= (RecipBits + 1)'(1) << (RecipBits - 2);
       d_quo_q  <= '0;
       d_iter_q <= IterBits'(Iterations);
     end else if (!d_done_q) begin : d_steps
-      logic [RecipBits-1:0]    rem;
+      // Non-restoring steps: r = 2 r - m when r >= 0, 2 r + m when r < 0, quotient bit r >= 0.
+      // The bits are the restoring divider's (its remainder is r, or r + m when r < 0), and a
+      // step is one add whose operand the previous sign inverts: no compare and pick after it.
+      // The sum modulo 2^(RecipBits+1): the new r lies in [-m, m).
+      logic [RecipBits:0]      r;
       logic [QuotientBits-1:0] quo;
-      logic [RecipBits:0]      twice;
-      rem = d_rem_q;
+      r   = d_rem_q;
       quo = d_quo_q;
       for (int i = 0; i < Q; i++) begin
-        twice = {rem, 1'b0};
-        quo   = {quo[QuotientBits-2:0], twice >= {1'b0, d_m_q}};
-        rem   = (twice >= {1'b0, d_m_q}) ? RecipBits'(twice - {1'b0, d_m_q}) : RecipBits'(twice);
+        r   = {r[RecipBits-1:0], 1'b0} + ({1'b0, d_m_q} ^ {(RecipBits + 1){!r[RecipBits]}})
+            + (RecipBits + 1)'(!r[RecipBits]);
+        quo = {quo[QuotientBits-2:0], !r[RecipBits]};
       end
-      d_rem_q  <= rem;
+      d_rem_q  <= r;
       d_quo_q  <= quo;
       d_iter_q <= d_iter_q - 1'b1;
     end

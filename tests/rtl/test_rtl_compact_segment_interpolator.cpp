@@ -306,6 +306,21 @@ TEST(RtlCompactSegmentInterpolator, UnitConfiguration) {
                                            QuotientBitsPerClock);
   std::printf("issue %d clocks, %d divider iterations, a span every %d clocks\n", t.issue_clocks(), t.iterations(),
               t.span_clocks());
+  // The header's latencies, on the cycle twin (which every other test holds equal to the RTL): a
+  // span offered at clock 0 to an idle block, its first fragment on the output; a marker.
+  auto first_out = [&](const CompactSegmentInterpolatorTiming::Item& in) {
+    CompactSegmentInterpolatorTiming twin(g.bits[fmt::ChanX], g.bits[fmt::ChanZ], g.bits[fmt::ChanR],
+                                          QuotientBitsPerClock);
+    bool offered = true;
+    for (int cycle = 0; cycle < 1000; ++cycle) {
+      const auto pins = twin.clock(offered, in, true);
+      if (pins.frag_valid) return cycle;
+      if (offered && pins.seg_ready) offered = false;
+    }
+    return -1;
+  };
+  EXPECT_EQ(first_out({false, 3, 9}), 2 + t.iterations() + t.issue_clocks() + 7);
+  EXPECT_EQ(first_out({true, 0, 0}), 3);
 }
 
 TEST(RtlCompactSegmentInterpolator, RandomSegmentsFullRate) {
