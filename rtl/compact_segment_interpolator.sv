@@ -131,8 +131,7 @@ module compact_segment_interpolator #(
   localparam int unsigned NormalizedBits = (DxBits > RecipBits) ? DxBits : RecipBits;
   localparam int unsigned ShiftBits      = $clog2(NormalizedBits);
 
-  logic                    d_run_q, d_norm_q, d_done_q;  // a reciprocal under way; its
-                                                         // normalize clock; its quotient ready
+  logic                    d_run_q, d_done_q;  // a reciprocal under way; its quotient ready
   logic [IterBits-1:0]     d_iter_q;                     // restoring clocks left
   logic [DxBits-1:0]       d_dx_q;
   logic [RecipBits-1:0]    d_m_q;
@@ -141,6 +140,7 @@ module compact_segment_interpolator #(
   logic [ExponentBits-1:0] d_p_q;
   logic [RecipBits:0]      d_recip;
   logic                    take;  // the setup takes the offered item
+  logic                    pk_seen_q, pk_recip_q;  // the offer classified; it needs 1/dx
 
   function automatic logic [ExponentBits+ShiftBits-1:0] lead_of(logic [DxBits-1:0] dx);
     logic [ExponentBits-1:0] lead;
@@ -156,27 +156,25 @@ module compact_segment_interpolator #(
     lead_of = {lead, lead_sh};
   endfunction
 
+  // The divider normalizes on the clock after the offer's first (its classification in flops),
+  // from dx latched on that first clock: the offer's compares do not reach its enables.
+  logic d_norm;
+  assign d_norm = !d_run_q && pk_seen_q && pk_recip_q;
   always_ff @(posedge clk_i) begin
-    if (!rst_ni) begin
+    if (!rst_ni || take) begin
       d_run_q  <= 1'b0;
-      d_norm_q <= 1'b0;
       d_done_q <= 1'b0;
-    end else if (take) begin
-      d_run_q  <= 1'b0;
-      d_norm_q <= 1'b0;
-      d_done_q <= 1'b0;
-    end else if (!d_run_q) begin
-      d_run_q  <= seg_valid_i && in_recip;
-      d_norm_q <= seg_valid_i && in_recip;
-    end else begin
-      d_norm_q <= 1'b0;
-      if (!d_norm_q && d_iter_q == IterBits'(1)) d_done_q <= 1'b1;
+    end else if (d_norm) begin
+      d_run_q  <= 1'b1;
+    end else if (d_run_q && !d_done_q && d_iter_q == IterBits'(1)) begin
+      d_done_q <= 1'b1;
     end
   end
   always_ff @(posedge clk_i) begin
     if (!d_run_q) begin
       d_dx_q <= DxBits'($signed({in_xf[XBits-1], in_xf}) - $signed({in_xe[XBits-1], in_xe}));
-    end else if (d_norm_q) begin : d_normalize
+    end
+    if (d_norm) begin : d_normalize
       logic [ExponentBits-1:0] p;
       logic [ShiftBits-1:0]    sh;
       {p, sh}  = lead_of(d_dx_q);
@@ -185,7 +183,7 @@ module compact_segment_interpolator #(
       d_rem_q  <= (RecipBits + 1)'(1) << (RecipBits - 2);
       d_quo_q  <= '0;
       d_iter_q <= IterBits'(Iterations);
-    end else if (!d_done_q) begin : d_steps
+    end else if (d_run_q && !d_done_q) begin : d_steps
       // Non-restoring steps: r = 2 r - m when r >= 0, 2 r + m when r < 0, quotient bit r >= 0.
       // The bits are the restoring divider's (its remainder is r, or r + m when r < 0), and a
       // step is one add whose operand the previous sign inverts: no compare and pick after it.
@@ -254,7 +252,6 @@ module compact_segment_interpolator #(
   // The offered item is classified on its first clock (pk_seen_q, pk_recip_q), so seg_ready_o
   // and the take are functions of flops: from the offer's compares they would run into every
   // clock enable of the take (the block's longest path).
-  logic pk_seen_q, pk_recip_q;
   always_ff @(posedge clk_i) begin
     if (!rst_ni || take) pk_seen_q <= 1'b0;
     else if (seg_valid_i) pk_seen_q <= 1'b1;

@@ -4,7 +4,8 @@
 // returns what the RTL shows in it (seg_ready_o, frag_valid_o, frag_eol_o, frag_x_o), and
 // advances every control register as the RTL's clock edge does:
 // - the offer's classification on its first clock (seen, needs a reciprocal);
-// - divider: idle, a normalize clock, Iterations restoring clocks, done until the item is taken;
+// - divider: idle, a normalize clock (the clock after the offer's first), Iterations clocks of
+//   steps, done until the item is taken;
 // - setup: busy from a span's take until its last operation's w stage, issuing one digit per
 //   clock through the o, p, x, s stages; the head (valid, marker, pixel range);
 // - stepper: active, x, the span's end; the registered fragment output.
@@ -66,23 +67,21 @@ class CompactSegmentInterpolatorTiming {
     const bool pop = load || emit_eol;
     const bool w_last = s_valid_ && s_op_ == Ops - 1;
 
+    // Divider: normalizes on the clock after the offer's first (from the classification's flops).
+    if (take) {
+      d_run_ = d_done_ = false;
+    } else if (!d_run_ && pk_seen_ && pk_recip_) {
+      d_run_ = true;
+      d_iter_ = iterations_;
+    } else if (d_run_ && !d_done_) {
+      if (d_iter_ == 1) d_done_ = true;
+      --d_iter_;
+    }
+
     // The offer's classification.
     if (!pk_seen_) pk_recip_ = in_recip;
     if (take) pk_seen_ = false;
     else if (seg_valid) pk_seen_ = true;
-
-    // Divider.
-    if (take) {
-      d_run_ = d_norm_ = d_done_ = false;
-    } else if (!d_run_) {
-      d_run_ = d_norm_ = seg_valid && in_recip;
-    } else if (d_norm_) {
-      d_norm_ = false;
-      d_iter_ = iterations_;
-    } else if (!d_done_) {
-      if (d_iter_ == 1) d_done_ = true;
-      --d_iter_;
-    }
 
     // Setup: the stages, from the last to the first (each reads its predecessor's old value).
     s_valid_ = x_valid_;
@@ -154,7 +153,7 @@ class CompactSegmentInterpolatorTiming {
   // The offered item: classified, and whether it needs a reciprocal.
   bool pk_seen_ = false, pk_recip_ = false;
   // Divider.
-  bool d_run_ = false, d_norm_ = false, d_done_ = false;
+  bool d_run_ = false, d_done_ = false;
   int d_iter_ = 0;
   // Setup and its stages.
   bool m_busy_ = false;
