@@ -13,7 +13,7 @@
 // - Setup (m_*): takes the offered item when it is idle and its head is empty, a span only with
 //   its reciprocal done (seg_ready_o). An empty span is dropped at the take; a marker goes
 //   straight to the head. A span loads its operands and its head's range, ids and E, then
-//   issues 9 multiplications in order -- alpha0's offset * recip, the four steps delta * recip,
+//   issues nine multiplications in order -- alpha0's offset * recip, the four steps delta * recip,
 //   the four values delta * alpha0 -- one DigitBits-bit digit of the unsigned operand per clock
 //   (the sign handled apart), IssueClocks = OffsetDigits + 2 (ZDigits + 3 AttrDigits) clocks,
 //   through stages o (operands), p (the digit's product, DigitBits x (RecipBits + 1)), x (the
@@ -369,7 +369,8 @@ module compact_segment_interpolator #(
   assign m_neg_ext    = {m_neg_q, 1'b0};
   for (genvar c = 1; c <= InterpolatedSlots; c++) begin : g_operand
     localparam int unsigned MagBits = watkins_pkg::slot_bits(c, XBits, ZBits, AttrBits) + 1;
-    assign m_operand[c*OperandBits +: OperandBits] = OperandBits'(m_mag_q[ilo(c, ZBits + 1, AttrBits + 1) +: MagBits]);
+    assign m_operand[c*OperandBits +: OperandBits] =
+        OperandBits'(m_mag_q[ilo(c, ZBits + 1, AttrBits + 1) +: MagBits]);
   end
   always_ff @(posedge clk_i) begin
     if (issue) begin : o_set
@@ -408,7 +409,8 @@ module compact_segment_interpolator #(
     /* verilator lint_off UNUSEDSIGNAL */
     logic signed [SumBits+LoBits-1:0] all;
     /* verilator lint_on UNUSEDSIGNAL */
-    all = $signed({hi, lo}) >>> (DigitBits * (MaxDigits - n) + LoBits - DigitBits * (MaxDigits - 1));
+    all = $signed({hi, lo})
+      >>> (DigitBits * (MaxDigits - n) + LoBits - DigitBits * (MaxDigits - 1));
     assemble = (n == 1) ? QBits'(hi) : QBits'(all);
   endfunction
   assign x_q_offset = assemble(x_sum, x_lo_q, OffsetDigits);
