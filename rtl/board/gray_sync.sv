@@ -2,7 +2,9 @@
 // Latency 3 clocks of clk_i: two flip-flops sample the sender's Gray-code register, so a count
 // sampled while it changes is the old count or the new one, never another (one bit changes per
 // step); a third register holds its binary value (count_o registered), so the Gray-to-binary
-// chain of XORs ends at a flip-flop instead of running into the receiver's compare.
+// chain of XORs ends at a flip-flop instead of running into the receiver's compare;
+// count_next_o (combinational, from the second flip-flop) lets a receiver keep a difference with
+// the count in a register of its own.
 // The sender keeps gray_i in a register of its own domain (no logic between it and meta_q).
 
 module gray_sync #(
@@ -11,7 +13,8 @@ module gray_sync #(
   input  logic            clk_i,   // the receiving domain
   input  logic            rst_ni,  // active-low synchronous reset (the receiving domain's)
   input  logic [Bits-1:0] gray_i,  // the sender's Gray-code register
-  output logic [Bits-1:0] count_o  // the count, binary, 3 clocks late (a register)
+  output logic [Bits-1:0] count_o,      // the count, binary, 3 clocks late (a register)
+  output logic [Bits-1:0] count_next_o  // what count_o holds after the next clock
 );
   (* async_reg = "true" *) logic [Bits-1:0] meta_q;
   (* async_reg = "true" *) logic [Bits-1:0] sync_q;
@@ -34,9 +37,10 @@ module gray_sync #(
     end else begin
       meta_q  <= gray_i;  // crossing: Gray code, first of two flip-flops
       sync_q  <= meta_q;
-      count_q <= gray_to_binary(sync_q);
+      count_q <= count_next_o;
     end
   end
 
-  assign count_o = count_q;
+  assign count_o      = count_q;
+  assign count_next_o = gray_to_binary(sync_q);
 endmodule

@@ -158,6 +158,7 @@ module ulx3s_top #(
   logic                 start_pulse /*verilator public_flat_rd*/;
   logic [CountBits-1:0] w_q /*verilator public_flat_rd*/, w_gray_q;
   logic [CountBits-1:0] r_sync;  // released lines, in this domain
+  logic [CountBits-1:0] r_next;  // r_sync after the next clock
 
   // crossing: toggle (frame request, clk_pixel -> clk_pipe)
   toggle_sync u_request_sync (
@@ -170,15 +171,20 @@ module ulx3s_top #(
   gray_sync #(.Bits(CountBits)) u_released_sync (
     .clk_i  (clk_pipe),
     .rst_ni (rst_pipe_n),
-    .gray_i (r_gray_q),
-    .count_o(r_sync)
+    .gray_i      (r_gray_q),
+    .count_o     (r_sync),
+    .count_next_o(r_next)
   );
   // crossing: Gray code (written count, clk_pipe -> clk_pixel)
+  /* verilator lint_off UNUSEDSIGNAL */  // the video side compares w_sync itself, at 25.2 MHz
+  logic [CountBits-1:0] w_next;
+  /* verilator lint_on UNUSEDSIGNAL */
   gray_sync #(.Bits(CountBits)) u_written_sync (
     .clk_i  (clk_pixel),
     .rst_ni (rst_pixel_n),
-    .gray_i (w_gray_q),
-    .count_o(w_sync)
+    .gray_i      (w_gray_q),
+    .count_o     (w_sync),
+    .count_next_o(w_next)
   );
 
   logic                     rd_en;
@@ -314,13 +320,23 @@ module ulx3s_top #(
   );
 
   // Back-pressure: the slot of the line being written is free, (w - r_sync) < S as a signed
-  // difference of two registers' values.
-  logic [CountBits-1:0] in_use;
-  assign in_use      = w_q - r_sync;
-  assign pixel_ready = $signed(in_use) < $signed(CountBits'(LineSlots));
+  // difference of two registers' values. The difference is a register of its own, in_use_q,
+  // stepped with w_q (+1 at a line's last pixel) and with r_sync (-1 when gray_sync's next count
+  // differs: one release at most a video line), so pixel_ready, which reaches the pipeline's
+  // output handshake, is one compare of a flop with a constant. The frame's last x is a register
+  // too (the width is stable for the frame long before its first pixel).
+  logic [CountBits-1:0] in_use_q;
+  logic [LineBits-1:0]  last_x_q;
+  assign pixel_ready = $signed(in_use_q) < $signed(CountBits'(LineSlots));
   assign pixel_fire  = pixel_valid && pixel_ready;
-  assign line_done   = pixel_fire && pixel_x == width - 1'b1;
+  assign line_done   = pixel_fire && pixel_x == last_x_q;
   assign frame_done  = pixel_fire && pixel_last;
+
+  always_ff @(posedge clk_pipe) begin
+    last_x_q <= width - 1'b1;
+    if (!rst_pipe_n) in_use_q <= '0;
+    else in_use_q <= in_use_q + CountBits'(line_done) - CountBits'(r_next != r_sync);
+  end
 
   always_ff @(posedge clk_pipe) begin
     if (!rst_pipe_n) begin

@@ -3,8 +3,9 @@
 # doubled and scenes/board_native.json at 640x480 native. For each, `watkins board check` (the
 # beam schedule: budget, worst line and slack, missed lines) and `watkins board build` (yosys,
 # nextpnr-ecp5, ecppack: resources and every clock's routed Fmax against its constraint), and the
-# board bench's captured frame of the default scene (images/board_default.png). Place and route
-# takes 15 to 30 minutes a scene on two cores.
+# board bench's captured frame of the default scene (images/board_default.png); and the build of
+# one triangle (tests/board/tiny.json), the smallest bitstream, with its time. Place and route
+# takes 10 to 30 minutes a scene on two cores.
 #   scripts/lib/board_figures.sh [OUTDIR]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -13,7 +14,8 @@ results_begin board "${1:-}"
 md="$out/board.md"
 
 scenes=("default|the default scene, 320x240 shown doubled|"
-        "board_native|scenes/board_native.json, 640x480 native|$root/scenes/board_native.json")
+        "board_native|scenes/board_native.json, 640x480 native|$root/scenes/board_native.json"
+        "tiny|tests/board/tiny.json, one triangle at 320x240 doubled: the smallest build|$root/tests/board/tiny.json")
 {
   results_header "scripts/results board"
   echo
@@ -37,7 +39,7 @@ for s in "${scenes[@]}"; do
     echo
     echo "## $title"
     echo
-    echo "\`watkins board check ${file:+scenes/$(basename "$file")}\`:"
+    echo "\`watkins board check ${file:+${file#"$root"/}}\`:"
     echo
     echo '```'
     "$build/watkins" board check "${args[@]}"
@@ -47,14 +49,14 @@ for s in "${scenes[@]}"; do
   if "$build/watkins" board build "${args[@]}" --work "$tmp/$name" --out "$tmp/$name.bit" --md "$tmp/$name.md" \
       > "$tmp/$name.log" 2>&1; then
     {
-      echo "\`watkins board build ${file:+scenes/$(basename "$file")}\`: bitstream $(stat -c %s "$tmp/$name.bit") bytes."
+      echo "\`watkins board build ${file:+${file#"$root"/}}\`: bitstream $(stat -c %s "$tmp/$name.bit") bytes."
       echo
       cat "$tmp/$name.md"
     } >> "$tmp/body.md"
   else
     ok=1
     {
-      echo "\`watkins board build ${file:+scenes/$(basename "$file")}\` failed:"
+      echo "\`watkins board build ${file:+${file#"$root"/}}\` failed:"
       echo
       echo '```'
       tail -5 "$tmp/$name.log"
