@@ -16,8 +16,8 @@
 // the next clock (decide) pairs it and writes the entry; the segment or the marker is offered from
 // the clock after that. An edge is taken when the block is not deciding and the output is empty
 // or taken in that clock: edge_ready_o = !clear && !deciding && (!seg_valid_o || seg_ready_i).
-// At full rate an edge every other clock (0.5 edges per clock), a segment or marker two clocks
-// after its edge.
+// Latency 2 cycles: a segment or marker is offered two clocks after its edge is taken. At full
+// rate an edge every other clock (0.5 edges per clock).
 // Registered: every output (seg_e_o is the RAM's read register, the rest the edge's input
 // register, held until the output is taken). edge_ready_o is combinational from registers and
 // seg_ready_i.
