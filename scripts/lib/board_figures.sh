@@ -6,7 +6,7 @@
 # board bench's captured frame of the default scene (images/board_default.png); and the build of
 # one triangle (tests/board/tiny.json), the smallest bitstream, with its time. Place and route
 # takes 10 to 30 minutes a scene on two cores.
-#   scripts/lib/board_figures.sh [OUTDIR]
+#   scripts/lib/board_figures.sh [OUTDIR]     WATKINS_BOARD_SCENES=default,board_native,tiny: a subset
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 . "$root/scripts/lib/results_header.sh"
@@ -17,7 +17,7 @@ scenes=("default|the default scene, 320x240 shown doubled|"
         "board_native|scenes/board_native.json, 640x480 native|$root/scenes/board_native.json"
         "tiny|tests/board/tiny.json, one triangle at 320x240 doubled: the smallest build|$root/tests/board/tiny.json")
 {
-  results_header "scripts/results board"
+  results_header "${WATKINS_BOARD_SCENES:+WATKINS_BOARD_SCENES=$WATKINS_BOARD_SCENES }scripts/results board"
   echo
   echo "# The ULX3S board top"
   echo
@@ -33,6 +33,8 @@ ok=0
 : > "$tmp/body.md"
 for s in "${scenes[@]}"; do
   IFS='|' read -r name title file <<<"$s"
+  # WATKINS_BOARD_SCENES=default,tiny: only the scenes named (each build takes 10 to 30 minutes).
+  [ -z "${WATKINS_BOARD_SCENES:-}" ] || [[ ",$WATKINS_BOARD_SCENES," == *",$name,"* ]] || continue
   args=()
   [ -n "$file" ] && args=("$file")
   {
