@@ -157,8 +157,10 @@ module ulx3s_top #(
   // bank, pipeline, written line count
   logic                 start_pulse /*verilator public_flat_rd*/;
   logic [CountBits-1:0] w_q /*verilator public_flat_rd*/, w_gray_q;
+  /* verilator lint_off UNUSEDSIGNAL */  // in_use_q follows the released count's steps instead
   logic [CountBits-1:0] r_sync;  // released lines, in this domain
-  logic [CountBits-1:0] r_next;  // r_sync after the next clock
+  /* verilator lint_on UNUSEDSIGNAL */
+  logic                 r_step;  // r_sync advances at the next clock (one release)
 
   // crossing: toggle (frame request, clk_pixel -> clk_pipe)
   toggle_sync u_request_sync (
@@ -172,19 +174,19 @@ module ulx3s_top #(
     .clk_i  (clk_pipe),
     .rst_ni (rst_pipe_n),
     .gray_i      (r_gray_q),
-    .count_o     (r_sync),
-    .count_next_o(r_next)
+    .count_o(r_sync),
+    .step_o (r_step)
   );
   // crossing: Gray code (written count, clk_pipe -> clk_pixel)
   /* verilator lint_off UNUSEDSIGNAL */  // the video side compares w_sync itself, at 25.2 MHz
-  logic [CountBits-1:0] w_next;
+  logic                 w_step;
   /* verilator lint_on UNUSEDSIGNAL */
   gray_sync #(.Bits(CountBits)) u_written_sync (
     .clk_i  (clk_pixel),
     .rst_ni (rst_pixel_n),
     .gray_i      (w_gray_q),
-    .count_o     (w_sync),
-    .count_next_o(w_next)
+    .count_o(w_sync),
+    .step_o (w_step)
   );
 
   logic                     rd_en;
@@ -321,21 +323,33 @@ module ulx3s_top #(
 
   // Back-pressure: the slot of the line being written is free, (w - r_sync) < S as a signed
   // difference of two registers' values. The difference is a register of its own, in_use_q,
-  // stepped with w_q (+1 at a line's last pixel) and with r_sync (-1 when gray_sync's next count
-  // differs: one release at most a video line), so pixel_ready, which reaches the pipeline's
-  // output handshake, is one compare of a flop with a constant. The frame's last x is a register
-  // too (the width is stable for the frame long before its first pixel).
-  logic [CountBits-1:0] in_use_q;
+  // stepped with w_q (+1 at a line's last pixel) and with r_sync (-1 at gray_sync's step: one
+  // release at most a video line), and pixel_ready is a register too, room_q = in_use_q < S: both
+  // next values are computed from registers for either outcome of line_done, which only picks one,
+  // so the path from the pipeline's output handshake back to these registers is one multiplexer.
+  // The frame's last x is a register too (the width is stable for the frame long before its
+  // first pixel).
+  logic [CountBits-1:0] in_use_q, in_use_same, in_use_up;
+  logic                 room_q, room_same, room_up;
   logic [LineBits-1:0]  last_x_q;
-  assign pixel_ready = $signed(in_use_q) < $signed(CountBits'(LineSlots));
+  assign in_use_same = in_use_q - CountBits'(r_step);
+  assign in_use_up   = in_use_q + 1'b1 - CountBits'(r_step);
+  assign room_same   = $signed(in_use_same) < $signed(CountBits'(LineSlots));
+  assign room_up     = $signed(in_use_up) < $signed(CountBits'(LineSlots));
+  assign pixel_ready = room_q;
   assign pixel_fire  = pixel_valid && pixel_ready;
   assign line_done   = pixel_fire && pixel_x == last_x_q;
   assign frame_done  = pixel_fire && pixel_last;
 
   always_ff @(posedge clk_pipe) begin
     last_x_q <= width - 1'b1;
-    if (!rst_pipe_n) in_use_q <= '0;
-    else in_use_q <= in_use_q + CountBits'(line_done) - CountBits'(r_next != r_sync);
+    if (!rst_pipe_n) begin
+      in_use_q <= '0;
+      room_q   <= 1'b1;
+    end else begin
+      in_use_q <= line_done ? in_use_up : in_use_same;
+      room_q   <= line_done ? room_up : room_same;
+    end
   end
 
   always_ff @(posedge clk_pipe) begin
