@@ -65,7 +65,8 @@ Config parse_config(const std::string& text, const std::string& name) {
   const json root = parse_strict_json(text, name, /*comments=*/false);
   const ConfigReader r(name);
   r.keys(root, "", {"x", "depth", "shade", "normal", "depth_bits", "max_active_edges", "max_width",
-                    "max_materials", "max_polygons", "max_edges", "edge_order", "smoothing", "eq2", "eq2_recip_bits"});
+                    "max_materials", "max_polygons", "max_edges", "edge_order", "smoothing", "eq2", "eq2_recip_bits",
+                    "compact"});
   Config c;
   r.group(root, "x", c.x);
   r.group(root, "depth", c.depth);
@@ -81,6 +82,7 @@ Config parse_config(const std::string& text, const std::string& name) {
   r.boolean(root, "smoothing", c.smoothing);
   r.boolean(root, "eq2", c.eq2);
   r.integer(root, "", "eq2_recip_bits", c.eq2_recip_bits);
+  r.boolean(root, "compact", c.compact);
   if (const std::string e = c.check(); !e.empty()) throw SceneError(name + ": " + e);
   return c;
 }
@@ -120,6 +122,8 @@ std::string config_json(const Config& c) {
   if (!c.smoothing) o << ",\n  \"smoothing\": false";
   // Likewise: absent means no eq. (2) divider (and its default mantissa).
   if (c.eq2) o << ",\n  \"eq2\": true,\n  \"eq2_recip_bits\": " << c.eq2_recip_bits;
+  // Likewise: absent means the pipelined micro-architecture.
+  if (c.compact) o << ",\n  \"compact\": true";
   o << "\n}\n";
   return o.str();
 }

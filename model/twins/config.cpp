@@ -59,6 +59,8 @@ std::vector<RtlParameter> rtl_parameters(const Config& c, ShadingMode shading) {
     p.push_back({"HasEq2", 1});
     p.push_back({"Eq2RecipBits", c.eq2_recip_bits});
   }
+  // Likewise Compact (RTL default 0).
+  if (c.compact) p.push_back({"Compact", 1});
   return p;
 }
 

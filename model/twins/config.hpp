@@ -26,6 +26,9 @@
 //   eq2, eq2_recip_bits  HasEq2, Eq2RecipBits (Gouraud top only): the shade divider of Gouraud's
 //                    eq. (2) after the interpolator (shade_divider.hpp), its reciprocal's mantissa
 //                    bits; listed only when eq2, so every other list is unchanged
+//   compact          Compact: the compact micro-architecture (docs/reference/compact.md: the
+//                    compact_* blocks in place of their pipelined counterparts; the same values,
+//                    other cycles); listed only when true
 // Each twin's header lists which of its registers takes which of these.
 #pragma once
 
@@ -83,6 +86,10 @@ struct Config {
   // today's. eq2_recip_bits: the mantissa bits of its reciprocal of the depth.
   bool eq2 = false;
   int eq2_recip_bits = fmt::Eq2RecipBits;
+  // Which micro-architecture the top is built as: false the pipelined blocks (one fragment per
+  // clock at 100+ MHz), true the compact ones for small parts (docs/reference/compact.md). The
+  // values are the same either way; only the cycle model's timing differs.
+  bool compact = false;
 
   // Limits a configuration must respect (validate() checks them).
   static constexpr int MaxWordBits = 62;      // the model keeps every word in 64 bits, products in 128
@@ -122,7 +129,7 @@ struct Config {
            depth_bits == o.depth_bits && max_active_edges == o.max_active_edges &&
            max_width == o.max_width && max_materials == o.max_materials && max_polygons == o.max_polygons &&
            max_edges == o.max_edges && edge_order == o.edge_order && smoothing == o.smoothing && eq2 == o.eq2 &&
-           eq2_recip_bits == o.eq2_recip_bits;
+           eq2_recip_bits == o.eq2_recip_bits && compact == o.compact;
   }
   bool operator!=(const Config& o) const { return !(*this == o); }
 };
