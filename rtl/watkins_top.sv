@@ -50,6 +50,19 @@
 // shade slots carry S Z, and each fragment's shade is their quotient by its depth; eq2_i = 0
 // keeps the interpolated shade (eq. (1)). HasEq2 = 0: no divider, eq2_i must be 0 at every
 // frame start (asserted).
+// Compact = 1 (Config::compact): the compact micro-architecture for small parts
+// (docs/reference/compact.md): compact_active_edge_list, compact_segment_former,
+// compact_segment_interpolator and compact_scanline_buffer in place of their pipelined
+// counterparts, the frame control, the parameters, the ports and every value unchanged; only
+// the cycles differ. Its glue: the former's segments go straight to the interpolator (no segment
+// skid: the compact interpolator's seg_ready_o is a flop) and the interpolator's fragments
+// straight to the scanline buffer (no fragment queue: the compact buffer takes a fragment every
+// clock it is offered, refusing only a marker that waits on its reader); the pixel skid stays.
+// So the stream between two blocks moves in the clock its producer offers it and its consumer's
+// ready is high, and pixel_ready_i reaches the scanline buffer's frag_ready_o, hence the
+// interpolator's stepper, only through the pixel skid's flop. It needs Phong = 0, Smoothing = 0
+// and HasEq2 = 0 (checked at elaboration) and sparse_i = 0 at every frame start (asserted: the
+// compact buffer emits full frames only).
 `include "watkins_assert.svh"
 
 module watkins_top #(
@@ -72,6 +85,7 @@ module watkins_top #(
   /* verilator lint_off UNUSEDPARAM */  // read by the divider only, so unused where HasEq2 = 0
   parameter int unsigned Eq2RecipBits   = watkins_pkg::Eq2RecipBits,  // its 1/depth mantissa
   /* verilator lint_on UNUSEDPARAM */
+  parameter int          Compact        = 0,  // 1: the compact blocks (Gouraud, no smoother, full frames)
   localparam int unsigned XBits    = XIntBits + XFracBits,
   localparam int unsigned ZBits    = DepthIntBits + DepthFracBits,
   localparam int unsigned AttrBits = AttrIntBits + AttrFracBits,
@@ -116,6 +130,11 @@ module watkins_top #(
   localparam int unsigned VectorBits = watkins_pkg::vector_bits(XBits, ZBits, AttrBits);  // channel
                                                                                           // vector
 
+  // The compact blocks serve the Gouraud top without the smoother and the eq. (2) divider.
+  if (Compact != 0 && (Phong != 0 || Smoothing != 0 || HasEq2 != 0)) begin : g_compact_unsupported
+    $error("watkins_top: Compact = 1 needs Phong = 0, Smoothing = 0 and HasEq2 = 0");
+  end
+
   // ------------------------------------------------------------ frame control
   logic                frame_busy_q, ael_busy, start;
   logic [LineBits-1:0] width_q, height_q;
@@ -159,32 +178,61 @@ module watkins_top #(
   logic                      ae_valid    /*verilator public_flat_rd*/;
   logic                      ae_ready    /*verilator public_flat_rd*/;
 
-  active_edge_list #(
-    .MaxActiveEdges(MaxActiveEdges),
-    .XBits         (XBits),
-    .ZBits         (ZBits),
-    .AttrBits      (AttrBits),
-    .PolyIdBits    (PolyIdBits),
-    .MaterialIdBits(MaterialIdBits),
-    .EdgeIdBits    (EdgeIdBits),
-    .EdgeOrder     (EdgeOrder)
-  ) u_active_edge_list (
-    .clk_i, .rst_ni,
-    .start_i     (start),
-    .height_i    (height_q),
-    .busy_o      (ael_busy),
-    .edge_i,
-    .edge_eof_i,
-    .edge_valid_i,
-    .edge_ready_o,
-    .out_poly_o  (ae_poly),
-    .out_material_o(ae_material),
-    .out_value_o (ae_value),
-    .out_eol_o   (ae_eol),
-    .out_valid_o (ae_valid),
-    .out_ready_i (ae_ready),
-    .overflow_o
-  );
+  if (Compact != 0) begin : g_compact_active_edge_list
+    compact_active_edge_list #(
+      .MaxActiveEdges(MaxActiveEdges),
+      .XBits         (XBits),
+      .ZBits         (ZBits),
+      .AttrBits      (AttrBits),
+      .PolyIdBits    (PolyIdBits),
+      .MaterialIdBits(MaterialIdBits),
+      .EdgeIdBits    (EdgeIdBits),
+      .EdgeOrder     (EdgeOrder)
+    ) u_active_edge_list (
+      .clk_i, .rst_ni,
+      .start_i     (start),
+      .height_i    (height_q),
+      .busy_o      (ael_busy),
+      .edge_i,
+      .edge_eof_i,
+      .edge_valid_i,
+      .edge_ready_o,
+      .out_poly_o  (ae_poly),
+      .out_material_o(ae_material),
+      .out_value_o (ae_value),
+      .out_eol_o   (ae_eol),
+      .out_valid_o (ae_valid),
+      .out_ready_i (ae_ready),
+      .overflow_o
+    );
+  end else begin : g_active_edge_list
+    active_edge_list #(
+      .MaxActiveEdges(MaxActiveEdges),
+      .XBits         (XBits),
+      .ZBits         (ZBits),
+      .AttrBits      (AttrBits),
+      .PolyIdBits    (PolyIdBits),
+      .MaterialIdBits(MaterialIdBits),
+      .EdgeIdBits    (EdgeIdBits),
+      .EdgeOrder     (EdgeOrder)
+    ) u_active_edge_list (
+      .clk_i, .rst_ni,
+      .start_i     (start),
+      .height_i    (height_q),
+      .busy_o      (ael_busy),
+      .edge_i,
+      .edge_eof_i,
+      .edge_valid_i,
+      .edge_ready_o,
+      .out_poly_o  (ae_poly),
+      .out_material_o(ae_material),
+      .out_value_o (ae_value),
+      .out_eol_o   (ae_eol),
+      .out_valid_o (ae_valid),
+      .out_ready_i (ae_ready),
+      .overflow_o
+    );
+  end
 
   // ------------------------------------------------------------ segments
   logic [VectorBits-1:0]     sg_e        /*verilator public_flat_rd*/;
@@ -196,27 +244,51 @@ module watkins_top #(
   logic [PolyIdBits-1:0]     sg_poly     /*verilator public_flat_rd*/;
   logic [MaterialIdBits-1:0] sg_material /*verilator public_flat_rd*/;
 
-  segment_former #(
-    .MaxActiveEdges(MaxActiveEdges),
-    .VectorBits    (VectorBits),
-    .PolyIdBits    (PolyIdBits),
-    .MaterialIdBits(MaterialIdBits)
-  ) u_segment_former (
-    .clk_i, .rst_ni,
-    .edge_poly_i (ae_poly),
-    .edge_material_i(ae_material),
-    .edge_value_i(ae_value),
-    .edge_eol_i  (ae_eol),
-    .edge_valid_i(ae_valid),
-    .edge_ready_o(ae_ready),
-    .seg_e_o     (sg_e),
-    .seg_f_o     (sg_f),
-    .seg_poly_o  (sg_poly),
-    .seg_material_o(sg_material),
-    .seg_eol_o   (sg_eol),
-    .seg_valid_o (sg_valid),
-    .seg_ready_i (sg_ready)
-  );
+  if (Compact != 0) begin : g_compact_segment_former
+    compact_segment_former #(
+      .MaxActiveEdges(MaxActiveEdges),
+      .VectorBits    (VectorBits),
+      .PolyIdBits    (PolyIdBits),
+      .MaterialIdBits(MaterialIdBits)
+    ) u_segment_former (
+      .clk_i, .rst_ni,
+      .edge_poly_i (ae_poly),
+      .edge_material_i(ae_material),
+      .edge_value_i(ae_value),
+      .edge_eol_i  (ae_eol),
+      .edge_valid_i(ae_valid),
+      .edge_ready_o(ae_ready),
+      .seg_e_o     (sg_e),
+      .seg_f_o     (sg_f),
+      .seg_poly_o  (sg_poly),
+      .seg_material_o(sg_material),
+      .seg_eol_o   (sg_eol),
+      .seg_valid_o (sg_valid),
+      .seg_ready_i (sg_ready)
+    );
+  end else begin : g_segment_former
+    segment_former #(
+      .MaxActiveEdges(MaxActiveEdges),
+      .VectorBits    (VectorBits),
+      .PolyIdBits    (PolyIdBits),
+      .MaterialIdBits(MaterialIdBits)
+    ) u_segment_former (
+      .clk_i, .rst_ni,
+      .edge_poly_i (ae_poly),
+      .edge_material_i(ae_material),
+      .edge_value_i(ae_value),
+      .edge_eol_i  (ae_eol),
+      .edge_valid_i(ae_valid),
+      .edge_ready_o(ae_ready),
+      .seg_e_o     (sg_e),
+      .seg_f_o     (sg_f),
+      .seg_poly_o  (sg_poly),
+      .seg_material_o(sg_material),
+      .seg_eol_o   (sg_eol),
+      .seg_valid_o (sg_valid),
+      .seg_ready_i (sg_ready)
+    );
+  end
 
   // ------------------------------------------------------------ segment skid
   // A registered ready between the segment former and the interpolator (stream_skid, latency 0):
@@ -224,24 +296,30 @@ module watkins_top #(
   // instead of running on through the segment former's enable into the active-edge list's
   // stream advance and body-RAM read address, where it would be the sized Gouraud top's
   // critical path. A segment refused by s0 waits in the skid; the former sees it refused a clock
-  // later.
-  localparam int unsigned SkidBits = 2 * VectorBits + PolyIdBits + MaterialIdBits + 1;
+  // later. The compact top has none: its interpolator's seg_ready_o is a flop.
   logic [VectorBits-1:0]     sk_e, sk_f;
   logic [PolyIdBits-1:0]     sk_poly;
   logic [MaterialIdBits-1:0] sk_material;
   logic                      sk_eol, sk_valid, sk_ready;
 
-  stream_skid #(
-    .DataBits(SkidBits)
-  ) u_segment_skid (
-    .clk_i, .rst_ni,
-    .data_i ({sg_e, sg_f, sg_poly, sg_material, sg_eol}),
-    .valid_i(sg_valid),
-    .ready_o(sg_ready),
-    .data_o ({sk_e, sk_f, sk_poly, sk_material, sk_eol}),
-    .valid_o(sk_valid),
-    .ready_i(sk_ready)
-  );
+  if (Compact != 0) begin : g_no_segment_skid
+    assign {sk_e, sk_f, sk_poly, sk_material, sk_eol, sk_valid} =
+        {sg_e, sg_f, sg_poly, sg_material, sg_eol, sg_valid};
+    assign sg_ready = sk_ready;
+  end else begin : g_segment_skid
+    localparam int unsigned SkidBits = 2 * VectorBits + PolyIdBits + MaterialIdBits + 1;
+    stream_skid #(
+      .DataBits(SkidBits)
+    ) u_segment_skid (
+      .clk_i, .rst_ni,
+      .data_i ({sg_e, sg_f, sg_poly, sg_material, sg_eol}),
+      .valid_i(sg_valid),
+      .ready_o(sg_ready),
+      .data_o ({sk_e, sk_f, sk_poly, sk_material, sk_eol}),
+      .valid_o(sk_valid),
+      .ready_i(sk_ready)
+    );
+  end
 
   // ------------------------------------------------------------ fragments
   logic [LineBits-1:0]                    fr_x        /*verilator public_flat_rd*/;
@@ -255,38 +333,73 @@ module watkins_top #(
   logic                                   fr_valid    /*verilator public_flat_rd*/;
   logic                                   fr_ready    /*verilator public_flat_rd*/;
 
-  segment_interpolator #(
-    .XBits         (XBits),
-    .XFracBits     (XFracBits),
-    .ZBits         (ZBits),
-    .ZFracBits     (DepthFracBits),
-    .AttrBits      (AttrBits),
-    .AttrFracBits  (AttrFracBits),
-    .DepthBits     (DepthBits),
-    .PolyIdBits    (PolyIdBits),
-    .MaterialIdBits(MaterialIdBits),
-    .AttrOut       (HasEq2 != 0 && Phong == 0)
-  ) u_segment_interpolator (
-    .clk_i, .rst_ni,
-    .width_i     (width_q),
-    .seg_e_i     (sk_e),
-    .seg_f_i     (sk_f),
-    .seg_poly_i  (sk_poly),
-    .seg_material_i(sk_material),
-    .seg_eol_i   (sk_eol),
-    .seg_valid_i (sk_valid),
-    .seg_ready_o (sk_ready),
-    .frag_x_o    (fr_x),
-    .frag_depth_o(fr_depth),
-    .frag_rgb_o  (fr_rgb),
-    .frag_normal_o(fr_normal),
-    .frag_attr_o (fr_attr),
-    .frag_poly_o (fr_poly),
-    .frag_material_o(fr_material),
-    .frag_eol_o  (fr_eol),
-    .frag_valid_o(fr_valid),
-    .frag_ready_i(fr_ready)
-  );
+  if (Compact != 0) begin : g_compact_segment_interpolator
+    compact_segment_interpolator #(
+      .XBits         (XBits),
+      .XFracBits     (XFracBits),
+      .ZBits         (ZBits),
+      .ZFracBits     (DepthFracBits),
+      .AttrBits      (AttrBits),
+      .AttrFracBits  (AttrFracBits),
+      .DepthBits     (DepthBits),
+      .PolyIdBits    (PolyIdBits),
+      .MaterialIdBits(MaterialIdBits),
+      .AttrOut       (HasEq2 != 0 && Phong == 0)
+    ) u_segment_interpolator (
+      .clk_i, .rst_ni,
+      .width_i     (width_q),
+      .seg_e_i     (sk_e),
+      .seg_f_i     (sk_f),
+      .seg_poly_i  (sk_poly),
+      .seg_material_i(sk_material),
+      .seg_eol_i   (sk_eol),
+      .seg_valid_i (sk_valid),
+      .seg_ready_o (sk_ready),
+      .frag_x_o    (fr_x),
+      .frag_depth_o(fr_depth),
+      .frag_rgb_o  (fr_rgb),
+      .frag_normal_o(fr_normal),
+      .frag_attr_o (fr_attr),
+      .frag_poly_o (fr_poly),
+      .frag_material_o(fr_material),
+      .frag_eol_o  (fr_eol),
+      .frag_valid_o(fr_valid),
+      .frag_ready_i(fr_ready)
+    );
+  end else begin : g_segment_interpolator
+    segment_interpolator #(
+      .XBits         (XBits),
+      .XFracBits     (XFracBits),
+      .ZBits         (ZBits),
+      .ZFracBits     (DepthFracBits),
+      .AttrBits      (AttrBits),
+      .AttrFracBits  (AttrFracBits),
+      .DepthBits     (DepthBits),
+      .PolyIdBits    (PolyIdBits),
+      .MaterialIdBits(MaterialIdBits),
+      .AttrOut       (HasEq2 != 0 && Phong == 0)
+    ) u_segment_interpolator (
+      .clk_i, .rst_ni,
+      .width_i     (width_q),
+      .seg_e_i     (sk_e),
+      .seg_f_i     (sk_f),
+      .seg_poly_i  (sk_poly),
+      .seg_material_i(sk_material),
+      .seg_eol_i   (sk_eol),
+      .seg_valid_i (sk_valid),
+      .seg_ready_o (sk_ready),
+      .frag_x_o    (fr_x),
+      .frag_depth_o(fr_depth),
+      .frag_rgb_o  (fr_rgb),
+      .frag_normal_o(fr_normal),
+      .frag_attr_o (fr_attr),
+      .frag_poly_o (fr_poly),
+      .frag_material_o(fr_material),
+      .frag_eol_o  (fr_eol),
+      .frag_valid_o(fr_valid),
+      .frag_ready_i(fr_ready)
+    );
+  end
 
   // ------------------------------------------------------------ shading
   // sh_*: the fragments the depth test receives, shaded (the bench compares them, too).
@@ -443,60 +556,98 @@ module watkins_top #(
   // reach every stall enable upstream in one clock. Two entries keep one fragment per clock;
   // latency 1. In the Phong top the queue's next ready (ready_next_o, from the buffer's ready)
   // does reach the shader's and the normalizer's LookAhead enable flops, as their D input:
-  // a path into two flops, not through every enable.
-  localparam int unsigned QueueBits = 1 + LineBits + DepthBits + PolyIdBits
-                                    + watkins_pkg::RgbBits;
+  // a path into two flops, not through every enable. The compact top has none: its buffer takes
+  // a fragment every clock one is offered, and the queue's ready would only delay the stream.
   watkins_pkg::rgb_t     q_rgb;
   logic [LineBits-1:0]   q_x;
   logic [DepthBits-1:0]  q_depth;
   logic [PolyIdBits-1:0] q_poly;
   logic                  q_eol, q_valid, q_ready;
 
-  stream_fifo #(
-    .DataBits(QueueBits),
-    .Depth   (2)
-  ) u_frag_queue (
-    .clk_i, .rst_ni,
-    .data_i ({sh_eol, sh_x, sh_depth, sh_poly, sh_rgb}),
-    .valid_i(sh_valid),
-    .ready_o(sh_ready),
-    .ready_next_o(sh_ready_next),
-    .data_o ({q_eol, q_x, q_depth, q_poly, q_rgb}),
-    .valid_o(q_valid),
-    .ready_i(q_ready)
-  );
+  if (Compact != 0) begin : g_no_frag_queue
+    assign {q_eol, q_x, q_depth, q_poly, q_rgb, q_valid} =
+        {sh_eol, sh_x, sh_depth, sh_poly, sh_rgb, sh_valid};
+    assign sh_ready      = q_ready;
+    assign sh_ready_next = 1'b0;  // read by the Phong and eq. (2) pipes only, absent here
+  end else begin : g_frag_queue
+    localparam int unsigned QueueBits = 1 + LineBits + DepthBits + PolyIdBits
+                                      + watkins_pkg::RgbBits;
+    stream_fifo #(
+      .DataBits(QueueBits),
+      .Depth   (2)
+    ) u_frag_queue (
+      .clk_i, .rst_ni,
+      .data_i ({sh_eol, sh_x, sh_depth, sh_poly, sh_rgb}),
+      .valid_i(sh_valid),
+      .ready_o(sh_ready),
+      .ready_next_o(sh_ready_next),
+      .data_o ({q_eol, q_x, q_depth, q_poly, q_rgb}),
+      .valid_o(q_valid),
+      .ready_i(q_ready)
+    );
+  end
 
   // ------------------------------------------------------------ visibility and pixels
   watkins_pkg::rgb_t   sb_rgb;
   logic                sb_covered, sb_last, sb_valid, sb_ready;
   logic [LineBits-1:0] sb_x, sb_y;
 
-  scanline_buffer #(
-    .MaxWidth  (MaxWidth),
-    .DepthBits (DepthBits),
-    .PolyIdBits(PolyIdBits)
-  ) u_scanline_buffer (
-    .clk_i, .rst_ni,
-    .width_i        (width_q),
-    .height_i       (height_q),
-    .background_i   (background_q),
-    .sparse_i       (sparse_q && !smooth_on),
-    .tie_submission_i(tie_submission_q),
-    .frag_x_i       (q_x),
-    .frag_depth_i   (q_depth),
-    .frag_poly_i    (q_poly),
-    .frag_rgb_i     (q_rgb),
-    .frag_eol_i     (q_eol),
-    .frag_valid_i   (q_valid),
-    .frag_ready_o   (q_ready),
-    .pixel_rgb_o    (sb_rgb),
-    .pixel_covered_o(sb_covered),
-    .pixel_x_o      (sb_x),
-    .pixel_y_o      (sb_y),
-    .pixel_last_o   (sb_last),
-    .pixel_valid_o  (sb_valid),
-    .pixel_ready_i  (sb_ready)
-  );
+  if (Compact != 0) begin : g_compact_scanline_buffer
+    compact_scanline_buffer #(
+      .MaxWidth  (MaxWidth),
+      .DepthBits (DepthBits),
+      .PolyIdBits(PolyIdBits)
+    ) u_scanline_buffer (
+      .clk_i, .rst_ni,
+      .width_i        (width_q),
+      .height_i       (height_q),
+      .background_i   (background_q),
+      .sparse_i       (sparse_q && !smooth_on),
+      .tie_submission_i(tie_submission_q),
+      .frag_x_i       (q_x),
+      .frag_depth_i   (q_depth),
+      .frag_poly_i    (q_poly),
+      .frag_rgb_i     (q_rgb),
+      .frag_eol_i     (q_eol),
+      .frag_valid_i   (q_valid),
+      .frag_ready_o   (q_ready),
+      .pixel_rgb_o    (sb_rgb),
+      .pixel_covered_o(sb_covered),
+      .pixel_x_o      (sb_x),
+      .pixel_y_o      (sb_y),
+      .pixel_last_o   (sb_last),
+      .pixel_valid_o  (sb_valid),
+      .pixel_ready_i  (sb_ready)
+    );
+    `WATKINS_ASSERT(a_compact_full_frames, start |-> !sparse_i)
+  end else begin : g_scanline_buffer
+    scanline_buffer #(
+      .MaxWidth  (MaxWidth),
+      .DepthBits (DepthBits),
+      .PolyIdBits(PolyIdBits)
+    ) u_scanline_buffer (
+      .clk_i, .rst_ni,
+      .width_i        (width_q),
+      .height_i       (height_q),
+      .background_i   (background_q),
+      .sparse_i       (sparse_q && !smooth_on),
+      .tie_submission_i(tie_submission_q),
+      .frag_x_i       (q_x),
+      .frag_depth_i   (q_depth),
+      .frag_poly_i    (q_poly),
+      .frag_rgb_i     (q_rgb),
+      .frag_eol_i     (q_eol),
+      .frag_valid_i   (q_valid),
+      .frag_ready_o   (q_ready),
+      .pixel_rgb_o    (sb_rgb),
+      .pixel_covered_o(sb_covered),
+      .pixel_x_o      (sb_x),
+      .pixel_y_o      (sb_y),
+      .pixel_last_o   (sb_last),
+      .pixel_valid_o  (sb_valid),
+      .pixel_ready_i  (sb_ready)
+    );
+  end
 
   // ------------------------------------------------------------ smoothing (per frame)
   if (Smoothing != 0) begin : g_smoother

@@ -15,9 +15,11 @@
 // LUT per output bit.
 //
 // Parameters: a top gets exactly rtl_parameters(config, shading) (what `watkins_gen_pkg --params`
-// prints); a block gets what that top gives it (read from the elaborated top, so the widths are
-// derived in one place, rtl/watkins_top.sv): the Gouraud top's instance, except normalizer and
-// phong_shader, which exist in the Phong top only. A parameter the top does not declare is listed
+// prints), the compact top (top-compact) those of the configuration with compact true, smoothing
+// and eq2 false (the compact top is a Gouraud top without the smoother and the divider); a block
+// gets what that top gives it (read from the elaborated top, so the widths are derived in one
+// place, rtl/watkins_top.sv): the Gouraud top's instance, except normalizer and phong_shader,
+// which exist in the Phong top only. A parameter the top does not declare is listed
 // in the table's notes: that design was synthesized at its default for it.
 //
 // Seeds (--seeds): nextpnr's placement is seeded, and runs of nearly the same netlist differ by
@@ -81,6 +83,9 @@ struct Design {
   // The block of watkins_top whose parameters it takes (nullptr: its own module's). A compact
   // block is measured at the parameters its pipelined counterpart has in the top.
   const char* params_of = nullptr;
+  // The top as the compact micro-architecture builds it: the configuration with compact true and
+  // smoothing and eq2 false (what the compact top supports).
+  bool compact = false;
 };
 // Blocks first, tops last: the tops take minutes per target, the blocks seconds.
 const Design kDesigns[] = {
@@ -101,6 +106,7 @@ const Design kDesigns[] = {
     {"compact_scanline_buffer", "compact_scanline_buffer", ShadingMode::Gouraud, false, "scanline_buffer"},
     {"top-gouraud", "watkins_top", ShadingMode::Gouraud, true},
     {"top-phong", "watkins_top", ShadingMode::Phong, true},
+    {"top-compact", "watkins_top", ShadingMode::Gouraud, true, nullptr, true},
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -519,7 +525,9 @@ CLI::App* add_synth_command(CLI::App& app, SynthArgs& a) {
                                        "'default' = the default configuration")->capture_default_str();
   s->add_option("--designs", a.designs, "comma-separated: edge_incrementer, active_edge_list, segment_former, "
                                         "span_reciprocal, segment_interpolator, normalizer, phong_shader, "
-                                        "scanline_buffer, smoother, top-gouraud, top-phong (default: all)");
+                                        "scanline_buffer, smoother, compact_active_edge_list, compact_segment_former, "
+                                        "compact_segment_interpolator, compact_scanline_buffer, top-gouraud, top-phong, "
+                                        "top-compact (default: all)");
   s->add_option("--targets", a.targets, "comma-separated: ice40-up5k, ice40-hx8k, ecp5-85")->capture_default_str();
   cli::add_file(s, "--work", a.work, "directory for wrappers, netlists, logs and reports")->capture_default_str();
   cli::add_file(s, "--md", a.md, "markdown table to write");
@@ -667,8 +675,14 @@ int run_synth(const SynthArgs& a) {
         if (d->top != tops) continue;
         const fs::path ddir = work / configs[ci].label / d->name;
         fs::create_directories(ddir);
+        Config built = configs[ci].config;
+        if (d->compact) {
+          built.compact = true;
+          built.smoothing = false;
+          built.eq2 = false;
+        }
         Parameters top;
-        for (const RtlParameter& p : rtl_parameters(configs[ci].config, d->shading)) top.emplace_back(p.name, p.value);
+        for (const RtlParameter& p : rtl_parameters(built, d->shading)) top.emplace_back(p.name, p.value);
         Parameters wanted = top;
         if (!d->top) {
           // A configuration without the smoother (smoothing false) has none in its top: the smoother

@@ -113,6 +113,13 @@ RtlResult run_rtl_frames(const std::vector<const PreparedScene*>& scenes, const 
       if (scenes[f]->eq2)
         throw std::invalid_argument("RTL: eq2: frame " + std::to_string(f) +
                                     " divides by eq. (2) but its configuration has eq2 false (the top has no shade divider)");
+  // A compact top emits full frames only (its scanline buffer asserts sparse_i 0 at frame start).
+  if (config.compact)
+    for (std::size_t f = 0; f < scenes.size(); ++f)
+      if (f < opt.sparse_frames.size() ? opt.sparse_frames[f] : opt.sparse)
+        throw std::invalid_argument("RTL: sparse: frame " + std::to_string(f) +
+                                    " asks for sparse output but its configuration has compact true (the compact "
+                                    "top emits full frames only)");
   const std::vector<RtlParameter> params = rtl_parameters(config, shading);
   RtlResult r;
   const detail::CcModelEntry* m = find_cc_model(params);
