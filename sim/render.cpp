@@ -74,10 +74,13 @@ void check_rtl_args(const RtlArgs& a, const std::string& model) {
 }
 
 // A Verilated top exists for the default configuration and for each one the build was asked for
-// (CMake option WATKINS_RTL_CONFIGS): refuse, in one line, a configuration without one rather
-// than compare two different pipelines.
+// (CMake option WATKINS_RTL_CONFIGS; a configuration with compact true gets the compact top):
+// refuse, in one line, a configuration without one rather than compare two different pipelines.
 void check_rtl_config(const RtlArgs& a, const PreparedScene& prepared, const std::string& config_file) {
   if (!a.enabled) return;
+  // The compact top (a configuration with compact true) emits full frames only.
+  if (a.sparse && prepared.config.compact)
+    throw UsageError("--sparse: --config " + config_file + " has compact true: the compact top emits full frames only");
 #ifdef WATKINS_HAVE_RTL
   const std::string why = tb::rtl_unavailable(prepared.config, prepared.shading,
                                                        config_file.empty() ? "F" : config_file);

@@ -170,7 +170,8 @@ struct Result {
   long long cycles = -1;
   std::string cycles_source = "none";
   // predicted-sparse / predicted-full-frame (the cycle model, exact for the RTL without stalls),
-  // rtl-sparse / rtl-full-frame (Verilated, with --rtl), none (an error before the frame)
+  // rtl-sparse / rtl-full-frame / rtl-compact-full-frame (Verilated, with --rtl; the compact top
+  // with --compact), none (an error before the frame)
   long long rtl_mismatches = -1;
   HardwareBits bits;
   double seconds = 0;
@@ -309,19 +310,26 @@ Result evaluate(const SweepArgs& a, const std::vector<Axis>& axes, long long k) 
                                      cfg.shade.frac_bits == def.shade.frac_bits &&
                                      cfg.normal.frac_bits == def.normal.frac_bits;
       // The Verilated top is the default configuration's, edge_order 1: a whitted point's curved
-      // edges need an order-3 top, so its cycles stay the cycle model's.
-      if (r.active_edges <= fmt::MaxActiveEdges && default_fractions && cfg.edge_order == 1) {
+      // edges need an order-3 top, so its cycles stay the cycle model's. --compact: the compact
+      // top at the default sizes (no smoother), which runs Gouraud's eq. (1) only (flat and
+      // gouraud-eq1 points); the other points keep the cycle model's cycles.
+      const bool on_compact = scene.shading == ShadingMode::Gouraud && !prepared.eq2;
+      if (r.active_edges <= fmt::MaxActiveEdges && default_fractions && cfg.edge_order == 1 &&
+          (!a.compact || on_compact)) {
         tb::RtlOptions ro;
         ro.sparse = !a.full_frame;
         // Its frame is prepared for the default configuration: the point's words wrap slopes to
         // the point's widths, which the RTL's wider words would not sign-extend the same way.
         PrepareOptions popt;
         popt.max_active_edges = a.max_active_edges;
-        const PreparedScene rtl_frame = prepare(scene, popt);
+        Config compact_top;
+        compact_top.compact = true;
+        compact_top.smoothing = false;
+        const PreparedScene rtl_frame = a.compact ? prepare(scene, compact_top) : prepare(scene, popt);
         std::lock_guard<std::mutex> lock(rtl_mutex);
         const tb::RtlResult rr = tb::run_rtl(rtl_frame, ro, &image);
         r.cycles = rr.cycles;
-        r.cycles_source = a.full_frame ? "rtl-full-frame" : "rtl-sparse";
+        r.cycles_source = a.compact ? "rtl-compact-full-frame" : a.full_frame ? "rtl-full-frame" : "rtl-sparse";
         r.rtl_mismatches = rr.mismatches + static_cast<long long>(rr.stage_mismatches.size());
         if (!rr.ok() || rr.overflow) r.error = "RTL run failed: " + rr.summary();
       }
@@ -513,6 +521,8 @@ CLI::App* add_sweep_command(CLI::App& app, SweepArgs& a) {
       ->capture_default_str();
   s->add_flag("--rtl", a.rtl, "cycles per frame from the Verilated RTL (points within its active-edge list)");
   s->add_flag("--full-frame", a.full_frame, "with --rtl: full-frame output instead of sparse");
+  s->add_flag("--compact", a.compact, "with --rtl --full-frame: the compact top (the default sizes, compact true, no "
+                                      "smoother) at the flat and gouraud-eq1 points");
   s->add_flag("--quiet,-q", a.quiet, "no progress bar");
   cli::add_file(s, "--images", a.images,
                 "folder for PNGs: SCENE_SHADING_UxV.png (the fixed-point image) per point, SCENE_truth.png per scene");
@@ -521,6 +531,8 @@ CLI::App* add_sweep_command(CLI::App& app, SweepArgs& a) {
 
 void check_sweep(const SweepArgs& a) {
   if (a.full_frame && !a.rtl) throw UsageError("--full-frame needs --rtl");
+  if (a.compact && !a.rtl) throw UsageError("--compact needs --rtl");
+  if (a.compact && !a.full_frame) throw UsageError("--compact: the compact top emits full frames only; add --full-frame");
 #ifndef WATKINS_HAVE_RTL
   if (a.rtl) throw UsageError("--rtl: this build has no RTL simulation (install Verilator and SystemC)");
 #endif

@@ -32,6 +32,7 @@ struct SweepArgs {
   int max_active_edges = 1024;  // the model's active-edge list (the RTL's is fmt::MaxActiveEdges)
   bool rtl = false;             // cycles from the Verilated RTL (sparse output unless full_frame)
   bool full_frame = false;
+  bool compact = false;         // with --rtl: the compact top (Gouraud points, full frames)
   bool quiet = false;           // no progress bar
   std::string images;           // a folder: each point's fixed-point image and each scene's truth (PNG)
 };
