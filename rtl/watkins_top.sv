@@ -54,14 +54,11 @@
 // (docs/reference/compact.md): compact_active_edge_list, compact_segment_former,
 // compact_segment_interpolator and compact_scanline_buffer in place of their pipelined
 // counterparts, the frame control, the parameters, the ports and every value unchanged; only
-// the cycles differ. Its glue: the former's segments go straight to the interpolator (no segment
-// skid: the compact interpolator's seg_ready_o is a flop) and the interpolator's fragments
-// straight to the scanline buffer (no fragment queue: the compact buffer takes a fragment every
-// clock it is offered, refusing only a marker that waits on its reader); the pixel skid stays.
-// So the stream between two blocks moves in the clock its producer offers it and its consumer's
-// ready is high, and pixel_ready_i reaches the scanline buffer's frag_ready_o, hence the
-// interpolator's stepper, only through the pixel skid's flop. It needs Phong = 0, Smoothing = 0
-// and HasEq2 = 0 (checked at elaboration) and sparse_i = 0 at every frame start (asserted: the
+// the cycles differ. Its glue is the pipelined top's but for one thing: the former's segments go
+// straight to the interpolator, in the clock the former offers one and the interpolator's
+// seg_ready_o (a flop) is high -- no segment skid. The fragment queue (two entries, latency 1)
+// and the pixel skid stay as in the pipelined top. It needs Phong = 0, Smoothing = 0 and
+// HasEq2 = 0 (checked at elaboration) and sparse_i = 0 at every frame start (asserted: the
 // compact buffer emits full frames only).
 `include "watkins_assert.svh"
 
@@ -556,36 +553,31 @@ module watkins_top #(
   // reach every stall enable upstream in one clock. Two entries keep one fragment per clock;
   // latency 1. In the Phong top the queue's next ready (ready_next_o, from the buffer's ready)
   // does reach the shader's and the normalizer's LookAhead enable flops, as their D input:
-  // a path into two flops, not through every enable. The compact top has none: its buffer takes
-  // a fragment every clock one is offered, and the queue's ready would only delay the stream.
+  // a path into two flops, not through every enable. The compact top keeps it too: there the
+  // buffer's ready runs from its reader's column compare, and without the queue it would reach
+  // the interpolator's stepper and head in the same clock (on the UP5K a 45.5 ns path: 22.0
+  // MHz).
+  localparam int unsigned QueueBits = 1 + LineBits + DepthBits + PolyIdBits
+                                    + watkins_pkg::RgbBits;
   watkins_pkg::rgb_t     q_rgb;
   logic [LineBits-1:0]   q_x;
   logic [DepthBits-1:0]  q_depth;
   logic [PolyIdBits-1:0] q_poly;
   logic                  q_eol, q_valid, q_ready;
 
-  if (Compact != 0) begin : g_no_frag_queue
-    assign {q_eol, q_x, q_depth, q_poly, q_rgb, q_valid} =
-        {sh_eol, sh_x, sh_depth, sh_poly, sh_rgb, sh_valid};
-    assign sh_ready      = q_ready;
-    assign sh_ready_next = 1'b0;  // read by the Phong and eq. (2) pipes only, absent here
-  end else begin : g_frag_queue
-    localparam int unsigned QueueBits = 1 + LineBits + DepthBits + PolyIdBits
-                                      + watkins_pkg::RgbBits;
-    stream_fifo #(
-      .DataBits(QueueBits),
-      .Depth   (2)
-    ) u_frag_queue (
-      .clk_i, .rst_ni,
-      .data_i ({sh_eol, sh_x, sh_depth, sh_poly, sh_rgb}),
-      .valid_i(sh_valid),
-      .ready_o(sh_ready),
-      .ready_next_o(sh_ready_next),
-      .data_o ({q_eol, q_x, q_depth, q_poly, q_rgb}),
-      .valid_o(q_valid),
-      .ready_i(q_ready)
-    );
-  end
+  stream_fifo #(
+    .DataBits(QueueBits),
+    .Depth   (2)
+  ) u_frag_queue (
+    .clk_i, .rst_ni,
+    .data_i ({sh_eol, sh_x, sh_depth, sh_poly, sh_rgb}),
+    .valid_i(sh_valid),
+    .ready_o(sh_ready),
+    .ready_next_o(sh_ready_next),
+    .data_o ({q_eol, q_x, q_depth, q_poly, q_rgb}),
+    .valid_o(q_valid),
+    .ready_i(q_ready)
+  );
 
   // ------------------------------------------------------------ visibility and pixels
   watkins_pkg::rgb_t   sb_rgb;
