@@ -29,8 +29,9 @@
 namespace watkins::board_command {
 namespace {
 
-// Frequencies of the board's clocks: a tick is 1/1260 us.
-double mhz(int ticks) { return 1260.0 / ticks; }
+board::Board board_of(const std::string& name) {
+  return name == "icebreaker" ? board::Board::Icebreaker : board::Board::Ulx3s;
+}
 
 std::string line_name(const board::LineSlack& l) {
   return "frame " + std::to_string(l.frame) + " line " + std::to_string(l.y);
@@ -72,6 +73,9 @@ BoardScene load_board_scene(const CheckArgs& a, RunFiles& files) {
                                          : std::string()));
   b.doubling = doubling;
   b.cfg = a.config.empty() ? size::sized_config(scene) : load_config(a.config);
+  // The UP5K holds the compact micro-architecture only (docs/reference/compact.md): the sized
+  // configuration is built compact there; a --config file says for itself.
+  if (a.config.empty() && board_of(a.board) == board::Board::Icebreaker) b.cfg.compact = true;
   b.prepared = prepare(scene, b.cfg);
   return b;
 }
@@ -83,7 +87,7 @@ long long report_schedule(const CheckArgs& a, const BoardScene& b) {
   const Config& cfg = b.cfg;
   const PreparedScene& prepared = b.prepared;
   const int doubling = b.doubling;
-  board::BoardTiming t;
+  board::BoardTiming t = board::board_timing(board_of(a.board));
   t.doubling = doubling;
   t.line_slots = a.slots;
   const board::BeamSchedule s = board::beam_schedule(prepared, cfg, t);
@@ -91,11 +95,17 @@ long long report_schedule(const CheckArgs& a, const BoardScene& b) {
 
   std::printf("scene         %s  %dx%d  shading %s, %zu polygons, %zu edge records\n", scene.name.c_str(), scene.width,
               scene.height, to_string(scene.shading), scene.polygons.size(), prepared.edges.size());
-  const int g = std::gcd(t.ticks_per_pixel, t.ticks_per_pipe);
-  std::printf("board         %s: clk_pixel %.2f MHz, clk_pipe %.2f MHz (%d/%d of clk_pixel), clk_tmds %.0f MHz; "
-              "doubling %d, %d line slots\n",
-              a.board.c_str(), mhz(t.ticks_per_pixel), mhz(t.ticks_per_pipe), t.ticks_per_pixel / g, t.ticks_per_pipe / g,
-              mhz(t.ticks_per_pixel) * 5, doubling, a.slots);
+  const auto mhz = [&t](int ticks) { return t.ticks_per_us / ticks; };
+  if (board_of(a.board) == board::Board::Icebreaker) {
+    std::printf("board         %s: one clock, %.3f MHz (pixel clock and pipeline clock); doubling %d, %d line slots\n",
+                a.board.c_str(), mhz(t.ticks_per_pixel), doubling, a.slots);
+  } else {
+    const int g = std::gcd(t.ticks_per_pixel, t.ticks_per_pipe);
+    std::printf("board         %s: clk_pixel %.2f MHz, clk_pipe %.2f MHz (%d/%d of clk_pixel), clk_tmds %.0f MHz; "
+                "doubling %d, %d line slots\n",
+                a.board.c_str(), mhz(t.ticks_per_pixel), mhz(t.ticks_per_pipe), t.ticks_per_pixel / g,
+                t.ticks_per_pipe / g, mhz(t.ticks_per_pixel) * 5, doubling, a.slots);
+  }
   std::printf("config        %s: edge record %d bits, max_active_edges %d, %s\n",
               a.config.empty() ? "sized (watkins size, bound 1 level)" : a.config.c_str(),
               cfg.edge_record_bits(scene.shading), cfg.max_active_edges,
@@ -133,9 +143,11 @@ int run_check(const CheckArgs& a) {
   return report_schedule(a, b) == 0 ? 0 : MissedExit;
 }
 
-// The smallest power of two, at least 512 (one block RAM deep), that holds `words`.
-int bank_words_for(int words) {
-  int n = 512;
+// The smallest power of two that holds `words`, at least one block RAM deep on the ULX3S (512);
+// on the iCEBreaker at least 16, so a small scene's bank is a ROM of 4-input lookup tables
+// rather than block RAM, of which the compact pipeline leaves the UP5K little.
+int bank_words_for(int words, const std::string& board) {
+  int n = board_of(board) == board::Board::Icebreaker ? 16 : 512;
   while (n < words) n *= 2;
   return n;
 }
@@ -153,7 +165,7 @@ int run_image(const ImageArgs& a) {
   files.commit();
   std::printf("%s: %zu words of %d bits (%d edge records, %d materials); BankWords %d\n", out.c_str(), bank.words.size(),
               bank.word_bits, bank.edges, bank.materials,
-              a.bank_words ? a.bank_words : bank_words_for(static_cast<int>(bank.words.size())));
+              a.bank_words ? a.bank_words : bank_words_for(static_cast<int>(bank.words.size()), a.target.board));
   return 0;
 }
 
@@ -168,15 +180,17 @@ int run_build(const BuildArgs& a) {
   for (const auto& dir : {fs::path(rtl), fs::path(rtl) / "board"})
     for (const auto& e : fs::directory_iterator(dir))
       if (e.is_regular_file()) files.input("the RTL file " + e.path().string(), e.path().string());
-  const std::string out = a.out.empty() ? b.stem + "." + a.target.board + ".bit" : a.out;
+  const bool ice40 = board_of(a.target.board) == board::Board::Icebreaker;
+  const std::string out = a.out.empty() ? b.stem + "." + a.target.board + (ice40 ? ".bin" : ".bit") : a.out;
   files.output(a.out.empty() ? "the default output (--out)" : "--out", out);
   if (!a.md.empty()) files.output("--md", a.md);
   if (fs::exists(a.work) && fs::equivalent(a.work, rtl))
     throw UsageError("--work " + a.work + " is the RTL folder; refusing to write into it");
-  for (const char* tool : {"yosys", "yowasp-ecppack"})
+  for (const char* tool : {"yosys", ice40 ? "icepack" : "yowasp-ecppack"})
     if (!flow::on_path(tool)) throw std::runtime_error(std::string(tool) + " not found on PATH (scripts/setup installs it)");
-  if (!flow::on_path(flow::nextpnr_binary(*flow::find_target("ecp5-85"))))
-    throw std::runtime_error(flow::nextpnr_binary(*flow::find_target("ecp5-85")) + " not found on PATH (scripts/setup installs it)");
+  const flow::Target& part = *flow::find_target(ice40 ? "ice40-up5k" : "ecp5-85");
+  if (!flow::on_path(flow::nextpnr_binary(part)))
+    throw std::runtime_error(flow::nextpnr_binary(part) + " not found on PATH (scripts/setup installs it)");
 
   // The deadline first: a scene that misses a line is refused before minutes of place and route.
   if (const long long missed = report_schedule(a.target, b); missed > 0) {
@@ -186,6 +200,7 @@ int run_build(const BuildArgs& a) {
   }
 
   BitstreamJob job;
+  job.board = a.target.board;
   job.config = b.cfg;
   job.shading = b.scene.shading;
   job.doubling = b.doubling;
@@ -196,7 +211,7 @@ int run_build(const BuildArgs& a) {
   job.timeout_s = a.timeout;
   fs::create_directories(job.work);
   const board::BankImage bank = board::bank_image(b.prepared, b.cfg);
-  job.bank_words = bank_words_for(static_cast<int>(bank.words.size()));
+  job.bank_words = bank_words_for(static_cast<int>(bank.words.size()), a.target.board);
   job.bank_file = (fs::path(job.work) / "bank0.hex").string();
   board::write_readmemh_file(job.bank_file, bank);
   std::printf("bank          %zu words of %d bits in %d (%s)\n", bank.words.size(), bank.word_bits, job.bank_words,
@@ -236,7 +251,7 @@ CLI::App* add_board_command(CLI::App& app, BoardArgs& a) {
   // The scene and board options every subcommand shares.
   auto target_options = [](CLI::App* sub, CheckArgs& t) {
     cli::add_file(sub, "scene", t.scene, "scene file (JSON), 640x480 or 320x240; default: the embedded default scene");
-    sub->add_option("--board", t.board, "the board")->check(CLI::IsMember({"ulx3s"}))->capture_default_str();
+    sub->add_option("--board", t.board, "the board")->check(CLI::IsMember({"ulx3s", "icebreaker"}))->capture_default_str();
     sub->add_option("--doubling", t.doubling, "1: 640x480 native; 2: 320x240 shown doubled (default: from the scene's size)")
         ->check(cli::integer_in(1, 2));
     sub->add_option("--slots", t.slots, "line-buffer slots, a power of two")
@@ -258,10 +273,12 @@ CLI::App* add_board_command(CLI::App& app, BoardArgs& a) {
       ->capture_default_str();
   a.image_app = image;
 
-  auto* build = b->add_subcommand("build", "the bitstream: size, check the deadline, the bank image, yosys, nextpnr-ecp5, "
-                                           "ecppack; prints resources and every clock's Fmax (exit 4 when a line misses)");
+  auto* build = b->add_subcommand("build", "the bitstream: size, check the deadline, the bank image, yosys, nextpnr, "
+                                           "ecppack (ulx3s: .bit) or icepack (icebreaker: .bin); prints resources and "
+                                           "every clock's Fmax (exit 4 when a line misses)");
   target_options(build, a.build.target);
-  cli::add_file(build, "--out,-o", a.build.out, "the bitstream to write (default: <scene>.<board>.bit)");
+  cli::add_file(build, "--out,-o", a.build.out, "the bitstream to write (default: <scene>.<board>.bit, or .bin "
+                                                  "for the icebreaker)");
   cli::add_file(build, "--work", a.build.work, "folder for yosys's and nextpnr's scripts, netlist, logs and reports")
       ->capture_default_str();
   cli::add_file(build, "--md", a.build.md, "the report as markdown");

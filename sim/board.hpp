@@ -34,11 +34,12 @@ struct ImageArgs {
   int bank_words = 0;         // 0: the smallest power of two (at least 512) that holds the frame
 };
 
-// `board build`: size, check the deadline, the bank image, yosys, nextpnr, ecppack, report.
+// `board build`: size, check the deadline, the bank image, yosys, nextpnr, ecppack (ulx3s) or
+// icepack (icebreaker), report.
 struct BuildArgs {
   CheckArgs target;
   std::string work = "board-build";  // yosys's and nextpnr's folder (scripts, netlist, logs, reports)
-  std::string out;                   // the bitstream; default <scene stem>.<board>.bit
+  std::string out;                   // the bitstream; default <scene stem>.<board>.bit (.bin: icebreaker)
   std::string md;                    // the report as markdown (none when empty)
   std::string rtl_dir;               // default: the source tree's rtl/
   int seed = 0;                      // nextpnr --seed; 0: none

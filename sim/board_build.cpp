@@ -14,15 +14,29 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr const char* kTop = "ulx3s_top";
-constexpr const char* kTarget = "ecp5-85";
+// A board's top, its part and its pin file (rtl/board/<top>.lpf or .pcf).
+struct BoardFlow {
+  const char* top;
+  const char* target;
+  const char* pins;     // nextpnr's option for the pin file
+  const char* pin_ext;  // the pin file's extension
+  const char* other;    // the other board's file prefix: its files are not read
+};
 
-// The sources yosys reads: the package first (every module uses it), the pipeline, the board.
-std::vector<std::string> board_sources(const fs::path& rtl) {
+BoardFlow board_flow(const std::string& board) {
+  if (board == "icebreaker") return {"icebreaker_top", "ice40-up5k", "--pcf", ".pcf", "ulx3s_"};
+  return {"ulx3s_top", "ecp5-85", "--lpf", ".lpf", "icebreaker_"};
+}
+
+// The sources yosys reads: the package first (every module uses it), the pipeline, the board's
+// (rtl/board/ but the other board's top files).
+std::vector<std::string> board_sources(const fs::path& rtl, const BoardFlow& b) {
   std::vector<std::string> files{(rtl / "watkins_pkg.sv").string()}, rest;
   for (const fs::path& dir : {rtl, rtl / "board"})
     for (const auto& e : fs::directory_iterator(dir))
-      if (e.path().extension() == ".sv" && e.path().filename() != "watkins_pkg.sv") rest.push_back(e.path().string());
+      if (e.path().extension() == ".sv" && e.path().filename() != "watkins_pkg.sv" &&
+          e.path().filename().string().rfind(b.other, 0) != 0)
+        rest.push_back(e.path().string());
   std::sort(rest.begin(), rest.end());
   files.insert(files.end(), rest.begin(), rest.end());
   return files;
@@ -47,25 +61,30 @@ std::vector<std::pair<std::string, std::string>> board_top_parameters(const Bits
 }
 
 BitstreamResult build_bitstream(const BitstreamJob& job) {
-  const flow::Target* target = flow::find_target(kTarget);
+  const BoardFlow b = board_flow(job.board);
+  const flow::Target* target = flow::find_target(b.target);
+  const bool ecp5 = target->family == flow::Family::Ecp5;
   const fs::path work = job.work, rtl = job.rtl_dir;
   fs::create_directories(work);
   BitstreamResult r;
 
-  // yosys: the ECP5 primitives (EHXPLLL, ODDRX1F, MULT18X18D) as black boxes, every source with
-  // WATKINS_ECP5 (the multipliers with their own product register), the top's parameters set
-  // before the hierarchy is elaborated.
+  // yosys: the part's primitives (EHXPLLL, ODDRX1F, MULT18X18D; SB_PLL40_PAD, SB_IO, SB_MAC16) as
+  // black boxes, every source (on the ECP5 with WATKINS_ECP5: the multipliers with their own
+  // product register), the top's parameters set before the hierarchy is elaborated.
   flow::SynthesisJob y;
   y.target = target;
   y.dir = work;
   y.reads.push_back(flow::read_primitives(*target));
-  std::string read = "read_verilog -sv -DWATKINS_ECP5 -I" + rtl.string();
-  for (const std::string& f : board_sources(rtl)) read += " " + f;
+  std::string read = std::string("read_verilog -sv") + (ecp5 ? " -DWATKINS_ECP5" : "") + " -I" + rtl.string();
+  for (const std::string& f : board_sources(rtl, b)) read += " " + f;
   y.reads.push_back(read);
   std::string chparam = "chparam";
   for (const auto& [name, value] : board_top_parameters(job)) chparam += " -set " + name + " " + value;
-  y.reads.push_back(chparam + " " + kTop);
-  y.top = kTop;
+  y.reads.push_back(chparam + " " + b.top);
+  // yosys 0.23 elaborates icebreaker_top under a derived name ($paramod...) at the first
+  // hierarchy after chparam; the synthesis script finds the top by its own name.
+  if (!ecp5) y.reads.push_back(std::string("hierarchy -check -top ") + b.top + "; rename -top " + b.top);
+  y.top = b.top;
   y.timeout_s = job.timeout_s;
   r.yosys = flow::synthesize(y);
   if (!r.yosys.ok) {
@@ -74,7 +93,7 @@ BitstreamResult build_bitstream(const BitstreamJob& job) {
   }
 
   // nextpnr: the board's pins and the oscillator's frequency from the constraint file; every PLL
-  // output gets the constraint nextpnr derives from it. The textual configuration for ecppack.
+  // output gets the constraint nextpnr derives from it. The textual configuration for the packer.
   flow::PlaceJob p;
   p.target = target;
   p.placer = target->placer;
@@ -82,29 +101,32 @@ BitstreamResult build_bitstream(const BitstreamJob& job) {
   p.dir = work;
   p.seed = job.seed;
   p.freq_mhz = 0;
-  const fs::path lpf = rtl / "board" / "ulx3s_top.lpf";
-  p.extra = {"--lpf", fs::relative(lpf, work).string(), "--textcfg", "ulx3s.config"};
+  const fs::path pins = rtl / "board" / (std::string(b.top) + b.pin_ext);
+  const std::string config = ecp5 ? "ulx3s.config" : "icebreaker.asc";
+  const std::string bit = ecp5 ? "ulx3s.bit" : "icebreaker.bin";
+  p.extra = {b.pins, fs::relative(pins, work).string(), ecp5 ? "--textcfg" : "--asc", config};
   p.timeout_s = job.timeout_s;
-  p.netlist_top = kTop;
-  fs::remove(work / "ulx3s.config");
+  p.netlist_top = b.top;
+  fs::remove(work / config);
   r.nextpnr = flow::place_and_route(p);
   if (!r.nextpnr.routed) {
     r.result = r.nextpnr.result;
     return r;
   }
-  if (!fs::exists(work / "ulx3s.config")) {
+  if (!fs::exists(work / config)) {
     r.result = "failed (nextpnr): no textual configuration written";
     return r;
   }
 
   const auto t0 = std::chrono::steady_clock::now();
-  const std::string packed = flow::pack_ecp5(work / "ulx3s.config", work / "ulx3s.bit", work, job.timeout_s);
-  r.ecppack_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const std::string packed = ecp5 ? flow::pack_ecp5(work / config, work / bit, work, job.timeout_s)
+                                  : flow::pack_ice40(work / config, work / bit, work, job.timeout_s);
+  r.pack_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!packed.empty()) {
     r.result = packed;
     return r;
   }
-  r.bit = (work / "ulx3s.bit").string();
+  r.bit = (work / bit).string();
   bool met = true;
   for (const flow::ClockFmax& c : r.nextpnr.clocks) met &= c.achieved >= c.constraint;
   r.ok = met;
@@ -133,9 +155,9 @@ std::string bitstream_report(const BitstreamJob& job, const BitstreamResult& r) 
        << (c.achieved >= c.constraint ? "yes" : "**no**") << " |\n";
   }
   char times[160];
-  std::snprintf(times, sizeof times, "\nyosys %.0f s, nextpnr %.0f s, ecppack %.0f s (seed %s); doubling %d, %d line slots, "
+  std::snprintf(times, sizeof times, "\nyosys %.0f s, nextpnr %.0f s, %s %.0f s (seed %s); doubling %d, %d line slots, "
                                      "%d bank words.\n",
-                r.yosys.seconds, r.nextpnr.seconds, r.ecppack_s, job.seed > 0 ? std::to_string(job.seed).c_str() : "default",
+                r.yosys.seconds, r.nextpnr.seconds, job.board == "icebreaker" ? "icepack" : "ecppack", r.pack_s, job.seed > 0 ? std::to_string(job.seed).c_str() : "default",
                 job.doubling, job.line_slots, job.bank_words);
   md << times;
   return md.str();

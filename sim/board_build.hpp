@@ -1,7 +1,9 @@
 // The board build's hardware half: the board top at a scene's configuration through the shared
-// FPGA flow (fpga_flow.hpp: yosys synth_ecp5, nextpnr-ecp5 with the board's constraint file,
-// ecppack) to a bitstream, with the resources used and every clock's routed Fmax against the
-// constraint nextpnr derives for it from the oscillator's frequency and the PLL.
+// FPGA flow (fpga_flow.hpp) to a bitstream, with the resources used and every clock's routed Fmax
+// against the constraint nextpnr derives for it from the oscillator's frequency and the PLL. The
+// ULX3S: yosys synth_ecp5, nextpnr-ecp5 with rtl/board/ulx3s_top.lpf, ecppack (.bit). The
+// iCEBreaker: yosys synth_ice40 -dsp, nextpnr-ice40 --up5k --package sg48 with
+// rtl/board/icebreaker_top.pcf, icepack (.bin).
 #pragma once
 
 #include <map>
@@ -16,6 +18,7 @@
 namespace watkins::board_command {
 
 struct BitstreamJob {
+  std::string board = "ulx3s";          // ulx3s | icebreaker
   Config config;                        // the scene's configuration (watkins_top's parameters)
   ShadingMode shading = ShadingMode::Gouraud;
   int doubling = 2, line_slots = 2;
@@ -33,12 +36,13 @@ struct BitstreamResult {
   std::string bit;                      // the bitstream in work (when the flow ran to it)
   flow::SynthesisResult yosys;
   flow::PlaceResult nextpnr;
-  double ecppack_s = 0;
+  double pack_s = 0;                    // ecppack or icepack
 };
 
 // The board top's parameters: rtl_parameters(config, shading) and the board's own.
 std::vector<std::pair<std::string, std::string>> board_top_parameters(const BitstreamJob& job);
-// Runs yosys, nextpnr and ecppack for `job` (ULX3S, ECP5-85 CABGA381).
+// Runs yosys, nextpnr and ecppack (ULX3S, ECP5-85 CABGA381) or icepack (iCEBreaker, UP5K SG48)
+// for `job`.
 BitstreamResult build_bitstream(const BitstreamJob& job);
 // The report: resources (nextpnr's utilisation) and every clock against its constraint, markdown.
 std::string bitstream_report(const BitstreamJob& job, const BitstreamResult& r);

@@ -382,4 +382,12 @@ std::string pack_ecp5(const fs::path& config, const fs::path& bit, const fs::pat
   return "";
 }
 
+std::string pack_ice40(const fs::path& asc, const fs::path& bin, const fs::path& dir, int timeout_s) {
+  const ProcessResult p = run_process({"icepack", fs::relative(asc, dir).string(), fs::relative(bin, dir).string()}, dir,
+                                      dir / "icepack.out", timeout_s);
+  if (p.timed_out) return "icepack timeout";
+  if (p.status != 0) return "failed (icepack): " + last_error_line(read_text(dir / "icepack.out"));
+  return "";
+}
+
 }  // namespace watkins::flow

@@ -1,7 +1,8 @@
 // The FPGA tool flow every command that builds hardware runs through (`watkins synth`, `watkins
 // board build`): the targets (part, yosys synthesis command, nextpnr and its device options), one
 // process runner (argv, a log, a wall-clock limit), yosys to a JSON netlist with its cell counts,
-// nextpnr to a routed design with its utilisation and every clock's Fmax, ecppack to a bitstream.
+// nextpnr to a routed design with its utilisation and every clock's Fmax, ecppack or icepack to a
+// bitstream.
 #pragma once
 
 #include <filesystem>
@@ -120,5 +121,8 @@ PlaceResult place_and_route(const PlaceJob& job);
 
 // ecppack: nextpnr's textual configuration to a bitstream. Empty when it worked, else why.
 std::string pack_ecp5(const fs::path& config, const fs::path& bit, const fs::path& dir, int timeout_s);
+// icepack: nextpnr-ice40's ASCII configuration (--asc) to a bitstream (.bin). Empty when it
+// worked, else why.
+std::string pack_ice40(const fs::path& asc, const fs::path& bin, const fs::path& dir, int timeout_s);
 
 }  // namespace watkins::flow

@@ -75,6 +75,16 @@ long long releases_seen(const BoardTiming& t, long long edge) {
   return limit <= 0 ? 0 : Video(t.doubling, t.video_start).releases_by(floor_div(limit - 1, t.ticks_per_pixel));
 }
 
+BoardTiming board_timing(Board board) {
+  BoardTiming t;
+  if (board == Board::Icebreaker) {
+    t.ticks_per_pixel = t.ticks_per_pipe = 1;
+    t.sync_stages = t.count_stages = 0;
+    t.ticks_per_us = 25.125;
+  }
+  return t;
+}
+
 int start_to_first_beat(const Config& cfg) { return 11 + (1 << id_bits(cfg.max_materials)); }
 
 double BeamSchedule::budget_per_line() const {
@@ -88,8 +98,8 @@ BeamSchedule beam_schedule(const Frame& frame, const Config& cfg, const BoardTim
   if (t.line_slots < 1 || (t.line_slots & (t.line_slots - 1)) != 0 || t.line_slots >= (1 << (t.line_count_bits - 1)))
     throw std::invalid_argument("board: line slots " + std::to_string(t.line_slots) + " (a power of two)");
   if (t.frames < 3) throw std::invalid_argument("board: frames " + std::to_string(t.frames) + " (at least 3)");
-  if (t.ticks_per_pixel < 1 || t.ticks_per_pipe < 1 || t.sync_stages < 1 || t.count_stages < 1 || t.video_start < 0)
-    throw std::invalid_argument("board: clock periods and synchronizer stages must be positive");
+  if (t.ticks_per_pixel < 1 || t.ticks_per_pipe < 1 || t.sync_stages < 0 || t.count_stages < 0 || t.video_start < 0)
+    throw std::invalid_argument("board: clock periods must be positive and synchronizer stages not negative");
   const int width = HVisible / t.doubling, height = VVisible / t.doubling;
   if (frame.width != width)
     throw std::invalid_argument("board: screen width " + std::to_string(frame.width) + " (doubling " +

@@ -1,15 +1,17 @@
-// The beam schedule of the ULX3S board top (docs/reference/board.md): when each rendered line is
-// complete in the line buffer against the pixel-clock edge at which the video starts showing it.
+// The beam schedule of a board top (docs/reference/board.md): when each rendered line is complete
+// in the line buffer against the pixel-clock edge at which the video starts showing it.
 //
-// Three clocks from one VCO, in ticks of 1/1260 us, all rising at tick 0: clk_pixel (an edge every
-// ticks_per_pixel), clk_pipe (every ticks_per_pipe). The video timing runs from reset: the pixel
+// The ULX3S: clocks from one VCO, in ticks of 1/1260 us, all rising at tick 0: clk_pixel (an edge
+// every ticks_per_pixel), clk_pipe (every ticks_per_pipe). The iCEBreaker: one clock, the pixel
+// clock, which also runs the pipeline (a tick is its period, no synchronizer: zero stages). The video timing runs from reset: the pixel
 // edge video_start + m samples the state (h, v) = (m mod 800, (m div 800) mod 525) of video frame
 // m div 420000.
 // A flip-flop samples the value from before its edge: an edge coinciding with the sender's
 // samples the old value. From that:
 //  - frame request k: the toggle flips at the pixel edge of (639, 479) of video frame k; two
 //    pipeline flip-flops and the edge detector make the start pulse, high in the clock sampled
-//    at the pipeline edge first_edge_after(request) + sync_stages;
+//    at the pipeline edge first_edge_after(request) + sync_stages (one clock: a register makes
+//    the pulse, sync_stages 0);
 //  - frame_player begins at that pulse, or at the clock after the previous frame's last pixel
 //    was taken when that is later, and offers the first edge beat start_to_first_beat clocks
 //    after it begins; watkins_top then runs as the cycle model clocks it, from idle, with
@@ -17,7 +19,8 @@
 //  - w counts the lines whose last pixel was taken (edge that takes it); r counts the lines
 //    released: pixel edge of h = 639 on video line D y + D - 1 of every video frame after the
 //    first request; each count is visible to the other domain from edge
-//    first_edge_after(its tick) + count_stages on (two flip-flops and gray_sync's binary register);
+//    first_edge_after(its tick) + count_stages on (two flip-flops and gray_sync's binary register;
+//    one clock: count_stages 0, the counts are read where they are kept);
 //  - rendered line y of frame k is started (and checked) at the pixel edge of h = 799 on video
 //    line D y - 1 of video frame k + 1 (y = 0: v = 524 of video frame k): it is missed unless
 //    its completion is visible there.
@@ -35,6 +38,9 @@ namespace watkins::board {
 constexpr int HTotal = 800, VTotal = 525, HVisible = 640, VVisible = 480;
 constexpr long long FramePixelClocks = static_cast<long long>(HTotal) * VTotal;
 
+// The boards the beam schedule knows (docs/reference/board.md).
+enum class Board { Ulx3s, Icebreaker };
+
 struct BoardTiming {
   int doubling = 2;            // D (1 or 2): rendered line y on video lines D y .. D y + D - 1
   int line_slots = 2;          // S: the line buffer's slots (a power of two)
@@ -50,7 +56,13 @@ struct BoardTiming {
   // The pixel edge that samples the video's first state (0, 0): the pixel domain's reset leaves
   // its two-flip-flop synchronizer at edge 2 on the board top (every video event 2 clocks later).
   int video_start = 2;
+  double ticks_per_us = 1260;  // the tick's rate, for reporting the clocks in MHz
 };
+
+// A board's timing (its clocks and synchronizers) at the defaults above for the rest: the ULX3S
+// is BoardTiming{}; the iCEBreaker runs one 25.125 MHz clock (ticks_per_pixel = ticks_per_pipe =
+// 1, sync_stages = count_stages = 0, ticks_per_us 25.125).
+BoardTiming board_timing(Board board);
 
 // The first edge of a clock of `period` ticks (rising at tick 0) strictly after tick `tick`:
 // where a flip-flop on it first samples a value registered at `tick`.
@@ -94,7 +106,7 @@ struct BeamSchedule {
 
 // Runs `timing.frames` rendered frames of `frame` (prepared for `cfg`) on the board from reset.
 // Throws std::invalid_argument for a doubling other than 1 or 2, slots not a power of two, fewer
-// than 3 frames, or a frame that is not 640/D x 480/D (naming the field); CapacityError as the
+// than 3 frames, a clock period under one tick or a negative synchronizer depth, or a frame that is not 640/D x 480/D (naming the field); CapacityError as the
 // cycle model does.
 BeamSchedule beam_schedule(const Frame& frame, const Config& cfg, const BoardTiming& timing = {});
 
