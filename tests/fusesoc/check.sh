@@ -2,7 +2,8 @@
 # ctest fusesoc_core (label fusesoc): fusesoc accepts watkins.core. Its lint target (Verilator
 # -Wall) passes on the Gouraud and the Phong top, and its synth target sets up a yosys
 # synth_ice40 -dsp run of the top (running it takes minutes; scripts/lint --synth synthesizes
-# the tops in CI), and its ulx3s target sets up the board top's trellis flow. About 40 s.
+# the tops in CI), its ulx3s target sets up the board top's trellis flow and its icebreaker
+# target the iCEBreaker top's icestorm flow. About 50 s.
 #   check.sh SOURCE_DIR WORK_DIR
 set -euo pipefail
 src=$1 work=$2
@@ -28,4 +29,17 @@ grep -q "chparam -set BankFile {\"$work/bank.hex\"} ulx3s_top" "$dir/edalize_yos
 grep -q "WATKINS_ECP5" "$dir/edalize_yosys_procs.tcl" || { echo "fusesoc_core: WATKINS_ECP5 is not defined"; exit 1; }
 grep -q -- "--lpf .*ulx3s_top.lpf" "$dir/Makefile" || { echo "fusesoc_core: nextpnr-ecp5 does not get the board's pins"; exit 1; }
 grep -q "ecppack" "$dir/Makefile" || { echo "fusesoc_core: no ecppack step"; exit 1; }
+# The iCEBreaker target: edalize's icestorm flow set up for icebreaker_top (compact) with the
+# board's pins and the bank file reaching yosys, nextpnr-ice40 for the UP5K in its SG48 package,
+# icepack.
+fusesoc --cores-root "$src" run --build-root "$work/icebreaker" --setup --target icebreaker "$core" --BankFile="$work/bank.hex"
+dir=$(ls -d "$work"/icebreaker/*/icebreaker-icestorm)
+grep -q "synth_ice40 -dsp *-top" "$dir/edalize_yosys_procs.tcl" || { echo "fusesoc_core: icebreaker target does not run synth_ice40 -dsp"; exit 1; }
+grep -q "chparam -set BankFile {\"$work/bank.hex\"} icebreaker_top" "$dir/edalize_yosys_procs.tcl" ||
+  { echo "fusesoc_core: --BankFile did not reach icebreaker_top"; exit 1; }
+grep -q "chparam -set Compact 1 icebreaker_top" "$dir/edalize_yosys_procs.tcl" ||
+  { echo "fusesoc_core: Compact=1 did not reach icebreaker_top"; exit 1; }
+grep -q -- "--up5k --package sg48 --pcf .*icebreaker_top.pcf" "$dir/Makefile" ||
+  { echo "fusesoc_core: nextpnr-ice40 does not get the UP5K, its package and the board's pins"; exit 1; }
+grep -q "icepack" "$dir/Makefile" || { echo "fusesoc_core: no icepack step"; exit 1; }
 echo "fusesoc_core: OK"
