@@ -226,13 +226,16 @@ module compact_scanline_buffer #(
     end
   end
 
-  `WATKINS_ASSERT(a_full_frame_only, !sparse_i)
+  // The frame's inputs (sparse_i, width_i) hold while the block works on a frame, from its first
+  // fragment or marker to its last pixel; between frames a top may leave them unset.
+  `WATKINS_ASSERT(a_full_frame_only, frag_valid_i || pixel_valid_o |-> !sparse_i)
   `WATKINS_ASSERT_HOLD(a_in_hold, frag_valid_i, frag_ready_o, {frag_x_i, frag_depth_i, frag_poly_i,
     frag_rgb_i, frag_eol_i})
   `WATKINS_ASSERT_HOLD(a_out_hold, pixel_valid_o, pixel_ready_i, {pixel_rgb_o, pixel_covered_o,
     pixel_last_o, pixel_x_o, pixel_y_o})
   `WATKINS_ASSERT(a_x_in_line, frag_valid_i && !frag_eol_i |-> frag_x_i < width_i)
-  `WATKINS_ASSERT(a_width, width_i >= LineBits'(1) && width_i <= LineBits'(MaxWidth))
+  `WATKINS_ASSERT(a_width, frag_valid_i || pixel_valid_o |-> width_i >= LineBits'(1)
+    && width_i <= LineBits'(MaxWidth))
   // Why one read register per bank serves both: the reader's prefetched pixel is loaded before
   // the swap hands its bank to the writer.
   `WATKINS_ASSERT(a_swap_after_last, eol_take |-> !pf_q || (rd_load && rd_last))
