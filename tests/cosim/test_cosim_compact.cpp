@@ -66,7 +66,7 @@ bool expect_frames(const std::string& what, const std::vector<const PreparedScen
   const RtlResult r = run_rtl_frames(frames, o, want);
   expect_clean(what, o, r);
   if (!r.ok()) return false;
-  EXPECT_EQ(r.top.find("Compact=1") != std::string::npos, true) << what << " ran on " << r.top;
+  EXPECT_NE(r.top.find("Compact=1"), std::string::npos) << what << " ran on " << r.top;
   EXPECT_GT(r.stage_items, 0) << what << ": the stage streams were not checked";
   EXPECT_TRUE(r.stage_mismatches.empty()) << what << ": " << r.summary();
   EXPECT_EQ(r.frames.size(), frames.size()) << what;
@@ -177,29 +177,56 @@ BuiltScene two_triangles(int w, int h, double shift) {
                 "two triangles", {7, 70, 170});
 }
 
-// Empty frames, frames of several sizes back to back (the widest the line buffer holds, the
-// narrowest, one pixel), and runs one after another without a reset, on both compact tops.
+// Frames of every size the top takes, for `cfg`: random-looking triangles, empty screens, the
+// widest screen the line buffer holds and one pixel, and shipped scenes; each only when its values
+// fit the configuration's words (the sized default's depth word holds its own scenes, not any).
+std::vector<PreparedScene> frames_of_every_size(const Config& cfg) {
+  std::vector<PreparedScene> v;
+  auto add = [&](const BuiltScene& s) {
+    try {
+      v.push_back(prepare(s, cfg));
+    } catch (const SceneError&) {  // a value over one of the configuration's words
+    }
+  };
+  const ScreenPolygon cover = poly({vtx(-1, -1, 0.5, 9, 99, 199), vtx(3, -1, 0.5, 9, 99, 199), vtx(-1, 3, 0.5, 9, 99, 199)});
+  add(two_triangles(40, 30, 0.0));
+  add(screen(40, 30, {}, "empty", {1, 2, 3}));
+  add(two_triangles(cfg.max_width, 12, 1.7));
+  add(screen(1, 1, {cover}, "one pixel"));
+  add(screen(1, 1, {}, "one empty pixel", {4, 5, 6}));
+  add(two_triangles(3, 41, 0.4));
+  for (const char* name : {"default.json", "highlight.json", "cone.json"}) {
+    PreparedScene p;
+    if (prepare_shipped(name, cfg, p).empty()) v.push_back(p);
+  }
+  return v;
+}
+
+// Frames of several sizes back to back (among them the widest the line buffer holds, one pixel,
+// empty ones), then runs one after another without a reset, on both compact tops.
 TEST(CosimCompact, FramesBackToBackAndEdgeSizes) {
   for (const char* file : {SizedFile, WideFile}) {
     const Config cfg = compact_config(file);
-    const int w = cfg.max_width;
-    const PreparedScene a = prepare(two_triangles(40, 30, 0.0), cfg);
-    const PreparedScene b = prepare(two_triangles(40, 30, 3.3), cfg);
-    const PreparedScene widest = prepare(two_triangles(w, 12, 1.7), cfg);
-    const PreparedScene narrow = prepare(two_triangles(3, 41, 0.4), cfg);
-    const PreparedScene dot = prepare(screen(1, 1, {poly({vtx(-1, -1, 0.5, 9, 99, 199), vtx(3, -1, 0.5, 9, 99, 199),
-                                                           vtx(-1, 3, 0.5, 9, 99, 199)})}, "one pixel"), cfg);
-    const PreparedScene empty = prepare(screen(40, 30, {}, "empty", {1, 2, 3}), cfg);
-    ASSERT_TRUE(empty.edges.empty());
+    const std::vector<PreparedScene> frames = frames_of_every_size(cfg);
+    bool widest = false, one = false, empty = false;
+    std::vector<const PreparedScene*> ptrs;
+    for (const PreparedScene& p : frames) {
+      widest = widest || p.width == cfg.max_width;
+      one = one || (p.width == 1 && p.height == 1);
+      empty = empty || p.edges.empty();
+      ptrs.push_back(&p);
+    }
+    ASSERT_TRUE(widest && one && empty) << file << ": " << frames.size() << " frames, widest " << widest
+                                        << ", one pixel " << one << ", empty " << empty;
     REQUIRE_COMPACT_TOP(cfg, file);
     for (const RtlOptions& o : stall_patterns(11))
-      if (!expect_frames(std::string("frames back to back at ") + file, {&a, &empty, &b, &widest, &dot, &narrow, &a, &empty},
-                         o))
-        return;
+      if (!expect_frames(std::string("frames back to back at ") + file, ptrs, o)) return;
     for (int k = 0; k < 3; ++k) {
       RtlOptions o{static_cast<std::uint64_t>(20 + k), 0.2, 0.2};
       o.reset = false;
-      if (!expect_frames(std::string("consecutive run without a reset at ") + file, {k % 2 ? &b : &widest}, o)) return;
+      if (!expect_frames(std::string("consecutive run without a reset at ") + file, {k % 2 ? ptrs.front() : ptrs.back()},
+                         o))
+        return;
     }
   }
 }
