@@ -3,14 +3,23 @@
 // equal to Verilator's cycles.)
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "build_options.hpp"
+#include "compact_active_edge_list_timing.hpp"
+#include "compact_segment_interpolator_timing.hpp"
+#include "config_file.hpp"
 #include "cycle_model.hpp"
 #include "prepare.hpp"
 #include "scene.hpp"
+#include "scan_lines.hpp"
 #include "scene_builder.hpp"
+#include "segment_interpolator.hpp"
 #include "twin_error.hpp"
 #include "watkins_top.hpp"
 
@@ -167,6 +176,199 @@ TEST(CycleModel, ClockedPixelPathHonoursTheConsumer) {
   EXPECT_EQ(c.cycles, takes.back() + 1);
   EXPECT_GE(takes.back() - takes.front(), 3 * (static_cast<long long>(takes.size()) - 1));
   for (std::size_t i = 1; i < third.asked.size(); ++i) ASSERT_LT(third.asked[i - 1], third.asked[i]);
+}
+
+// ---------------------------------------------------------------- the compact top
+
+// The compact top at the default scene's sized configuration (the UP5K's): MaxWidth 320,
+// PolyIdBits 7.
+Config compact_sized() { return load_config(WATKINS_SOURCE_DIR "/tests/configs/compact_default.gouraud.json"); }
+
+CyclePrediction compact_cycles(const PreparedScene& p, const Config& cfg, long long after_reset = -1,
+                               std::vector<long long>* takes = nullptr, PixelReady* ready = nullptr) {
+  CycleOptions o;
+  o.max_active_edges = cfg.max_active_edges;
+  o.after_reset = after_reset;
+  o.take_cycles = takes;
+  o.pixel_ready = ready;
+  return predict_cycles(p, cfg, o);
+}
+
+// An empty W x H frame on the compact top, by hand, its reset clears over. Cycle 0 starts the
+// frame; the list's INS finds the EOF beat past line 0 at cycle 1 and offers the marker at 2;
+// the former takes it at 2, decides it at 3 and offers it from 4; the interpolator classifies it
+// at 4, takes it at 5 and has it on its output at 6; the fragment queue holds it at 7; the line
+// buffer takes it at 8, reads pixel 0 at 9 and loads it at 10; through the pixel skid it is
+// taken at 11. The reader then spends W + 1 clocks a line (one to read pixel 0, one a pixel) and
+// takes the next marker with the line's last load, while a marker reaches the queue every 3
+// clocks (the former's decision, the interpolator's classification and take): for W >= 2 the
+// reader sets the pace, the last pixel is taken at 9 + H(W + 1), H(W + 1) + 10 cycles; a
+// one-pixel-wide frame is paced by the markers, a pixel every 3 clocks from 11: 3H + 9.
+// From reset, as the bench starts a frame (its first beat a clock after reset), the buffer's
+// clear of MaxWidth clocks holds the first marker back to frame cycle MaxWidth - 1 (the former's
+// 2^PolyIdBits = 128 are over by then): the first pixel is taken at MaxWidth + 2 and the frame
+// takes MaxWidth + 1 cycles more than the same frame after the clears, the buffer's figure
+// (docs/reference/compact.md).
+TEST(CompactCycleModel, EmptyFrameByHand) {
+  const Config cfg = compact_sized();
+  for (const auto& [w, h] : {std::pair{13, 5}, std::pair{320, 240}, std::pair{2, 1}, std::pair{40, 60}, std::pair{1, 1}}) {
+    const PreparedScene p = prepare(screen(w, h, {}, "empty"), cfg);
+    const CyclePrediction c = compact_cycles(p, cfg);
+    EXPECT_EQ(c.cycles, static_cast<long long>(h) * (w + 1) + 10) << w << "x" << h;
+    EXPECT_EQ(c.first_pixel, 11) << w << "x" << h;
+    EXPECT_EQ(c.pixels, static_cast<long long>(w) * h);
+    const CyclePrediction r = compact_cycles(p, cfg, 1);
+    EXPECT_EQ(r.cycles, cfg.max_width + static_cast<long long>(h) * (w + 1) + 1) << w << "x" << h << " from reset";
+    EXPECT_EQ(r.first_pixel, cfg.max_width + 2) << w << "x" << h << " from reset";
+  }
+  for (const int h : {2, 7, 30}) {
+    const PreparedScene p = prepare(screen(1, h, {}, "empty column"), cfg);
+    EXPECT_EQ(compact_cycles(p, cfg).cycles, 3 * h + 9) << "1x" << h;
+  }
+}
+
+// The list alone (records back to back, its output always taken) and the interpolator alone (the
+// frame's segment stream back to back, fragments always taken): clocks to their last marker.
+long long list_alone(const PreparedScene& p, const Config& cfg) {
+  CompactActiveEdgeListTiming list(cfg.max_active_edges, cfg.channels(p.shading), id_bits(cfg.max_edges));
+  CompactActiveEdgeListTiming::Inputs in;
+  in.height = p.height;
+  in.out_ready = true;
+  std::size_t next = 0;
+  bool eof = false;
+  int markers = 0;
+  for (long long t = 0;; ++t) {
+    in.start = t == 0;
+    in.edge_valid = !eof;
+    in.edge_eof = next == p.edges.size();
+    if (!in.edge_eof) in.edge = p.edges[next];
+    const CompactActiveEdgeListTiming::Outputs o = list.eval(in);
+    if (o.out_valid && o.out_eol && ++markers == p.height) return t + 1;
+    if (in.edge_valid && o.edge_ready) in.edge_eof ? void(eof = true) : void(++next);
+    list.tick(in);
+    if (t > 100'000'000) throw std::logic_error("list alone: no end");
+  }
+}
+
+long long interpolator_alone(const PreparedScene& p, const Config& cfg, long long& fragments) {
+  std::vector<CompactSegmentInterpolatorTiming::Item> items;
+  walk_scan_lines(p.edges, p.height, cfg.max_active_edges, cfg.channels(p.shading), [&](const ScanLine& sl) {
+    for (const Segment& seg : sl.segments) {
+      const auto [xs, xe] = SegmentInterpolator::pixels(seg, p.width, cfg.x.frac_bits);
+      items.push_back({false, xs, xe});
+    }
+    items.push_back({true, 0, 0});
+  });
+  const ChannelFormats f = cfg.channels(p.shading);
+  CompactSegmentInterpolatorTiming t(f.bits[fmt::ChanX], f.bits[fmt::ChanZ], f.bits[fmt::ChanR]);
+  std::size_t next = 0;
+  int markers = 0;
+  fragments = 0;
+  for (long long c = 0;; ++c) {
+    const bool valid = next < items.size();
+    const auto pins = t.clock(valid, valid ? items[next] : CompactSegmentInterpolatorTiming::Item{}, true);
+    if (pins.frag_valid && pins.frag_eol && ++markers == p.height) return c + 1;
+    fragments += pins.frag_valid && !pins.frag_eol;
+    if (valid && pins.seg_ready) ++next;
+    if (c > 100'000'000) throw std::logic_error("interpolator alone: no end");
+  }
+}
+
+// A consumer ready every other cycle (odd ones).
+class EveryOther : public PixelReady {
+ public:
+  bool ready(long long cycle, long long) override { return cycle % 2 == 1; }
+};
+
+// Every shipped scene at its sized Gouraud configuration (scenes/sized/<scene>.gouraud.json) with
+// compact true: the frame costs at least the empty frame's H(W + 1) + 10 and at least what the
+// list and the interpolator each take alone; every pixel is taken once, in order, the last at
+// cycles - 1; a consumer ready every other cycle gets every pixel on an odd cycle. Prints each
+// scene's cycles, fragments per clock and slowest line (clocks from the previous line's last
+// pixel taken to its own): the table in docs/reference/compact.md.
+TEST(CompactCycleModel, SizedScenes) {
+  std::vector<std::string> names;
+  for (const auto& e : std::filesystem::directory_iterator(WATKINS_SOURCE_DIR "/scenes/sized")) {
+    const std::string n = e.path().filename().string();
+    const std::string suffix = ".gouraud.json";
+    if (n.size() > suffix.size() && n.compare(n.size() - suffix.size(), suffix.size(), suffix) == 0)
+      names.push_back(n.substr(0, n.size() - suffix.size()));
+  }
+  std::sort(names.begin(), names.end());
+  int ran = 0;
+  for (const std::string& name : names) {
+    const std::string scene = WATKINS_SOURCE_DIR "/scenes/" + name + ".json";
+    if (!std::filesystem::exists(scene)) continue;
+    Config cfg = load_config(WATKINS_SOURCE_DIR "/scenes/sized/" + name + ".gouraud.json");
+    cfg.compact = true;
+    cfg.smoothing = false;
+    PreparedScene p;
+    try {
+      p = prepare(load_scene(scene, shading_options(ShadingMode::Gouraud)), cfg);
+    } catch (const std::exception& e) {  // a smoothed scene: the compact top has no smoother
+      std::printf("  %s: not on the compact top (%s)\n", name.c_str(), e.what());
+      continue;
+    }
+    std::vector<long long> takes;
+    const CyclePrediction c = compact_cycles(p, cfg, -1, &takes);
+    const long long pixels = static_cast<long long>(p.width) * p.height;
+    ASSERT_EQ(static_cast<long long>(takes.size()), pixels) << name;
+    for (std::size_t i = 1; i < takes.size(); ++i) ASSERT_LT(takes[i - 1], takes[i]) << name;
+    EXPECT_EQ(takes.back() + 1, c.cycles) << name;
+    EXPECT_EQ(takes.front(), c.first_pixel) << name;
+    EXPECT_GE(c.cycles, static_cast<long long>(p.height) * (p.width + 1) + 10) << name;
+    long long fragments = 0;
+    EXPECT_GE(c.cycles, interpolator_alone(p, cfg, fragments)) << name;
+    EXPECT_GE(c.cycles, list_alone(p, cfg)) << name;
+    long long worst = 0, before = -1;
+    int worst_y = 0;
+    for (int y = 0; y < p.height; ++y) {
+      const long long end = takes[std::size_t(y) * std::size_t(p.width) + std::size_t(p.width) - 1];
+      if (end - before > worst) worst = end - before, worst_y = y;
+      before = end;
+    }
+    EveryOther odd;
+    std::vector<long long> slow;
+    const CyclePrediction s = compact_cycles(p, cfg, -1, &slow, &odd);
+    ASSERT_EQ(static_cast<long long>(slow.size()), pixels) << name;
+    for (const long long t : slow) ASSERT_EQ(t % 2, 1) << name;
+    EXPECT_GE(s.cycles, c.cycles) << name;
+    std::printf("  %s (%dx%d): %lld cycles, %lld fragments (%.3f per clock), slowest line %d: %lld clocks\n",
+                name.c_str(), p.width, p.height, c.cycles, fragments, double(fragments) / double(c.cycles),
+                worst_y, worst);
+    ++ran;
+  }
+  EXPECT_GE(ran, 12);
+}
+
+// The pixel path clocked with a consumer that is always ready equals the run without one.
+TEST(CompactCycleModel, AlwaysReadyEqualsNoConsumer) {
+  class Always : public PixelReady {
+   public:
+    bool ready(long long, long long) override { return true; }
+  } always;
+  const Config cfg = compact_sized();
+  const PreparedScene p = prepare(load_scene(WATKINS_SOURCE_DIR "/scenes/default.json", shading_options(ShadingMode::Gouraud)), cfg);
+  std::vector<long long> a, b;
+  const CyclePrediction x = compact_cycles(p, cfg, 1, &a);
+  const CyclePrediction y = compact_cycles(p, cfg, 1, &b, &always);
+  EXPECT_EQ(x.cycles, y.cycles);
+  EXPECT_EQ(a, b);
+}
+
+// What the compact top does not have: sparse output, Phong stages, the smoother, the divider.
+TEST(CompactCycleModel, RefusesWhatTheCompactTopLacks) {
+  const Config cfg = compact_sized();
+  const PreparedScene g = prepare(screen(8, 4, {}, "empty"), cfg);
+  EXPECT_THROW(predict_cycles(g, PixelOutput::Sparse, cfg.max_active_edges, cfg), std::invalid_argument);
+  EXPECT_THROW(predict_cycles(with_shading(g, ShadingMode::Phong), PixelOutput::FullFrame, cfg.max_active_edges, cfg),
+               std::invalid_argument);
+  PreparedScene smoothed = g;
+  smoothed.smooth_w = 4;
+  EXPECT_THROW(predict_cycles(smoothed, PixelOutput::FullFrame, cfg.max_active_edges, cfg), std::invalid_argument);
+  Config divided = cfg;
+  divided.eq2 = true;
+  EXPECT_THROW(predict_cycles(g, PixelOutput::FullFrame, cfg.max_active_edges, divided), std::invalid_argument);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "compact_cycle_model.hpp"
 #include "scan_lines.hpp"
 #include "segment_interpolator.hpp"
 
@@ -110,6 +111,7 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output, int max_a
 }
 
 CyclePrediction predict_cycles(const Frame& frame, const Config& cfg, const CycleOptions& opt) {
+  if (cfg.compact) return predict_compact_cycles(frame, cfg, opt);
   const PixelOutput output = opt.output;
   const int max_active_edges = opt.max_active_edges;
   // Exact: the pixel path is clocked (the scanline buffer's pixel register, the smoother, the

@@ -69,6 +69,12 @@ struct CycleOptions {
   PixelReady* pixel_ready = nullptr;
   // When not null: filled with the cycle each pixel (beat) is taken, in stream order.
   std::vector<long long>* take_cycles = nullptr;
+  // The compact top (cfg.compact) clears its segment former's table (2^PolyIdBits clocks) and its
+  // line buffer's marks (MaxWidth clocks) after reset, refusing input meanwhile: the clocks from
+  // reset's release (its first clock with rst_ni high = 0) to the one the frame's first beat is
+  // offered (the benches' edge source: 1); negative: the clears are over (a frame after another,
+  // or long after reset). The pipelined top has no clears: ignored.
+  long long after_reset = -1;
 };
 
 // Predicts the frame's cycles on watkins_top with Phong = (frame.shading == Phong), sparse_i as
@@ -83,6 +89,7 @@ CyclePrediction predict_cycles(const Frame& frame, PixelOutput output,
 // [smoother,] the pixel skid) under opt.pixel_ready: exact for any ready pattern, every cycle
 // clocked (no cycles skipped). With a null pixel_ready and take_cycles it equals the overload
 // above and records each pixel's take.
+// cfg.compact: the compact top (compact_cycle_model.hpp), every cycle clocked whatever opt says.
 CyclePrediction predict_cycles(const Frame& frame, const Config& cfg, const CycleOptions& opt);
 
 }  // namespace watkins

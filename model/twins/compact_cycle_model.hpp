@@ -1,0 +1,29 @@
+// Cycle model of watkins_top built with Compact = 1 (docs/reference/compact.md): the four compact
+// blocks' cycle twins (compact_*_timing.hpp) composed with the top's glue clock by clock: the
+// edge source offering records back to back, compact_active_edge_list, compact_segment_former
+// straight into compact_segment_interpolator (no segment skid: the interpolator's seg_ready_o is
+// a flop), the fragment queue (stream_fifo, FragQueueDepth), compact_scanline_buffer and the
+// pixel skid (stream_skid), pixel_ready_i from the consumer. Each twin is the one its unit bench
+// holds equal to its RTL on every clock. Every cycle is clocked, so each pixel's take is exact
+// under any ready pattern. The twins take from the data what decides their clocks: the records
+// (the list's keys, stepped by the EdgeIncrementer twin), each active edge's polygon (whether it
+// closes a segment), each item's pixel range (walk_scan_lines, SegmentInterpolator::pixels).
+#pragma once
+
+#include "config.hpp"
+#include "cycle_model.hpp"
+#include "frame.hpp"
+
+namespace watkins {
+
+namespace rtl_timing {
+constexpr int CompactQuotientBitsPerClock = 2;  // compact_segment_interpolator's QuotientBitsPerClock
+}  // namespace rtl_timing
+
+// predict_cycles for cfg.compact: a Gouraud frame (frame.shading) in full-frame output, neither
+// smoothed nor divided (the compact top has no sparse output, no smoother and no Phong stages);
+// anything else is std::invalid_argument naming what the compact top lacks. opt.after_reset
+// says whether the blocks' reset clears still run when the frame's first beat is offered.
+CyclePrediction predict_compact_cycles(const Frame& frame, const Config& cfg, const CycleOptions& opt);
+
+}  // namespace watkins
