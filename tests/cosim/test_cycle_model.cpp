@@ -3,18 +3,23 @@
 // on every shipped scene and on random scenes, Gouraud and Phong tops, full-frame and sparse.
 // Under output back-pressure (any pixel_ready_i pattern, random or a function of the pixels
 // taken, as a line buffer drives it), the cycle of every pixel taken must equal the model's.
+// The compact tops (Compact = 1) the same way: every frame's cycles and every pixel's take equal
+// to the compact composition's, from the bench's reset.
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <cstdlib>
 #include <functional>
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "build_options.hpp"
+#include "config_file.hpp"
 #include "cosim_support.hpp"
 #include "cycle_model.hpp"
+#include "frame_driver.hpp"
 #include "prepare.hpp"
 #include "random_scene.hpp"
 #include "rtl_bench.hpp"
@@ -214,6 +219,22 @@ void expect_takes(const std::string& what, const PreparedScene& p, bool sparse, 
     ASSERT_EQ(takes[i], rtl[i]) << at << ": pixel (beat) " << i << " of " << takes.size();
 }
 
+// Each RTL run under stalls costs seconds: a scene runs two of the patterns, three apart, picked
+// by its name, so the shipped scenes together run every pattern; WATKINS_ALL_READY_PATTERNS=1 in
+// the environment runs all of them on every scene.
+std::vector<std::size_t> pick_patterns(const std::string& name, std::size_t patterns) {
+  const char* all = std::getenv("WATKINS_ALL_READY_PATTERNS");
+  std::uint64_t h = 1469598103934665603ull;  // FNV-1a of the name: the same pick on every machine
+  for (const char ch : name) h = (h ^ static_cast<unsigned char>(ch)) * 1099511628211ull;
+  std::vector<std::size_t> picked;
+  if (all && std::string(all) == "1") {
+    for (std::size_t k = 0; k < patterns; ++k) picked.push_back(k);
+  } else {
+    picked = {h % patterns, (h + 3) % patterns};
+  }
+  return picked;
+}
+
 void expect_takes_shipped(const std::string& name, ShadingMode mode, double smooth) {
   if (name == "<none>") GTEST_SKIP() << "no scenes/*.json";
   PreparedScene p;
@@ -227,18 +248,7 @@ void expect_takes_shipped(const std::string& name, ShadingMode mode, double smoo
   if (p.width > rtl_max_width()) GTEST_SKIP() << "wider than the RTL line buffer";
   const std::string what = name + (mode == ShadingMode::Phong ? " phong" : " gouraud") + (p.smoothed() ? " smoothed" : "");
   const std::vector<NamedPattern> patterns = ready_patterns(p.width);
-  // Each RTL run under stalls costs seconds: a scene runs two of the patterns, three apart, picked
-  // by its name, so the shipped scenes together run every pattern; WATKINS_ALL_READY_PATTERNS=1 in
-  // the environment runs all six on every scene.
-  const char* all = std::getenv("WATKINS_ALL_READY_PATTERNS");
-  std::uint64_t h = 1469598103934665603ull;  // FNV-1a of the name: the same pick on every machine
-  for (const char ch : name) h = (h ^ static_cast<unsigned char>(ch)) * 1099511628211ull;
-  std::vector<std::size_t> picked;
-  if (all && std::string(all) == "1") {
-    for (std::size_t k = 0; k < patterns.size(); ++k) picked.push_back(k);
-  } else {
-    picked = {h % patterns.size(), (h + 3) % patterns.size()};
-  }
+  const std::vector<std::size_t> picked = pick_patterns(name, patterns.size());
   for (std::size_t i = 0; i < picked.size(); ++i) {
     expect_takes(what, p, false, patterns[picked[i]]);
     if (i % 3 == 0 && !p.smoothed()) expect_takes(what, p, true, patterns[picked[i]]);  // sparse too
@@ -283,6 +293,159 @@ TEST(CycleModelStalled, RandomScenesTakesEqualRtl) {
     ++ran;
   }
   EXPECT_GE(ran, 8);
+}
+
+// ---------------------------------------------------------------- the compact top
+
+// The two compact tops the test build Verilates: the default scene's sized configuration (the
+// UP5K's: MaxWidth 320, 36 active edges) and the default sizes (MaxWidth 1,024, 64).
+const char* const CompactFiles[] = {"tests/configs/compact_default.gouraud.json", "tests/configs/compact.gouraud.json"};
+
+#ifdef WATKINS_RTL_CONFIGS_DEFAULT
+constexpr bool RequireCompactTops = true;  // CI's build has both: a missing one fails
+#else
+constexpr bool RequireCompactTops = false;
+#endif
+
+// The frame on the compact top, at full rate (pattern null) or under a ready pattern: its
+// cycles and every pixel's take equal to predict_cycles with the configuration's compact true,
+// its reset clears running from the bench's reset (the first beat offered first_edge_cycle -
+// ResetCycles clocks after it).
+void expect_compact_takes(const std::string& what, const PreparedScene& p, const NamedPattern* pattern) {
+  RtlOptions o;
+  o.gap = 0;
+  o.stall = 0;
+  o.compare = false;
+  if (pattern) o.pixel_ready = pattern->ready;
+  const RtlResult r = run_rtl(p, o);
+  const std::string at = what + " " + std::to_string(p.width) + "x" + std::to_string(p.height) + ", " +
+                         std::to_string(p.edges.size()) + " edge records, ready " + (pattern ? pattern->name : "always");
+  ASSERT_TRUE(r.ok()) << at << ": " << r.summary();
+  ASSERT_NE(r.top.find("Compact=1"), std::string::npos) << at << " ran on " << r.top;
+  const RtlFrame& f = r.frames.at(0);
+  std::vector<long long> takes;
+  CycleOptions co;
+  co.max_active_edges = p.config.max_active_edges;
+  co.after_reset = f.first_edge_cycle - detail::FrameDriver::ResetCycles;
+  co.take_cycles = &takes;
+  std::unique_ptr<PatternReady> ready;
+  if (pattern) {
+    ready = std::make_unique<PatternReady>(pattern->ready);
+    co.pixel_ready = ready.get();
+  }
+  const CyclePrediction c = predict_cycles(p, p.config, co);
+  EXPECT_EQ(c.cycles, r.cycles) << at;
+  ASSERT_EQ(takes.size(), f.take_cycles.size()) << at;
+  for (std::size_t i = 0; i < takes.size(); ++i)
+    ASSERT_EQ(takes[i], f.take_cycles[i]) << at << ": pixel " << i << " of " << takes.size();
+}
+
+// Prepared at the compact configuration `file`, or the reason the compact top cannot run it.
+std::string prepare_compact(const BuiltScene& scene, const Config& cfg, PreparedScene& p) {
+  try {
+    p = prepare(scene, cfg);
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  if (p.smoothed()) return "it smooths (the compact top has no smoother)";
+  if (p.eq2) return "it divides by eq. (2) (the compact top has no shade divider)";
+  if (p.width > cfg.max_width) return "wider than the line buffer";
+  return "";
+}
+
+#define REQUIRE_COMPACT_TOP(cfg, file)                                          \
+  do {                                                                          \
+    const std::string why = rtl_unavailable(cfg, ShadingMode::Gouraud, file);   \
+    if (!why.empty()) {                                                         \
+      ASSERT_FALSE(RequireCompactTops) << why;                                  \
+      GTEST_SKIP() << why;                                                      \
+    }                                                                           \
+  } while (0)
+
+// Every shipped scene that fits a compact top in Gouraud shading: at full rate, then under two
+// of the ready patterns picked by its name.
+class CompactCycleModelShipped : public ::testing::TestWithParam<std::string> {};
+
+void expect_compact_shipped(const std::string& name, const char* file) {
+  if (name == "<none>") GTEST_SKIP() << "no scenes/*.json";
+  const Config cfg = load_config(std::string(WATKINS_SOURCE_DIR "/") + file);
+  ASSERT_TRUE(cfg.compact) << file;
+  PreparedScene p;
+  std::string why;
+  try {
+    why = prepare_compact(load_scene(WATKINS_SOURCE_DIR "/scenes/" + name, shading_options(ShadingMode::Gouraud)), cfg, p);
+  } catch (const SceneError& e) {
+    why = e.what();
+  }
+  if (!why.empty()) GTEST_SKIP() << name << " does not fit " << file << ": " << why;
+  REQUIRE_COMPACT_TOP(cfg, file);
+  const std::string what = name + " at " + file;
+  expect_compact_takes(what, p, nullptr);
+  const std::vector<NamedPattern> patterns = ready_patterns(p.width);
+  for (const std::size_t k : pick_patterns(name, patterns.size())) {
+    if (::testing::Test::HasFailure()) return;
+    expect_compact_takes(what, p, &patterns[k]);
+  }
+}
+
+TEST_P(CompactCycleModelShipped, AtTheSizedDefault) { expect_compact_shipped(GetParam(), CompactFiles[0]); }
+TEST_P(CompactCycleModelShipped, AtTheDefaultSizes) { expect_compact_shipped(GetParam(), CompactFiles[1]); }
+
+INSTANTIATE_TEST_SUITE_P(Scenes, CompactCycleModelShipped, ::testing::ValuesIn(shipped_scenes()), scene_test_name);
+
+// Random scenes (many small polygons and bow-ties every other one: the list, the former and the
+// span setup set the pace as often as the reader) on each compact top, at full rate and under
+// one ready pattern each; and the corner frames.
+TEST(CompactCycleModel, RandomScenesEqualRtl) {
+  for (const char* file : CompactFiles) {
+    const Config cfg = load_config(std::string(WATKINS_SOURCE_DIR "/") + file);
+    REQUIRE_COMPACT_TOP(cfg, file);
+    int ran = 0;
+    for (int k = 0; k < 24; ++k) {
+      std::mt19937_64 rng(99000 + static_cast<std::uint64_t>(k));
+      RandomSceneSpec spec;
+      if (k % 2) spec.min_polygons = 20, spec.max_polygons = 40, spec.convex_quads = false;
+      const BuiltScene scene = random_scene(rng, spec);
+      PreparedScene p;
+      if (!prepare_compact(scene, cfg, p).empty()) continue;
+      const std::string what = scene.name + " " + std::to_string(k) + " at " + file;
+      expect_compact_takes(what, p, nullptr);
+      const std::vector<NamedPattern> patterns = ready_patterns(p.width);
+      expect_compact_takes(what, p, &patterns[std::size_t(k) % patterns.size()]);
+      if (HasFailure()) return;
+      ++ran;
+    }
+    EXPECT_GE(ran, 12) << file;
+  }
+}
+
+TEST(CompactCycleModel, CornerFramesEqualRtl) {
+  const char* file = CompactFiles[1];
+  const Config cfg = load_config(std::string(WATKINS_SOURCE_DIR "/") + file);
+  REQUIRE_COMPACT_TOP(cfg, file);
+  std::vector<ScreenPolygon> slivers;
+  for (int i = 0; i < 30; ++i) {
+    const double x = 1 + 2 * i;
+    slivers.push_back(poly({vtx(x, 1, 0.5, 10, 20, 30), vtx(x + 1.2, 1, 0.5, 10, 20, 30), vtx(x + 0.6, 40, 0.4, 90, 20, 30)}));
+  }
+  const std::vector<BuiltScene> frames = {
+      screen(13, 5, {}, "empty", {1, 2, 3}),
+      screen(1, 1, {}, "one pixel"),
+      screen(40, 1, {poly({vtx(2, -3, 0.3, 200, 10, 10), vtx(30, -2, 0.5, 10, 200, 10), vtx(12, 4, 0.7, 10, 10, 200)})}, "one line"),
+      screen(1, 30, {poly({vtx(-3, 2, 0.3, 200, 10, 10), vtx(3, 5, 0.5, 10, 200, 10), vtx(0, 25, 0.7, 10, 10, 200)})}, "one column"),
+      screen(64, 48, slivers, "slivers"),
+      screen(8, 400, {poly({vtx(1, 350, 0.3, 1, 2, 3), vtx(7, 352, 0.3, 1, 2, 3), vtx(4, 399, 0.3, 1, 2, 3)})}, "tall"),
+      screen(cfg.max_width, 3, {poly({vtx(0, 0, 0.3, 1, 2, 3), vtx(cfg.max_width, 0, 0.3, 1, 2, 3), vtx(5, 3, 0.3, 1, 2, 3)})}, "widest"),
+  };
+  for (const BuiltScene& scene : frames) {
+    PreparedScene p;
+    const std::string why = prepare_compact(scene, cfg, p);
+    ASSERT_TRUE(why.empty()) << scene.name << ": " << why;
+    expect_compact_takes(scene.name, p, nullptr);
+    const std::vector<NamedPattern> patterns = ready_patterns(p.width);
+    expect_compact_takes(scene.name, p, &patterns[2]);  // every other cycle
+    if (HasFailure()) return;
+  }
 }
 
 }  // namespace
