@@ -12,14 +12,12 @@
 
 #include "build_options.hpp"
 #include "compact_active_edge_list_timing.hpp"
-#include "compact_segment_interpolator_timing.hpp"
+#include "compact_cycle_model.hpp"
 #include "config_file.hpp"
 #include "cycle_model.hpp"
 #include "prepare.hpp"
 #include "scene.hpp"
-#include "scan_lines.hpp"
 #include "scene_builder.hpp"
-#include "segment_interpolator.hpp"
 #include "twin_error.hpp"
 #include "watkins_top.hpp"
 
@@ -251,14 +249,7 @@ long long list_alone(const PreparedScene& p, const Config& cfg) {
 }
 
 long long interpolator_alone(const PreparedScene& p, const Config& cfg, long long& fragments) {
-  std::vector<CompactSegmentInterpolatorTiming::Item> items;
-  walk_scan_lines(p.edges, p.height, cfg.max_active_edges, cfg.channels(p.shading), [&](const ScanLine& sl) {
-    for (const Segment& seg : sl.segments) {
-      const auto [xs, xe] = SegmentInterpolator::pixels(seg, p.width, cfg.x.frac_bits);
-      items.push_back({false, xs, xe});
-    }
-    items.push_back({true, 0, 0});
-  });
+  const std::vector<CompactSegmentInterpolatorTiming::Item> items = compact_segment_items(p, cfg.max_active_edges, cfg);
   const ChannelFormats f = cfg.channels(p.shading);
   CompactSegmentInterpolatorTiming t(f.bits[fmt::ChanX], f.bits[fmt::ChanZ], f.bits[fmt::ChanR]);
   std::size_t next = 0;

@@ -9,7 +9,6 @@
 #include "compact_active_edge_list_timing.hpp"
 #include "compact_scanline_buffer_timing.hpp"
 #include "compact_segment_former_timing.hpp"
-#include "compact_segment_interpolator_timing.hpp"
 #include "scan_lines.hpp"
 #include "segment_interpolator.hpp"
 
@@ -18,9 +17,14 @@ namespace {
 
 using Item = CompactSegmentInterpolatorTiming::Item;
 
-// The segment former's output stream as the interpolator sees it: each line's segments in
-// closing order (their pixel ranges), then the line's marker.
-std::vector<Item> segment_items(const Frame& frame, int capacity, const Config& cfg) {
+class AlwaysReady : public PixelReady {
+ public:
+  bool ready(long long, long long) override { return true; }
+};
+
+}  // namespace
+
+std::vector<Item> compact_segment_items(const Frame& frame, int capacity, const Config& cfg) {
   std::vector<Item> items;
   walk_scan_lines(frame.edges, frame.height, capacity, cfg.channels(frame.shading), [&](const ScanLine& sl) {
     for (const Segment& seg : sl.segments) {
@@ -31,13 +35,6 @@ std::vector<Item> segment_items(const Frame& frame, int capacity, const Config& 
   });
   return items;
 }
-
-class AlwaysReady : public PixelReady {
- public:
-  bool ready(long long, long long) override { return true; }
-};
-
-}  // namespace
 
 CyclePrediction predict_compact_cycles(const Frame& frame, const Config& cfg, const CycleOptions& opt) {
   if (frame.width < 1 || frame.height < 1)  // the top asserts a_frame_size: no frame to time
@@ -53,7 +50,7 @@ CyclePrediction predict_compact_cycles(const Frame& frame, const Config& cfg, co
     throw std::invalid_argument("cycle model: the compact top has full-frame output only (sparse asked)");
   AlwaysReady always;
   PixelReady& consumer = opt.pixel_ready ? *opt.pixel_ready : always;
-  const std::vector<Item> items = segment_items(frame, opt.max_active_edges, cfg);
+  const std::vector<Item> items = compact_segment_items(frame, opt.max_active_edges, cfg);
   const ChannelFormats formats = cfg.channels(frame.shading);
 
   CompactActiveEdgeListTiming list(opt.max_active_edges, formats, id_bits(cfg.max_edges));

@@ -10,6 +10,9 @@
 // closes a segment), each item's pixel range (walk_scan_lines, SegmentInterpolator::pixels).
 #pragma once
 
+#include <vector>
+
+#include "compact_segment_interpolator_timing.hpp"
 #include "config.hpp"
 #include "cycle_model.hpp"
 #include "frame.hpp"
@@ -25,5 +28,11 @@ constexpr int CompactQuotientBitsPerClock = 2;  // compact_segment_interpolator'
 // anything else is std::invalid_argument naming what the compact top lacks. opt.after_reset
 // says whether the blocks' reset clears still run when the frame's first beat is offered.
 CyclePrediction predict_compact_cycles(const Frame& frame, const Config& cfg, const CycleOptions& opt);
+
+// The segment former's output stream as the compact interpolator takes it: each line's segments in
+// closing order (their pixel ranges), then the line's marker. Throws CapacityError as
+// walk_scan_lines does.
+std::vector<CompactSegmentInterpolatorTiming::Item> compact_segment_items(const Frame& frame, int capacity,
+                                                                          const Config& cfg);
 
 }  // namespace watkins
