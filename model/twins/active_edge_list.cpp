@@ -20,6 +20,26 @@ bool ActiveEdgeList::insert(const EdgeRecord& rec) {
   return true;
 }
 
+void ActiveEdgeList::start_at(const std::vector<EdgeRecord>& edges, std::size_t count, int y) {
+  if (formats_.edge_order == 3)
+    start_at_order<3>(edges, count, y);
+  else
+    start_at_order<1>(edges, count, y);
+}
+
+template <int Order>
+void ActiveEdgeList::start_at_order(const std::vector<EdgeRecord>& edges, std::size_t count, int y) {
+  edges_.clear();
+  for (std::size_t i = 0; i < count; ++i) {
+    const EdgeRecord& rec = edges[i];
+    if (rec.y0 + rec.n <= y) continue;  // retired before line y
+    ActiveEdge e{rec, rec.n};
+    EdgeIncrementer::step_lines<Order>(e, y - rec.y0, signs_);
+    edges_.push_back(e);
+  }
+  std::sort(edges_.begin(), edges_.end(), x_order);  // (X, id) is total: the walk's order
+}
+
 void ActiveEdgeList::advance() {
   if (formats_.edge_order == 3)
     advance_at<3>();

@@ -24,6 +24,10 @@ class ActiveEdgeList {
 
   // Adds an edge on its first scan line. Returns false (and drops nothing) when full.
   bool insert(const EdgeRecord& rec);
+  // The list as a walk from scan line 0 holds it on line y before line y's records enter: every
+  // record of edges[0 .. count) (those with y0 < y) still crossing line y, stepped y - y0 lines
+  // (EdgeIncrementer::step_lines), in (X, id) order. The list is emptied first.
+  void start_at(const std::vector<EdgeRecord>& edges, std::size_t count, int y);
   // After a scan line: step every edge, retire the finished ones, restore X order.
   void advance();
 
@@ -33,7 +37,9 @@ class ActiveEdgeList {
 
  private:
   template <int Order>
-  void advance_at();  // advance() at the configuration's edge order
+  void advance_at();
+  template <int Order>
+  void start_at_order(const std::vector<EdgeRecord>& edges, std::size_t count, int y);  // advance() at the configuration's edge order
 
   int capacity_;
   ChannelFormats formats_;

@@ -51,6 +51,29 @@ struct EdgeIncrementer {
     }
     --e.remaining;
   }
+  // k scan lines at once (k >= 0): the edge as k calls of step<Order> leave it, each word
+  // computed directly. Straight: value + k·slope. Cubic (forward differences advanced k steps):
+  // value + k·d1 + C(k,2)·d2 + C(k,3)·d3, d1 + k·d2 + C(k,2)·d3, d2 + k·d3. Every word is a sum of
+  // products modulo 2^64 (unsigned), then wrapped to its slot: the same low bits as k wrapped
+  // additions, since a wrap keeps the sum modulo 2^bits and bits <= 62.
+  template <int Order>
+  static void step_lines(ActiveEdge& e, int k, const Signs& sign) {
+    static_assert(Order == 1 || Order == 3, "edge order 1 or 3");
+    using u64 = std::uint64_t;
+    const u64 k1 = static_cast<u64>(k), k2 = k1 * (k1 - 1) / 2, k3 = k2 * (k1 - 2) / 3;  // C(k,2), C(k,3) exactly
+    for (int c = 0; c < fmt::NumChannels; ++c) {
+      const u64 v = static_cast<u64>(e.rec.value[c]), d1 = static_cast<u64>(e.rec.slope[c]);
+      if (Order == 1) {
+        e.rec.value[c] = wrap_to_sign(static_cast<i64>(v + k1 * d1), sign[c]);
+      } else {
+        const u64 d2 = static_cast<u64>(e.rec.d2[c]), d3 = static_cast<u64>(e.rec.d3[c]);
+        e.rec.value[c] = wrap_to_sign(static_cast<i64>(v + k1 * d1 + k2 * d2 + k3 * d3), sign[c]);
+        e.rec.slope[c] = wrap_to_sign(static_cast<i64>(d1 + k1 * d2 + k2 * d3), sign[c]);
+        e.rec.d2[c] = wrap_to_sign(static_cast<i64>(d2 + k1 * d3), sign[c]);
+      }
+    }
+    e.remaining -= k;
+  }
   // The same for one edge of the configuration f (its widths and edge order).
   static void step(ActiveEdge& e, const ChannelFormats& f) {
     if (f.edge_order == 3)

@@ -26,5 +26,11 @@ struct ScanLine {
 // Channels wrap at the widths of `formats`.
 void walk_scan_lines(const std::vector<EdgeRecord>& edges, int height, int capacity,
                      const ChannelFormats& formats, const std::function<void(const ScanLine&)>& visit);
+// The same walk over lines [y_begin, y_end) only: the list starts as the walk from line 0 holds
+// it on line y_begin (ActiveEdgeList::start_at), so every line's edges, segments and counts are
+// those of the whole walk (a band of a frame drawn apart from the others). A capacity error
+// names the first overflowing line of the band.
+void walk_scan_lines(const std::vector<EdgeRecord>& edges, int y_begin, int y_end, int capacity,
+                     const ChannelFormats& formats, const std::function<void(const ScanLine&)>& visit);
 
 }  // namespace watkins

@@ -36,6 +36,12 @@ i64 alpha0_in(const SpanReciprocal& r, i64 offset) {
                                       W{1} << fmt::AlphaBits));
 }
 
+// The products of a slot's setup rounded: in 64 bits the caller has checked |delta| < 2^37, and
+// recip and alpha0 are at most 2^24, so a product is below 2^61 and its shift (p + R - Fx >= 1,
+// AlphaBits) in [1, 61]: round_shift62, round_shift64's value without its sign branch.
+i64 round_product(i64 v, int s) { return round_shift62(v, s); }
+i128 round_product(i128 v, int s) { return round_shift(v, s); }
+
 // Slot c's per-pixel step and its value at the first pixel.
 template <class W>
 void setup_slot(const Segment& s, int c, const ChannelFormats& formats, const SpanReciprocal& r, i64 alpha0,
@@ -45,8 +51,14 @@ void setup_slot(const Segment& s, int c, const ChannelFormats& formats, const Sp
   // where the span holds at most one pixel and the step is never used.
   const W hi = (W{1} << (formats.bits[c] - 1)) - 1;
   span.step[c] = static_cast<i64>(
-      std::clamp<W>(round_in(delta * r.recip, r.p + fmt::RecipBits - formats.x_frac()), -hi - 1, hi));
-  span.value[c] = wrap_in(s.e[c] + round_in(delta * alpha0, fmt::AlphaBits), formats.bits[c]);
+      std::clamp<W>(round_product(delta * r.recip, r.p + fmt::RecipBits - formats.x_frac()), -hi - 1, hi));
+  span.value[c] = wrap_in(s.e[c] + round_product(delta * alpha0, fmt::AlphaBits), formats.bits[c]);
+}
+
+// The 128-bit slot, out of the common path's way.
+__attribute__((noinline, cold)) void setup_wide(const Segment& s, int c, const ChannelFormats& formats,
+                                                const SpanReciprocal& r, i64 alpha0, SpanSetup& span) {
+  setup_slot<i128>(s, c, formats, r, alpha0, span);
 }
 
 }  // namespace
@@ -54,12 +66,17 @@ void setup_slot(const Segment& s, int c, const ChannelFormats& formats, const Sp
 SpanSetup SegmentInterpolator::setup(const Segment& s, int width, const ChannelFormats& formats) {
   SpanSetup span;
   span.formats = formats;
+  setup(s, width, formats, span);
+  return span;
+}
+
+void SegmentInterpolator::setup(const Segment& s, int width, const ChannelFormats& formats, SpanSetup& span) {
   span.poly = s.poly;
   span.material = s.material;
   const int fx = formats.x_frac();
   const i64 xe = s.e[fmt::ChanX], xf = s.f[fmt::ChanX];
   std::tie(span.x_start, span.x_end) = pixels(s, width, fx);
-  if (span.x_end == span.x_start) return span;  // empty span: no reciprocal needed
+  if (span.x_end == span.x_start) return;  // empty span: no reciprocal needed
   const i64 dx = xf - xe;  // > 0: a pixel centre lies in [X_E, X_F)
   const SpanReciprocal r = SpanReciprocal::of(dx);
   const i64 offset = static_cast<i64>(span.x_start) * (i64{1} << fx) + (i64{1} << (fx - 1)) - xe;  // >= 0
@@ -75,12 +92,11 @@ SpanSetup SegmentInterpolator::setup(const Segment& s, int width, const ChannelF
   for (int c = fmt::ChanZ; c < fmt::NumChannels; ++c) {
     i64 delta = 0;
     const bool overflow = __builtin_sub_overflow(s.f[c], s.e[c], &delta);  // not for words of 62 bits
-    if (small_shift && !overflow && delta > -Limit && delta < Limit)
+    if (__builtin_expect(small_shift && !overflow && delta > -Limit && delta < Limit, 1))
       setup_slot<i64>(s, c, formats, r, alpha0, span);
     else
-      setup_slot<i128>(s, c, formats, r, alpha0, span);
+      setup_wide(s, c, formats, r, alpha0, span);
   }
-  return span;
 }
 
 }  // namespace watkins

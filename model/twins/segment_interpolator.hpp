@@ -54,7 +54,14 @@ struct SpanSetup {
   int material = 0;
   ChannelVector value{};       // channel values at pixel x_start (X unused)
   ChannelVector step{};        // per-pixel increments (X unused)
-  ChannelFormats formats = Config{}.channels(ShadingMode::Gouraud);  // of the channel slots
+  ChannelFormats formats = default_formats();  // of the channel slots
+  // Config{}.channels(ShadingMode::Gouraud) as constants: every slot ChannelBits wide with
+  // FracBits fraction bits (a span is set up per segment; its formats are overwritten).
+  static constexpr ChannelFormats default_formats() {
+    ChannelFormats f{};
+    for (int c = 0; c < fmt::NumChannels; ++c) f.bits[c] = fmt::ChannelBits, f.frac[c] = fmt::FracBits;
+    return f;
+  }
 };
 
 struct SegmentInterpolator {
@@ -62,6 +69,10 @@ struct SegmentInterpolator {
   // has x_frac_bits fraction bits. What setup() covers, without its reciprocal and values.
   static std::pair<int, int> pixels(const Segment& s, int width, int x_frac_bits);
   static SpanSetup setup(const Segment& s, int width, const ChannelFormats& formats);
+  // The same into `span`, whose formats the caller has set to `formats` (a loop over a line's
+  // segments sets them once): every other field is written; an empty span's value and step
+  // keep what they held.
+  static void setup(const Segment& s, int width, const ChannelFormats& formats, SpanSetup& span);
   static SpanSetup setup(const Segment& s, int width) {  // the default configuration
     return setup(s, width, Config{}.channels(ShadingMode::Gouraud));
   }
@@ -120,7 +131,10 @@ class PixelPath {
       if (__builtin_mul_overflow(last_k, span.step[c], &run) || __builtin_add_overflow(first, run, &last)) return false;
       const i64 lo = R == Readings::Shade ? shade_lo_[c] : lo_[c];
       const i64 hi = R == Readings::Shade ? shade_hi_[c] : hi_[c];
-      ok &= (first >= lo) & (first <= hi) & (last >= lo) & (last <= hi);
+      // lo <= v <= hi as one unsigned comparison of v - lo (modulo 2^64) with hi - lo.
+      const std::uint64_t width = static_cast<std::uint64_t>(hi) - static_cast<std::uint64_t>(lo);
+      ok &= (lo <= hi) & (static_cast<std::uint64_t>(first) - static_cast<std::uint64_t>(lo) <= width) &
+            (static_cast<std::uint64_t>(last) - static_cast<std::uint64_t>(lo) <= width);
     }
     return ok;
   }

@@ -1,6 +1,12 @@
 #include "watkins_top.hpp"
 
 #include <algorithm>
+#include <cstring>
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
+#include <exception>
+#include <thread>
 #include <type_traits>
 
 #include "normalizer.hpp"
@@ -42,6 +48,250 @@ struct PhongFrame {
   }
 };
 
+// The line buffer of the frame loop: scanline_buffer.hpp's depth test (the same keys, the same
+// rule) on a plain array, storing each winner straight into its row of the image (the image
+// keeps a pixel's last winner, as the buffer's read-out would). The pixels a line's spans cover
+// are one range [lo, hi), emptied by range at the end of the line.
+class FrameLine {
+ public:
+  static constexpr std::uint64_t Empty = ~std::uint64_t{0};
+  FrameLine(int width, DepthTie tie)
+      : width_(width), poly_key_mask_(tie == DepthTie::Submission ? 0xffffffffu : 0u),
+        key_(static_cast<std::size_t>(width), Empty), lo_(width) {}
+  // Line y of img (its row already background, uncovered): the line's stores go to it.
+  void start(Image& img, int y) {
+    const std::size_t row = std::size_t(y) * static_cast<std::size_t>(width_);
+    out_.rgb = img.rgb.data() + 3 * row;
+    out_.covered = img.covered.data() + row;
+    out_.owner = img.owner.data() + row;
+    out_.keys = key_.data();
+    lo_ = width_, hi_ = 0;
+  }
+  // Pixels [x0, x1) may be written (a span's).
+  void touch(int x0, int x1) { lo_ = std::min(lo_, x0), hi_ = std::max(hi_, x1); }
+  std::uint64_t tie_bits(int poly) const { return static_cast<std::uint32_t>(poly) & poly_key_mask_; }
+  static std::uint64_t key(std::uint32_t depth, std::uint64_t tie_bits) { return (std::uint64_t{depth} << 32) | tie_bits; }
+  bool wins_key(int x, std::uint64_t key) const { return key < key_[static_cast<std::size_t>(x)]; }
+  // A winner: its key, shade, coverage and polygon (the shade alone when Phong shades later).
+  void store(const Fragment& f, std::uint64_t key) {
+    const auto x = static_cast<std::size_t>(f.x);
+    key_[x] = key;
+    out_.rgb[3 * x] = f.rgb[0], out_.rgb[3 * x + 1] = f.rgb[1], out_.rgb[3 * x + 2] = f.rgb[2];
+    out_.covered[x] = 1;
+    out_.owner[x] = f.poly;
+  }
+  // Every covered pixel of the line, in x order, with its rgb in the image row.
+  template <class F>
+  void each_covered(F&& visit) const {
+    for (int x = lo_; x < hi_; ++x)
+      if (key_[static_cast<std::size_t>(x)] != Empty) visit(x, out_.rgb + 3 * x);
+  }
+  int lo() const { return lo_; }
+  int hi() const { return hi_; }
+  // Where a span kernel stores: the keys and the image row.
+  struct Row {
+    std::uint64_t* keys = nullptr;
+    std::uint8_t* rgb = nullptr;
+    std::uint8_t* covered = nullptr;
+    int* owner = nullptr;
+  };
+  const Row& row() const { return out_; }
+
+ private:
+  int width_;
+  std::uint32_t poly_key_mask_;
+  std::vector<std::uint64_t> key_;
+  Row out_;
+  int lo_, hi_ = 0;
+};
+
+// A Gouraud span whose values stay in range (PixelPath::in_range<Shade>), for the span kernel:
+// slots Z, R, G, B at x0 and their per-pixel steps as words modulo 2^64, and the readings' shifts.
+struct GouraudSpan {
+  int x0 = 0, x1 = 0;
+  std::uint64_t tie = 0;
+  int poly = 0;
+  std::uint64_t value[4] = {}, step[4] = {};
+  std::uint64_t half[4] = {};
+  int shift[4] = {};
+};
+
+// The span kernels: PixelPath's in-range fragment (depth, rgb) and FrameLine's depth test and
+// store, several pixels at a time. Lane k holds value + k·step modulo 2^64: the span's values stay
+// inside their words, so that is the exact value the scalar loop reaches by k additions, and
+// (v + half) >> shift (a logical shift: v + half >= 0 in range) is its reading. A lane past x1
+// stores nothing. Each returns the fragments that won their pixel. Beside each, the end of a
+// line: keys [lo, hi) emptied. Built for AVX2 and AVX-512 beside the baseline x86-64 build
+// (whose spans take the scalar loop), chosen at run time (span_kernels).
+struct SpanKernels {
+  long long (*draw)(const GouraudSpan&, const FrameLine::Row&) = nullptr;  // nullptr: the scalar loop
+  void (*empty)(std::uint64_t* keys, int lo, int hi) = nullptr;
+};
+
+void empty_keys(std::uint64_t* keys, int lo, int hi) {
+  if (hi > lo) std::fill(keys + lo, keys + hi, FrameLine::Empty);
+}
+
+#if defined(__x86_64__) && defined(__GNUC__)
+#define WATKINS_SPAN_KERNELS 1
+// GCC 12's AVX-512 headers start vectors from an undefined value (_mm512_undefined_*), which
+// -Wall reports as uninitialized.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wuninitialized"
+#ifndef __clang__
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
+#define WATKINS_AVX512 "avx512f,avx512vl,avx512dq,avx512bw,avx512vbmi,bmi2"
+__attribute__((target(WATKINS_AVX512))) long long gouraud_span_avx512(const GouraudSpan& s,
+                                                                      const FrameLine::Row& out) {
+  const __m512i lane = _mm512_setr_epi64(0, 1, 2, 3, 4, 5, 6, 7);
+  __m512i v[4], stride[4], half[4];
+  __m128i shift[4];
+  for (int c = 0; c < 4; ++c) {
+    const __m512i step = _mm512_set1_epi64(static_cast<long long>(s.step[c]));
+    v[c] = _mm512_add_epi64(_mm512_set1_epi64(static_cast<long long>(s.value[c])), _mm512_mullo_epi64(lane, step));
+    stride[c] = _mm512_slli_epi64(step, 3);
+    half[c] = _mm512_set1_epi64(static_cast<long long>(s.half[c]));
+    shift[c] = _mm_cvtsi32_si128(s.shift[c]);
+  }
+  const __m512i tie = _mm512_set1_epi64(static_cast<long long>(s.tie));
+  const __m256i poly = _mm256_set1_epi32(s.poly);
+  const __m128i one = _mm_set1_epi8(1);
+  // Bytes 8k, 8k+1, 8k+2 of the eight lanes (r | g << 8 | b << 16) packed as 24 rgb bytes.
+  alignas(64) static constexpr std::uint8_t pack_index[64] = {
+      0, 1, 2, 8, 9, 10, 16, 17, 18, 24, 25, 26, 32, 33, 34, 40, 41, 42, 48, 49, 50, 56, 57, 58};
+  const __m512i pack = _mm512_load_si512(pack_index);
+  long long won = 0;
+  for (int x = s.x0; x < s.x1; x += 8) {
+    const int left = s.x1 - x;
+    const __mmask8 valid = left >= 8 ? __mmask8(0xff) : static_cast<__mmask8>((1u << left) - 1);
+    const __m512i depth = _mm512_srl_epi64(_mm512_add_epi64(v[0], half[0]), shift[0]);
+    const __m512i key = _mm512_or_si512(_mm512_slli_epi64(depth, 32), tie);
+    const __m512i old = _mm512_maskz_loadu_epi64(valid, out.keys + x);
+    const __mmask8 win = _mm512_mask_cmplt_epu64_mask(valid, key, old);
+    if (win) {
+      _mm512_mask_storeu_epi64(out.keys + x, win, key);
+      const __m512i r = _mm512_srl_epi64(_mm512_add_epi64(v[1], half[1]), shift[1]);
+      const __m512i g = _mm512_srl_epi64(_mm512_add_epi64(v[2], half[2]), shift[2]);
+      const __m512i b = _mm512_srl_epi64(_mm512_add_epi64(v[3], half[3]), shift[3]);
+      const __m512i rgb = _mm512_or_si512(r, _mm512_or_si512(_mm512_slli_epi64(g, 8), _mm512_slli_epi64(b, 16)));
+      // Three byte-mask bits per winning pixel.
+      const std::uint32_t bit = _pdep_u32(win, 0x249249u);
+      const __mmask32 bytes = bit | (bit << 1) | (bit << 2);
+      _mm256_mask_storeu_epi8(out.rgb + 3 * x, bytes, _mm512_castsi512_si256(_mm512_permutexvar_epi8(pack, rgb)));
+      _mm_mask_storeu_epi8(out.covered + x, win, one);
+      _mm256_mask_storeu_epi32(out.owner + x, win, poly);
+      won += __builtin_popcount(win);
+    }
+    for (int c = 0; c < 4; ++c) v[c] = _mm512_add_epi64(v[c], stride[c]);
+  }
+  return won;
+}
+
+__attribute__((target(WATKINS_AVX512))) void empty_keys_avx512(std::uint64_t* keys, int lo, int hi) {
+  const __m512i empty = _mm512_set1_epi64(-1);
+  for (int x = lo; x < hi; x += 8) {
+    const int left = hi - x;
+    _mm512_mask_storeu_epi64(keys + x, left >= 8 ? __mmask8(0xff) : static_cast<__mmask8>((1u << left) - 1), empty);
+  }
+}
+
+__attribute__((target("avx2"))) long long gouraud_span_avx2(const GouraudSpan& s, const FrameLine::Row& out) {
+  const __m256i lane = _mm256_setr_epi64x(0, 1, 2, 3);
+  __m256i v[4], stride[4], half[4];
+  __m128i shift[4];
+  for (int c = 0; c < 4; ++c) {
+    // value + k·step for k = 0..3, by additions (AVX2 has no 64-bit multiply).
+    const __m256i step = _mm256_set1_epi64x(static_cast<long long>(s.step[c]));
+    const __m256i step2 = _mm256_add_epi64(step, step);
+    const __m256i base = _mm256_set1_epi64x(static_cast<long long>(s.value[c]));
+    const __m256i odd = _mm256_blend_epi32(_mm256_setzero_si256(), step, 0xcc);     // 0, s, 0, s
+    const __m256i pairs = _mm256_blend_epi32(_mm256_setzero_si256(), step2, 0xf0);  // 0, 0, 2s, 2s
+    v[c] = _mm256_add_epi64(base, _mm256_add_epi64(odd, pairs));
+    stride[c] = _mm256_add_epi64(step2, step2);
+    half[c] = _mm256_set1_epi64x(static_cast<long long>(s.half[c]));
+    shift[c] = _mm_cvtsi32_si128(s.shift[c]);
+  }
+  const __m256i tie = _mm256_set1_epi64x(static_cast<long long>(s.tie));
+  const __m256i sign = _mm256_set1_epi64x(static_cast<long long>(std::uint64_t{1} << 63));
+  const __m256i end = _mm256_set1_epi64x(s.x1);
+  const __m128i poly = _mm_set1_epi32(s.poly);
+  // Per 128-bit half (two pixels), bytes 0..2 and 8..10 packed: the low half to bytes 0..5, the
+  // high half to bytes 6..11 (-1: zero).
+  const __m256i pack = _mm256_setr_epi8(0, 1, 2, 8, 9, 10, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1,  //
+                                        -1, -1, -1, -1, -1, -1, 0, 1, 2, 8, 9, 10, -1, -1, -1, -1);
+  long long won = 0;
+  for (int x = s.x0; x < s.x1; x += 4) {
+    const __m256i valid = _mm256_cmpgt_epi64(end, _mm256_add_epi64(lane, _mm256_set1_epi64x(x)));
+    const __m256i depth = _mm256_srl_epi64(_mm256_add_epi64(v[0], half[0]), shift[0]);
+    const __m256i key = _mm256_or_si256(_mm256_slli_epi64(depth, 32), tie);
+    const __m256i old = _mm256_maskload_epi64(reinterpret_cast<const long long*>(out.keys + x), valid);
+    // key < old, unsigned: both with the sign bit flipped, compared signed.
+    const __m256i less = _mm256_cmpgt_epi64(_mm256_xor_si256(old, sign), _mm256_xor_si256(key, sign));
+    const __m256i win = _mm256_and_si256(less, valid);
+    unsigned bits = static_cast<unsigned>(_mm256_movemask_pd(_mm256_castsi256_pd(win)));
+    if (bits) {
+      _mm256_maskstore_epi64(reinterpret_cast<long long*>(out.keys + x), win, key);
+      const __m256i r = _mm256_srl_epi64(_mm256_add_epi64(v[1], half[1]), shift[1]);
+      const __m256i g = _mm256_srl_epi64(_mm256_add_epi64(v[2], half[2]), shift[2]);
+      const __m256i b = _mm256_srl_epi64(_mm256_add_epi64(v[3], half[3]), shift[3]);
+      const __m256i rgb4 = _mm256_or_si256(r, _mm256_or_si256(_mm256_slli_epi64(g, 8), _mm256_slli_epi64(b, 16)));
+      won += __builtin_popcount(bits);
+      if (bits == 0xf) {  // all four won: 12 rgb bytes, four coverage bytes, four owners
+        const __m256i packed = _mm256_shuffle_epi8(rgb4, pack);
+        const __m128i rgb12 = _mm_or_si128(_mm256_castsi256_si128(packed), _mm256_extracti128_si256(packed, 1));
+        std::uint8_t* const dst = out.rgb + 3 * static_cast<std::size_t>(x);
+        _mm_storel_epi64(reinterpret_cast<__m128i*>(dst), rgb12);
+        const std::uint32_t tail = static_cast<std::uint32_t>(_mm_extract_epi32(rgb12, 2));
+        std::memcpy(dst + 8, &tail, 4);
+        const std::uint32_t ones = 0x01010101u;
+        std::memcpy(out.covered + x, &ones, 4);
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(out.owner + x), poly);
+        bits = 0;
+      }
+      alignas(32) std::uint64_t rgb[4];
+      _mm256_store_si256(reinterpret_cast<__m256i*>(rgb), rgb4);
+      for (; bits; bits &= bits - 1) {
+        const int k = __builtin_ctz(bits);
+        const std::size_t px = static_cast<std::size_t>(x + k);
+        out.rgb[3 * px] = static_cast<std::uint8_t>(rgb[k]);
+        out.rgb[3 * px + 1] = static_cast<std::uint8_t>(rgb[k] >> 8);
+        out.rgb[3 * px + 2] = static_cast<std::uint8_t>(rgb[k] >> 16);
+        out.covered[px] = 1;
+        out.owner[px] = s.poly;
+      }
+    }
+    for (int c = 0; c < 4; ++c) v[c] = _mm256_add_epi64(v[c], stride[c]);
+  }
+  return won;
+}
+
+__attribute__((target("avx2"))) void empty_keys_avx2(std::uint64_t* keys, int lo, int hi) {
+  const __m256i empty = _mm256_set1_epi64x(-1);
+  int x = lo;
+  for (; x + 4 <= hi; x += 4) _mm256_storeu_si256(reinterpret_cast<__m256i*>(keys + x), empty);
+  for (; x < hi; ++x) keys[x] = FrameLine::Empty;
+}
+#pragma GCC diagnostic pop
+#endif
+
+// The kernels for `path`: Auto takes the widest the processor has; a path it lacks falls back to
+// the next narrower, down to the scalar loop.
+SpanKernels span_kernels(SpanPath path) {
+  SpanKernels k;
+  k.empty = empty_keys;
+  if (path == SpanPath::Scalar) return k;
+#ifdef WATKINS_SPAN_KERNELS
+  __builtin_cpu_init();
+  const bool avx512 = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
+                      __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512bw") &&
+                      __builtin_cpu_supports("avx512vbmi") && __builtin_cpu_supports("bmi2");
+  if (path != SpanPath::Avx2 && avx512) return SpanKernels{gouraud_span_avx512, empty_keys_avx512};
+  if (__builtin_cpu_supports("avx2")) return SpanKernels{gouraud_span_avx2, empty_keys_avx2};
+#endif
+  return k;
+}
+
 // The segments of one scan line through the interpolator (and the Phong blocks) into the line
 // buffer. What varies per frame is a template parameter, chosen once per frame: whether a bench
 // observes the fragments (Observed: each gets both readings and is reported) and the shading,
@@ -59,10 +309,46 @@ struct DeferredPhong {
 // The pipeline a frame takes: Gouraud's eq. (1), his eq. (2) (the shade divider after the
 // interpolator) or Phong.
 enum class Pipe { Gouraud, Eq2, Phong };
+// What stays the same over a frame's lines: its configuration's paths and the Phong constants.
+struct FrameSetup {
+  const Frame& frame;
+  ChannelFormats formats;
+  PixelPath path;
+  ShadeDivider divider;
+  PhongFrame phong;
+  SpanKernels kernels;
+  GouraudSpan readings;  // the kernel's shifts and halves (PixelPath's in-range readings)
+  // One row of the background, uncovered: each line's row of the image starts as a copy.
+  std::vector<std::uint8_t> background_rgb, background_covered;
+  std::vector<int> background_owner;
+  FrameSetup(const Frame& f, const ChannelFormats& cf, SpanKernels k)
+      : frame(f), formats(cf), path(cf), divider(cf), phong(f), kernels(k),
+        background_covered(static_cast<std::size_t>(f.width), 0), background_owner(static_cast<std::size_t>(f.width), -1) {
+    for (int x = 0; x < f.width; ++x) background_rgb.insert(background_rgb.end(), f.background.begin(), f.background.end());
+    for (int c = 0; c < 4; ++c) {
+      const int shift = cf.frac[fmt::ChanZ + c];
+      readings.shift[c] = shift;
+      readings.half[c] = shift == 0 ? 0 : std::uint64_t{1} << (shift - 1);
+    }
+  }
+  GouraudSpan gouraud_span(const SpanSetup& span, std::uint64_t tie) const {
+    GouraudSpan g = readings;
+    g.x0 = span.x_start, g.x1 = span.x_end, g.tie = tie, g.poly = span.poly;
+    for (int c = 0; c < 4; ++c) {
+      g.value[c] = static_cast<std::uint64_t>(span.value[fmt::ChanZ + c]);
+      g.step[c] = static_cast<std::uint64_t>(span.step[fmt::ChanZ + c]);
+    }
+    return g;
+  }
+};
 template <bool Observed, Pipe P>
-LineCounts draw_segments(const Frame& frame, const std::vector<Segment>& segments, const ChannelFormats& formats,
-                        const PixelPath& path, const PhongFrame& phong, const ShadeDivider& divider,
-                        ScanlineBuffer& line, int y, const PipelineObserver& observe, DeferredPhong& later) {
+LineCounts draw_segments(const FrameSetup& fs, const std::vector<Segment>& segments, FrameLine& line, int y,
+                         const PipelineObserver& observe, DeferredPhong& later) {
+  const Frame& frame = fs.frame;
+  const ChannelFormats& formats = fs.formats;
+  const PixelPath& path = fs.path;
+  const PhongFrame& phong = fs.phong;
+  const ShadeDivider& divider = fs.divider;
   constexpr ShadingMode Shading = P == Pipe::Phong ? ShadingMode::Phong : ShadingMode::Gouraud;
   constexpr bool defer = !Observed && Shading == ShadingMode::Phong;
   // Eq. (2) reads the shade slots' words, not a reading of them: only their words' range matters
@@ -73,8 +359,10 @@ LineCounts draw_segments(const Frame& frame, const std::vector<Segment>& segment
   // Local copies: the line buffer's stores cannot alias them, so the loop keeps them in registers.
   const PixelPath p = path;
   LineCounts n;
+  SpanSetup span;
+  span.formats = formats;
   for (const Segment& s : segments) {
-    const SpanSetup span = SegmentInterpolator::setup(s, frame.width, formats);
+    SegmentInterpolator::setup(s, frame.width, formats, span);
     n.fragments += span.x_end - span.x_start;
     // A span whose values stay inside their words and readings (in_range) runs without wraps
     // and clamps; any other span, and every span a bench observes, takes the general path.
@@ -87,7 +375,7 @@ LineCounts draw_segments(const Frame& frame, const std::vector<Segment>& segment
         // The depth test first: a hidden fragment's readings (and Phong shade) are computed only
         // when a bench observes it. The RTL computes them all; the values kept are the same.
         Fragment f = p.head<InRange>(span, x, v);
-        const std::uint64_t key = ScanlineBuffer::key(f.depth, tie_bits);
+        const std::uint64_t key = FrameLine::key(f.depth, tie_bits);
         const bool won = line.wins_key(x, key);
         if (won || Observed) {
           if (P != Pipe::Eq2 || Observed) p.fill<readings, InRange>(f, v);
@@ -110,23 +398,71 @@ LineCounts draw_segments(const Frame& frame, const std::vector<Segment>& segment
       }
     };
     if (span.x_end <= span.x_start) continue;
-    if (p.in_range<readings>(span))
-      run(std::true_type{});
-    else
+    line.touch(span.x_start, span.x_end);
+    if (!p.in_range<readings>(span)) {
       run(std::false_type{});
+    } else if (P == Pipe::Gouraud && !Observed && fs.kernels.draw) {
+      n.visible += fs.kernels.draw(fs.gouraud_span(span, line.tie_bits(span.poly)), line.row());
+    } else {
+      run(std::true_type{});
+    }
   }
   return n;
 }
 
-using DrawSegments = LineCounts (*)(const Frame&, const std::vector<Segment>&, const ChannelFormats&,
-                                   const PixelPath&, const PhongFrame&, const ShadeDivider&, ScanlineBuffer&, int,
-                                   const PipelineObserver&, DeferredPhong&);
+using DrawSegments = LineCounts (*)(const FrameSetup&, const std::vector<Segment>&, FrameLine&, int,
+                                    const PipelineObserver&, DeferredPhong&);
 
 DrawSegments draw_segments_for(bool observed, const Frame& frame) {
   if (frame.shading == ShadingMode::Phong)
     return observed ? draw_segments<true, Pipe::Phong> : draw_segments<false, Pipe::Phong>;
   if (frame.eq2) return observed ? draw_segments<true, Pipe::Eq2> : draw_segments<false, Pipe::Eq2>;
   return observed ? draw_segments<true, Pipe::Gouraud> : draw_segments<false, Pipe::Gouraud>;
+}
+
+// Scan lines [y_begin, y_end) of the frame into their rows of img, counted into stats.
+void draw_lines(const FrameSetup& fs, int capacity, int y_begin, int y_end, Image& img, const PipelineObserver& observe,
+                PipelineStats& stats) {
+  const Frame& frame = fs.frame;
+  FrameLine line(frame.width, frame.depth_tie);
+  const bool observing = static_cast<bool>(observe.fragment);
+  const DrawSegments draw = draw_segments_for(observing, frame);
+  const bool deferred = !observing && frame.shading == ShadingMode::Phong;
+  DeferredPhong later;
+  if (deferred) {
+    later.normal.resize(static_cast<std::size_t>(frame.width));
+    later.material.resize(static_cast<std::size_t>(frame.width));
+  }
+  walk_scan_lines(frame.edges, y_begin, y_end, capacity, fs.formats, [&](const ScanLine& sl) {
+    const int y = sl.y;
+    stats.edges += sl.entered;
+    stats.max_active_edges = std::max(stats.max_active_edges, sl.active.size());
+    if (observe.active_edge)
+      for (const ActiveEdge& e : sl.active.edges()) observe.active_edge(y, e);
+    if (observe.active_edges_end) observe.active_edges_end(y);
+    stats.segments += static_cast<long long>(sl.segments.size());
+    if (observe.segment)
+      for (const Segment& s : sl.segments) observe.segment(y, s);
+    if (observe.segments_end) observe.segments_end(y);
+    const std::size_t row = std::size_t(y) * static_cast<std::size_t>(frame.width);
+    std::copy(fs.background_rgb.begin(), fs.background_rgb.end(), img.rgb.begin() + static_cast<std::ptrdiff_t>(3 * row));
+    std::copy(fs.background_covered.begin(), fs.background_covered.end(), img.covered.begin() + static_cast<std::ptrdiff_t>(row));
+    std::copy(fs.background_owner.begin(), fs.background_owner.end(), img.owner.begin() + static_cast<std::ptrdiff_t>(row));
+    line.start(img, y);
+    const LineCounts n = draw(fs, sl.segments, line, y, observe, later);
+    stats.fragments += n.fragments;
+    stats.visible += n.visible;
+    if (observe.fragments_end) observe.fragments_end(y);
+    // Phong with nobody observing shades each covered pixel once, from its last winner.
+    if (deferred)
+      line.each_covered([&](int x, std::uint8_t* rgb) {
+        const std::array<int, 3> p = fs.phong.shade(later.normal[static_cast<std::size_t>(x)],
+                                                    later.material[static_cast<std::size_t>(x)]);
+        rgb[0] = static_cast<std::uint8_t>(p[0]), rgb[1] = static_cast<std::uint8_t>(p[1]);
+        rgb[2] = static_cast<std::uint8_t>(p[2]);
+      });
+    fs.kernels.empty(line.row().keys, line.lo(), line.hi());
+  });
 }
 
 }  // namespace
@@ -163,60 +499,48 @@ Image WatkinsTop::render(const Frame& frame, const PipelineObserver& observe) {
 
 void WatkinsTop::render_into(const Frame& frame, Image& img, const PipelineObserver& observe) {
   stats_ = PipelineStats{};
-  img.reset(frame.width, frame.height, frame.background);
-  ScanlineBuffer line(frame.width, frame.background, frame.depth_tie);
+  // Every row is written by its band (background first): the storage is only sized here.
+  const std::size_t pixels = std::size_t(frame.width) * static_cast<std::size_t>(std::max(frame.height, 0));
+  img.width = frame.width, img.height = frame.height;
+  img.rgb.resize(3 * pixels), img.covered.resize(pixels), img.owner.resize(pixels);
   const ChannelFormats formats = config_.channels(frame.shading);
   // The shade or the normal reading, as the frame's pipeline uses; both for an observer (the
   // benches compare the interpolator's ports, which carry both).
   const bool observing = static_cast<bool>(observe.fragment);
-  const PixelPath path(formats);
-  const DrawSegments draw = draw_segments_for(observing, frame);
-  const ShadeDivider divider(formats);
-  const PhongFrame phong(frame);
-  const bool deferred = !observing && frame.shading == ShadingMode::Phong;
-  DeferredPhong later;
-  if (deferred) {
-    later.normal.resize(static_cast<std::size_t>(frame.width));
-    later.material.resize(static_cast<std::size_t>(frame.width));
+  const FrameSetup fs(frame, formats, span_kernels(span_path_));
+  // Bands of scan lines, each walked from its exact first-line state (walk_scan_lines' range
+  // form) into its own rows of the image: the same lines, values and counts as one walk. Stage
+  // streams are reported in order, so an observed frame is one band.
+  const bool observed_stage = observing || observe.active_edge || observe.active_edges_end || observe.segment ||
+                              observe.segments_end || observe.fragments_end;
+  const int bands = observed_stage ? 1 : std::max(1, std::min(threads_, frame.height));
+  std::vector<PipelineStats> band_stats(static_cast<std::size_t>(bands));
+  std::vector<std::exception_ptr> band_error(static_cast<std::size_t>(bands));
+  auto draw_band = [&](int b) {
+    try {
+      const int y0 = static_cast<int>(static_cast<long long>(frame.height) * b / bands);
+      const int y1 = static_cast<int>(static_cast<long long>(frame.height) * (b + 1) / bands);
+      draw_lines(fs, max_active_edges_, y0, y1, img, observe, band_stats[static_cast<std::size_t>(b)]);
+    } catch (...) {
+      band_error[static_cast<std::size_t>(b)] = std::current_exception();
+    }
+  };
+  if (bands == 1) {
+    draw_band(0);
+  } else {
+    std::vector<std::thread> workers;
+    for (int b = 1; b < bands; ++b) workers.emplace_back(draw_band, b);
+    draw_band(0);
+    for (std::thread& t : workers) t.join();
   }
-  walk_scan_lines(frame.edges, frame.height, max_active_edges_, formats, [&](const ScanLine& sl) {
-    const int y = sl.y;
-    stats_.edges += sl.entered;
-    stats_.max_active_edges = std::max(stats_.max_active_edges, sl.active.size());
-    if (observe.active_edge)
-      for (const ActiveEdge& e : sl.active.edges()) observe.active_edge(y, e);
-    if (observe.active_edges_end) observe.active_edges_end(y);
-    stats_.segments += static_cast<long long>(sl.segments.size());
-    if (observe.segment)
-      for (const Segment& s : sl.segments) observe.segment(y, s);
-    if (observe.segments_end) observe.segments_end(y);
-    line.clear();
-    const LineCounts n = draw(frame, sl.segments, formats, path, phong, divider, line, y, observe, later);
-    stats_.fragments += n.fragments;
-    stats_.visible += n.visible;
-    if (observe.fragments_end) observe.fragments_end(y);
-    // The image starts as background, uncovered: only the line's covered pixels are copied.
-    const std::size_t row = std::size_t(y) * frame.width;
-    // Two loops, the test of the mode outside them.
-    auto copy_out = [&](auto shade) {
-      for (const int x : line.written()) {
-        const std::array<std::uint8_t, 3> p = shade(x);
-        std::uint8_t* out = &img.rgb[(row + x) * 3];
-        out[0] = p[0], out[1] = p[1], out[2] = p[2];  // byte stores: no library call per pixel
-        img.covered[row + x] = 1;
-        img.owner[row + x] = line.written_poly(x);
-      }
-    };
-    if (deferred)
-      copy_out([&](int x) {
-        const std::array<int, 3> rgb =
-            phong.shade(later.normal[static_cast<std::size_t>(x)], later.material[static_cast<std::size_t>(x)]);
-        return std::array<std::uint8_t, 3>{static_cast<std::uint8_t>(rgb[0]), static_cast<std::uint8_t>(rgb[1]),
-                                           static_cast<std::uint8_t>(rgb[2])};
-      });
-    else
-      copy_out([&](int x) { return line.written_rgb(x); });
-  });
+  // The first band's error is the first line's: a walk from line 0 stops there.
+  for (const std::exception_ptr& e : band_error)
+    if (e) std::rethrow_exception(e);
+  for (const PipelineStats& b : band_stats) {
+    stats_.edges += b.edges, stats_.segments += b.segments;
+    stats_.fragments += b.fragments, stats_.visible += b.visible;
+    stats_.max_active_edges = std::max(stats_.max_active_edges, b.max_active_edges);
+  }
   // The smoother after the line buffer, when the frame enables it (it sees the full raster).
   if (frame.smoothed()) img = Smoother(frame.smooth_w).apply(img);
 }

@@ -74,6 +74,13 @@ struct SparseBeat {
 // The sparse stream of a rendered frame (its covered pixels, plus the terminator when needed).
 std::vector<SparseBeat> sparse_stream(const Image& img);
 
+// Which span loop draws the spans of an unobserved Gouraud frame whose values stay in range: the
+// scalar loop (the reference, and the baseline x86-64 build's), or a span kernel several pixels
+// at a time, built for AVX2 and AVX-512 and chosen at run time (Auto: the widest the processor
+// has; a path it lacks falls back to the next narrower, down to the scalar loop). Every path
+// draws the same frame, bit for bit.
+enum class SpanPath { Auto, Scalar, Avx2, Avx512 };
+
 class WatkinsTop {
  public:
   // The default configuration with an active-edge list of `max_active_edges` entries.
@@ -92,11 +99,17 @@ class WatkinsTop {
   // frame. The image is the one render() returns.
   void render_into(const Frame& frame, Image& out, const PipelineObserver& observe = {});
   const PipelineStats& stats() const { return stats_; }
+  // Threads drawing an unobserved frame: n bands of scan lines, each started from its first
+  // line's exact edge state, so the frame and its counts are one thread's. Default 1.
+  void set_threads(int n) { threads_ = n < 1 ? 1 : n; }
+  void set_span_path(SpanPath p) { span_path_ = p; }
 
  private:
   int max_active_edges_;
   Config config_;
   PipelineStats stats_;
+  int threads_ = 1;
+  SpanPath span_path_ = SpanPath::Auto;
 };
 
 }  // namespace watkins
