@@ -293,6 +293,11 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& ra) {
       ->default_str(std::to_string(fmt::MaxActiveEdges));
   cli::add_file(r, "--config", ra.config, "hardware configuration (JSON, docs/guide/config-format.md): the format of each "
                                           "channel group and the capacities; default: model/twins/formats.hpp");
+  r->add_option("--threads", ra.threads, "threads drawing the fixed model's frame, each a band of scan lines (the same "
+                                         "image and counts as one)")
+      ->check(cli::integer_in(1, 64))
+      ->type_name("INT")
+      ->capture_default_str();
   add_rtl_options(r, ra.rtl);  // --rtl, --trace, --seed, --gap, --stall
   return r;
 }
@@ -368,6 +373,7 @@ int run_render(const RenderArgs& a) {
   int rtl_status = 0;    // --rtl: 3 when the RTL differs from the model, hangs or overflows
   if (a.model == "fixed") {
     WatkinsTop pipe(cfg);
+    pipe.set_threads(a.threads);
     const auto t2 = Clock::now();
     result = pipe.render(prepared);
     const double t_model = seconds_since(t2);

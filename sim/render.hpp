@@ -39,6 +39,7 @@ struct RenderArgs {
   int max_active_edges = fmt::MaxActiveEdges;
   bool max_active_edges_given = false;  // --max-active-edges overrides the configuration's
   std::string config;                   // --config F (docs/guide/config-format.md)
+  int threads = 1;                      // --threads N: the model's bands of scan lines
   RtlArgs rtl;  // --rtl and its options
 };
 
