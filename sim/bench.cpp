@@ -33,6 +33,13 @@ double best_seconds(F&& body, double budget) {
   return best;
 }
 
+// The frames callgrind counts (scripts/bench collects this function alone): the model drawing
+// into an image it has drawn before, as the timed loop does.
+__attribute__((noinline)) void profiled_frames(watkins::WatkinsTop& pipe, const watkins::PreparedScene& prepared,
+                                               watkins::Image& frame_buffer, int frames) {
+  for (int i = 0; i < frames; ++i) pipe.render_into(prepared, frame_buffer);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -50,9 +57,15 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"gouraud", "phong"}));
   int profile_frames = 0;
   app.add_option("--profile-frames", profile_frames,
-                 "only render the model this many times and print its fragments (for callgrind: "
-                 "instructions per fragment)");
+                 "only render the model this many times (in profiled_frames, after a first frame) and print "
+                 "its fragments (for callgrind: instructions per fragment)");
   app.add_option("--seconds", budget, "time budget per measurement")->capture_default_str();
+  int threads = 1;
+  app.add_option("--threads", threads, "threads drawing the model's frames (bands of scan lines)")
+      ->check(CLI::Range(1, 64))
+      ->capture_default_str();
+  bool only_model = false;
+  app.add_flag("--only-model", only_model, "time the model's frame alone (no reference, fitted or cycle figures)");
   app.add_option("--config", config_path, "hardware configuration (docs/guide/config-format.md); default: formats.hpp");
   CLI11_PARSE(app, argc, argv);
   try {
@@ -64,14 +77,27 @@ int main(int argc, char** argv) {
     cfg.max_active_edges = 1 << 20;  // measure speed, not capacity
     const PreparedScene prepared = prepare(scene, cfg);
     WatkinsTop pipe(cfg);
+    pipe.set_threads(threads);
     pipe.render(prepared);
     const long long fragments = pipe.stats().fragments;
     if (profile_frames > 0) {
-      for (int i = 1; i < profile_frames; ++i) pipe.render(prepared);
+      Image frame_buffer;  // as the timed loop draws: one image, sized by a first frame
+      pipe.render_into(prepared, frame_buffer);
+      profiled_frames(pipe, prepared, frame_buffer, profile_frames);
       std::printf("profiled            %d model frames of %lld fragments\n", profile_frames, fragments);
       return 0;
     }
     const double pixels = double(scene.width) * scene.height;
+    if (only_model) {
+      Image frame_buffer;
+      const double t = best_seconds([&] { pipe.render_into(prepared, frame_buffer); }, budget);
+      std::printf("scene               %s (%dx%d, %zu polygons, %zu edge records, %lld fragments)\n",
+                  scene.name.c_str(), scene.width, scene.height, scene.polygons.size(), prepared.edges.size(),
+                  fragments);
+      std::printf("fixed-point model   %.3f ms/frame  %.2f M fragments/s  %.2f M pixels/s  (%d thread%s)\n", t * 1e3,
+                  fragments / t / 1e6, pixels / t / 1e6, threads, threads == 1 ? "" : "s");
+      return 0;
+    }
     const double t_prep = best_seconds([&] { prepare(scene, cfg); }, budget);
     // The model draws into one image frame after frame (render_into), as a video-rate loop does;
     // render() returning a new image per frame is timed too (its pages are faulted in afresh).
