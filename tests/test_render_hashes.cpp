@@ -44,9 +44,9 @@ struct Fnv {
   void i64v(long long v) { bytes(&v, sizeof v); }
 };
 
-std::string hex(std::uint64_t v) {
-  char s[17];
-  std::snprintf(s, sizeof s, "%016llx", static_cast<unsigned long long>(v));
+std::string hex(std::uint64_t v) {  // a hex literal: never read as a commit's name
+  char s[19];
+  std::snprintf(s, sizeof s, "0x%016llx", static_cast<unsigned long long>(v));
   return s;
 }
 
