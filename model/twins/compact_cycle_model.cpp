@@ -60,9 +60,10 @@ CyclePrediction predict_compact_cycles(const Frame& frame, const Config& cfg, co
   CompactScanlineBufferTiming buffer(cfg.max_width);
   buffer.set_frame(frame.width, frame.height);
   // The clears after reset (the former's table, the buffer's marks), run with the pins at rest
-  // for the clocks before the first beat; or to their end.
-  const long long rest = opt.after_reset >= 0 ? opt.after_reset
-                                              : std::max<long long>(1LL << id_bits(cfg.max_polygons), cfg.max_width);
+  // for the clocks before the first beat, at most to their end (idle clocks after it change
+  // nothing).
+  const long long clears = std::max<long long>(1LL << id_bits(cfg.max_polygons), cfg.max_width);
+  const long long rest = opt.after_reset >= 0 ? std::min(opt.after_reset, clears) : clears;
   for (long long i = 0; i < rest; ++i) {
     former.clock(false, false, 0, false);
     buffer.clock(false, false, false);
