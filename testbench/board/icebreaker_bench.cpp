@@ -1,0 +1,114 @@
+// The iCEBreaker bench (icebreaker_bench.hpp).
+#include "icebreaker_bench.hpp"
+
+#include <chrono>
+#include <cstdint>
+#include <stdexcept>
+#include <vector>
+
+#include "Vicebreaker_top.h"
+#include "Vicebreaker_top___024root.h"
+#include "Vicebreaker_top_pipelined.h"
+#include "Vicebreaker_top_pipelined___024root.h"
+#include "verilated.h"
+
+namespace watkins::board_tb {
+namespace {
+
+template <class Model>
+IcebreakerRun run_top(std::unique_ptr<VerilatedContext>& context, const IcebreakerOptions& opt) {
+  const auto t0 = std::chrono::steady_clock::now();
+  context = std::make_unique<VerilatedContext>();
+  std::vector<std::string> args{"icebreaker_bench"};
+  if (!opt.bank_file.empty()) args.push_back("+watkins_bank=" + opt.bank_file);
+  std::vector<const char*> argv;
+  for (const std::string& a : args) argv.push_back(a.c_str());
+  context->commandArgs(static_cast<int>(argv.size()), argv.data());
+  auto dut = std::make_unique<Model>(context.get());
+  auto& root = *dut->rootp;
+  auto& clk = root.icebreaker_top__DOT__u_pll__DOT__u_sb_pll40_pad__DOT__clk;
+
+  IcebreakerRun out;
+  BoardRun& r = out.run;
+  clk = 0;  // low before clock 0's rising edge
+  root.icebreaker_top__DOT__u_pll__DOT__u_sb_pll40_pad__DOT__lock = 1;
+  dut->btn_n = 1;
+  dut->clk_12mhz = 0;
+  dut->eval();
+
+  const long long frames = opt.video_frames;
+  long long frames_left = -1;  // clocks still to capture once the first visible pixel is seen
+  long long start_clock = -1;
+  bool last_request = false;
+  Image* frame = nullptr;
+  for (long long m = 0;; ++m) {
+    // The values the rising edge samples.
+    if (root.icebreaker_top__DOT__start_pulse) {
+      start_clock = m;
+      r.start_clocks.push_back(m);
+    }
+    if (root.icebreaker_top__DOT__frame_begin) r.begin_clocks.push_back(m);
+    if (root.icebreaker_top__DOT__line_done)
+      r.lines.push_back({root.icebreaker_top__DOT__w_q, m, start_clock < 0 ? -1 : m - start_clock});
+    if (root.icebreaker_top__DOT__line_missed) r.missed.push_back({root.icebreaker_top__DOT__s_q, m});
+    clk = 1;
+    dut->eval();
+    ++r.evals;
+    const bool clock_low = dut->dvi_clk == 0;
+    const bool request = root.icebreaker_top__DOT__request_toggle_q;
+    if (request != last_request) r.request_pixel_clocks.push_back(m);
+    last_request = request;
+    // The pins after the rising edge.
+    VideoSample s;
+    s.de = dut->dvi_de;
+    s.hsync_n = dut->dvi_hsync;
+    s.vsync_n = dut->dvi_vsync;
+    if (r.first_visible < 0 && s.de) {
+      r.first_visible = m;
+      frames_left = frames * FrameClocks;
+      r.video.reserve(static_cast<std::size_t>(frames_left));
+    }
+    if (r.first_visible >= 0) {
+      const long long k = m - r.first_visible;
+      const long long h = k % LineClocks, v = (k / LineClocks) % FrameLines;
+      if (h == 0 && v == 0) {
+        r.frames.emplace_back(VideoWidth, VideoHeight);
+        frame = &r.frames.back();
+      }
+      r.video.push_back(s);
+      if (s.de && h < VideoWidth && v < VideoHeight) {
+        std::uint8_t* p = &frame->rgb[(std::size_t(v) * VideoWidth + std::size_t(h)) * 3];
+        p[0] = std::uint8_t(dut->dvi_r << 4);
+        p[1] = std::uint8_t(dut->dvi_g << 4);
+        p[2] = std::uint8_t(dut->dvi_b << 4);
+      }
+      --frames_left;
+    }
+    clk = 0;
+    dut->eval();
+    ++r.evals;
+    out.dvi_clk_bad += !(clock_low && dut->dvi_clk == 1);
+    if (frames_left == 0) {
+      r.pixel_clocks = r.pipe_clocks = m + 1;
+      break;
+    }
+    if (context->gotFinish()) throw std::runtime_error("icebreaker bench: the RTL called $finish");
+  }
+  r.missed_count = root.icebreaker_top__DOT__missed_count_q;
+  r.overflow = root.icebreaker_top__DOT__overflow;
+  dut->final();
+  r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace
+
+IcebreakerBench::IcebreakerBench(IcebreakerTop top) : top_(top), context_(std::make_unique<VerilatedContext>()) {}
+IcebreakerBench::~IcebreakerBench() = default;
+
+IcebreakerRun IcebreakerBench::run(const IcebreakerOptions& options) {
+  return top_ == IcebreakerTop::Pipelined ? run_top<Vicebreaker_top_pipelined>(context_, options)
+                                          : run_top<Vicebreaker_top>(context_, options);
+}
+
+}  // namespace watkins::board_tb

@@ -1,0 +1,52 @@
+// The iCEBreaker bench: rtl/board/icebreaker_top Verilated (--cc, the PLL and the I/O cells as the
+// stand-ins of testbench/board/primitives/) twice, each at the default scene's sized configuration,
+// Doubling 2, the scene bank from +watkins_bank=FILE: Vicebreaker_top built compact
+// (tests/configs/compact_default.gouraud.json: Compact = 1, what the UP5K holds) and
+// Vicebreaker_top_pipelined (scenes/sized/default.gouraud.json: the pipelined blocks, the same
+// board logic around another timing). One clock (docs/reference/board.md, "iCEBreaker"):
+// clock m is its m-th rising edge, the first at m = 0; each clock is two eval()s, the rising edge
+// and the falling edge (where dvi_clk rises). LOCK is high and the button up from the start. The
+// bench records, per clock:
+//   - at the Pmod's pins after each rising edge: dvi_de, dvi_hsync, dvi_vsync, and the 12-bit
+//     pixel of every visible position (each 4-bit channel c shown as the 8-bit level c << 4), and
+//     dvi_clk after both edges (low after the rising edge, high after the falling one);
+//   - the values each rising edge samples: the start pulses, the frame player's begins, every
+//     line's last pixel taken and every line the deadline check finds missed.
+// The records are the ULX3S bench's (board_bench.hpp: BoardRun), with one clock for both of its
+// domains (pixel_clocks = pipe_clocks).
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "board_bench.hpp"
+
+class VerilatedContext;
+
+namespace watkins::board_tb {
+
+enum class IcebreakerTop { Compact, Pipelined };
+
+struct IcebreakerOptions {
+  std::string bank_file;  // +watkins_bank=FILE: the scene bank's words
+  int video_frames = 3;   // video frames from the first visible pixel on the pins
+};
+
+struct IcebreakerRun {
+  BoardRun run;             // video, frames, requests, starts, begins, lines, missed (clocks as above)
+  long long dvi_clk_bad = 0;  // clocks whose dvi_clk was not low after the rising edge and high after the falling
+};
+
+class IcebreakerBench {
+ public:
+  explicit IcebreakerBench(IcebreakerTop top = IcebreakerTop::Compact);
+  ~IcebreakerBench();
+  // A fresh model from reset for every run.
+  IcebreakerRun run(const IcebreakerOptions& options);
+
+ private:
+  IcebreakerTop top_;
+  std::unique_ptr<VerilatedContext> context_;
+};
+
+}  // namespace watkins::board_tb
