@@ -224,7 +224,8 @@ int run_build(const BuildArgs& a) {
   std::ostringstream md;
   md << "`watkins board build` of " << b.name << " for the " << a.target.board << ": " << r.result << " ("
      << static_cast<long>(seconds) << " s).\n\n";
-  if (r.nextpnr.routed) md << bitstream_report(job, r);
+  // The resources also when the design does not fit: what is over.
+  if (r.nextpnr.routed || !r.nextpnr.utilisation.empty()) md << bitstream_report(job, r);
   std::printf("\n%s", md.str().c_str());
   if (!r.ok) {
     std::fprintf(stderr, "watkins: error: %s: %s (logs in %s)\n", b.name.c_str(), r.result.c_str(), job.work.c_str());

@@ -145,7 +145,7 @@ std::string bitstream_report(const BitstreamJob& job, const BitstreamResult& r) 
   }
   // nextpnr's router works until each clock meets its constraint, so a met clock's Fmax is how far
   // this placement got, not how fast the design can go (watkins synth constrains a top at 125 MHz).
-  md << "\n| clock | constraint MHz | routed Fmax MHz | margin | met |\n|---|---|---|---|---|\n";
+  if (!r.nextpnr.clocks.empty()) md << "\n| clock | constraint MHz | routed Fmax MHz | margin | met |\n|---|---|---|---|---|\n";
   for (const flow::ClockFmax& c : r.nextpnr.clocks) {
     char margin[32];
     std::snprintf(margin, sizeof margin, "%+.1f %%", c.constraint > 0 ? 100.0 * (c.achieved / c.constraint - 1) : 0.0);
