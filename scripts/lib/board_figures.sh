@@ -5,7 +5,7 @@
 # nextpnr-ecp5, ecppack: resources and every clock's routed Fmax against its constraint), and the
 # board bench's captured frame of the default scene (images/board_default.png); and the build of
 # one triangle (tests/board/tiny.json), the smallest bitstream, with its time. Place and route
-# takes 10 to 30 minutes a scene on two cores.
+# takes 10 to 30 minutes a scene; the scenes' builds run side by side.
 #   scripts/lib/board_figures.sh [OUTDIR]     WATKINS_BOARD_SCENES=default,board_native,tiny: a subset
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -29,8 +29,11 @@ scenes=("default|the default scene, 320x240 shown doubled|"
   echo "the 25 MHz oscillator through the PLL."
 } > "$tmp/head.md"
 
+# The scenes' builds run side by side (nextpnr-ecp5 places and routes on one core), each into a
+# body part of its own, joined in the scenes' order once all have ended.
 ok=0
-: > "$tmp/body.md"
+names=()
+pids=()
 for s in "${scenes[@]}"; do
   IFS='|' read -r name title file <<<"$s"
   # WATKINS_BOARD_SCENES=default,tiny: only the scenes named (each build takes 10 to 30 minutes).
@@ -47,9 +50,17 @@ for s in "${scenes[@]}"; do
     "$build/watkins" board check "${args[@]}"
     echo '```'
     echo
-  } >> "$tmp/body.md"
-  if "$build/watkins" board build "${args[@]}" --work "$tmp/$name" --out "$tmp/$name.bit" --md "$tmp/$name.md" \
-      > "$tmp/$name.log" 2>&1; then
+  } > "$tmp/$name.check.md"
+  "$build/watkins" board build "${args[@]}" --work "$tmp/$name" --out "$tmp/$name.bit" --md "$tmp/$name.md" \
+      > "$tmp/$name.log" 2>&1 &
+  names+=("$name|$file")
+  pids+=("$!")
+done
+: > "$tmp/body.md"
+for i in "${!names[@]}"; do
+  IFS='|' read -r name file <<<"${names[$i]}"
+  cat "$tmp/$name.check.md" >> "$tmp/body.md"
+  if wait "${pids[$i]}"; then
     {
       echo "\`watkins board build ${file:+${file#"$root"/}}\`: bitstream $(stat -c %s "$tmp/$name.bit") bytes."
       echo
