@@ -415,7 +415,7 @@ TEST(CompactCycleModel, RandomScenesEqualRtl) {
       if (HasFailure()) return;
       ++ran;
     }
-    EXPECT_GE(ran, 12) << file;
+    EXPECT_GE(ran, 8) << file;  // the sized default's 5-bit depth word refuses more of them
   }
 }
 
