@@ -12,7 +12,8 @@
 // shade divider's reciprocal and tail, whatever frame.eq2 says], the fragment queue and
 // scanline_buffer — driven by the twins' own streams (walk_scan_lines: each line's active edges
 // with their retire flags, the segment former's pairing, each span's pixel range). No channel
-// arithmetic runs per cycle, so it is exact and far faster than Verilator.
+// arithmetic runs per cycle, so it is exact and far faster than Verilator. A configuration with
+// compact true is the compact top's: compact_cycle_model.hpp.
 #pragma once
 
 #include <vector>
