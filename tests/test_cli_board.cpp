@@ -56,7 +56,7 @@ TEST(CliBoard, RefusesOtherSizesAndOptions) {
   r = run_cli("board check " + odd);
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("screen.height 200"), std::string::npos) << r.output;
-  for (const char* bad : {"--slots 3", "--slots 0", "--doubling 3", "--board icebreaker"}) {
+  for (const char* bad : {"--slots 3", "--slots 0", "--doubling 3", "--board icestick"}) {
     r = run_cli("board check " + scene + " " + bad);
     EXPECT_EQ(r.exit_code, 2) << bad << ": " << r.output;
     EXPECT_NE(r.output.find(std::string(bad).substr(0, std::string(bad).find(' '))), std::string::npos) << r.output;
