@@ -95,6 +95,7 @@ if [ -x "$bench" ]; then
     echo "\`$(grep -m1 'board bench:' "$tmp/bench.log" | sed 's/^board bench: //')\`"
   } >> "$tmp/body.md"
 fi
-cat "$tmp/head.md" "$tmp/body.md" > "$md"
+# Paths as the source tree names them, not where this checkout lies.
+cat "$tmp/head.md" "$tmp/body.md" | sed "s|$root/||g" > "$md"
 echo "board: $md ($(( $(date +%s) - start )) s)"
 exit $ok
