@@ -16,6 +16,7 @@
 #include "beam_schedule.hpp"
 #include "board_build.hpp"
 #include "board_image.hpp"
+#include "cycle_model.hpp"
 #include "fpga_flow.hpp"
 #include "config_file.hpp"
 #include "options.hpp"
@@ -25,6 +26,7 @@
 #include "scene_types.hpp"
 #include "size.hpp"
 #include "usage_error.hpp"
+#include "watkins_top.hpp"
 
 namespace watkins::board_command {
 namespace {
@@ -76,6 +78,12 @@ BoardScene load_board_scene(const CheckArgs& a, RunFiles& files) {
   // The UP5K holds the compact micro-architecture only (docs/reference/compact.md): the sized
   // configuration is built compact there; a --config file says for itself.
   if (a.config.empty() && board_of(a.board) == board::Board::Icebreaker) b.cfg.compact = true;
+  if (!a.top.empty()) b.cfg.compact = a.top == "compact";
+  if (b.cfg.compact && (b.cfg.smoothing || b.cfg.eq2))
+    throw std::runtime_error(b.name + ": the compact top has no " +
+                             std::string(b.cfg.smoothing ? "smoother" : "eq. (2) divider") +
+                             " (the configuration's " + (b.cfg.smoothing ? "smoothing" : "eq2") +
+                             "); --top pipelined draws it");
   b.prepared = prepare(scene, b.cfg);
   return b;
 }
@@ -106,8 +114,9 @@ long long report_schedule(const CheckArgs& a, const BoardScene& b) {
                 a.board.c_str(), mhz(t.ticks_per_pixel), mhz(t.ticks_per_pipe), t.ticks_per_pixel / g,
                 t.ticks_per_pipe / g, mhz(t.ticks_per_pixel) * 5, doubling, a.slots);
   }
-  std::printf("config        %s: edge record %d bits, max_active_edges %d, %s\n",
+  std::printf("config        %s: %s top, edge record %d bits, max_active_edges %d, %s\n",
               a.config.empty() ? "sized (watkins size, bound 1 level)" : a.config.c_str(),
+              cfg.compact ? "compact" : "pipelined",
               cfg.edge_record_bits(scene.shading), cfg.max_active_edges,
               cfg.smoothing ? "smoother" : "no smoother");
   std::printf("budget        %.0f pipeline clocks per rendered line (%d video line%s of %d pixel clocks)\n",
@@ -116,6 +125,27 @@ long long report_schedule(const CheckArgs& a, const BoardScene& b) {
   std::printf("first frame   %lld cycles, first edge beat to last pixel (start pulse to first beat %d); %zu frames "
               "simulated, %.2f s\n",
               f0.cycles(), s.timing.start_to_first_beat, s.frames.size(), seconds);
+  // The pipeline alone, every pixel taken as it comes: the frame's own cost, apart from the beam.
+  std::vector<long long> takes;
+  CycleOptions alone_opt;
+  alone_opt.max_active_edges = cfg.max_active_edges;
+  alone_opt.take_cycles = &takes;
+  const CyclePrediction alone = predict_cycles(prepared, cfg, alone_opt);
+  WatkinsTop pipe(cfg);
+  pipe.render(prepared);
+  const long long fragments = pipe.stats().fragments;
+  long long slowest = 0, before = -1;
+  int slowest_y = 0;
+  const std::size_t width = static_cast<std::size_t>(prepared.width);
+  for (int y = 0; y < prepared.height && takes.size() >= (y + 1) * width; ++y) {
+    const long long end = takes[(y + 1) * width - 1];  // the line's last pixel taken
+    if (end - before > slowest) slowest = end - before, slowest_y = y;
+    before = end;
+  }
+  std::printf("alone         %lld cycles a frame, %lld fragments (%.3f per clock), slowest line %d: %lld clocks "
+              "(every pixel taken as it comes)\n",
+              alone.cycles, fragments, alone.cycles ? double(fragments) / double(alone.cycles) : 0.0, slowest_y,
+              slowest);
   const board::LineSlack& w = s.lines.at(s.worst);
   std::printf("worst line    %s: slack %lld pipeline clocks (its last pixel at pipeline edge %lld, deadline %lld)\n",
               line_name(w).c_str(), w.slack, w.completion, w.deadline);
@@ -260,6 +290,9 @@ CLI::App* add_board_command(CLI::App& app, BoardArgs& a) {
         ->check(cli::integer_in(1, 1024))
         ->capture_default_str();
     cli::add_file(sub, "--config", t.config, "hardware configuration (JSON) instead of sizing the scene");
+    sub->add_option("--top", t.top, "the micro-architecture: compact or pipelined (default: the board's, icebreaker "
+                                    "compact and ulx3s pipelined; with --config, its \"compact\")")
+        ->check(CLI::IsMember({"compact", "pipelined"}));
   };
   CheckArgs& c = a.check;
   auto* check = b->add_subcommand("check", "each rendered line's completion against the moment the video shows it "

@@ -25,6 +25,8 @@ struct CheckArgs {
   int doubling = 0;           // 1 or 2; 0: from the scene's size (320x240: 2, 640x480: 1)
   int slots = 2;              // the line buffer's slots
   std::string config;         // a configuration file instead of sizing the scene (`watkins size`, bound 1)
+  std::string top;            // "compact" or "pipelined"; empty: the board's (icebreaker: compact,
+                              // ulx3s: pipelined; a --config file: its own "compact")
 };
 
 // `board image`: the scene bank's $readmemh file, as the board build initializes bank 0.

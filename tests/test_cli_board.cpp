@@ -1,5 +1,6 @@
 // `watkins board check` as users run it: the default scene's report and exit 0, a native scene
-// too heavy for the beam named line by line with exit 4, and sizes and options refused.
+// too heavy for the beam named line by line with exit 4, either micro-architecture on either
+// board, and sizes and options refused.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -46,6 +47,33 @@ TEST(CliBoard, HeavyNativeSceneMissesWithExitFour) {
   EXPECT_NE(r.output.find("slack -"), std::string::npos) << r.output;
 }
 
+// The frame alone: the same fragments on both tops; the pipelined top's cycles are the pixel
+// read-out's H(W + 1) + 6 when no line is fragment-bound, the compact top's at least its own
+// empty frame's H(W + 1) + 10.
+TEST(CliBoard, EitherTopOnEitherBoard) {
+  const std::string scene = WATKINS_SOURCE_DIR "/scenes/default.json";
+  CliRun r = run_cli("board check " + scene + " --board icebreaker --top pipelined");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("pipelined top, edge record 184 bits"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("alone         76846 cycles a frame, 15845 fragments (0.206 per clock)"), std::string::npos)
+      << r.output;
+  r = run_cli("board check " + scene + " --board ulx3s --top compact");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("compact top, edge record 184 bits"), std::string::npos) << r.output;
+  const std::size_t at = r.output.find("alone         ");
+  ASSERT_NE(at, std::string::npos) << r.output;
+  const long long cycles = std::stoll(r.output.substr(at + 14));
+  EXPECT_GE(cycles, 240LL * 321 + 10) << r.output;
+  EXPECT_NE(r.output.find(" cycles a frame, 15845 fragments ("), std::string::npos) << r.output;
+  r = run_cli("board check " + scene + " --board icebreaker");
+  EXPECT_NE(r.output.find("compact top"), std::string::npos) << r.output;
+  // The compact top has no smoother: a configuration that smooths is refused for it, by name.
+  r = run_cli("board check " + scene + " --config " WATKINS_SOURCE_DIR
+              "/scenes/sized/voxel_smoothed_64.gouraud.json --top compact");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("the compact top has no smoother"), std::string::npos) << r.output;
+}
+
 TEST(CliBoard, RefusesOtherSizesAndOptions) {
   ScratchDir dir;
   const std::string scene = WATKINS_SOURCE_DIR "/scenes/default.json";
@@ -56,7 +84,7 @@ TEST(CliBoard, RefusesOtherSizesAndOptions) {
   r = run_cli("board check " + odd);
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("screen.height 200"), std::string::npos) << r.output;
-  for (const char* bad : {"--slots 3", "--slots 0", "--doubling 3", "--board icestick"}) {
+  for (const char* bad : {"--slots 3", "--slots 0", "--doubling 3", "--board icestick", "--top tiny"}) {
     r = run_cli("board check " + scene + " " + bad);
     EXPECT_EQ(r.exit_code, 2) << bad << ": " << r.output;
     EXPECT_NE(r.output.find(std::string(bad).substr(0, std::string(bad).find(' '))), std::string::npos) << r.output;
