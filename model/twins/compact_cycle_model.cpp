@@ -76,6 +76,7 @@ CyclePrediction predict_compact_cycles(const Frame& frame, const Config& cfg, co
   std::array<bool, rtl_timing::FragQueueDepth> q_eol{};
   std::size_t next_record = 0, next_item = 0;
   bool eof_taken = false;
+  long long offered_at = 0;  // the cycle the head beat is offered from (the edge source's pace)
   const std::size_t records = frame.edges.size();
   const long long frame_pixels = static_cast<long long>(frame.width) * frame.height;
 
@@ -105,7 +106,7 @@ CyclePrediction predict_compact_cycles(const Frame& frame, const Config& cfg, co
     const bool q_push = pins.frag_valid && q_ready;
     const bool former_seg_ready = pins.seg_ready;
     in.start = t == 0;
-    in.edge_valid = !eof_taken;
+    in.edge_valid = !eof_taken && t >= offered_at;
     in.edge_eof = next_record == records;
     if (!in.edge_eof) in.edge = frame.edges[next_record];
     in.out_ready = former.edge_ready(former_seg_ready);
@@ -116,6 +117,7 @@ CyclePrediction predict_compact_cycles(const Frame& frame, const Config& cfg, co
     if (in.edge_valid && ae.edge_ready) {
       if (in.edge_eof) eof_taken = true;
       else ++next_record;
+      offered_at = std::max(offered_at + opt.edge_interval, t + opt.edge_gap);
       last_progress = t;
     }
     list.tick(in);

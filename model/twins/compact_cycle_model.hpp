@@ -1,6 +1,7 @@
 // Cycle model of watkins_top built with Compact = 1 (docs/reference/compact.md): the four compact
 // blocks' cycle twins (compact_*_timing.hpp) composed with the top's glue clock by clock: the
-// edge source offering records back to back, compact_active_edge_list, compact_segment_former
+// edge source offering records at its pace (CycleOptions: back to back, or the iCEBreaker's
+// SPRAM frame player's), compact_active_edge_list, compact_segment_former
 // straight into compact_segment_interpolator (no segment skid: the interpolator's seg_ready_o is
 // a flop), the fragment queue (stream_fifo, FragQueueDepth), compact_scanline_buffer and the
 // pixel skid (stream_skid), pixel_ready_i from the consumer. Each twin is the one its unit bench

@@ -117,7 +117,8 @@ CyclePrediction predict_cycles(const Frame& frame, const Config& cfg, const Cycl
   // Exact: the pixel path is clocked (the scanline buffer's pixel register, the smoother, the
   // pixel skid, the consumer's ready) and every cycle is run. Otherwise pixel_ready_i is high,
   // so the skid never fills and a smoothed frame's output follows from its input in closed form.
-  const bool exact = opt.pixel_ready != nullptr || opt.take_cycles != nullptr;
+  const bool paced = opt.edge_interval > 1 || opt.edge_gap > 1;
+  const bool exact = opt.pixel_ready != nullptr || opt.take_cycles != nullptr || paced;
   AlwaysReady always;
   PixelReady& consumer = opt.pixel_ready ? *opt.pixel_ready : always;
   if (frame.width < 1 || frame.height < 1)  // the top asserts a_frame_size: no frame to time
@@ -144,6 +145,7 @@ CyclePrediction predict_cycles(const Frame& frame, const Config& cfg, const Cycl
   bool out_done_q = false, inc_done_q = false, eol_sent_q = false;
   std::size_t next_record = 0;
   bool eof_taken = false;
+  long long offered_at = 0;  // the cycle the head beat is offered from (the edge source's pace)
   bool st_valid = false, st_retire = false;  // the edge_incrementer's output (st_valid, st_retire)
   bool ord1_q = false, ord2_q = false, ord3_q = false;  // the sorted insertion's three stages
   bool swap_q = false;                       // the swap, decided a cycle before it acts
@@ -274,7 +276,7 @@ CyclePrediction predict_cycles(const Frame& frame, const Config& cfg, const Cycl
     const bool inc_fire = have_edge && !inc_done_q;  // the incrementer is always ready
     const bool advance = have_edge && (out_done_q || ae_fire) && (inc_done_q || inc_fire);
     // active-edge list input
-    const bool edge_valid = !eof_taken;
+    const bool edge_valid = !eof_taken && t >= offered_at;
     const bool head_eof = next_record == records;
     const int y0 = head_eof ? 0 : st.record_y0[next_record];
     const bool ins_step = st_valid && !st_retire;
@@ -433,6 +435,7 @@ CyclePrediction predict_cycles(const Frame& frame, const Config& cfg, const Cycl
     if (edge_valid && edge_ready) {
       if (head_eof) eof_taken = true;
       else ++next_record;
+      offered_at = std::max(offered_at + opt.edge_interval, t + opt.edge_gap);
       last_progress = t;
     }
     if (ins_valid) ++cnt_fill;

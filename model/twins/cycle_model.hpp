@@ -76,6 +76,13 @@ struct CycleOptions {
   // offered (the benches' edge source: 1); negative: the clears are over (a frame after another,
   // or long after reset). The pipelined top has no clears: ignored.
   long long after_reset = -1;
+  // The edge source's pace (a board's frame player): beat 0 (a record or the EOF beat) is offered
+  // from cycle 0, and beat k + 1 from cycle max(O_k + edge_interval, T_k + edge_gap) on, O_k the
+  // cycle beat k was first offered and T_k the cycle it was taken; each is held until taken. 1 and
+  // 1: back to back, a beat every clock the top takes one (the benches' source, the ULX3S's frame
+  // player). The iCEBreaker's SPRAM frame player: ceil(EdgeBits / 64) and 2.
+  int edge_interval = 1;
+  int edge_gap = 1;
 };
 
 // Predicts the frame's cycles on watkins_top with Phong = (frame.shading == Phong), sparse_i as
