@@ -7,8 +7,10 @@
 
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <random>
 #include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -32,6 +34,27 @@ void reset_stream(Harness<V>& h, StreamPorts p) {
   h.reset();
 }
 
+// One item on the input ports (the caller set its data), the output always taken: the clocks,
+// counted from this call, in which it is taken and in which its result is first offered (-1 when
+// that does not happen within limit clocks). The input's valid falls after the take.
+template <class V>
+std::pair<int, int> take_and_offer(Harness<V>& h, StreamPorts p, int limit) {
+  p.in_valid = 1;
+  p.out_ready = 1;
+  int taken = -1, offered = -1;
+  for (int c = 0; c < limit && offered < 0; ++c) {
+    h.dut.eval();
+    if (p.out_valid) offered = c;
+    const bool take = p.in_valid && p.in_ready;
+    h.tick();
+    if (take) {
+      taken = c;
+      p.in_valid = 0;
+    }
+  }
+  return {taken, offered};
+}
+
 // Item: what the scoreboard holds for one expected output (the model's output, or what the
 // bench needs to compute it). The counters run over every run() of the bench.
 template <class Item>
@@ -45,6 +68,9 @@ struct StreamBench {
   std::uint64_t stuck_cycles = 100000;  // watchdog: cycles without any transfer
   int report_limit = 8;            // mismatches reported in full
   bool until_expected = false;     // end when the scoreboard empties, inputs left or not
+  // Called every clock with the ports driven and the unit evaluated, just before the edge (a
+  // cycle twin's comparison and step); empty: nothing.
+  std::function<void()> on_clock;
 
   StreamBench(std::mt19937_64& rng, int gap_pct, int bp_pct) : gaps{rng, gap_pct}, bp{rng, bp_pct} {}
 
@@ -80,6 +106,7 @@ struct StreamBench {
         ++checked;
         moved = h.cycles;
       }
+      if (on_clock) on_clock();
       h.tick();
       if (in_fire) {
         taken(expect);
