@@ -17,6 +17,7 @@
 #include "board_build.hpp"
 #include "board_image.hpp"
 #include "cycle_model.hpp"
+#include "flash_image.hpp"
 #include "fpga_flow.hpp"
 #include "config_file.hpp"
 #include "options.hpp"
@@ -174,9 +175,8 @@ int run_check(const CheckArgs& a) {
 }
 
 // The smallest power of two that holds `words`: at least 512 on the ULX3S (one block RAM deep);
-// at least 16 on the iCEBreaker, where yosys builds a bank that shallow of logic holding the
-// scene's constant words, which the logic it feeds folds in: one triangle (tests/board/tiny.json)
-// takes 2,891 of the UP5K's 5,280 logic cells with a 16-word bank and 5,630 with a 256-word one.
+// at least 16 on the iCEBreaker, whose bank is in the SPRAMs and copied from the flash after
+// configuration, 128 clocks a SPRAM word (flash_image.hpp): a small bank starts the video sooner.
 int bank_words_for(int words, const std::string& board) {
   int n = board_of(board) == board::Board::Icebreaker ? 16 : 512;
   while (n < words) n *= 2;
@@ -245,6 +245,7 @@ int run_build(const BuildArgs& a) {
   job.bank_words = bank_words_for(static_cast<int>(bank.words.size()), a.target.board);
   job.bank_file = (fs::path(job.work) / "bank0.hex").string();
   board::write_readmemh_file(job.bank_file, bank);
+  if (ice40) job.flash_scene = board::flash_image(bank, job.bank_words);
   std::printf("bank          %zu words of %d bits in %d (%s)\n", bank.words.size(), bank.word_bits, job.bank_words,
               job.bank_file.c_str());
   std::fflush(stdout);

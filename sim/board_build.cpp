@@ -5,8 +5,12 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 #include <stdexcept>
+
+#include "flash_image.hpp"
 
 namespace watkins::board_command {
 
@@ -56,7 +60,10 @@ std::vector<std::pair<std::string, std::string>> board_top_parameters(const Bits
   p.emplace_back("Doubling", std::to_string(job.doubling));
   p.emplace_back("LineSlots", std::to_string(job.line_slots));
   p.emplace_back("BankWords", std::to_string(job.bank_words));
-  p.emplace_back("BankFile", "\"" + job.bank_file + "\"");
+  if (job.board == "icebreaker")
+    p.emplace_back("FlashAddress", std::to_string(board::SpramBank::FlashAddress));
+  else
+    p.emplace_back("BankFile", "\"" + job.bank_file + "\"");
   return p;
 }
 
@@ -103,7 +110,7 @@ BitstreamResult build_bitstream(const BitstreamJob& job) {
   p.freq_mhz = 0;
   const fs::path pins = rtl / "board" / (std::string(b.top) + b.pin_ext);
   const std::string config = ecp5 ? "ulx3s.config" : "icebreaker.asc";
-  const std::string bit = ecp5 ? "ulx3s.bit" : "icebreaker.bin";
+  const std::string bit = ecp5 ? "ulx3s.bit" : "icebreaker_bitstream.bin";
   p.extra = {b.pins, fs::relative(pins, work).string(), ecp5 ? "--textcfg" : "--asc", config};
   p.timeout_s = job.timeout_s;
   p.netlist_top = b.top;
@@ -127,6 +134,19 @@ BitstreamResult build_bitstream(const BitstreamJob& job) {
     return r;
   }
   r.bit = (work / bit).string();
+  if (!ecp5) {
+    // The flash's image: the bitstream, then the scene bank at its address.
+    std::ifstream in(work / bit, std::ios::binary);
+    const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::vector<std::uint8_t> flash = board::flash_with_scene(bytes, job.flash_scene);
+    r.bit = (work / "icebreaker.bin").string();
+    std::ofstream out(r.bit, std::ios::binary);
+    out.write(reinterpret_cast<const char*>(flash.data()), static_cast<std::streamsize>(flash.size()));
+    if (!out) {
+      r.result = "failed: cannot write " + r.bit;
+      return r;
+    }
+  }
   bool met = true;
   for (const flow::ClockFmax& c : r.nextpnr.clocks) met &= c.achieved >= c.constraint;
   r.ok = met;

@@ -81,11 +81,14 @@ BoardTiming board_timing(Board board) {
     t.ticks_per_pixel = t.ticks_per_pipe = 1;
     t.sync_stages = t.count_stages = 0;
     t.ticks_per_us = 25.125;
+    t.bank_read_bits = 64;
   }
   return t;
 }
 
 int start_to_first_beat(const Config& cfg) { return 11 + (1 << id_bits(cfg.max_materials)); }
+
+int spram_start_to_first_beat(const Config& cfg, int parts) { return 10 + (1 << id_bits(cfg.max_materials)) + parts; }
 
 double BeamSchedule::budget_per_line() const {
   return static_cast<double>(timing.doubling) * HTotal * timing.ticks_per_pixel / timing.ticks_per_pipe;
@@ -107,7 +110,13 @@ BeamSchedule beam_schedule(const Frame& frame, const Config& cfg, const BoardTim
   if (frame.height != height)
     throw std::invalid_argument("board: screen height " + std::to_string(frame.height) + " (doubling " +
                                 std::to_string(t.doubling) + " shows " + std::to_string(height) + ")");
-  if (t.start_to_first_beat < 0) t.start_to_first_beat = start_to_first_beat(cfg);
+  if (t.bank_read_bits < 0) throw std::invalid_argument("board: bank read bits " + std::to_string(t.bank_read_bits));
+  // A record's reads from the bank: its pace into the top.
+  const int parts = t.bank_read_bits > 0
+                        ? (cfg.edge_record_bits(frame.shading) + t.bank_read_bits - 1) / t.bank_read_bits
+                        : 0;
+  if (t.start_to_first_beat < 0)
+    t.start_to_first_beat = parts > 0 ? spram_start_to_first_beat(cfg, parts) : start_to_first_beat(cfg);
 
   const Video video(t.doubling, t.video_start);
   BeamSchedule s;
@@ -125,6 +134,10 @@ BeamSchedule beam_schedule(const Frame& frame, const Config& cfg, const BoardTim
     opt.output = PixelOutput::FullFrame;
     opt.max_active_edges = cfg.max_active_edges;
     opt.pixel_ready = &ready;
+    if (parts > 0) {
+      opt.edge_interval = parts;
+      opt.edge_gap = 2;
+    }
     takes.clear();
     opt.take_cycles = &takes;
     const CyclePrediction c = predict_cycles(frame, cfg, opt);

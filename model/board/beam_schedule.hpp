@@ -49,19 +49,28 @@ struct BoardTiming {
   int sync_stages = 2;         // flip-flops of toggle_sync (the frame request)
   int count_stages = 3;        // gray_sync: two flip-flops and the binary register (the line counts)
   int line_count_bits = 12;    // LineCountBits: the counts compared as signed differences
-  // frame_player's clocks from the start pulse to the first edge beat offered; -1: its
-  // contract's 11 + 2^MaterialIdBits of the configuration.
+  // The scene bank's read width: 0, a whole record a read (the ULX3S's block RAM: frame_player
+  // offers the records back to back); 64, the iCEBreaker's SPRAMs (spram_frame_player: a record in
+  // Parts = ceil(EdgeBits / 64) reads, at the pace CycleOptions::edge_interval = Parts,
+  // edge_gap = 2).
+  int bank_read_bits = 0;
+  // The frame player's clocks from the start pulse to the first edge beat offered; -1: its
+  // contract's, 11 + 2^MaterialIdBits of the configuration (frame_player), or 10 +
+  // 2^MaterialIdBits + Parts with bank_read_bits (spram_frame_player).
   int start_to_first_beat = -1;
   int frames = 3;              // K rendered frames simulated (at least 3)
   // The pixel edge that samples the video's first state (0, 0): the pixel domain's reset leaves
-  // its two-flip-flop synchronizer at edge 2 on the board top (every video event 2 clocks later).
+  // its two-flip-flop synchronizer at edge 2 on the ULX3S top (every video event 2 clocks later);
+  // on the iCEBreaker the video starts after the scene's copy from the flash
+  // (icebreaker_video_start, flash_image.hpp), which the slack does not depend on.
   int video_start = 2;
   double ticks_per_us = 1260;  // the tick's rate, for reporting the clocks in MHz
 };
 
 // A board's timing (its clocks and synchronizers) at the defaults above for the rest: the ULX3S
 // is BoardTiming{}; the iCEBreaker runs one 25.125 MHz clock (ticks_per_pixel = ticks_per_pipe =
-// 1, sync_stages = count_stages = 0, ticks_per_us 25.125).
+// 1, sync_stages = count_stages = 0, ticks_per_us 25.125) and reads its bank from the SPRAMs
+// (bank_read_bits 64).
 BoardTiming board_timing(Board board);
 
 // The first edge of a clock of `period` ticks (rising at tick 0) strictly after tick `tick`:
@@ -74,6 +83,8 @@ long long visible_from(long long tick, long long period, int stages);
 long long releases_seen(const BoardTiming& t, long long edge);
 // frame_player's StartToFirstBeat at a configuration: 11 + 2^MaterialIdBits.
 int start_to_first_beat(const Config& cfg);
+// spram_frame_player's: 10 + 2^MaterialIdBits + parts, a record in `parts` reads.
+int spram_start_to_first_beat(const Config& cfg, int parts);
 
 struct LineSlack {
   int frame = 0, y = 0;

@@ -2,10 +2,15 @@
 // replays the scene bank once per video frame and races the beam into a LineSlots-line buffer
 // that the 640 x 480 at 60 Hz output reads, with no frame buffer, on the 12-bit DVI Pmod (PMOD
 // 1A/1B: parallel RGB 4:4:4 into the Pmod's TFP410, which serializes it; no TMDS in the FPGA).
-// One clock, 25.125 MHz (icebreaker_pll), runs everything: video timing, frame player, scene bank,
-// watkins_top, both line-buffer ports and the deadline check, so no signal crosses a clock domain
-// (no Gray-code or toggle synchronizers: the line counts are compared where they are kept). Its
-// reset is released two clocks after the PLL locks with the button (btn_n, low when pressed) up.
+// One clock, 25.125 MHz (icebreaker_pll), runs everything: flash loader, video timing, frame
+// player, scene bank, watkins_top, both line-buffer ports and the deadline check, so no signal
+// crosses a clock domain (no Gray-code or toggle synchronizers: the line counts are compared where
+// they are kept). The scene bank is the UP5K's four SPRAMs (spram_scene_bank), which nothing
+// initializes: after reset flash_loader copies it from the board's SPI flash (byte FlashAddress
+// on, where `watkins board build` puts it after the bitstream), and the rest of the board runs
+// from the clock after the copy. Reset: released two clocks after the PLL locks with the button
+// (btn_n, low when pressed) up, which starts the copy; the rest's reset a register, released
+// LoadClocks + 1 clocks later (flash_loader's contract).
 // Video side latency: the (h, v) state of a clock addresses the line buffer; its pixel (the
 // buffer's read register) and that state's de/hsync/vsync, delayed one register to match, are the
 // Pmod's outputs' D inputs on the next clock, and the SB_IO output registers put them on the pins
@@ -15,8 +20,8 @@
 // Parameters: every watkins_top parameter, passed through with watkins_top's defaults (so
 // `watkins_gen_pkg --params F --shading S` -G lists apply here too; the UP5K takes the compact
 // top, Compact = 1 with Smoothing = 0, docs/reference/compact.md); Doubling D (1: the frame is 640 x 480; 2: 320 x 240, each
-// pixel and line shown twice); LineSlots; BankWords (the one scene bank's words); BankFile (its
-// $readmemh file, `watkins board image`).
+// pixel and line shown twice); LineSlots; BankWords (the scene bank's words, each ceil(EdgeBits /
+// 64) SPRAM words); FlashAddress (the bank's first byte in the flash).
 
 module icebreaker_top #(
   parameter int unsigned MaxActiveEdges = watkins_pkg::MaxActiveEdges,
@@ -40,7 +45,7 @@ module icebreaker_top #(
   parameter int unsigned Doubling       = 2,    // 1 or 2
   parameter int unsigned LineSlots      = 2,    // line-buffer lines, a power of two
   parameter int unsigned BankWords      = 512,  // the scene bank's words, a power of two
-  parameter              BankFile       = ""    // its $readmemh file
+  parameter int unsigned FlashAddress   = 'h20000  // its first byte in the SPI flash
 ) (
   input  logic       clk_12mhz,  // the 12 MHz oscillator (pin 35)
   input  logic       btn_n,      // the user button, low when pressed: reset
@@ -52,7 +57,11 @@ module icebreaker_top #(
   output logic       dvi_de,
   output logic [3:0] dvi_r,
   output logic [3:0] dvi_g,
-  output logic [3:0] dvi_b
+  output logic [3:0] dvi_b,
+  output logic       flash_ss_n,  // the SPI flash (FLASH_SSB, FLASH_SCK, FLASH_IO0, FLASH_IO1)
+  output logic       flash_sck,
+  output logic       flash_mosi,
+  input  logic       flash_miso
 );
   localparam int unsigned XBits    = XIntBits + XFracBits;
   localparam int unsigned ZBits    = DepthIntBits + DepthFracBits;
@@ -64,7 +73,8 @@ module icebreaker_top #(
   localparam int unsigned CountBits    = 12;  // LineCountBits: w, r, s
   localparam int unsigned SlotBits     = $clog2(LineSlots);
   localparam int unsigned PixelXBits   = $clog2(MaxWidth);
-  localparam int unsigned BankAddrBits = $clog2(BankWords);
+  localparam int unsigned SpramAddrBits = 14;
+  localparam int unsigned Parts        = (EdgeBits + 63) / 64;  // SPRAM words a bank word
   localparam int unsigned MissedBits   = 16;
   localparam int unsigned PmodBits     = 12;  // 4 bits a channel, the top four of the pipeline's 8
 
@@ -81,9 +91,33 @@ module icebreaker_top #(
   logic run;  // the PLL is locked and the button is up
   assign run = locked && btn_n;
   (* async_reg = "true" *) logic [1:0] rst_q;
-  logic rst_n;
+  logic rst_load_n;  // the flash loader's reset
   always_ff @(posedge clk) rst_q <= {rst_q[0], run};
-  assign rst_n = rst_q[1];
+  assign rst_load_n = rst_q[1];
+
+  // ------------------------------------------------------------ the scene from the flash
+  logic                     load_done, bank_wr_en;
+  logic [1:0]               bank_wr_lane;
+  logic [SpramAddrBits-1:0] bank_wr_addr;
+  logic [15:0]              bank_wr_data;
+
+  flash_loader #(.Words(BankWords * Parts), .FlashAddress(FlashAddress)) u_flash_loader (
+    .clk_i     (clk),
+    .rst_ni    (rst_load_n),
+    .spi_ss_no (flash_ss_n),
+    .spi_sck_o (flash_sck),
+    .spi_mosi_o(flash_mosi),
+    .spi_miso_i(flash_miso),
+    .wr_en_o   (bank_wr_en),
+    .wr_lane_o (bank_wr_lane),
+    .wr_addr_o (bank_wr_addr),
+    .wr_data_o (bank_wr_data),
+    .done_o    (load_done)
+  );
+
+  // The rest of the board runs once the bank holds the scene.
+  logic rst_n;
+  always_ff @(posedge clk) rst_n <= rst_load_n && load_done;
 
   // ------------------------------------------------------------ video timing, frame request, line
   // counts, the deadline
@@ -155,8 +189,8 @@ module icebreaker_top #(
 
   // ------------------------------------------------------------ frame player, scene bank, pipeline
   logic                     rd_en;
-  logic [BankAddrBits-1:0]  rd_addr;
-  logic [EdgeBits-1:0]      rd_data;
+  logic [SpramAddrBits-1:0] rd_addr;
+  logic [63:0]              rd_data;
   logic [LineBits-1:0]      width, height;
   watkins_pkg::rgb_t        background;
   logic                     tie_submission, eq2;
@@ -180,27 +214,24 @@ module icebreaker_top #(
   logic                     pixel_covered;
   logic [LineBits-1:0]      pixel_y;
   logic                     overflow /*verilator public_flat_rd*/;
-  logic                     bank_rd_bank;
   /* verilator lint_on UNUSEDSIGNAL */
   logic                     pixel_fire, frame_done;
   logic                     line_done /*verilator public_flat_rd*/;  // this clock takes a line's last pixel
   logic                     frame_begin /*verilator public_flat_rd*/;
 
-  // One bank, no host link: the scene the bitstream was built with.
-  assign bank_rd_bank = 1'b0;
-  scene_bank #(.Words(BankWords), .Bits(EdgeBits), .Banks(1), .File(BankFile)) u_scene_bank (
+  // One bank, no host link: the scene the flash holds.
+  spram_scene_bank u_scene_bank (
     .clk_i    (clk),
     .rd_en_i  (rd_en),
-    .rd_bank_i(bank_rd_bank),
     .rd_addr_i(rd_addr),
     .rd_data_o(rd_data),
-    .wr_en_i  (1'b0),
-    .wr_bank_i(1'b0),
-    .wr_addr_i('0),
-    .wr_data_i('0)
+    .wr_en_i  (bank_wr_en),
+    .wr_lane_i(bank_wr_lane),
+    .wr_addr_i(bank_wr_addr),
+    .wr_data_i(bank_wr_data)
   );
 
-  frame_player #(.BankWords(BankWords), .EdgeBits(EdgeBits), .MaterialIdBits(MaterialIdBits)) u_frame_player (
+  spram_frame_player #(.BankWords(BankWords), .EdgeBits(EdgeBits), .MaterialIdBits(MaterialIdBits)) u_frame_player (
     .clk_i           (clk),
     .rst_ni          (rst_n),
     .start_i         (start_pulse),

@@ -6,6 +6,9 @@
 #include <stdexcept>
 #include <vector>
 
+#include "flash_image.hpp"
+#include "spi_flash.hpp"
+
 #include "Vicebreaker_top.h"
 #include "Vicebreaker_top___024root.h"
 #include "Vicebreaker_top_pipelined.h"
@@ -19,11 +22,7 @@ template <class Model>
 IcebreakerRun run_top(std::unique_ptr<VerilatedContext>& context, const IcebreakerOptions& opt) {
   const auto t0 = std::chrono::steady_clock::now();
   context = std::make_unique<VerilatedContext>();
-  std::vector<std::string> args{"icebreaker_bench"};
-  if (!opt.bank_file.empty()) args.push_back("+watkins_bank=" + opt.bank_file);
-  std::vector<const char*> argv;
-  for (const std::string& a : args) argv.push_back(a.c_str());
-  context->commandArgs(static_cast<int>(argv.size()), argv.data());
+  SpiFlash flash(opt.flash, board::SpramBank::FlashAddress);
   auto dut = std::make_unique<Model>(context.get());
   auto& root = *dut->rootp;
   auto& clk = root.icebreaker_top__DOT__u_pll__DOT__u_sb_pll40_pad__DOT__clk;
@@ -34,6 +33,7 @@ IcebreakerRun run_top(std::unique_ptr<VerilatedContext>& context, const Icebreak
   root.icebreaker_top__DOT__u_pll__DOT__u_sb_pll40_pad__DOT__lock = 1;
   dut->btn_n = 1;
   dut->clk_12mhz = 0;
+  dut->flash_miso = 0;
   dut->eval();
 
   const long long frames = opt.video_frames;
@@ -54,6 +54,9 @@ IcebreakerRun run_top(std::unique_ptr<VerilatedContext>& context, const Icebreak
     clk = 1;
     dut->eval();
     ++r.evals;
+    // The flash sees the pins the edge set and answers before the next one.
+    flash.pins(dut->flash_ss_n, dut->flash_sck, dut->flash_mosi);
+    dut->flash_miso = flash.miso();
     const bool clock_low = dut->dvi_clk == 0;
     const bool request = root.icebreaker_top__DOT__request_toggle_q;
     if (request != last_request) r.request_pixel_clocks.push_back(m);
@@ -94,6 +97,8 @@ IcebreakerRun run_top(std::unique_ptr<VerilatedContext>& context, const Icebreak
     }
     if (context->gotFinish()) throw std::runtime_error("icebreaker bench: the RTL called $finish");
   }
+  out.flash_bits = flash.bits_read();
+  out.flash_bad_commands = flash.bad_commands();
   r.missed_count = root.icebreaker_top__DOT__missed_count_q;
   r.overflow = root.icebreaker_top__DOT__overflow;
   dut->final();

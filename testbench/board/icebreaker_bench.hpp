@@ -1,6 +1,7 @@
-// The iCEBreaker bench: rtl/board/icebreaker_top Verilated (--cc, the PLL and the I/O cells as the
-// stand-ins of testbench/board/primitives/) twice, each at the default scene's sized configuration,
-// Doubling 2, the scene bank from +watkins_bank=FILE: Vicebreaker_top built compact
+// The iCEBreaker bench: rtl/board/icebreaker_top Verilated (--cc, the PLL, the I/O cells and the
+// SPRAMs as the stand-ins of testbench/board/primitives/) twice, each at the default scene's sized
+// configuration, Doubling 2, the scene bank copied from the SPI flash model (spi_flash.hpp) holding
+// the options' flash image at SpramBank::FlashAddress: Vicebreaker_top built compact
 // (tests/configs/compact_default.gouraud.json: Compact = 1, what the UP5K holds) and
 // Vicebreaker_top_pipelined (scenes/sized/default.gouraud.json: the pipelined blocks, the same
 // board logic around another timing). One clock (docs/reference/board.md, "iCEBreaker"):
@@ -16,8 +17,9 @@
 // domains (pixel_clocks = pipe_clocks).
 #pragma once
 
+#include <cstdint>
 #include <memory>
-#include <string>
+#include <vector>
 
 #include "board_bench.hpp"
 
@@ -28,13 +30,15 @@ namespace watkins::board_tb {
 enum class IcebreakerTop { Compact, Pipelined };
 
 struct IcebreakerOptions {
-  std::string bank_file;  // +watkins_bank=FILE: the scene bank's words
-  int video_frames = 3;   // video frames from the first visible pixel on the pins
+  std::vector<std::uint8_t> flash;  // the flash's bytes from SpramBank::FlashAddress on (flash_image)
+  int video_frames = 3;             // video frames from the first visible pixel on the pins
 };
 
 struct IcebreakerRun {
   BoardRun run;             // video, frames, requests, starts, begins, lines, missed (clocks as above)
   long long dvi_clk_bad = 0;  // clocks whose dvi_clk was not low after the rising edge and high after the falling
+  long long flash_bits = 0;   // bits the flash put out
+  long long flash_bad_commands = 0;  // commands other than Read Data and Release Power-down
 };
 
 class IcebreakerBench {

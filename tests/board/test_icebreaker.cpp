@@ -2,26 +2,29 @@
 // compact (tests/configs/compact_default.gouraud.json, what the UP5K holds) and pipelined
 // (scenes/sized/default.gouraud.json: the same board logic around another timing): the default
 // scene at the sized configuration, 320 x 240 doubled to 640 x 480 at 60 Hz on the 12-bit DVI Pmod,
-// one 25.125 MHz clock. Two video frames after the
+// one 25.125 MHz clock, the scene copied into the SPRAMs from the SPI flash model holding the bank
+// as `watkins board build` writes it (the whole bank read, no other command). Two video frames after the
 // first request equal the model's image, each 8-bit level truncated to its top four bits as the
 // Pmod shows it, bit for bit, and each other; the pins follow the 800 x 525 timing on every clock
 // and dvi_clk is the clock inverted; no line misses its deadline. A scene built to miss
 // (tests/board/miss_doubled.json) shows missed lines, the same ones every frame, and the model's
 // pixels on every other line. Every run equals the beam schedule of the iCEBreaker's timing
-// (board::board_timing(Board::Icebreaker), the cycle model of the top as built) line for line:
+// (board::board_timing(Board::Icebreaker): the cycle model of the top as built, the records at
+// the SPRAM frame player's pace, the video from the clock after the flash's copy) line for line:
 // requests, start pulses, begins, every line's completion clock and the missed lines.
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <set>
 #include <string>
-
-#include <unistd.h>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "beam_schedule.hpp"
 #include "board_image.hpp"
 #include "config_file.hpp"
+#include "flash_image.hpp"
 #include "icebreaker_bench.hpp"
 #include "prepare.hpp"
 #include "scene.hpp"
@@ -55,18 +58,18 @@ Scene prepare_scene(const std::string& path, IcebreakerTop top) {
   return s;
 }
 
-std::string write_bank(const Scene& s, const std::string& name) {
-  const std::string path = std::string(WATKINS_BOARD_WORK_DIR) + "/" + name;
-  const std::string tmp = path + ".tmp" + std::to_string(::getpid());
-  board::write_readmemh_file(tmp, board::bank_image(s.frame, s.frame.config, BankWords));
-  EXPECT_EQ(std::rename(tmp.c_str(), path.c_str()), 0) << path;
-  return path;
+// The flash's bytes at the scene's address: the bank, as `watkins board build` writes it.
+std::vector<std::uint8_t> flash_of(const Scene& s) {
+  return board::flash_image(board::bank_image(s.frame, s.frame.config, BankWords), BankWords);
 }
+
+int parts_of(const Scene& s) { return board::spram_parts(s.frame.config.edge_record_bits(s.frame.shading)); }
 
 board::BeamSchedule schedule(const Scene& s) {
   board::BoardTiming t = board::board_timing(board::Board::Icebreaker);
   t.doubling = Doubling;
   t.line_slots = LineSlots;
+  t.video_start = board::icebreaker_video_start(BankWords, parts_of(s));
   return board::beam_schedule(s.frame, s.frame.config, t);
 }
 
@@ -130,10 +133,13 @@ void default_scene_frame_by_frame(IcebreakerTop top) {
   ASSERT_EQ(s.frame.width * Doubling, VideoWidth);
   IcebreakerBench bench(top);
   IcebreakerOptions opt;
-  opt.bank_file = write_bank(s, std::string("icebreaker_default_bank_") + (top == IcebreakerTop::Compact ? "compact" : "pipelined") + ".mem");
+  opt.flash = flash_of(s);
   const IcebreakerRun out = bench.run(opt);
   const BoardRun& r = out.run;
   std::printf("icebreaker bench: %s\n", summary(r).c_str());
+  // The loader read the whole bank from the flash (and nothing more) before the video started.
+  EXPECT_EQ(out.flash_bits, static_cast<long long>(opt.flash.size()) * 8);
+  EXPECT_EQ(out.flash_bad_commands, 0);
 
   ASSERT_EQ(r.frames.size(), 3u);
   ASSERT_GE(r.request_pixel_clocks.size(), 2u);
@@ -162,7 +168,7 @@ void scene_that_misses_its_deadline(IcebreakerTop top) {
   const Scene s = prepare_scene(WATKINS_SOURCE_DIR "/tests/board/miss_doubled.json", top);
   IcebreakerBench bench(top);
   IcebreakerOptions opt;
-  opt.bank_file = write_bank(s, std::string("icebreaker_miss_bank_") + (top == IcebreakerTop::Compact ? "compact" : "pipelined") + ".mem");
+  opt.flash = flash_of(s);
   const IcebreakerRun out = bench.run(opt);
   const BoardRun& r = out.run;
   std::printf("icebreaker bench: %s; %d lines missed\n", summary(r).c_str(), r.missed_count);

@@ -30,13 +30,13 @@ grep -q "WATKINS_ECP5" "$dir/edalize_yosys_procs.tcl" || { echo "fusesoc_core: W
 grep -q -- "--lpf .*ulx3s_top.lpf" "$dir/Makefile" || { echo "fusesoc_core: nextpnr-ecp5 does not get the board's pins"; exit 1; }
 grep -q "ecppack" "$dir/Makefile" || { echo "fusesoc_core: no ecppack step"; exit 1; }
 # The iCEBreaker target: edalize's icestorm flow set up for icebreaker_top (compact) with the
-# board's pins and the bank file reaching yosys, nextpnr-ice40 for the UP5K in its SG48 package,
-# icepack.
-fusesoc --cores-root "$src" run --build-root "$work/icebreaker" --setup --target icebreaker "$core" --BankFile="$work/bank.hex"
+# board's pins and the scene's flash address reaching yosys, nextpnr-ice40 for the UP5K in its
+# SG48 package, icepack.
+fusesoc --cores-root "$src" run --build-root "$work/icebreaker" --setup --target icebreaker "$core" --FlashAddress=131072
 dir=$(ls -d "$work"/icebreaker/*/icebreaker-icestorm)
 grep -q "synth_ice40 -dsp *-top" "$dir/edalize_yosys_procs.tcl" || { echo "fusesoc_core: icebreaker target does not run synth_ice40 -dsp"; exit 1; }
-grep -q "chparam -set BankFile {\"$work/bank.hex\"} icebreaker_top" "$dir/edalize_yosys_procs.tcl" ||
-  { echo "fusesoc_core: --BankFile did not reach icebreaker_top"; exit 1; }
+grep -q "chparam -set FlashAddress 131072 icebreaker_top" "$dir/edalize_yosys_procs.tcl" ||
+  { echo "fusesoc_core: --FlashAddress did not reach icebreaker_top"; exit 1; }
 grep -q "chparam -set Compact 1 icebreaker_top" "$dir/edalize_yosys_procs.tcl" ||
   { echo "fusesoc_core: Compact=1 did not reach icebreaker_top"; exit 1; }
 grep -q -- "--up5k --package sg48 --pcf .*icebreaker_top.pcf" "$dir/Makefile" ||
