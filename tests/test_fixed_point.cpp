@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "fixed_point.hpp"
+#include "span_reciprocal.hpp"
 
 using namespace watkins;
 
@@ -36,3 +37,17 @@ TEST(FixedPoint, WrapAndSaturateBehaveLikeRegisters) {
   EXPECT_EQ(msb_index(1), 0);
   EXPECT_EQ(msb_index(0x80000000ull), 31);
 }
+
+// The span reciprocal's double division gives the integer division's quotient for every
+// normalized mantissa of the widths it is used at (the span's 24 bits, eq. (2)'s 16) and at the
+// widest width it is taken for (26 bits: 2^25 mantissas).
+TEST(FixedPoint, ReciprocalByDoubleDivisionIsTheIntegerQuotient) {
+  for (const int r : {16, 24, 26}) {
+    const i64 dividend = i64{1} << (2 * r - 1);
+    long long wrong = 0;
+    for (i64 m = i64{1} << (r - 1); m < (i64{1} << r); ++m)
+      wrong += watkins::SpanReciprocal::quotient_via_double(r, m) != dividend / m;
+    EXPECT_EQ(wrong, 0) << r << " bits";
+  }
+}
+

@@ -139,6 +139,10 @@ class PixelPath {
     return ok;
   }
 
+  // Slot c's values whose shade-reading path (in_range<Readings::Shade>) needs no wrap or clamp.
+  i64 shade_lo(int c) const { return shade_lo_[static_cast<std::size_t>(c)]; }
+  i64 shade_hi(int c) const { return shade_hi_[static_cast<std::size_t>(c)]; }
+
   // The fragment's position, ids and depth: what the depth test needs.
   template <bool InRange = false>
   Fragment head(const SpanSetup& span, int x, const ChannelVector& value) const {

@@ -26,8 +26,18 @@ struct SpanReciprocal {
     r.p = msb_index(static_cast<std::uint64_t>(dx));
     const i64 m = r.p >= R - 1 ? (dx >> (r.p - (R - 1))) : (dx << ((R - 1) - r.p));
     static_assert(2 * fmt::RecipBits - 1 <= 62, "the dividend 2^(2R-1) is a 64-bit number");  // R <= 31 given
-    r.recip = (i64{1} << (2 * R - 1)) / m;
+    r.recip = R <= 26 ? quotient_via_double(R, m) : (i64{1} << (2 * R - 1)) / m;
     return r;
+  }
+
+  // floor(2^(2R-1) / m) for m in [2^(R-1), 2^R), R <= 26, by one double division: both operands
+  // are exact doubles, and the exact quotient q + r/m (r the remainder) is either the integer q
+  // or at least 1/m > 2^-R away from every integer, which is more than half an ulp of a double
+  // below 2^R (2^(R-54)) when R <= 26, so the correctly rounded double lies in [q, q + 1) and
+  // truncates to q (q = 2^R, at m = 2^(R-1), is exact). The integer division's value, in a
+  // fraction of its latency.
+  static i64 quotient_via_double(int R, i64 m) {
+    return static_cast<i64>(static_cast<double>(i64{1} << (2 * R - 1)) / static_cast<double>(m));
   }
 };
 

@@ -14,6 +14,7 @@
 #include "scan_lines.hpp"
 #include "shade_divider.hpp"
 #include "smoother.hpp"
+#include "span_reciprocal.hpp"
 
 namespace watkins {
 namespace {
@@ -123,9 +124,26 @@ struct GouraudSpan {
 // stores nothing. Each returns the fragments that won their pixel. Beside each, the end of a
 // line: keys [lo, hi) emptied. Built for AVX2 and AVX-512 beside the baseline x86-64 build
 // (whose spans take the scalar loop), chosen at run time (span_kernels).
+// What a fused span setup needs of the frame's formats: the X slot's fraction bits, the width,
+// and per slot Z, R, G, B its word (64 - bits: the wrap's shift; the step's saturation) and the
+// values whose readings need no clamp (PixelPath::in_range with the shade readings).
+struct GouraudSetupConsts {
+  int width = 0, fx = 0;
+  std::uint64_t wrap_shift[4] = {};
+  i64 step_hi[4] = {};
+  i64 read_lo[4] = {}, read_hi[4] = {};
+};
+// A span setup's outcome: the span drawn by the kernel, an empty span (no pixel centre), or the
+// general path (SegmentInterpolator::setup and PixelPath), which the values fall to whenever
+// they leave the fused setup's 64-bit bounds.
+enum class FusedSetup { Span, Empty, General };
+
 struct SpanKernels {
   long long (*draw)(const GouraudSpan&, const FrameLine::Row&) = nullptr;  // nullptr: the scalar loop
   void (*empty)(std::uint64_t* keys, int lo, int hi) = nullptr;
+  // SegmentInterpolator::setup, PixelPath::in_range<Shade> and FrameSetup::gouraud_span in one,
+  // the four slots side by side; fills x0, x1, poly, value and step. nullptr: no fused setup.
+  FusedSetup (*setup)(const Segment&, const GouraudSetupConsts&, GouraudSpan&) = nullptr;
 };
 
 void empty_keys(std::uint64_t* keys, int lo, int hi) {
@@ -194,6 +212,64 @@ __attribute__((target(WATKINS_AVX512))) void empty_keys_avx512(std::uint64_t* ke
     const int left = hi - x;
     _mm512_mask_storeu_epi64(keys + x, left >= 8 ? __mmask8(0xff) : static_cast<__mmask8>((1u << left) - 1), empty);
   }
+}
+
+// SegmentInterpolator::setup's 64-bit path for slots Z, R, G, B in the four lanes of one vector,
+// then PixelPath::in_range<Shade>: the same formulas, products and roundings, so the same words.
+// round_shift62(v, s) of a product |v| < 2^61 is (v + 2^(s-1)) >> s, the shift arithmetic
+// (flooring); wrap_signed64 is a left shift by 64 - bits and an arithmetic shift back. Whatever
+// the scalar path takes 128 bits or a range check for, this hands to the general path.
+__attribute__((target(WATKINS_AVX512))) FusedSetup gouraud_setup_avx512(const Segment& s, const GouraudSetupConsts& k,
+                                                                        GouraudSpan& g) {
+  const int fx = k.fx;
+  const i64 xe = s.e[fmt::ChanX], xf = s.f[fmt::ChanX];
+  const i64 centre = (i64{1} << fx) - 1 - (i64{1} << (fx - 1));  // first_centre_at_or_after's offset
+  const i64 x_start = std::max<i64>(floor_shift64(xe + centre, fx), 0);
+  const i64 x_end = std::max(std::min<i64>(floor_shift64(xf + centre, fx), k.width), x_start);
+  g.x0 = static_cast<int>(x_start), g.x1 = static_cast<int>(x_end), g.poly = s.poly;
+  if (x_end == x_start) return FusedSetup::Empty;
+  const SpanReciprocal r = SpanReciprocal::of(xf - xe);
+  constexpr int Small = 62 - std::max(fmt::RecipBits, fmt::AlphaBits) - 1;
+  constexpr i64 Limit = i64{1} << Small;
+  const i64 offset = x_start * (i64{1} << fx) + (i64{1} << (fx - 1)) - xe;
+  const int shift = r.p + fmt::RecipBits - fx;  // the step's rounding
+  if (offset >= Limit || shift < 1 || shift > 61 || x_end - x_start > (i64{1} << 21)) return FusedSetup::General;
+  const i64 alpha0 = std::min<i64>(round_shift64(offset * r.recip, r.p + fmt::RecipBits - fmt::AlphaBits),
+                                   i64{1} << fmt::AlphaBits);
+  const __m256i e = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(&s.e[fmt::ChanZ]));
+  const __m256i f = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(&s.f[fmt::ChanZ]));
+  const __m256i delta = _mm256_sub_epi64(f, e);
+  // Signed overflow of f - e: f and e of opposite signs and the difference's sign not f's.
+  const __m256i overflow = _mm256_and_si256(_mm256_xor_si256(f, e), _mm256_xor_si256(f, delta));
+  // -Limit < delta < Limit: delta + Limit - 1, unsigned, below 2 Limit - 1.
+  const __m256i biased = _mm256_add_epi64(delta, _mm256_set1_epi64x(Limit - 1));
+  const __mmask8 small = _mm256_cmplt_epu64_mask(biased, _mm256_set1_epi64x(2 * Limit - 1)) &
+                         _mm256_cmpge_epi64_mask(overflow, _mm256_setzero_si256());
+  if (small != 0xf) return FusedSetup::General;
+  const __m128i step_count = _mm_cvtsi32_si128(shift), alpha_count = _mm_cvtsi32_si128(fmt::AlphaBits);
+  const __m256i hi = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(k.step_hi));
+  __m256i step = _mm256_sra_epi64(
+      _mm256_add_epi64(_mm256_mullo_epi64(delta, _mm256_set1_epi64x(r.recip)), _mm256_set1_epi64x(i64{1} << (shift - 1))),
+      step_count);
+  step = _mm256_max_epi64(_mm256_min_epi64(step, hi), _mm256_sub_epi64(_mm256_set1_epi64x(-1), hi));
+  const __m256i wrap = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(k.wrap_shift));
+  const __m256i moved = _mm256_sra_epi64(_mm256_add_epi64(_mm256_mullo_epi64(delta, _mm256_set1_epi64x(alpha0)),
+                                                          _mm256_set1_epi64x(i64{1} << (fmt::AlphaBits - 1))),
+                                         alpha_count);
+  const __m256i value = _mm256_srav_epi64(_mm256_sllv_epi64(_mm256_add_epi64(e, moved), wrap), wrap);
+  // In range: the first and the last pixel's values inside the readings' unclamped ranges. The
+  // last is value + (n - 1) step in 64 bits: |step| < 2^41 and n <= 2^21 keep it from overflowing.
+  const __m256i step_biased = _mm256_add_epi64(step, _mm256_set1_epi64x(i64{1} << 41));
+  if (_mm256_cmplt_epu64_mask(step_biased, _mm256_set1_epi64x(i64{1} << 42)) != 0xf) return FusedSetup::General;
+  const __m256i last = _mm256_add_epi64(value, _mm256_mullo_epi64(_mm256_set1_epi64x(x_end - x_start - 1), step));
+  const __m256i lo = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(k.read_lo));
+  const __m256i span = _mm256_sub_epi64(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(k.read_hi)), lo);
+  const __mmask8 inside = _mm256_cmple_epu64_mask(_mm256_sub_epi64(value, lo), span) &
+                          _mm256_cmple_epu64_mask(_mm256_sub_epi64(last, lo), span);
+  if (inside != 0xf) return FusedSetup::General;
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(g.value), value);
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(g.step), step);
+  return FusedSetup::Span;
 }
 
 __attribute__((target("avx2"))) long long gouraud_span_avx2(const GouraudSpan& s, const FrameLine::Row& out) {
@@ -286,7 +362,7 @@ SpanKernels span_kernels(SpanPath path) {
   const bool avx512 = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
                       __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512bw") &&
                       __builtin_cpu_supports("avx512vbmi") && __builtin_cpu_supports("bmi2");
-  if (path != SpanPath::Avx2 && avx512) return SpanKernels{gouraud_span_avx512, empty_keys_avx512};
+  if (path != SpanPath::Avx2 && avx512) return SpanKernels{gouraud_span_avx512, empty_keys_avx512, gouraud_setup_avx512};
   if (__builtin_cpu_supports("avx2")) return SpanKernels{gouraud_span_avx2, empty_keys_avx2};
 #endif
   return k;
@@ -318,6 +394,10 @@ struct FrameSetup {
   PhongFrame phong;
   SpanKernels kernels;
   GouraudSpan readings;  // the kernel's shifts and halves (PixelPath's in-range readings)
+  // The fused span setup of the kernels, when the frame's readings have unclamped ranges
+  // (nullptr: every span takes SegmentInterpolator::setup), and its constants.
+  FusedSetup (*fused_setup)(const Segment&, const GouraudSetupConsts&, GouraudSpan&) = nullptr;
+  GouraudSetupConsts setup_consts;
   // One row of the background, uncovered: each line's row of the image starts as a copy.
   std::vector<std::uint8_t> background_rgb, background_covered;
   std::vector<int> background_owner;
@@ -330,6 +410,18 @@ struct FrameSetup {
       readings.shift[c] = shift;
       readings.half[c] = shift == 0 ? 0 : std::uint64_t{1} << (shift - 1);
     }
+    setup_consts.width = f.width;
+    setup_consts.fx = cf.x_frac();
+    bool ranges = true;
+    for (int c = 0; c < 4; ++c) {
+      const int bits = cf.bits[fmt::ChanZ + c];
+      setup_consts.wrap_shift[c] = static_cast<std::uint64_t>(64 - bits);
+      setup_consts.step_hi[c] = (i64{1} << (bits - 1)) - 1;
+      setup_consts.read_lo[c] = path.shade_lo(fmt::ChanZ + c);
+      setup_consts.read_hi[c] = path.shade_hi(fmt::ChanZ + c);
+      ranges &= setup_consts.read_lo[c] <= setup_consts.read_hi[c];
+    }
+    if (ranges && k.draw) fused_setup = k.setup;
   }
   GouraudSpan gouraud_span(const SpanSetup& span, std::uint64_t tie) const {
     GouraudSpan g = readings;
@@ -361,7 +453,21 @@ LineCounts draw_segments(const FrameSetup& fs, const std::vector<Segment>& segme
   LineCounts n;
   SpanSetup span;
   span.formats = formats;
+  constexpr bool Fused = P == Pipe::Gouraud && !Observed;
+  GouraudSpan fused = fs.readings;
   for (const Segment& s : segments) {
+    if (Fused && fs.fused_setup) {
+      const FusedSetup got = fs.fused_setup(s, fs.setup_consts, fused);
+      if (got != FusedSetup::General) {
+        if (got == FusedSetup::Span) {
+          n.fragments += fused.x1 - fused.x0;
+          line.touch(fused.x0, fused.x1);
+          fused.tie = line.tie_bits(s.poly);
+          n.visible += fs.kernels.draw(fused, line.row());
+        }
+        continue;
+      }
+    }
     SegmentInterpolator::setup(s, frame.width, formats, span);
     n.fragments += span.x_end - span.x_start;
     // A span whose values stay inside their words and readings (in_range) runs without wraps
