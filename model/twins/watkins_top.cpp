@@ -142,8 +142,9 @@ struct SpanKernels {
   long long (*draw)(const GouraudSpan&, const FrameLine::Row&) = nullptr;  // nullptr: the scalar loop
   void (*empty)(std::uint64_t* keys, int lo, int hi) = nullptr;
   // SegmentInterpolator::setup, PixelPath::in_range<Shade> and FrameSetup::gouraud_span in one,
-  // the four slots side by side; fills x0, x1, poly, value and step. nullptr: no fused setup.
-  FusedSetup (*setup)(const Segment&, const GouraudSetupConsts&, GouraudSpan&) = nullptr;
+  // the four slots side by side, for a line's n segments at once (independent setups overlap in
+  // the processor): span k's x0, x1, poly, value and step and its outcome. nullptr: none.
+  void (*setup)(const Segment*, std::size_t n, const GouraudSetupConsts&, GouraudSpan*, FusedSetup*) = nullptr;
 };
 
 void empty_keys(std::uint64_t* keys, int lo, int hi) {
@@ -219,8 +220,8 @@ __attribute__((target(WATKINS_AVX512))) void empty_keys_avx512(std::uint64_t* ke
 // round_shift62(v, s) of a product |v| < 2^61 is (v + 2^(s-1)) >> s, the shift arithmetic
 // (flooring); wrap_signed64 is a left shift by 64 - bits and an arithmetic shift back. Whatever
 // the scalar path takes 128 bits or a range check for, this hands to the general path.
-__attribute__((target(WATKINS_AVX512))) FusedSetup gouraud_setup_avx512(const Segment& s, const GouraudSetupConsts& k,
-                                                                        GouraudSpan& g) {
+__attribute__((target(WATKINS_AVX512), always_inline)) inline FusedSetup gouraud_setup_avx512(
+    const Segment& s, const GouraudSetupConsts& k, GouraudSpan& g) {
   const int fx = k.fx;
   const i64 xe = s.e[fmt::ChanX], xf = s.f[fmt::ChanX];
   const i64 centre = (i64{1} << fx) - 1 - (i64{1} << (fx - 1));  // first_centre_at_or_after's offset
@@ -270,6 +271,12 @@ __attribute__((target(WATKINS_AVX512))) FusedSetup gouraud_setup_avx512(const Se
   _mm256_storeu_si256(reinterpret_cast<__m256i*>(g.value), value);
   _mm256_storeu_si256(reinterpret_cast<__m256i*>(g.step), step);
   return FusedSetup::Span;
+}
+
+__attribute__((target(WATKINS_AVX512))) void gouraud_setups_avx512(const Segment* s, std::size_t n,
+                                                                   const GouraudSetupConsts& k, GouraudSpan* g,
+                                                                   FusedSetup* got) {
+  for (std::size_t i = 0; i < n; ++i) got[i] = gouraud_setup_avx512(s[i], k, g[i]);
 }
 
 __attribute__((target("avx2"))) long long gouraud_span_avx2(const GouraudSpan& s, const FrameLine::Row& out) {
@@ -362,7 +369,7 @@ SpanKernels span_kernels(SpanPath path) {
   const bool avx512 = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
                       __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512bw") &&
                       __builtin_cpu_supports("avx512vbmi") && __builtin_cpu_supports("bmi2");
-  if (path != SpanPath::Avx2 && avx512) return SpanKernels{gouraud_span_avx512, empty_keys_avx512, gouraud_setup_avx512};
+  if (path != SpanPath::Avx2 && avx512) return SpanKernels{gouraud_span_avx512, empty_keys_avx512, gouraud_setups_avx512};
   if (__builtin_cpu_supports("avx2")) return SpanKernels{gouraud_span_avx2, empty_keys_avx2};
 #endif
   return k;
@@ -378,9 +385,13 @@ struct LineCounts {
 // Phong with nobody observing: a pixel's shade is a function of its last winner's normal and
 // material alone, so the line keeps those and shades each covered pixel once at read-out, not
 // every fragment that wins on the way (the same pixels: overdraw costs a depth test, not a shade).
-struct DeferredPhong {
-  std::vector<std::array<i64, 3>> normal;  // per pixel of the line
+// A band's scratch, reused line after line: the deferred Phong inputs, and the fused setup's
+// spans and outcomes (one per segment of the line).
+struct LineScratch {
+  std::vector<std::array<i64, 3>> normal;  // per pixel of the line (deferred Phong)
   std::vector<int> material;
+  std::vector<GouraudSpan> spans;
+  std::vector<FusedSetup> setups;
 };
 // The pipeline a frame takes: Gouraud's eq. (1), his eq. (2) (the shade divider after the
 // interpolator) or Phong.
@@ -396,7 +407,7 @@ struct FrameSetup {
   GouraudSpan readings;  // the kernel's shifts and halves (PixelPath's in-range readings)
   // The fused span setup of the kernels, when the frame's readings have unclamped ranges
   // (nullptr: every span takes SegmentInterpolator::setup), and its constants.
-  FusedSetup (*fused_setup)(const Segment&, const GouraudSetupConsts&, GouraudSpan&) = nullptr;
+  void (*fused_setup)(const Segment*, std::size_t, const GouraudSetupConsts&, GouraudSpan*, FusedSetup*) = nullptr;
   GouraudSetupConsts setup_consts;
   // One row of the background, uncovered: each line's row of the image starts as a copy.
   std::vector<std::uint8_t> background_rgb, background_covered;
@@ -435,7 +446,7 @@ struct FrameSetup {
 };
 template <bool Observed, Pipe P>
 LineCounts draw_segments(const FrameSetup& fs, const std::vector<Segment>& segments, FrameLine& line, int y,
-                         const PipelineObserver& observe, DeferredPhong& later) {
+                         const PipelineObserver& observe, LineScratch& scratch) {
   const Frame& frame = fs.frame;
   const ChannelFormats& formats = fs.formats;
   const PixelPath& path = fs.path;
@@ -453,20 +464,28 @@ LineCounts draw_segments(const FrameSetup& fs, const std::vector<Segment>& segme
   LineCounts n;
   SpanSetup span;
   span.formats = formats;
+  // An unobserved Gouraud line whose kernels fuse the setup: every span set up first, then drawn
+  // in order; a span the fused setup hands back takes the general path in its turn.
   constexpr bool Fused = P == Pipe::Gouraud && !Observed;
-  GouraudSpan fused = fs.readings;
-  for (const Segment& s : segments) {
-    if (Fused && fs.fused_setup) {
-      const FusedSetup got = fs.fused_setup(s, fs.setup_consts, fused);
-      if (got != FusedSetup::General) {
-        if (got == FusedSetup::Span) {
-          n.fragments += fused.x1 - fused.x0;
-          line.touch(fused.x0, fused.x1);
-          fused.tie = line.tie_bits(s.poly);
-          n.visible += fs.kernels.draw(fused, line.row());
-        }
-        continue;
+  const bool fused = Fused && fs.fused_setup;
+  if (fused) {
+    if (scratch.spans.size() < segments.size()) {
+      scratch.spans.resize(segments.size(), fs.readings);
+      scratch.setups.resize(segments.size());
+    }
+    fs.fused_setup(segments.data(), segments.size(), fs.setup_consts, scratch.spans.data(), scratch.setups.data());
+  }
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    const Segment& s = segments[i];
+    if (fused && scratch.setups[i] != FusedSetup::General) {
+      if (scratch.setups[i] == FusedSetup::Span) {
+        GouraudSpan& g = scratch.spans[i];
+        n.fragments += g.x1 - g.x0;
+        line.touch(g.x0, g.x1);
+        g.tie = line.tie_bits(s.poly);
+        n.visible += fs.kernels.draw(g, line.row());
       }
+      continue;
     }
     SegmentInterpolator::setup(s, frame.width, formats, span);
     n.fragments += span.x_end - span.x_start;
@@ -491,8 +510,8 @@ LineCounts draw_segments(const FrameSetup& fs, const std::vector<Segment>& segme
             for (int c = 0; c < 3; ++c) f.rgb[c] = rgb[c];
           }
           if (defer) {
-            later.normal[static_cast<std::size_t>(x)] = f.normal;
-            later.material[static_cast<std::size_t>(x)] = phong.check(f.material);  // shade(f)'s check
+            scratch.normal[static_cast<std::size_t>(x)] = f.normal;
+            scratch.material[static_cast<std::size_t>(x)] = phong.check(f.material);  // shade(f)'s check
           } else if (Shading == ShadingMode::Phong) {
             phong.shade(f);
           }
@@ -517,7 +536,7 @@ LineCounts draw_segments(const FrameSetup& fs, const std::vector<Segment>& segme
 }
 
 using DrawSegments = LineCounts (*)(const FrameSetup&, const std::vector<Segment>&, FrameLine&, int,
-                                    const PipelineObserver&, DeferredPhong&);
+                                    const PipelineObserver&, LineScratch&);
 
 DrawSegments draw_segments_for(bool observed, const Frame& frame) {
   if (frame.shading == ShadingMode::Phong)
@@ -534,10 +553,10 @@ void draw_lines(const FrameSetup& fs, int capacity, int y_begin, int y_end, Imag
   const bool observing = static_cast<bool>(observe.fragment);
   const DrawSegments draw = draw_segments_for(observing, frame);
   const bool deferred = !observing && frame.shading == ShadingMode::Phong;
-  DeferredPhong later;
+  LineScratch scratch;
   if (deferred) {
-    later.normal.resize(static_cast<std::size_t>(frame.width));
-    later.material.resize(static_cast<std::size_t>(frame.width));
+    scratch.normal.resize(static_cast<std::size_t>(frame.width));
+    scratch.material.resize(static_cast<std::size_t>(frame.width));
   }
   walk_scan_lines(frame.edges, y_begin, y_end, capacity, fs.formats, [&](const ScanLine& sl) {
     const int y = sl.y;
@@ -555,15 +574,15 @@ void draw_lines(const FrameSetup& fs, int capacity, int y_begin, int y_end, Imag
     std::copy(fs.background_covered.begin(), fs.background_covered.end(), img.covered.begin() + static_cast<std::ptrdiff_t>(row));
     std::copy(fs.background_owner.begin(), fs.background_owner.end(), img.owner.begin() + static_cast<std::ptrdiff_t>(row));
     line.start(img, y);
-    const LineCounts n = draw(fs, sl.segments, line, y, observe, later);
+    const LineCounts n = draw(fs, sl.segments, line, y, observe, scratch);
     stats.fragments += n.fragments;
     stats.visible += n.visible;
     if (observe.fragments_end) observe.fragments_end(y);
     // Phong with nobody observing shades each covered pixel once, from its last winner.
     if (deferred)
       line.each_covered([&](int x, std::uint8_t* rgb) {
-        const std::array<int, 3> p = fs.phong.shade(later.normal[static_cast<std::size_t>(x)],
-                                                    later.material[static_cast<std::size_t>(x)]);
+        const std::array<int, 3> p = fs.phong.shade(scratch.normal[static_cast<std::size_t>(x)],
+                                                    scratch.material[static_cast<std::size_t>(x)]);
         rgb[0] = static_cast<std::uint8_t>(p[0]), rgb[1] = static_cast<std::uint8_t>(p[1]);
         rgb[2] = static_cast<std::uint8_t>(p[2]);
       });
