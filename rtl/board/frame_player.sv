@@ -9,8 +9,9 @@
 // until it has left, then runs the same fixed sequence. The edge records pass a 3-entry FIFO fed
 // a read ahead, so edge_valid_o never drops between the first beat and the EOF beat (the FIFO
 // holds at most 3 words read or in flight: it refills one per clock while the top takes one).
-// Registered: the bank address, the frame pins (width_o .. eye_o), the FIFO; edge_valid_o is a
-// compare of registers; the material port is the bank's read register with a compare.
+// Registered: the bank address, the frame pins (width_o .. eye_o, frame_header), the FIFO;
+// edge_valid_o is a compare of registers; the material port is the bank's read register with a
+// compare.
 
 module frame_player #(
   parameter int unsigned BankWords      = 512,
@@ -58,8 +59,6 @@ module frame_player #(
   localparam int unsigned StepBits    = $clog2(LoadWords + 1);
   localparam int unsigned MBits       = MaterialIdBits + 1;
   localparam int unsigned FifoDepth   = 3;
-  localparam int unsigned MaterialBits  = watkins_pkg::MaterialBits;
-  localparam int unsigned ShininessBits = watkins_pkg::ShininessBits;
 
   typedef enum logic [1:0] {Idle, Load, Edges} state_e;
   state_e state_q;
@@ -75,7 +74,7 @@ module frame_player #(
   logic [StepBits-1:0]  rd_step_q;    // which
   logic                 rd_edge_q;    // an edge record (pushed into the FIFO)
 
-  // The header.
+  // The header (frame_header).
   logic [CountBits-1:0] n_q;  // edge records
   logic [MBits-1:0]     m_q;  // materials
 
@@ -156,36 +155,29 @@ module frame_player #(
     if (push) fifo_q[wr_q] <= rd_data_i;
   end
 
-  // The header's fields, each in the low bits of its word.
-  always_ff @(posedge clk_i) begin
-    if (rd_load_q) begin
-      unique case (rd_step_q)
-        StepBits'(0): n_q <= rd_data_i[CountBits-1:0];
-        StepBits'(1): width_o <= rd_data_i[LineBits-1:0];
-        StepBits'(2): height_o <= rd_data_i[LineBits-1:0];
-        StepBits'(3): background_o <= rd_data_i[watkins_pkg::RgbBits-1:0];
-        StepBits'(4): begin
-          tie_submission_o <= rd_data_i[0];
-          eq2_o            <= rd_data_i[1];
-          smooth_w_o       <= rd_data_i[8 +: watkins_pkg::SmoothWBits];
-        end
-        StepBits'(5): light_o <= rd_data_i[3*UnitBits-1:0];
-        StepBits'(6): eye_o <= rd_data_i[3*UnitBits-1:0];
-        StepBits'(7): m_q <= rd_data_i[MBits-1:0];
-        default: ;
-      endcase
-    end
-  end
-
-  // Material slot i (word 8 + i): {n, w, d, cp}, cp lowest; written when i < M.
-  logic [StepBits-1:0] material_slot;
-  assign material_slot   = rd_step_q - StepBits'(HeaderWords);
-  assign material_we_o   = rd_load_q && rd_step_q >= StepBits'(HeaderWords) && StepBits'(m_q) > material_slot;
-  assign material_addr_o = material_slot[MaterialIdBits-1:0];
-  assign material_cp_o   = rd_data_i[watkins_pkg::RgbBits-1:0];
-  assign material_d_o    = rd_data_i[watkins_pkg::RgbBits +: MaterialBits];
-  assign material_w_o    = rd_data_i[watkins_pkg::RgbBits + MaterialBits +: MaterialBits];
-  assign material_n_o    = rd_data_i[watkins_pkg::RgbBits + 2 * MaterialBits +: ShininessBits];
+  // The header's fields and the material port.
+  frame_header #(.CountBits(CountBits), .StepBits(StepBits), .MaterialIdBits(MaterialIdBits)) u_header (
+    .clk_i           (clk_i),
+    .load_i          (rd_load_q),
+    .step_i          (rd_step_q),
+    .data_i          (rd_data_i[63:0]),
+    .n_o             (n_q),
+    .m_o             (m_q),
+    .width_o         (width_o),
+    .height_o        (height_o),
+    .background_o    (background_o),
+    .tie_submission_o(tie_submission_o),
+    .eq2_o           (eq2_o),
+    .smooth_w_o      (smooth_w_o),
+    .light_o         (light_o),
+    .eye_o           (eye_o),
+    .material_we_o   (material_we_o),
+    .material_addr_o (material_addr_o),
+    .material_cp_o   (material_cp_o),
+    .material_d_o    (material_d_o),
+    .material_w_o    (material_w_o),
+    .material_n_o    (material_n_o)
+  );
 
   // Elaboration checks: the fields fit the word, and the load is long enough for M.
   if (EdgeBits < 64) begin : g_check_edge_bits
