@@ -332,6 +332,39 @@ TEST(CompactCycleModel, SizedScenes) {
   EXPECT_GE(ran, 12);
 }
 
+// The edge source's pace (CycleOptions::edge_interval, edge_gap), on both micro-architectures:
+// 1 and 1 is the source offering back to back; beat k + 1 no sooner than edge_interval cycles
+// after beat k, so a frame of N records and the EOF beat takes at least N edge_interval cycles
+// before its last pixel; the iCEBreaker's SPRAM frame player's pace (3 and 2 at the sized
+// default's 184-bit record) costs the compact top cycles on the default scene (79,417 against
+// 79,275) and the pipelined top none (76,846: its list takes a record no faster), the EOF beat
+// alone (an empty frame) none on either.
+TEST(CycleModel, EdgePace) {
+  for (const bool compact : {true, false}) {
+    Config cfg = compact_sized();
+    cfg.compact = compact;
+    const PreparedScene p = prepare(load_scene(WATKINS_SOURCE_DIR "/scenes/default.json", shading_options(ShadingMode::Gouraud)), cfg);
+    const PreparedScene empty = prepare(screen(p.width, p.height, {}, "empty"), cfg);
+    auto cycles = [&](const PreparedScene& f, int interval, int gap) {
+      CycleOptions o;
+      o.max_active_edges = cfg.max_active_edges;
+      o.edge_interval = interval;
+      o.edge_gap = gap;
+      std::vector<long long> takes;
+      o.take_cycles = &takes;
+      return predict_cycles(f, cfg, o).cycles;
+    };
+    const long long full = cycles(p, 1, 1), spram = cycles(p, 3, 2), slow = cycles(p, 1000, 1);
+    EXPECT_EQ(full, predict_cycles(p, PixelOutput::FullFrame, cfg.max_active_edges, cfg).cycles);
+    EXPECT_GE(spram, full) << (compact ? "compact" : "pipelined");
+    if (compact) EXPECT_GT(spram, full);  // the compact list places a record in 2 clocks, skips one in 1
+    EXPECT_GE(slow, 1000LL * static_cast<long long>(p.edges.size())) << (compact ? "compact" : "pipelined");
+    EXPECT_EQ(cycles(empty, 3, 2), cycles(empty, 1, 1)) << (compact ? "compact" : "pipelined");
+    std::printf("  %s top, default scene: %lld cycles back to back, %lld at the SPRAM player's pace\n",
+                compact ? "compact" : "pipelined", full, spram);
+  }
+}
+
 // The pixel path clocked with a consumer that is always ready equals the run without one.
 TEST(CompactCycleModel, AlwaysReadyEqualsNoConsumer) {
   class Always : public PixelReady {
