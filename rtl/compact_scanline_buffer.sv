@@ -76,6 +76,9 @@ module compact_scanline_buffer #(
   logic frag_take, eol_take, eol_ok;
   logic rd_load, rd_read, rd_last, rd_lastline;
   logic [XBits-1:0] rx_next, rd_addr;
+  // rx_q + 1 == width_i, from a flop: set from the reader's next x a clock ahead, so the
+  // end-of-line decision (and frag_ready_o through it) has no compare in its clock.
+  logic last_q;
 
   // x < width_i <= MaxWidth: the bank index is its low bits.
   /* verilator lint_off UNUSEDSIGNAL */
@@ -84,7 +87,7 @@ module compact_scanline_buffer #(
   /* verilator lint_on UNUSEDSIGNAL */
 
   assign rx_next     = rx_q + 1'b1;
-  assign rd_last     = LineBits'(rx_q) + 1'b1 == width_i;
+  assign rd_last     = last_q;
   assign rd_lastline = rline_q + 1'b1 == height_i;
   // The output register takes a pixel when empty or emptied this clock.
   assign rd_load = pf_q && (!pixel_valid_o || pixel_ready_i);
@@ -215,6 +218,12 @@ module compact_scanline_buffer #(
         rd_busy_q <= 1'b1;
       end
     end
+  end
+  // x 0 when the reader is idle or loads a line's last pixel; x + 1 with any other load. While
+  // the reader is idle rx_q is 0 and width_i may change (between frames): the flag follows it.
+  always_ff @(posedge clk_i) begin
+    if (!rd_busy_q || (rd_load && rd_last)) last_q <= width_i == LineBits'(1);
+    else if (rd_load) last_q <= LineBits'(rx_q) + LineBits'(2) == width_i;
   end
   always_ff @(posedge clk_i) begin
     if (rd_load) begin
