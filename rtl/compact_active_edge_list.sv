@@ -40,6 +40,9 @@
 // Ready: edge_ready_o is combinational (state, the head's y0, the count, and in the shift the key
 // compare of the read register); out_valid_o and out_eol_o decode the state register; out_* are
 // the RAM's read register, which holds while a beat waits.
+// Paths: each compare is one carry chain from flops (the key compare from ram_q and cmp_q, the
+// head's from edge_i and line_q); the read address and enable, the record select and
+// edge_ready_o are pairs from registers that the key compare picks between as their last logic.
 `include "watkins_assert.svh"
 
 module compact_active_edge_list #(
@@ -143,7 +146,10 @@ module compact_active_edge_list #(
   logic [AddrBits-1:0]   first_q, first_d;  // D: the first crossing's position
   logic                  cross_q, cross_d;  // this line has a crossing
   logic [KeyBits-1:0]    max_q, max_d;  // OUT / FIX: the greatest key of the entries before
-  logic [KeyBits-1:0]    mov_q, mov_d;  // INS / FIX: the key of the entry being placed
+  // The key ram_q's is compared with: in the shifts the key of the entry being placed, in the
+  // scan the maximum. Loaded from registers and ram_q only, so no compare's result reaches the
+  // comparator.
+  logic [KeyBits-1:0]    cmp_q, cmp_d;
   // OUT: the key of the entry written back on the clock before (at A[pend_pos_q]), compared with
   // max_q one clock later: the step's adders and the compare are then not in one clock.
   logic                  pend_q, pend_d;
@@ -176,22 +182,33 @@ module compact_active_edge_list #(
   assign retire = ram_q.remaining <= LineBits'(1);
 
   // ------------------------------------------------------------ keys
-  logic [KeyBits-1:0] key_ram, key_step, key_rec, key_cmp;
+  logic [KeyBits-1:0] key_ram, key_step, key_rec;
   logic               ram_below, pend_below;
   assign key_ram  = {ram_q.value[XLow +: XBits] ^ XSign, ram_q.id};
   assign key_step = {value_s[XLow +: XBits] ^ XSign, ram_q.id};
   assign key_rec  = {rec.value[XLow +: XBits] ^ XSign, id_q};
+  // Every compare is the borrow of a subtraction: one carry chain and nothing after it (yosys
+  // builds a < b of its own as a carry chain and an equality tree, one more LUT level deep).
+  /* verilator lint_off UNUSEDSIGNAL */
+  logic [KeyBits:0]  key_diff, pend_diff;
+  logic [LineBits:0] late_diff, past_diff;
+  /* verilator lint_on UNUSEDSIGNAL */
   // One comparator for ram_q: below the maximum (SScan), or, in the shifts, not above the key
   // being placed (keys are unique: not below is above).
-  assign key_cmp    = (state_q == SScan) ? max_q : mov_q;
-  assign ram_below  = key_ram < key_cmp;
-  assign pend_below = pend_key_q < max_q;
+  assign key_diff   = {1'b0, key_ram} - {1'b0, cmp_q};
+  assign ram_below  = key_diff[KeyBits];
+  assign pend_diff  = {1'b0, pend_key_q} - {1'b0, max_q};
+  assign pend_below = pend_diff[KeyBits];
 
   // ------------------------------------------------------------ control
-  logic head_late, head_past, full, last_line;
-  assign head_late = !edge_eof_i && rec.y0 < line_q;
-  assign head_past = edge_eof_i || rec.y0 > line_q;
+  logic head_late, head_past, full, empty, scan_last, last_line;
+  assign late_diff = {1'b0, rec.y0} - {1'b0, line_q};  // y0 < y
+  assign past_diff = {1'b0, line_q} - {1'b0, rec.y0};  // y0 > y
+  assign head_late = !edge_eof_i && late_diff[LineBits];
+  assign head_past = edge_eof_i || past_diff[LineBits];
   assign full      = cnt_q == CountBits'(Entries);
+  assign empty     = cnt_q == '0;
+  assign scan_last = CountBits'(rd_q) + 1'b1 == cnt_q;  // ram_q is A's last entry (FIX)
   assign out_valid_o = state_q == SOut || state_q == SEol;
   assign out_eol_o   = state_q != SOut;
   assign last_line   = line_q + 1'b1 == height_i;
@@ -208,7 +225,6 @@ module compact_active_edge_list #(
     first_d = first_q;
     cross_d = cross_q;
     max_d   = max_q;
-    mov_d   = mov_q;
     pend_d     = 1'b0;
     pend_key_d = key_step;
     pend_pos_d = AddrBits'(kept_q);
@@ -221,51 +237,27 @@ module compact_active_edge_list #(
         first_d = pend_pos_q;
       end
     end
-    re      = 1'b0;
-    ra      = rd_q;
-    we      = 1'b0;
-    wa      = pos_q + 1'b1;
-    w_rec   = 1'b0;
-    w_step  = 1'b0;
-    take    = 1'b0;
     ov_set  = 1'b0;
     unique case (state_q)
       SIdle: ;
       SIns: if (edge_valid_i) begin
         if (head_past) begin
           // The line is complete: stream it, its first entry read now.
-          re      = 1'b1;
-          ra      = '0;
           rd_d    = '0;
           kept_d  = '0;
           cross_d = 1'b0;
-          state_d = (cnt_q == '0) ? SEol : SOut;
+          state_d = empty ? SEol : SOut;
         end else if (head_late || full) begin
-          take   = 1'b1;
-          ov_set = !head_late;
-        end else if (cnt_q == '0) begin
-          we    = 1'b1;
-          wa    = '0;
-          w_rec = 1'b1;
-          take  = 1'b1;
-          cnt_d = CountBits'(1);
+          ov_set = !head_late;  // taken, skipped or dropped
+        end else if (empty) begin
+          cnt_d = CountBits'(1);  // taken, written at A[0]
         end else begin
-          re      = 1'b1;
-          ra      = AddrBits'(cnt_q - 1'b1);
           pos_d   = AddrBits'(cnt_q - 1'b1);
-          mov_d   = key_rec;
           state_d = SShift;
         end
       end
       SShift: begin
-        // The RAM reads A[pos - 1] on every clock (unused when the record's place is found).
-        we = 1'b1;
-        wa = pos_q + 1'b1;
-        re = 1'b1;
-        ra = pos_q - 1'b1;
         if (ram_below) begin  // ram_q sorts before the record: its place is above ram_q
-          w_rec   = 1'b1;
-          take    = 1'b1;
           cnt_d   = cnt_q + 1'b1;
           state_d = SIns;
         end else if (pos_q == '0) begin
@@ -275,21 +267,12 @@ module compact_active_edge_list #(
         end
       end
       SPlace: begin
-        we      = 1'b1;
-        wa      = '0;
-        w_rec   = 1'b1;
-        take    = 1'b1;
         cnt_d   = cnt_q + 1'b1;
         state_d = SIns;
       end
       SOut: if (out_ready_i) begin
         // The edge leaves, steps and, unless it retires, is written back at A[kept].
-        re     = 1'b1;
-        ra     = rd_q + 1'b1;
-        rd_d   = rd_q + 1'b1;
-        we     = !retire;
-        wa     = AddrBits'(kept_q);
-        w_step = 1'b1;
+        rd_d = rd_q + 1'b1;
         if (!retire) begin
           kept_d = kept_q + 1'b1;
           pend_d = 1'b1;
@@ -307,35 +290,21 @@ module compact_active_edge_list #(
         end
       end
       SFix: begin
-        re      = 1'b1;
-        ra      = first_q;
         rd_d    = first_q;
         state_d = SScan;
       end
       SScan: begin
-        // ram_q goes to the scratch word on every scan clock (only an entry out of order is read
-        // back from there): the write does not wait for the compare. The read does not either,
-        // but on the last entry, which may be next to the scratch word.
-        we = 1'b1;
-        wa = Scratch;
-        re = ram_below || CountBits'(rd_q) + 1'b1 != cnt_q;
         if (ram_below) begin
           // Out of order: the entries above its place move up.
-          mov_d   = key_ram;
           pos_d   = rd_q - 1'b1;
           state_d = SFShift;
         end else begin
           max_d = key_ram;
           rd_d  = rd_q + 1'b1;
-          if (CountBits'(rd_q) + 1'b1 == cnt_q) state_d = SIns;
+          if (scan_last) state_d = SIns;
         end
       end
       SFShift: begin
-        // ram_q moves up one word on every clock: when its place is above ram_q, that word is
-        // the place, which SFPlace writes next.
-        re = 1'b1;
-        we = 1'b1;
-        wa = pos_q + 1'b1;
         if (ram_below) begin  // its place is above ram_q
           pos_d   = pos_q + 1'b1;
           state_d = SFPlace;
@@ -346,28 +315,123 @@ module compact_active_edge_list #(
         end
       end
       SFPlace: begin
-        we = 1'b1;
-        wa = pos_q;
-        if (CountBits'(rd_q) + 1'b1 == cnt_q) begin
-          state_d = SIns;
-        end else begin
-          re      = 1'b1;
-          ra      = rd_q + 1'b1;
+        if (!scan_last) begin
           rd_d    = rd_q + 1'b1;
           state_d = SScan;
+        end else begin
+          state_d = SIns;
         end
       end
-      SDrain: if (edge_valid_i) begin
-        take = 1'b1;
-        if (edge_eof_i) state_d = SIdle;
-      end
+      SDrain: if (edge_valid_i && edge_eof_i) state_d = SIdle;
       default: ;
     endcase
-    // In the scan and the shift the read address is the last thing the compare decides: both
-    // candidates come from registers, the compare picks one.
-    if (state_q == SScan) ra = ram_below ? rd_q - 1'b1 : rd_q + 1'b1;
-    if (state_q == SFShift) ra = (ram_below || pos_q == '0) ? Scratch : pos_q - 1'b1;
   end
+
+  // The compared key for the next clock, whichever way this clock's compares go: the record's
+  // (INS, for the shift); the scanned entry's (the greatest so far, or the one moving back); the
+  // maximum before A[first] (the scan's first entry, and its entry after a move). A shift keeps
+  // its key; no other state compares next.
+  always_comb begin
+    unique case (state_q)
+      SIns:           cmp_d = key_rec;
+      SScan:          cmp_d = key_ram;
+      SFix, SFPlace:  cmp_d = max_q;
+      default:        cmp_d = cmp_q;
+    endcase
+  end
+
+  // ------------------------------------------------------------ the RAM's ports, the take
+  // Per state, the read enable and address, the record select and the take for either outcome
+  // of ram_q's key compare (1: ram_q below cmp_q, 0: not), from registers and the head's
+  // compare; the key compare picks one as the last logic before the RAM and the input (the pairs
+  // are kept as nets, so synthesis does not fold the compare into their earlier levels). No port
+  // waits for a decision it does not need: ram_q is not read in INS, so INS reads whenever the
+  // list has entries, and an empty list's A[0] is unused, so INS writes the record there
+  // whenever the list is empty (it is kept if the count grows).
+  (* keep *) logic [1:0]          re_c, w_rec_c, take_c;
+  (* keep *) logic [AddrBits-1:0] ra_c0, ra_c1;
+  logic                           take_ins;  // INS takes the head: skipped, dropped or placed
+  assign take_ins = edge_valid_i && !head_past && (head_late || full || empty);
+  always_comb begin
+    re_c    = '0;
+    ra_c0 = rd_q + 1'b1;
+    we      = 1'b0;
+    wa      = pos_q + 1'b1;
+    w_rec_c = '0;
+    w_step  = 1'b0;
+    take_c  = '0;
+    unique case (state_q)
+      SIdle: ;
+      SIns: begin
+        // A[0] for the stream (the head is past the line), else A[L-1] for the shift.
+        re_c    = {2{!empty}};
+        ra_c0 = head_past ? '0 : AddrBits'(cnt_q - 1'b1);
+        we      = empty;
+        wa      = '0;
+        w_rec_c = 2'b11;
+        take_c  = {2{take_ins}};
+      end
+      SShift: begin
+        // A[pos] moves up, or the record goes above it (and is taken); A[pos - 1] is read on
+        // every clock (unused when the record's place is found).
+        re_c    = 2'b11;
+        ra_c0 = pos_q - 1'b1;
+        we      = 1'b1;
+        w_rec_c = 2'b10;
+        take_c  = 2'b10;
+      end
+      SPlace: begin
+        we      = 1'b1;
+        wa      = '0;
+        w_rec_c = 2'b11;
+        take_c  = 2'b11;
+      end
+      SOut: begin
+        re_c   = {2{out_ready_i}};
+        we     = out_ready_i && !retire;
+        wa     = AddrBits'(kept_q);
+        w_step = 1'b1;
+      end
+      SEol: ;
+      SFix: begin
+        re_c    = 2'b11;
+        ra_c0 = first_q;
+      end
+      SScan: begin
+        // ram_q goes to the scratch word on every scan clock (only an entry out of order is read
+        // back from there). The read does not wait for the compare but on the last entry, which
+        // may be next to the scratch word.
+        re_c    = {1'b1, !scan_last};
+        we      = 1'b1;
+        wa      = Scratch;
+      end
+      SFShift: begin
+        // ram_q moves up one word on every clock: when its place is above ram_q, that word is
+        // the place, which SFPlace writes next.
+        re_c    = 2'b11;
+        ra_c0 = (pos_q == '0) ? Scratch : pos_q - 1'b1;
+        we      = 1'b1;
+      end
+      SFPlace: begin
+        re_c = {2{!scan_last}};
+        we   = 1'b1;
+        wa   = pos_q;
+      end
+      SDrain: take_c = {2{edge_valid_i}};
+      default: ;
+    endcase
+    // Below: the scan reads the entry before (the place is searched downwards), the shift the
+    // scratch word; every other state reads what it reads either way.
+    unique case (state_q)
+      SScan:   ra_c1 = rd_q - 1'b1;
+      SFShift: ra_c1 = Scratch;
+      default: ra_c1 = ra_c0;
+    endcase
+  end
+  assign re           = re_c[ram_below];
+  assign ra           = ram_below ? ra_c1 : ra_c0;
+  assign w_rec        = w_rec_c[ram_below];
+  assign take         = take_c[ram_below];
   assign edge_ready_o = take;
 
   // ------------------------------------------------------------ the RAM
@@ -413,7 +477,7 @@ module compact_active_edge_list #(
     first_q <= first_d;
     cross_q <= cross_d;
     max_q   <= max_d;
-    mov_q   <= mov_d;
+    cmp_q   <= cmp_d;
     pend_key_q <= pend_key_d;
     pend_pos_q <= pend_pos_d;
   end

@@ -139,17 +139,21 @@ class CompactActiveEdgeListTiming {
       case State::Idle:
         break;
       case State::Ins:
+        // The ports do not wait for the head's compare: a list with entries reads A[0] (the head
+        // past the line) or A[L-1], an empty one has the record written at A[0].
+        c.re = cnt_ != 0, c.ra = past ? 0 : cnt_ - 1;
+        c.we = cnt_ == 0, c.wa = 0, c.w_rec = true;
         if (!in.edge_valid) break;
         if (past) {
-          c.re = true, c.ra = 0, c.rd = 0, c.kept = 0, c.cross = false;
+          c.rd = 0, c.kept = 0, c.cross = false;
           c.state = cnt_ == 0 ? State::Eol : State::Out;
         } else if (late || full) {
           c.take = true;
           c.ov_set = !late;
         } else if (cnt_ == 0) {
-          c.we = true, c.wa = 0, c.w_rec = true, c.take = true, c.cnt = 1;
+          c.take = true, c.cnt = 1;
         } else {
-          c.re = true, c.ra = cnt_ - 1, c.pos = cnt_ - 1;
+          c.pos = cnt_ - 1;
           c.mov = Key{in.edge.value[fmt::ChanX], id_};
           c.state = State::Shift;
         }
