@@ -7,8 +7,8 @@
 // - Offer (pk_*): the offered item is classified on its first clock (a marker, an empty span, a
 //   span that needs 1/dx); the offer holds while valid and not ready, so the divider and the
 //   take read it on the port.
-// - Divider (d_*): 1/dx of the offered span before it is taken: latches dx on the offer's first
-//   clock, normalizes on the next, then Iterations = ceil((RecipBits + 1) / QuotientBitsPerClock)
+// - Divider (d_*): 1/dx of the offered span before it is taken: latches dx and its leading one
+//   on the offer's first clock, normalizes (shifts) on the next, then Iterations = ceil((RecipBits + 1) / QuotientBitsPerClock)
 //   clocks of restoring steps; the quotient is then held (d_done_q) until the take.
 // - Setup (m_*): takes the offered item when it is idle and its head is empty, a span only with
 //   its reciprocal done (seg_ready_o). An empty span is dropped at the take; a marker goes
@@ -134,6 +134,10 @@ module compact_segment_interpolator #(
   logic                    d_run_q, d_done_q;  // a reciprocal under way; its quotient ready
   logic [IterBits-1:0]     d_iter_q;                     // restoring clocks left
   logic [DxBits-1:0]       d_dx_q;
+  // d_dx_q's leading one: p and the normalizing shift, latched with it, so the normalize clock
+  // only shifts (the leading-one search and the shift in one clock are the UP5K's longest path).
+  logic [ExponentBits-1:0] d_lead_p_q;
+  logic [ShiftBits-1:0]    d_lead_sh_q;
   logic [RecipBits-1:0]    d_m_q;
   logic [RecipBits:0]      d_rem_q;  // partial remainder in [-m, m), signed
   logic [QuotientBits-1:0] d_quo_q;
@@ -171,15 +175,16 @@ module compact_segment_interpolator #(
     end
   end
   always_ff @(posedge clk_i) begin
-    if (!d_run_q) begin
-      d_dx_q <= DxBits'($signed({in_xf[XBits-1], in_xf}) - $signed({in_xe[XBits-1], in_xe}));
+    if (!d_run_q) begin : d_latch
+      logic [DxBits-1:0] dx;
+      dx = DxBits'($signed({in_xf[XBits-1], in_xf}) - $signed({in_xe[XBits-1], in_xe}));
+      d_dx_q                    <= dx;
+      {d_lead_p_q, d_lead_sh_q} <= lead_of(dx);
     end
     if (d_norm) begin : d_normalize
-      logic [ExponentBits-1:0] p;
-      logic [ShiftBits-1:0]    sh;
-      {p, sh}  = lead_of(d_dx_q);
-      d_p_q    <= p;
-      d_m_q    <= RecipBits'((NormalizedBits'(d_dx_q) << sh) >> (NormalizedBits - RecipBits));
+      d_p_q    <= d_lead_p_q;
+      d_m_q    <= RecipBits'((NormalizedBits'(d_dx_q) << d_lead_sh_q)
+                             >> (NormalizedBits - RecipBits));
       d_rem_q  <= (RecipBits + 1)'(1) << (RecipBits - 2);
       d_quo_q  <= '0;
       d_iter_q <= IterBits'(Iterations);
