@@ -9,7 +9,8 @@
 //   take read it on the port.
 // - Divider (d_*): 1/dx of the offered span before it is taken: latches dx and its leading one
 //   on the offer's first clock, normalizes (shifts) on the next, then Iterations =
-//   ceil((RecipBits + 1) / QuotientBitsPerClock) clocks of restoring steps; the quotient is then held (d_done_q) until the take.
+//   ceil((RecipBits + 1) / QuotientBitsPerClock) clocks of restoring steps; the quotient is
+//   then held (d_done_q) until the take.
 // - Setup (m_*): takes the offered item when it is idle and its head is empty, a span only with
 //   its reciprocal done (seg_ready_o). An empty span is dropped at the take; a marker goes
 //   straight to the head. A span loads its operands and its head's range, ids and E, then
