@@ -300,20 +300,31 @@ module icebreaker_top #(
 
   // Back-pressure: the slot of the line being written is free, (w - r) < S as a signed difference.
   // The difference is a register, in_use_q, stepped +1 by a line's last pixel taken and -1 by a
-  // release, and pixel_ready is a register too, room_q = in_use_q < S: both next values are
-  // computed from registers for either outcome of line_done, which only picks one, so the path
-  // from the pipeline's output handshake back to these registers is one multiplexer.
-  logic [CountBits-1:0] in_use_q, in_use_same, in_use_up;
-  logic                 room_q, room_same, room_up;
+  // release, and pixel_ready is a register too, room_q = in_use_q < S. Each clock moves the
+  // difference by -1, 0 or +1, so both next values are chosen from three candidates computed from
+  // in_use_q alone (one carry chain each, against a constant) by release_line (a decode of the
+  // video counters) and line_done, which only select: the path from the pipeline's output
+  // handshake back to these registers is one multiplexer, and no adder follows another.
+  logic [CountBits-1:0] in_use_q, in_use_down, in_use_up, in_use_d;
+  logic                 room_q, room_down, room_same, room_up, room_d;
   logic [LineBits-1:0]  last_x_q;
-  assign in_use_same = in_use_q - CountBits'(release_line);
-  assign in_use_up   = in_use_q + 1'b1 - CountBits'(release_line);
-  assign room_same   = $signed(in_use_same) < $signed(CountBits'(LineSlots));
-  assign room_up     = $signed(in_use_up) < $signed(CountBits'(LineSlots));
+  assign in_use_down = in_use_q - 1'b1;
+  assign in_use_up   = in_use_q + 1'b1;
+  assign room_down   = $signed(in_use_q) < $signed(CountBits'(LineSlots + 1));
+  assign room_same   = $signed(in_use_q) < $signed(CountBits'(LineSlots));
+  assign room_up     = $signed(in_use_q) < $signed(CountBits'(LineSlots - 1));
   assign pixel_ready = room_q;
   assign pixel_fire  = pixel_valid && pixel_ready;
   assign line_done   = pixel_fire && pixel_x == last_x_q;
   assign frame_done  = pixel_fire && pixel_last;
+
+  always_comb begin
+    unique case ({line_done, release_line})
+      2'b10:   begin in_use_d = in_use_up;   room_d = room_up;   end
+      2'b01:   begin in_use_d = in_use_down; room_d = room_down; end
+      default: begin in_use_d = in_use_q;    room_d = room_same; end  // neither, or both
+    endcase
+  end
 
   always_ff @(posedge clk) begin
     last_x_q <= width - 1'b1;
@@ -322,8 +333,8 @@ module icebreaker_top #(
       room_q   <= 1'b1;
       w_q      <= '0;
     end else begin
-      in_use_q <= line_done ? in_use_up : in_use_same;
-      room_q   <= line_done ? room_up : room_same;
+      in_use_q <= in_use_d;
+      room_q   <= room_d;
       if (line_done) w_q <= w_q + 1'b1;
     end
   end
