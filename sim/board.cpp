@@ -144,7 +144,7 @@ long long report_schedule(const CheckArgs& a, const BoardScene& b) {
     before = end;
   }
   std::printf("alone         %lld cycles a frame, %lld fragments (%.3f per clock), slowest line %d: %lld clocks "
-              "(every pixel taken as it comes)\n",
+              "(edge records back to back, every pixel taken as it comes)\n",
               alone.cycles, fragments, alone.cycles ? double(fragments) / double(alone.cycles) : 0.0, slowest_y,
               slowest);
   const board::LineSlack& w = s.lines.at(s.worst);

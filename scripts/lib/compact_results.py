@@ -144,10 +144,10 @@ def main():
             "",
             "`watkins board check SCENE --board icebreaker --top pipelined|compact` on every shipped scene "
             "with a sized Gouraud configuration that the board shows (320x240, shown doubled on 640x480): "
-            "the frame alone from its first edge beat to its last pixel with every pixel taken as it comes "
+            "the frame alone from its first edge beat to its last pixel, edge records back to back and every pixel taken as it comes "
             "(the slowest line: clocks from the line before's last pixel to its own), then the compact top "
             "racing the beam on the iCEBreaker (one 25.125 MHz clock, 1,600 clocks a rendered line, two "
-            "line slots, three frames).",
+            "line slots, three frames, the edge records at the pace of the SPRAM bank's player).",
             ""] + table + [""]
     if off:
         text += ["Not on the board: " + "; ".join(off) + ".", ""]
