@@ -3,9 +3,9 @@
 # them in this order before the short ones. A test's time from an earlier run in the same build
 # folder takes precedence over these.
 set(_watkins_costs
-  icebreaker_board_build 232
   synth_seeds 127
   CosimConfigs.HermanLiuAtThePapersResolution 77
+  icebreaker_board_build 72
   CosimDepthTie.ShippedScenesSubmissionOrder 38
   synth_smoke 28
   synth_options 25
