@@ -298,43 +298,25 @@ module icebreaker_top #(
     .material_n_i    (material_n)
   );
 
-  // Back-pressure: the slot of the line being written is free, (w - r) < S as a signed difference.
-  // The difference is a register, in_use_q, stepped +1 by a line's last pixel taken and -1 by a
-  // release, and pixel_ready is a register too, room_q = in_use_q < S. Each clock moves the
-  // difference by -1, 0 or +1, so both next values are chosen from three candidates computed from
-  // in_use_q alone (one carry chain each, against a constant) by release_line (a decode of the
-  // video counters) and line_done, which only select: the path from the pipeline's output
-  // handshake back to these registers is one multiplexer, and no adder follows another.
-  logic [CountBits-1:0] in_use_q, in_use_down, in_use_up, in_use_d;
-  logic                 room_q, room_down, room_same, room_up, room_d;
+  // Back-pressure (line_credit): the slot of the line being written is free, (w - r) < S,
+  // counted by line_done (+1) and release_line (-1, a decode of the video counters).
   logic [LineBits-1:0]  last_x_q;
-  assign in_use_down = in_use_q - 1'b1;
-  assign in_use_up   = in_use_q + 1'b1;
-  assign room_down   = $signed(in_use_q) < $signed(CountBits'(LineSlots + 1));
-  assign room_same   = $signed(in_use_q) < $signed(CountBits'(LineSlots));
-  assign room_up     = $signed(in_use_q) < $signed(CountBits'(LineSlots - 1));
-  assign pixel_ready = room_q;
   assign pixel_fire  = pixel_valid && pixel_ready;
   assign line_done   = pixel_fire && pixel_x == last_x_q;
   assign frame_done  = pixel_fire && pixel_last;
-
-  always_comb begin
-    unique case ({line_done, release_line})
-      2'b10:   begin in_use_d = in_use_up;   room_d = room_up;   end
-      2'b01:   begin in_use_d = in_use_down; room_d = room_down; end
-      default: begin in_use_d = in_use_q;    room_d = room_same; end  // neither, or both
-    endcase
-  end
+  line_credit #(.CountBits(CountBits), .LineSlots(LineSlots)) u_line_credit (
+    .clk_i    (clk),
+    .rst_ni   (rst_n),
+    .take_i   (line_done),
+    .release_i(release_line),
+    .ready_o  (pixel_ready)
+  );
 
   always_ff @(posedge clk) begin
     last_x_q <= width - 1'b1;
     if (!rst_n) begin
-      in_use_q <= '0;
-      room_q   <= 1'b1;
       w_q      <= '0;
     end else begin
-      in_use_q <= in_use_d;
-      room_q   <= room_d;
       if (line_done) w_q <= w_q + 1'b1;
     end
   end

@@ -157,7 +157,7 @@ module ulx3s_top #(
   // bank, pipeline, written line count
   logic                 start_pulse /*verilator public_flat_rd*/;
   logic [CountBits-1:0] w_q /*verilator public_flat_rd*/, w_gray_q;
-  /* verilator lint_off UNUSEDSIGNAL */  // in_use_q follows the released count's steps instead
+  /* verilator lint_off UNUSEDSIGNAL */  // line_credit follows the released count's steps instead
   logic [CountBits-1:0] r_sync;  // released lines, in this domain
   /* verilator lint_on UNUSEDSIGNAL */
   logic                 r_step;  // r_sync advances at the next clock (one release)
@@ -321,47 +321,23 @@ module ulx3s_top #(
     .material_n_i    (material_n)
   );
 
-  // Back-pressure: the slot of the line being written is free, (w - r_sync) < S as a signed
-  // difference of two registers' values. The difference is a register of its own, in_use_q,
-  // stepped with w_q (+1 at a line's last pixel) and with r_sync (-1 at gray_sync's step: one
-  // release at most a video line), and pixel_ready is a register too, room_q = in_use_q < S. Each
-  // clock moves the difference by -1, 0 or +1, so both next values are chosen from three
-  // candidates computed from in_use_q alone (one carry chain each, against a constant) by the
-  // step (an equality of two registers) and line_done, which only select: the path from the
-  // pipeline's output handshake back to these registers is one multiplexer, and no adder follows
-  // another. The frame's last x is a register too (the width is stable for the frame long before
-  // its first pixel).
-  logic [CountBits-1:0] in_use_q, in_use_down, in_use_up, in_use_d;
-  logic                 room_q, room_down, room_same, room_up, room_d;
+  // Back-pressure (line_credit): the slot of the line being written is free, (w - r_sync) < S,
+  // counted by line_done (+1) and gray_sync's step (-1: one release at most a video line), so no
+  // adder follows the handshake. The frame's last x is a register too (the width is stable for
+  // the frame long before its first pixel).
   logic [LineBits-1:0]  last_x_q;
-  assign in_use_down = in_use_q - 1'b1;
-  assign in_use_up   = in_use_q + 1'b1;
-  assign room_down   = $signed(in_use_q) < $signed(CountBits'(LineSlots + 1));
-  assign room_same   = $signed(in_use_q) < $signed(CountBits'(LineSlots));
-  assign room_up     = $signed(in_use_q) < $signed(CountBits'(LineSlots - 1));
-  assign pixel_ready = room_q;
   assign pixel_fire  = pixel_valid && pixel_ready;
   assign line_done   = pixel_fire && pixel_x == last_x_q;
   assign frame_done  = pixel_fire && pixel_last;
+  line_credit #(.CountBits(CountBits), .LineSlots(LineSlots)) u_line_credit (
+    .clk_i    (clk_pipe),
+    .rst_ni   (rst_pipe_n),
+    .take_i   (line_done),
+    .release_i(r_step),
+    .ready_o  (pixel_ready)
+  );
 
-  always_comb begin
-    unique case ({line_done, r_step})
-      2'b10:   begin in_use_d = in_use_up;   room_d = room_up;   end
-      2'b01:   begin in_use_d = in_use_down; room_d = room_down; end
-      default: begin in_use_d = in_use_q;    room_d = room_same; end  // neither, or both
-    endcase
-  end
-
-  always_ff @(posedge clk_pipe) begin
-    last_x_q <= width - 1'b1;
-    if (!rst_pipe_n) begin
-      in_use_q <= '0;
-      room_q   <= 1'b1;
-    end else begin
-      in_use_q <= in_use_d;
-      room_q   <= room_d;
-    end
-  end
+  always_ff @(posedge clk_pipe) last_x_q <= width - 1'b1;
 
   always_ff @(posedge clk_pipe) begin
     if (!rst_pipe_n) begin
