@@ -66,7 +66,7 @@ Config parse_config(const std::string& text, const std::string& name) {
   const ConfigReader r(name);
   r.keys(root, "", {"x", "depth", "shade", "normal", "depth_bits", "max_active_edges", "max_width",
                     "max_materials", "max_polygons", "max_edges", "edge_order", "smoothing", "eq2", "eq2_recip_bits",
-                    "compact"});
+                    "compact", "lanes"});
   Config c;
   r.group(root, "x", c.x);
   r.group(root, "depth", c.depth);
@@ -83,6 +83,7 @@ Config parse_config(const std::string& text, const std::string& name) {
   r.boolean(root, "eq2", c.eq2);
   r.integer(root, "", "eq2_recip_bits", c.eq2_recip_bits);
   r.boolean(root, "compact", c.compact);
+  r.integer(root, "", "lanes", c.lanes);
   if (const std::string e = c.check(); !e.empty()) throw SceneError(name + ": " + e);
   return c;
 }
@@ -124,6 +125,8 @@ std::string config_json(const Config& c) {
   if (c.eq2) o << ",\n  \"eq2\": true,\n  \"eq2_recip_bits\": " << c.eq2_recip_bits;
   // Likewise: absent means the pipelined micro-architecture.
   if (c.compact) o << ",\n  \"compact\": true";
+  // Likewise: absent means one fragment a clock.
+  if (c.lanes != 1) o << ",\n  \"lanes\": " << c.lanes;
   o << "\n}\n";
   return o.str();
 }

@@ -61,6 +61,8 @@ std::vector<RtlParameter> rtl_parameters(const Config& c, ShadingMode shading) {
   }
   // Likewise Compact (RTL default 0).
   if (c.compact) p.push_back({"Compact", 1});
+  // Likewise Lanes (RTL default 1).
+  if (c.lanes != 1) p.push_back({"Lanes", c.lanes});
   return p;
 }
 
@@ -108,6 +110,9 @@ std::string Config::check() const {
     return e;
   if (edge_order != 1 && edge_order != 3)
     return "edge_order: " + std::to_string(edge_order) + " is neither 1 (straight edges) nor 3 (cubic forward differences)";
+  if (lanes != 1 && lanes != 2)
+    return "lanes: " + std::to_string(lanes) + " is neither 1 nor 2 (fragments per clock of the compact top)";
+  if (lanes != 1 && !compact) return "lanes: 2 needs compact true (the pipelined top takes one fragment per clock)";
   return "";
 }
 

@@ -29,6 +29,9 @@
 //   compact          Compact: the compact micro-architecture (docs/reference/compact.md: the
 //                    compact_* blocks in place of their pipelined counterparts; the same values,
 //                    other cycles); listed only when true
+//   lanes            Lanes: fragments per clock of the compact top's fragment path (interpolator's
+//                    stepper, line buffer's writer): 1, or 2 for a scene whose lines hold more
+//                    fragments than a line's clocks (compact only); listed only when not 1
 // Each twin's header lists which of its registers takes which of these.
 #pragma once
 
@@ -90,6 +93,9 @@ struct Config {
   // clock at 100+ MHz), true the compact ones for small parts (docs/reference/compact.md). The
   // values are the same either way; only the cycle model's timing differs.
   bool compact = false;
+  // Fragments per clock of the compact fragment path: 1, or 2 (two consecutive pixels of a span a
+  // beat; the line buffer's RAMs split by x parity). The values are the same either way.
+  int lanes = 1;
 
   // Limits a configuration must respect (validate() checks them).
   static constexpr int MaxWordBits = 62;      // the model keeps every word in 64 bits, products in 128
@@ -129,7 +135,7 @@ struct Config {
            depth_bits == o.depth_bits && max_active_edges == o.max_active_edges &&
            max_width == o.max_width && max_materials == o.max_materials && max_polygons == o.max_polygons &&
            max_edges == o.max_edges && edge_order == o.edge_order && smoothing == o.smoothing && eq2 == o.eq2 &&
-           eq2_recip_bits == o.eq2_recip_bits && compact == o.compact;
+           eq2_recip_bits == o.eq2_recip_bits && compact == o.compact && lanes == o.lanes;
   }
   bool operator!=(const Config& o) const { return !(*this == o); }
 };
