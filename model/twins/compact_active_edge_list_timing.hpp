@@ -96,7 +96,7 @@ class CompactActiveEdgeListTiming {
     first_ = c.first;
     cross_ = c.cross;
     max_ = c.max;
-    mov_ = c.mov;
+    cmp_ = c.cmp;
   }
 
   int line() const { return line_; }
@@ -113,7 +113,7 @@ class CompactActiveEdgeListTiming {
     State state;
     int cnt, kept, rd, pos, first;
     bool cross;
-    Key max, mov;
+    Key max, cmp;
     bool re = false, we = false, w_rec = false, w_step = false, take = false, ov_set = false;
     int ra = 0, wa = 0;
   };
@@ -130,7 +130,7 @@ class CompactActiveEdgeListTiming {
   bool last_line(const Inputs& in) const { return line_ + 1 == in.height; }
 
   Comb comb(const Inputs& in) const {
-    Comb c{state_, cnt_, kept_, rd_, pos_, first_, cross_, max_, mov_};
+    Comb c{state_, cnt_, kept_, rd_, pos_, first_, cross_, max_, cmp_};
     const bool past = in.edge_eof || in.edge.y0 > line_;
     const bool late = !in.edge_eof && in.edge.y0 < line_;
     const bool full = cnt_ == capacity_;
@@ -139,6 +139,7 @@ class CompactActiveEdgeListTiming {
       case State::Idle:
         break;
       case State::Ins:
+        c.cmp = Key{in.edge.value[fmt::ChanX], id_};  // the record's key, for the shift
         // The ports do not wait for the head's compare: a list with entries reads A[0] (the head
         // past the line) or A[L-1], an empty one has the record written at A[0].
         c.re = cnt_ != 0, c.ra = past ? 0 : cnt_ - 1;
@@ -154,13 +155,12 @@ class CompactActiveEdgeListTiming {
           c.take = true, c.cnt = 1;
         } else {
           c.pos = cnt_ - 1;
-          c.mov = Key{in.edge.value[fmt::ChanX], id_};
           c.state = State::Shift;
         }
         break;
       case State::Shift:
         c.we = true, c.wa = pos_ + 1, c.re = true, c.ra = pos_ - 1;
-        if (kram < mov_)
+        if (kram < cmp_)
           c.w_rec = true, c.take = true, c.cnt = cnt_ + 1, c.state = State::Ins;
         else if (pos_ == 0)
           c.state = State::Place;
@@ -192,12 +192,14 @@ class CompactActiveEdgeListTiming {
           c.state = c.cross ? State::Fix : State::Ins;  // c.cross: with the last edge's compare
         break;
       case State::Fix:
+        c.cmp = max_;  // the scan's first entry is compared with the maximum before A[first]
         c.re = true, c.ra = first_, c.rd = first_, c.state = State::Scan;
         break;
       case State::Scan:
         c.we = true, c.wa = capacity_;  // every scanned entry to the scratch word
-        if (kram < max_) {
-          c.mov = kram, c.re = true, c.ra = rd_ - 1, c.pos = rd_ - 1, c.state = State::FShift;
+        c.cmp = kram;  // the greatest so far, or the one moving back
+        if (kram < cmp_) {
+          c.re = true, c.ra = rd_ - 1, c.pos = rd_ - 1, c.state = State::FShift;
         } else {
           c.max = kram, c.rd = rd_ + 1;
           if (rd_ + 1 == cnt_)
@@ -208,7 +210,7 @@ class CompactActiveEdgeListTiming {
         break;
       case State::FShift:
         c.re = true, c.we = true, c.wa = pos_ + 1;  // ram_q moves up on every clock
-        if (kram < mov_)
+        if (kram < cmp_)
           c.ra = capacity_, c.pos = pos_ + 1, c.state = State::FPlace;
         else if (pos_ == 0)
           c.ra = capacity_, c.state = State::FPlace;
@@ -216,6 +218,7 @@ class CompactActiveEdgeListTiming {
           c.ra = pos_ - 1, c.pos = pos_ - 1;
         break;
       case State::FPlace:
+        c.cmp = max_;  // the scan's next entry is compared with the maximum again
         c.we = true, c.wa = pos_;
         if (rd_ + 1 == cnt_)
           c.state = State::Ins;
@@ -241,7 +244,10 @@ class CompactActiveEdgeListTiming {
   bool overflow_ = false;
   int line_ = 0, cnt_ = 0, kept_ = 0, rd_ = 0, pos_ = 0, first_ = 0, id_ = 0;
   bool cross_ = false;
-  Key max_, mov_;
+  // max_: the greatest key of the entries before (OUT, FIX); cmp_: the key ram_ is compared with
+  // (the record's in the shift, the maximum or the greatest scanned so far in the scan, the
+  // moving entry's in FIX's shift), loaded per state as the RTL's cmp_q.
+  Key max_, cmp_;
 };
 
 }  // namespace watkins
