@@ -20,14 +20,21 @@
 //   through stages o (operands), p (the digit's product, DigitBits x (RecipBits + 1)), x (the
 //   digit sums), s (the rounding shift) and w (round, clamp, write the head).
 // - Stepper (st_*): loads the head when idle (one clock, no fragment), or on the clock it emits
-//   its span's last fragment (no bubble between spans); one fragment per clock while
-//   frag_ready_i allows. A marker leaves from the head when the stepper is idle.
+//   its span's last beat (no bubble between spans); one beat per clock while frag_ready_i
+//   allows. A marker leaves from the head when the stepper is idle.
+// Lanes: a beat carries up to Lanes fragments of one span. At 2 a span's beats are its pixels in
+// pairs from x_start, lane 0 at x (the frag_* ports), lane 1 at x + 1 (frag_pair_o, frag_depth1_o,
+// frag_rgb1_o; poly and material lane 0's); a span of an odd pixel count ends with a beat of lane
+// 0 alone, and a marker's beat has frag_pair_o = 0. Lane 1's value is the stepper's value plus
+// one step, read through its own copy of the rounding and clamping; the stepper advances by two
+// steps in one add of the step shifted left by one (both wrap like the slot's register).
+// At 1 frag_pair_o, frag_depth1_o and frag_rgb1_o are constant 0 and no lane-1 logic exists.
 // Latency: with every unit idle, a span offered at clock t is taken at t + 2 + Iterations and
 // its first fragment is on frag_*_o at the take + IssueClocks + 7 (t + 32 at the sized default
 // configuration: Iterations 13, IssueClocks 10); a marker at t + 3.
 // Throughput: one span per max(IssueClocks + 6, Iterations + 3) clocks (16 at the sized default
-// configuration) while spans are shorter, one fragment per clock while they are longer; an
-// empty span or a marker takes 2 clocks of the setup.
+// configuration) while spans are shorter, one beat (Lanes fragments) per clock while they are
+// longer; an empty span or a marker takes 2 clocks of the setup.
 // FifoDepth is accepted for the drop-in and unused: the head is the one span queued.
 `include "watkins_assert.svh"
 
@@ -45,6 +52,7 @@ module compact_segment_interpolator #(
   parameter int unsigned PolyIdBits     = watkins_pkg::PolyIdBits,
   parameter int unsigned MaterialIdBits = watkins_pkg::MaterialIdBits,
   parameter bit          AttrOut        = 1'b0,  // 1: frag_attr_o carries the attribute words
+  parameter int unsigned Lanes          = 1,  // fragments per beat: 1, or 2 (then AttrOut = 0)
   parameter int unsigned QuotientBitsPerClock = 2,  // restoring steps per divider clock
   localparam int unsigned VectorBits = watkins_pkg::vector_bits(XBits, ZBits, AttrBits)
 ) (
@@ -69,6 +77,10 @@ module compact_segment_interpolator #(
   output logic [MaterialIdBits-1:0]              frag_material_o,
   output logic                                   frag_eol_o,       // end-of-line marker, no
                                                                    // fragment
+  output logic                                   frag_pair_o,      // lane 1 holds the fragment
+                                                                   // at frag_x_o + 1
+  output logic [DepthBits-1:0]                   frag_depth1_o,    // lane 1's depth
+  output watkins_pkg::rgb_t                      frag_rgb1_o,      // lane 1's Gouraud shade
   output logic                                   frag_valid_o,
   input  logic                                   frag_ready_i
 );
@@ -508,16 +520,17 @@ module compact_segment_interpolator #(
   end
 
   // ---------------------------------------------------------------- stepper
-  logic                        st_active_q;  // st_* hold the next fragment to emit
+  logic                        st_active_q;  // st_* hold the next beat to emit
   logic [LineBits-1:0]         st_x_q, st_xe_q;
   logic [PolyIdBits-1:0]       st_poly_q;
   logic [MaterialIdBits-1:0]   st_material_q;
-  logic [InterpVectorBits-1:0] st_value_q, st_step_q, st_value1;
+  logic [InterpVectorBits-1:0] st_value_q, st_step_q;
+  logic [InterpVectorBits-1:0] st_value1;      // the value one step on: lane 1's
+  logic [InterpVectorBits-1:0] st_value_next;  // the value Lanes steps on: the next beat's
   logic                        out_free, emit_frag, emit_eol, st_last, load;
 
   assign out_free  = !frag_valid_o || frag_ready_i;
   assign emit_frag = out_free && st_active_q;
-  assign st_last   = (st_x_q + 1'b1 == st_xe_q);
   assign load      = h_valid_q && !h_eol_q && (!st_active_q || (emit_frag && st_last));
   assign emit_eol  = out_free && !st_active_q && h_valid_q && h_eol_q;
   assign h_pop     = load || emit_eol;
@@ -533,13 +546,13 @@ module compact_segment_interpolator #(
     end
   end
 
-  // Per slot: the next pixel's value and the fragment's readings (segment_interpolator's g_frag):
+  // Per slot: the next beat's value and each lane's readings (segment_interpolator's g_frag):
   // depth = clamp(round_shift(Z, ZFracBits), 0, 2^DepthBits - 1); shade = clamp(round_shift(v,
-  // AttrFracBits), 0, 255); normal = v rescaled to FracBits fraction bits, saturated to
+  // AttrFracBits), 0, 255); normal (lane 0) = v rescaled to FracBits fraction bits, saturated to
   // NormalInBits.
-  logic [DepthBits-1:0]    depth_d;
-  logic [3*8-1:0]          rgb_d;     // {B, G, R} by slot
-  logic [3*NormalBits-1:0] normal_d;  // {Nz, Ny, Nx}
+  logic [Lanes*DepthBits-1:0] depth_d;   // lane l at l DepthBits
+  logic [Lanes*3*8-1:0]       rgb_d;     // lane l's {B, G, R} by slot at l 24
+  logic [3*NormalBits-1:0]    normal_d;  // {Nz, Ny, Nx}
   for (genvar c = 1; c <= InterpolatedSlots; c++) begin : g_frag
     localparam int unsigned SlotBits     = watkins_pkg::slot_bits(c, XBits, ZBits, AttrBits);
     localparam int unsigned SlotFracBits = (c == 1) ? ZFracBits : AttrFracBits;
@@ -548,28 +561,42 @@ module compact_segment_interpolator #(
     localparam int unsigned RoundedBits  = SlotBits + 1 - SlotFracBits;
     localparam int unsigned ClampBits    = (RoundedBits > LevelBits + 1) ? RoundedBits
                                                                          : LevelBits + 1;
-    logic signed [SlotBits-1:0]  v;
-    /* verilator lint_off UNUSEDSIGNAL */
-    logic signed [SlotBits:0]    t;  // fraction bits are rounded away
-    /* verilator lint_on UNUSEDSIGNAL */
-    logic signed [ClampBits-1:0] r;
-    logic [ClampBits-2:0]        mag;
-    logic [LevelBits-1:0]        level;
-    assign st_value1[SlotLow +: SlotBits] = st_value_q[SlotLow +: SlotBits]
-                                          + st_step_q[SlotLow +: SlotBits];
+    logic signed [SlotBits-1:0] v;  // lane 0's
     assign v = st_value_q[SlotLow +: SlotBits];
-    if (SlotFracBits > 0) begin : g_round
-      assign t = $signed({v[SlotBits-1], v}) + $signed((SlotBits + 1)'(1) << (SlotFracBits - 1));
-    end else begin : g_exact
-      assign t = $signed({v[SlotBits-1], v});
+    assign st_value1[SlotLow +: SlotBits] = v + st_step_q[SlotLow +: SlotBits];
+    if (Lanes == 2) begin : g_two_steps
+      // Two steps wrapped to the slot: the step doubled in the slot's width, one add.
+      assign st_value_next[SlotLow +: SlotBits] =
+          v + {st_step_q[SlotLow +: SlotBits - 1], 1'b0};
+    end else begin : g_one_step
+      assign st_value_next[SlotLow +: SlotBits] = st_value1[SlotLow +: SlotBits];
     end
-    assign r     = ClampBits'($signed(t[SlotBits:SlotFracBits]));
-    assign mag   = r[ClampBits-2:0];
-    assign level = r[ClampBits-1] ? '0 : (|(mag >> LevelBits)) ? {LevelBits{1'b1}}
-                                                                : LevelBits'(mag);
-    if (c == 1) begin : g_depth
-      assign depth_d = level;
-    end else begin : g_attr
+    for (genvar l = 0; l < Lanes; l++) begin : g_lane
+      logic signed [SlotBits-1:0]  lv;  // the lane's value
+      /* verilator lint_off UNUSEDSIGNAL */
+      logic signed [SlotBits:0]    t;   // fraction bits are rounded away
+      /* verilator lint_on UNUSEDSIGNAL */
+      logic signed [ClampBits-1:0] r;
+      logic [ClampBits-2:0]        mag;
+      logic [LevelBits-1:0]        level;
+      assign lv = (l == 0) ? v : st_value1[SlotLow +: SlotBits];
+      if (SlotFracBits > 0) begin : g_round
+        assign t = $signed({lv[SlotBits-1], lv})
+                 + $signed((SlotBits + 1)'(1) << (SlotFracBits - 1));
+      end else begin : g_exact
+        assign t = $signed({lv[SlotBits-1], lv});
+      end
+      assign r     = ClampBits'($signed(t[SlotBits:SlotFracBits]));
+      assign mag   = r[ClampBits-2:0];
+      assign level = r[ClampBits-1] ? '0 : (|(mag >> LevelBits)) ? {LevelBits{1'b1}}
+                                                                  : LevelBits'(mag);
+      if (c == 1) begin : g_depth
+        assign depth_d[l*DepthBits +: DepthBits] = level;
+      end else begin : g_shade
+        assign rgb_d[l*3*8 + (c - 2)*8 +: 8] = level;
+      end
+    end
+    if (c != 1) begin : g_normal
       localparam int unsigned NormalFracBits = watkins_pkg::FracBits;
       localparam int unsigned RescaledBits   = (SlotFracBits >= NormalFracBits)
           ? SlotBits + 1 - (SlotFracBits - NormalFracBits)
@@ -579,7 +606,6 @@ module compact_segment_interpolator #(
       logic signed [RescaledBits-1:0]   n;
       logic signed [SaturateBits-1:0]   ns;
       logic [SaturateBits-NormalBits:0] ns_hi;
-      assign rgb_d[(c - 2)*8 +: 8] = level;
       if (SlotFracBits > NormalFracBits) begin : g_down
         /* verilator lint_off UNUSEDSIGNAL */
         logic signed [SlotBits:0] tn;
@@ -604,7 +630,7 @@ module compact_segment_interpolator #(
   always_ff @(posedge clk_i) begin
     if (emit_frag) begin
       frag_x_o        <= st_x_q;
-      frag_depth_o    <= depth_d;
+      frag_depth_o    <= depth_d[0 +: DepthBits];
       frag_rgb_o.r    <= rgb_d[0 +: 8];
       frag_rgb_o.g    <= rgb_d[8 +: 8];
       frag_rgb_o.b    <= rgb_d[16 +: 8];
@@ -623,9 +649,33 @@ module compact_segment_interpolator #(
       st_value_q    <= h_value_q;
       st_step_q     <= h_step_q;
     end else if (emit_frag) begin
-      st_x_q     <= st_x_q + 1'b1;
-      st_value_q <= st_value1;
+      st_x_q     <= st_x_q + LineBits'(Lanes);
+      st_value_q <= st_value_next;
     end
+  end
+
+  // The span's last beat: one pixel left, or (Lanes = 2) two. A span ends below 2^LineBits, so
+  // x + 1 never wraps, and x + 2 wraps only where x + 1 is the end already.
+  if (Lanes == 2) begin : g_lane1
+    logic one_left;  // the beat is the span's last pixel alone
+    assign one_left = (st_x_q + 1'b1 == st_xe_q);
+    assign st_last  = one_left || (st_x_q + LineBits'(2) == st_xe_q);
+    always_ff @(posedge clk_i) begin
+      if (emit_frag) begin
+        frag_pair_o     <= !one_left;
+        frag_depth1_o   <= depth_d[DepthBits +: DepthBits];
+        frag_rgb1_o.r   <= rgb_d[3*8 +: 8];
+        frag_rgb1_o.g   <= rgb_d[4*8 +: 8];
+        frag_rgb1_o.b   <= rgb_d[5*8 +: 8];
+      end else if (emit_eol) begin
+        frag_pair_o     <= 1'b0;
+      end
+    end
+  end else begin : g_lane0_only
+    assign st_last       = (st_x_q + 1'b1 == st_xe_q);
+    assign frag_pair_o   = 1'b0;
+    assign frag_depth1_o = '0;
+    assign frag_rgb1_o   = '0;
   end
 
   if (AttrOut) begin : g_attr_out
@@ -639,8 +689,11 @@ module compact_segment_interpolator #(
   `WATKINS_ASSERT_HOLD(a_in_hold, seg_valid_i, seg_ready_o, {seg_e_i, seg_f_i, seg_poly_i,
     seg_material_i, seg_eol_i})
   `WATKINS_ASSERT_HOLD(a_out_hold, frag_valid_o, frag_ready_i, {frag_x_o, frag_depth_o,
-    frag_rgb_o, frag_normal_o, frag_attr_o, frag_poly_o, frag_material_o, frag_eol_o})
+    frag_rgb_o, frag_normal_o, frag_attr_o, frag_poly_o, frag_material_o, frag_eol_o, frag_pair_o,
+    frag_depth1_o, frag_rgb1_o})
   `WATKINS_ASSERT(a_x_on_screen, frag_valid_o && !frag_eol_o |-> frag_x_o < width_i)
+  `WATKINS_ASSERT(a_pair_on_screen, frag_valid_o && frag_pair_o
+    |-> !frag_eol_o && (LineBits + 1)'(frag_x_o) + 1'b1 < (LineBits + 1)'(width_i))
   // The values need alpha0 when their first digit is issued: op 0 has been written by then.
   `WATKINS_ASSERT(a_alpha_ready, issue && m_op_q == OpBits'(5) && m_dig_q == '0
     |-> !(o_valid_q && o_op_q == 0) && !(p_valid_q && p_op_q == 0)
@@ -648,4 +701,11 @@ module compact_segment_interpolator #(
   `WATKINS_COVER(c_back_to_back_spans, load && st_active_q)
   `WATKINS_COVER(c_take_empty, take && !seg_eol_i && in_empty)
   `WATKINS_ASSERT(a_pk_recip, pk_seen_q && seg_valid_i |-> pk_recip_q == in_recip)
+
+  if (Lanes != 1 && Lanes != 2) begin : g_check_lanes
+    $error("compact_segment_interpolator: Lanes must be 1 or 2");
+  end
+  if (Lanes == 2 && AttrOut) begin : g_check_lanes_attr
+    $error("compact_segment_interpolator: Lanes = 2 needs AttrOut = 0 (lane 1 has no attribute words)");
+  end
 endmodule

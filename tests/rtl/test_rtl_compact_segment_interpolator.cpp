@@ -4,9 +4,12 @@
 // twins produce for the shipped scenes that prepare at the unit's configuration and for random
 // scenes, and random segments (spans narrower than a pixel, clipped at 0 and at the width, empty
 // and reversed, full-range channel words), at full rate and under random valid gaps and
-// back-pressure. Prints each shipped scene's fragment rate and longest line at full rate.
-// Built at the sized default scene's parameters and at the default configuration's
-// (tests/rtl/CMakeLists.txt).
+// back-pressure; spans of every pixel count from 1 to 9, clipped at 0 and at the width. Each beat is
+// split into its fragments (Lanes = 2: lane 0, then lane 1 when frag_pair_o), each checked against
+// the next expected fragment, a pair's two from one span, lane 0 at an even pixel of its span.
+// Prints each shipped scene's fragment rate and longest line at full rate. Built at the sized
+// default scene's parameters, at the overdraw scene's with Lanes = 2, and at the default
+// configuration's (tests/rtl/CMakeLists.txt).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -41,6 +44,11 @@ constexpr int QuotientBitsPerClock = WATKINS_RTL_PARAM_QuotientBitsPerClock;
 #else
 constexpr int QuotientBitsPerClock = 2;
 #endif
+#ifdef WATKINS_RTL_PARAM_Lanes
+constexpr int Lanes = WATKINS_RTL_PARAM_Lanes;
+#else
+constexpr int Lanes = 1;
+#endif
 #ifdef WATKINS_RTL_PARAM_PolyIdBits
 constexpr int PolyIdBits = WATKINS_RTL_PARAM_PolyIdBits;
 constexpr int MaterialIdBits = WATKINS_RTL_PARAM_MaterialIdBits;
@@ -49,10 +57,14 @@ constexpr int PolyIdBits = fmt::PolyIdBits;
 constexpr int MaterialIdBits = fmt::MaterialIdBits;
 #endif
 
-// The configuration the unit was built at: the sized default scene's when PARAMS set the widths.
+// The configuration the unit was built at: when PARAMS set the widths, WATKINS_UNIT_CONFIG's (a
+// file under the source folder), the sized default scene's unless the build names another.
+#ifndef WATKINS_UNIT_CONFIG
+#define WATKINS_UNIT_CONFIG "scenes/sized/default.gouraud.json"
+#endif
 const Config& unit_config() {
 #ifdef WATKINS_RTL_PARAM_XBits
-  static const Config c = load_config(WATKINS_SOURCE_DIR "/scenes/sized/default.gouraud.json");
+  static const Config c = load_config(WATKINS_SOURCE_DIR "/" WATKINS_UNIT_CONFIG);
 #else
   static const Config c;
 #endif
@@ -75,6 +87,8 @@ struct Frag {
   std::uint64_t normal;  // {Nz, Ny, Nx}, NormalInBits each
   int material;
   int poly;
+  std::uint64_t span;  // the item it comes from
+  int k;               // its pixel's index in the span (x - x_start)
 };
 
 // 1.0 in slot c's unit; a value wrapped to the slot's word.
@@ -136,9 +150,33 @@ Segment random_segment(std::mt19937_64& rng, int width) {
   return s;
 }
 
-void expected(const Item& it, int width, std::deque<Frag>& out) {
+// A span of n pixels from pixel x0 (before clipping to [0, width)): X_E and X_F each a random
+// fraction of a pixel left of a pixel centre, so centres x0 + 1/2 .. x0 + n - 1/2 are covered.
+Segment span_of(std::mt19937_64& rng, int x0, int n) {
+  Segment s = random_segment(rng, 64);  // its channel words; X set below
+  const i64 One = one(fmt::ChanX);
+  auto below_centre = [&](int x) { return x * One + 1 + static_cast<i64>(rng() % static_cast<std::uint64_t>(One / 2)); };
+  s.e[fmt::ChanX] = word(fmt::ChanX, below_centre(x0));
+  s.f[fmt::ChanX] = word(fmt::ChanX, below_centre(x0 + n));
+  return s;
+}
+
+// Spans of 1 to 9 pixels anywhere on a line of `width` pixels and a little past both ends (so
+// clipped at 0 and at the width to every count), a marker every eol_every items on average.
+std::vector<Item> short_spans(std::mt19937_64& rng, int n, int width, int eol_every) {
+  std::vector<Item> items(static_cast<std::size_t>(n));
+  for (Item& it : items) {
+    it.eol = rng() % static_cast<std::uint64_t>(eol_every) == 0;
+    const int len = 1 + static_cast<int>(rng() % 9);
+    const int x0 = -10 + static_cast<int>(rng() % static_cast<std::uint64_t>(width + 20));
+    it.seg = span_of(rng, x0, len);
+  }
+  return items;
+}
+
+void expected(const Item& it, std::uint64_t index, int width, std::deque<Frag>& out) {
   if (it.eol) {
-    out.push_back({true, 0, 0, 0, 0, 0, 0});
+    out.push_back({true, 0, 0, 0, 0, 0, 0, index, 0});
     return;
   }
   const SpanSetup span = SegmentInterpolator::setup(it.seg, width, formats());
@@ -148,7 +186,7 @@ void expected(const Item& it, int width, std::deque<Frag>& out) {
     std::uint64_t n = 0;
     for (int c = 0; c < 3; ++c) n |= wrap_unsigned(f.normal[c], fmt::NormalInBits) << (c * fmt::NormalInBits);
     out.push_back({false, x, f.depth, (std::uint32_t(f.rgb[0]) << 16) | (std::uint32_t(f.rgb[1]) << 8) | f.rgb[2], n,
-                   f.material, f.poly});
+                   f.material, f.poly, index, x - span.x_start});
     SegmentInterpolator::step(span, v);
   }
 }
@@ -170,7 +208,7 @@ class Bench {
     Harness<Vcompact_segment_interpolator> h;
     const ChannelFormats& f = formats();
     CompactSegmentInterpolatorTiming twin(f.bits[fmt::ChanX], f.bits[fmt::ChanZ], f.bits[fmt::ChanR],
-                                          QuotientBitsPerClock);
+                                          QuotientBitsPerClock, Lanes);
     const tb::ChannelLayout slots = tb::ChannelLayout::of(f);
     Stalls gaps{rng_, gap_pct}, bp{rng_, bp_pct};
     auto& d = h.dut;
@@ -207,40 +245,59 @@ class Bench {
       d.eval();
       const CompactSegmentInterpolatorTiming::Pins t = twin.clock(offered, titem, d.frag_ready_i);
       if ((offered && t.seg_ready != bool(d.seg_ready_o)) || t.frag_valid != bool(d.frag_valid_o) ||
-          (t.frag_valid && (t.frag_eol != bool(d.frag_eol_o) || (!t.frag_eol && t.frag_x != int(d.frag_x_o))))) {
+          (t.frag_valid && (t.frag_eol != bool(d.frag_eol_o) || t.frag_pair != bool(d.frag_pair_o) ||
+                            (!t.frag_eol && t.frag_x != int(d.frag_x_o))))) {
         ++timing_mismatches;
-        fail("rtl seg_ready/frag_valid/eol/x " + std::to_string(d.seg_ready_o) + std::to_string(d.frag_valid_o) +
-             std::to_string(d.frag_eol_o) + " " + std::to_string(d.frag_x_o) + ", cycle twin " +
-             std::to_string(t.seg_ready) + std::to_string(t.frag_valid) + std::to_string(t.frag_eol) + " " +
-             std::to_string(t.frag_x));
+        fail("rtl seg_ready/frag_valid/eol/pair/x " + std::to_string(d.seg_ready_o) + std::to_string(d.frag_valid_o) +
+             std::to_string(d.frag_eol_o) + std::to_string(d.frag_pair_o) + " " + std::to_string(d.frag_x_o) +
+             ", cycle twin " + std::to_string(t.seg_ready) + std::to_string(t.frag_valid) +
+             std::to_string(t.frag_eol) + std::to_string(t.frag_pair) + " " + std::to_string(t.frag_x));
+      }
+      // Lanes = 1: lane 1's ports are constant 0.
+      if (Lanes == 1 && (d.frag_pair_o || d.frag_depth1_o || d.frag_rgb1_o)) {
+        ++mismatches;
+        fail("lane 1's ports not 0 at Lanes = 1");
       }
       if (d.frag_valid_o && d.frag_ready_i) {
-        if (want.empty()) {
-          ADD_FAILURE() << "output without an expected beat";
-          return res;
+        // The beat's fragments in stream order: lane 0, then lane 1 of a pair.
+        const int lanes = d.frag_pair_o ? 2 : 1;
+        std::uint64_t lane0_span = 0;
+        for (int lane = 0; lane < lanes; ++lane) {
+          if (want.empty()) {
+            ADD_FAILURE() << "output without an expected fragment";
+            return res;
+          }
+          const Frag& w = want.front();
+          const int x = int(d.frag_x_o) + lane;
+          const std::uint32_t depth = lane == 0 ? std::uint32_t(d.frag_depth_o) : std::uint32_t(d.frag_depth1_o);
+          const std::uint32_t rgb = lane == 0 ? std::uint32_t(d.frag_rgb_o) : std::uint32_t(d.frag_rgb1_o);
+          bool ok = d.frag_eol_o == w.eol &&
+                    (w.eol || (x == w.x && depth == w.depth && rgb == w.rgb &&
+                               (lane == 1 || d.frag_normal_o == w.normal) && int(d.frag_material_o) == w.material &&
+                               int(d.frag_poly_o) == w.poly));
+          // A pair's two fragments come from one span; lane 0 sits at an even pixel of its span.
+          if (lane == 0) lane0_span = w.span;
+          if (lane == 1 && w.span != lane0_span) ok = false;
+          if (lane == 0 && !w.eol && w.k % Lanes != 0) ok = false;
+          if (!ok) {
+            ++mismatches;
+            std::ostringstream diff;
+            diff << "beat " << checked << " lane " << lane << ": rtl eol " << int(d.frag_eol_o) << " pair "
+                 << int(d.frag_pair_o) << " x " << x << " depth " << depth << " rgb " << std::hex << rgb
+                 << " normal " << d.frag_normal_o << std::dec << " material " << int(d.frag_material_o) << " poly "
+                 << int(d.frag_poly_o) << "; model eol " << w.eol << " x " << w.x << " (pixel " << w.k
+                 << " of item " << w.span << ") depth " << w.depth << " rgb " << std::hex << w.rgb << " normal "
+                 << w.normal << std::dec << " material " << w.material << " poly " << w.poly;
+            fail(diff.str());
+          }
+          if (w.eol) {
+            res.worst_line = std::max(res.worst_line, static_cast<int>(res.cycles + 1 - last_marker));
+            last_marker = res.cycles + 1;
+          } else {
+            ++res.fragments;
+          }
+          want.pop_front();
         }
-        const Frag& w = want.front();
-        const bool ok = d.frag_eol_o == w.eol &&
-                        (w.eol || (int(d.frag_x_o) == w.x && d.frag_depth_o == w.depth && d.frag_rgb_o == w.rgb &&
-                                   d.frag_normal_o == w.normal && int(d.frag_material_o) == w.material &&
-                                   int(d.frag_poly_o) == w.poly));
-        if (!ok) {
-          ++mismatches;
-          std::ostringstream diff;
-          diff << "beat " << checked << ": rtl eol " << int(d.frag_eol_o) << " x " << d.frag_x_o << " depth "
-               << d.frag_depth_o << " rgb " << std::hex << d.frag_rgb_o << " normal " << d.frag_normal_o << std::dec
-               << " material " << int(d.frag_material_o) << " poly " << int(d.frag_poly_o) << "; model eol " << w.eol
-               << " x " << w.x << " depth " << w.depth << " rgb " << std::hex << w.rgb << " normal " << w.normal
-               << std::dec << " material " << w.material << " poly " << w.poly;
-          fail(diff.str());
-        }
-        if (w.eol) {
-          res.worst_line = std::max(res.worst_line, static_cast<int>(res.cycles + 1 - last_marker));
-          last_marker = res.cycles + 1;
-        } else {
-          ++res.fragments;
-        }
-        want.pop_front();
         ++checked;
         moved = res.cycles;
       }
@@ -248,7 +305,7 @@ class Bench {
       h.tick();
       ++res.cycles;
       if (in_fire) {
-        expected(items[next], width, want);
+        expected(items[next], next, width, want);
         ++next;
         ++res.items;
         offered = false;
@@ -303,14 +360,14 @@ TEST(RtlCompactSegmentInterpolator, UnitConfiguration) {
 #endif
   const ChannelFormats g = formats();
   const CompactSegmentInterpolatorTiming t(g.bits[fmt::ChanX], g.bits[fmt::ChanZ], g.bits[fmt::ChanR],
-                                           QuotientBitsPerClock);
+                                           QuotientBitsPerClock, Lanes);
   std::printf("issue %d clocks, %d divider iterations, a span every %d clocks\n", t.issue_clocks(), t.iterations(),
               t.span_clocks());
   // The header's latencies, on the cycle twin (which every other test holds equal to the RTL): a
   // span offered at clock 0 to an idle block, its first fragment on the output; a marker.
   auto first_out = [&](const CompactSegmentInterpolatorTiming::Item& in) {
     CompactSegmentInterpolatorTiming twin(g.bits[fmt::ChanX], g.bits[fmt::ChanZ], g.bits[fmt::ChanR],
-                                          QuotientBitsPerClock);
+                                          QuotientBitsPerClock, Lanes);
     bool offered = true;
     for (int cycle = 0; cycle < 1000; ++cycle) {
       const auto pins = twin.clock(offered, in, true);
@@ -321,6 +378,28 @@ TEST(RtlCompactSegmentInterpolator, UnitConfiguration) {
   };
   EXPECT_EQ(first_out({false, 3, 9}), 2 + t.iterations() + t.issue_clocks() + 7);
   EXPECT_EQ(first_out({true, 0, 0}), 3);
+  // Throughput: a span of n pixels leaves in ceil(n / Lanes) beats on consecutive clocks, the
+  // last of an odd count at Lanes = 2 without its pair.
+  for (const int n : {1, 2, 3, 6, 7}) {
+    CompactSegmentInterpolatorTiming twin(g.bits[fmt::ChanX], g.bits[fmt::ChanZ], g.bits[fmt::ChanR],
+                                          QuotientBitsPerClock, Lanes);
+    bool offered = true;
+    int first = -1, last = -1, beats = 0, fragments = 0;
+    for (int cycle = 0; cycle < 1000; ++cycle) {
+      const auto pins = twin.clock(offered, {false, 5, 5 + n}, true);
+      if (offered && pins.seg_ready) offered = false;
+      if (!pins.frag_valid) continue;
+      if (first < 0) first = cycle;
+      last = cycle;
+      ++beats;
+      fragments += pins.frag_pair ? 2 : 1;
+      EXPECT_EQ(pins.frag_x, 5 + (beats - 1) * Lanes);
+      EXPECT_EQ(pins.frag_pair, Lanes == 2 && pins.frag_x + 1 < 5 + n);
+    }
+    EXPECT_EQ(fragments, n);
+    EXPECT_EQ(beats, (n + Lanes - 1) / Lanes);
+    EXPECT_EQ(last - first + 1, beats);
+  }
 }
 
 TEST(RtlCompactSegmentInterpolator, RandomSegmentsFullRate) {
@@ -336,6 +415,20 @@ TEST(RtlCompactSegmentInterpolator, RandomSegmentsGapsAndBackPressure) {
   b.run(random_items(b.rng(), 20000, 64, 5), 64, 35, 35);
   b.run(random_items(b.rng(), 5000, 320, 8), 320, 10, 70);
   b.run(random_items(b.rng(), 5000, 1, 3), 1, 20, 20);  // one pixel wide
+  EXPECT_EQ(b.mismatches, 0u);
+  EXPECT_EQ(b.timing_mismatches, 0u);
+}
+
+// Spans of 1 to 9 pixels (odd and even counts, clipped at 0 and at the width to any count), with
+// markers, on lines of odd and even widths: at full rate and under gaps and back-pressure.
+TEST(RtlCompactSegmentInterpolator, ShortSpans) {
+  Bench b(5);
+  for (const int width : {1, 2, 7, 8, 97, 320}) {
+    const std::vector<Item> items = short_spans(b.rng(), 3000, width, 4);
+    b.run(items, width, 0, 0);
+    b.run(items, width, 30, 30);
+    b.run(items, width, 5, 60);
+  }
   EXPECT_EQ(b.mismatches, 0u);
   EXPECT_EQ(b.timing_mismatches, 0u);
 }
@@ -418,7 +511,7 @@ TEST(RtlCompactSegmentInterpolator, CycleTwinAtSizedConfigurations) {
     const PreparedScene p = prepare(load_scene(scene, test::shading_options(ShadingMode::Gouraud)), cfg);
     const ChannelFormats f = cfg.channels(ShadingMode::Gouraud);
     CompactSegmentInterpolatorTiming t(f.bits[fmt::ChanX], f.bits[fmt::ChanZ], f.bits[fmt::ChanR],
-                                       QuotientBitsPerClock);
+                                       QuotientBitsPerClock, Lanes);
     const std::vector<Item> items = segment_stream(p, cfg);
     std::size_t next = 0;
     long long cycle = 0, fragments = 0, last_marker = 0, markers = 0;
@@ -436,7 +529,7 @@ TEST(RtlCompactSegmentInterpolator, CycleTwinAtSizedConfigurations) {
         last_marker = cycle + 1;
         ++markers;
       } else if (pins.frag_valid) {
-        ++fragments;
+        fragments += pins.frag_pair ? 2 : 1;
       }
       if (valid && pins.seg_ready) ++next;
       ASSERT_LT(++cycle, 100000000);
