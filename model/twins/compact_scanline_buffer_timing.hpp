@@ -4,9 +4,9 @@
 // and the position of the pixel offered, so a bench holds the RTL to it cycle for cycle and a
 // cycle model of the compact top composes it.
 //
-// The clock, as the RTL's header states it: after reset the marks of both banks are cleared, one x
-// per clock, max_width clocks with frag_ready_o low; then a fragment is taken every clock it is
-// offered. A marker is taken when the reader is idle, or in the clock the reader loads the
+// The clock, as the RTL's header states it: after reset the marks of both banks are cleared, one
+// address of every way per clock, clear_clocks() = ceil(max_width / lanes) clocks with
+// frag_ready_o low; then a beat (lanes fragments at most) is taken every clock it is offered. A marker is taken when the reader is idle, or in the clock the reader loads the
 // previous line's last pixel. The reader starts the clock after the marker: one clock reads pixel
 // 0, then each clock the output register can take a pixel (empty, or emptied by pixel_ready_i in
 // that clock) loads pixel x and reads x + 1. A line read out at full rate takes width + 1 clocks.
@@ -16,8 +16,13 @@ namespace watkins {
 
 class CompactScanlineBufferTiming {
  public:
-  // The state right after reset (the first clock with rst_ni high is the clear's first).
-  explicit CompactScanlineBufferTiming(int max_width) : max_width_(max_width) {}
+  // The state right after reset (the first clock with rst_ni high is the clear's first). lanes:
+  // the RTL's Lanes, 1 or 2 (its RAMs are lanes ways by x, cleared in parallel).
+  explicit CompactScanlineBufferTiming(int max_width, int lanes = 1)
+      : clear_clocks_((max_width + lanes - 1) / lanes) {}
+
+  // The clear after reset's length in clocks: frag_ready_o is low for the first clear_clocks().
+  int clear_clocks() const { return clear_clocks_; }
 
   // The frame inputs width_i and height_i (stable per frame).
   void set_frame(int width, int height) {
@@ -44,7 +49,7 @@ class CompactScanlineBufferTiming {
     const bool eol_take = frag_valid && frag_eol && eol_ok(pixel_ready);
     if (clear_) {
       ++clear_x_;
-      if (clear_x_ == max_width_) clear_ = false;
+      if (clear_x_ == clear_clocks_) clear_ = false;
     }
     if (read) pf_ = true;
     if (load) {
@@ -68,7 +73,7 @@ class CompactScanlineBufferTiming {
   bool loads(bool pixel_ready) const { return pf_ && (!pixel_valid_ || pixel_ready); }
   bool eol_ok(bool pixel_ready) const { return !clear_ && (!busy_ || (loads(pixel_ready) && rx_ + 1 == width_)); }
 
-  int max_width_;
+  int clear_clocks_;
   int width_ = 1, height_ = 1;
   bool clear_ = true;  // the clear after reset
   int clear_x_ = 0;
