@@ -59,7 +59,10 @@
 // seg_ready_o (a flop) is high -- no segment skid. The fragment queue (two entries, latency 1)
 // and the pixel skid stay as in the pipelined top. It needs Phong = 0, Smoothing = 0 and
 // HasEq2 = 0 (checked at elaboration) and sparse_i = 0 at every frame start (asserted: the
-// compact buffer emits full frames only).
+// compact buffer emits full frames only). Lanes = 2 (Config::lanes, compact only): the
+// interpolator's beats carry up to two consecutive pixels of a span (fr_pair: lane 1 at x + 1),
+// the fragment queue carries both, and the line buffer writes both in one clock; the values and
+// their order are the same, a long span takes half the clocks.
 `include "watkins_assert.svh"
 
 module watkins_top #(
@@ -83,6 +86,7 @@ module watkins_top #(
   parameter int unsigned Eq2RecipBits   = watkins_pkg::Eq2RecipBits,  // its 1/depth mantissa
   /* verilator lint_on UNUSEDPARAM */
   parameter int          Compact        = 0,  // 1: the compact blocks (Gouraud, no smoother, full frames)
+  parameter int unsigned Lanes          = 1,  // fragments per beat of the compact fragment path: 1 or 2
   localparam int unsigned XBits    = XIntBits + XFracBits,
   localparam int unsigned ZBits    = DepthIntBits + DepthFracBits,
   localparam int unsigned AttrBits = AttrIntBits + AttrFracBits,
@@ -130,6 +134,9 @@ module watkins_top #(
   // The compact blocks serve the Gouraud top without the smoother and the eq. (2) divider.
   if (Compact != 0 && (Phong != 0 || Smoothing != 0 || HasEq2 != 0)) begin : g_compact_unsupported
     $error("watkins_top: Compact = 1 needs Phong = 0, Smoothing = 0 and HasEq2 = 0");
+  end
+  if (Lanes != 1 && (Compact == 0 || Lanes != 2)) begin : g_lanes_unsupported
+    $error("watkins_top: Lanes = 2 needs Compact = 1 (the pipelined blocks take one fragment a clock)");
   end
 
   // ------------------------------------------------------------ frame control
@@ -329,6 +336,10 @@ module watkins_top #(
   logic                                   fr_eol      /*verilator public_flat_rd*/;
   logic                                   fr_valid    /*verilator public_flat_rd*/;
   logic                                   fr_ready    /*verilator public_flat_rd*/;
+  // Lane 1 (Lanes = 2): the fragment at fr_x + 1 of the same span, after lane 0; 0 otherwise.
+  logic                                   fr_pair     /*verilator public_flat_rd*/;
+  logic [DepthBits-1:0]                   fr_depth1   /*verilator public_flat_rd*/;
+  watkins_pkg::rgb_t                      fr_rgb1     /*verilator public_flat_rd*/;
 
   if (Compact != 0) begin : g_compact_segment_interpolator
     compact_segment_interpolator #(
@@ -341,7 +352,8 @@ module watkins_top #(
       .DepthBits     (DepthBits),
       .PolyIdBits    (PolyIdBits),
       .MaterialIdBits(MaterialIdBits),
-      .AttrOut       (HasEq2 != 0 && Phong == 0)
+      .AttrOut       (HasEq2 != 0 && Phong == 0),
+      .Lanes         (Lanes)
     ) u_segment_interpolator (
       .clk_i, .rst_ni,
       .width_i     (width_q),
@@ -361,9 +373,15 @@ module watkins_top #(
       .frag_material_o(fr_material),
       .frag_eol_o  (fr_eol),
       .frag_valid_o(fr_valid),
-      .frag_ready_i(fr_ready)
+      .frag_ready_i(fr_ready),
+      .frag_pair_o (fr_pair),
+      .frag_depth1_o(fr_depth1),
+      .frag_rgb1_o (fr_rgb1)
     );
   end else begin : g_segment_interpolator
+    assign fr_pair   = 1'b0;
+    assign fr_depth1 = '0;
+    assign fr_rgb1   = '0;
     segment_interpolator #(
       .XBits         (XBits),
       .XFracBits     (XFracBits),
@@ -408,6 +426,9 @@ module watkins_top #(
   logic                  sh_valid /*verilator public_flat_rd*/;
   logic                  sh_ready /*verilator public_flat_rd*/;
   logic                  sh_ready_next;  // sh_ready on the next clock (the Phong pipes' lookahead)
+  logic                  sh_pair;        // lane 1 (Lanes = 2, Gouraud): sh_x + 1's fragment
+  logic [DepthBits-1:0]  sh_depth1;
+  watkins_pkg::rgb_t     sh_rgb1;
 
   if (Phong != 0) begin : g_phong
     localparam int unsigned UnitBits         = watkins_pkg::UnitBits;
@@ -489,8 +510,9 @@ module watkins_top #(
       .ready_next_o(nm_ready_next)
     );
     assign {sh_eol, sh_x, sh_depth, sh_poly} = sh_payload;
+    assign {sh_pair, sh_depth1, sh_rgb1} = '0;
     logic unused_eq2;
-    assign unused_eq2 = ^{eq2_i, fr_attr};
+    assign unused_eq2 = ^{eq2_i, fr_attr, fr_pair, fr_depth1, fr_rgb1};
     `WATKINS_ASSERT(a_phong_no_eq2, start |-> !eq2_i)
   end else if (HasEq2 != 0) begin : g_eq2
     // Gouraud with the eq. (2) divider: every fragment passes through it (the same latency in
@@ -526,9 +548,11 @@ module watkins_top #(
       .ready_next_i(sh_ready_next)
     );
     assign sh_rgb = eq2_q ? dv_rgb : dv_interpolated;
+    assign {sh_pair, sh_depth1, sh_rgb1} = '0;
     logic unused_phong;
     assign unused_phong = ^{fr_normal, fr_material, light_i, eye_i, material_we_i, material_addr_i,
-                            material_cp_i, material_d_i, material_w_i, material_n_i};
+                            material_cp_i, material_d_i, material_w_i, material_n_i, fr_pair, fr_depth1,
+                            fr_rgb1};
     `WATKINS_COVER(c_eq2_frame, eq2_q && sh_valid && sh_ready && !sh_eol)
   end else begin : g_gouraud
     assign sh_x     = fr_x;
@@ -538,6 +562,9 @@ module watkins_top #(
     assign sh_eol   = fr_eol;
     assign sh_valid = fr_valid;
     assign fr_ready = sh_ready;
+    assign sh_pair   = fr_pair;
+    assign sh_depth1 = fr_depth1;
+    assign sh_rgb1   = fr_rgb1;
     // The normal reading of the channels and the Phong inputs serve Phong = 1 only; the
     // attribute words and eq2_i the divider only.
     logic unused_phong;
@@ -557,6 +584,7 @@ module watkins_top #(
   // buffer's ready runs from its reader's column compare, and without the queue it would reach
   // the interpolator's stepper and head in the same clock (on the UP5K a 45.5 ns path: 22.0
   // MHz).
+  // At Lanes = 2 an entry is a beat: lane 1's flag, depth and shade ride beside lane 0's.
   localparam int unsigned QueueBits = 1 + LineBits + DepthBits + PolyIdBits
                                     + watkins_pkg::RgbBits;
   watkins_pkg::rgb_t     q_rgb;
@@ -564,20 +592,43 @@ module watkins_top #(
   logic [DepthBits-1:0]  q_depth;
   logic [PolyIdBits-1:0] q_poly;
   logic                  q_eol, q_valid, q_ready;
+  logic                  q_pair;
+  logic [DepthBits-1:0]  q_depth1;
+  watkins_pkg::rgb_t     q_rgb1;
 
-  stream_fifo #(
-    .DataBits(QueueBits),
-    .Depth   (2)
-  ) u_frag_queue (
-    .clk_i, .rst_ni,
-    .data_i ({sh_eol, sh_x, sh_depth, sh_poly, sh_rgb}),
-    .valid_i(sh_valid),
-    .ready_o(sh_ready),
-    .ready_next_o(sh_ready_next),
-    .data_o ({q_eol, q_x, q_depth, q_poly, q_rgb}),
-    .valid_o(q_valid),
-    .ready_i(q_ready)
-  );
+  if (Lanes == 2) begin : g_frag_queue_pairs
+    localparam int unsigned LaneBits = 1 + DepthBits + watkins_pkg::RgbBits;
+    stream_fifo #(
+      .DataBits(QueueBits + LaneBits),
+      .Depth   (2)
+    ) u_frag_queue (
+      .clk_i, .rst_ni,
+      .data_i ({sh_pair, sh_depth1, sh_rgb1, sh_eol, sh_x, sh_depth, sh_poly, sh_rgb}),
+      .valid_i(sh_valid),
+      .ready_o(sh_ready),
+      .ready_next_o(sh_ready_next),
+      .data_o ({q_pair, q_depth1, q_rgb1, q_eol, q_x, q_depth, q_poly, q_rgb}),
+      .valid_o(q_valid),
+      .ready_i(q_ready)
+    );
+  end else begin : g_frag_queue
+    stream_fifo #(
+      .DataBits(QueueBits),
+      .Depth   (2)
+    ) u_frag_queue (
+      .clk_i, .rst_ni,
+      .data_i ({sh_eol, sh_x, sh_depth, sh_poly, sh_rgb}),
+      .valid_i(sh_valid),
+      .ready_o(sh_ready),
+      .ready_next_o(sh_ready_next),
+      .data_o ({q_eol, q_x, q_depth, q_poly, q_rgb}),
+      .valid_o(q_valid),
+      .ready_i(q_ready)
+    );
+    assign {q_pair, q_depth1, q_rgb1} = '0;
+    logic unused_lane1;
+    assign unused_lane1 = ^{sh_pair, sh_depth1, sh_rgb1};
+  end
 
   // ------------------------------------------------------------ visibility and pixels
   watkins_pkg::rgb_t   sb_rgb;
@@ -588,7 +639,8 @@ module watkins_top #(
     compact_scanline_buffer #(
       .MaxWidth  (MaxWidth),
       .DepthBits (DepthBits),
-      .PolyIdBits(PolyIdBits)
+      .PolyIdBits(PolyIdBits),
+      .Lanes     (Lanes)
     ) u_scanline_buffer (
       .clk_i, .rst_ni,
       .width_i        (width_q),
@@ -603,6 +655,9 @@ module watkins_top #(
       .frag_eol_i     (q_eol),
       .frag_valid_i   (q_valid),
       .frag_ready_o   (q_ready),
+      .frag_pair_i    (q_pair),
+      .frag_depth1_i  (q_depth1),
+      .frag_rgb1_i    (q_rgb1),
       .pixel_rgb_o    (sb_rgb),
       .pixel_covered_o(sb_covered),
       .pixel_x_o      (sb_x),
@@ -613,6 +668,8 @@ module watkins_top #(
     );
     `WATKINS_ASSERT(a_compact_full_frames, start |-> !sparse_i)
   end else begin : g_scanline_buffer
+    logic unused_lane1_queue;  // Lanes = 1 here: the queue's lane 1 is constant
+    assign unused_lane1_queue = ^{q_pair, q_depth1, q_rgb1};
     scanline_buffer #(
       .MaxWidth  (MaxWidth),
       .DepthBits (DepthBits),

@@ -35,8 +35,15 @@ class StageChecker {
     const StageTaps& t = *taps_;
     if (*t.ae_valid && *t.ae_ready && !ae_.dead) edge(c);
     if (*t.sg_valid && *t.sg_ready && !sg_.dead) segment(c);
-    if (*t.fr_valid && *t.fr_ready && !fr_.dead) fragment(c);
-    if (*t.sh_valid && *t.sh_ready && !sh_.dead) shaded(c);
+    // A beat of two lanes is two transfers, lane 0 first.
+    if (*t.fr_valid && *t.fr_ready && !fr_.dead) {
+      fragment(c, 0);
+      if (*t.fr_pair && !fr_.dead) fragment(c, 1);
+    }
+    if (*t.sh_valid && *t.sh_ready && !sh_.dead) {
+      shaded(c, 0);
+      if (*t.sh_pair && !sh_.dead) shaded(c, 1);
+    }
   }
 
  private:
@@ -59,8 +66,8 @@ class StageChecker {
   template <class Same, class Text, class Diff>
   void fragment_stage(long long c, Cursor& k, std::vector<StageFragment> StageStreams::*stream, const char* stage,
                       bool eol, int rtl_x, Same same, Text text, Diff diff);
-  void fragment(long long c);
-  void shaded(long long c);
+  void fragment(long long c, int lane);
+  void shaded(long long c, int lane);
 
   ChannelVector channels(const std::uint32_t* words) const { return channels_.read(words); }
 

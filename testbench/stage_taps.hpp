@@ -60,10 +60,16 @@ struct StageTaps {
   const std::uint16_t* fr_x = nullptr;
   TapField fr_material, fr_depth;
   const std::uint64_t* fr_normal = nullptr;  // {Nz, Ny, Nx}, NormalInBits each (54 bits)
+  // Lane 1 of a beat (Lanes = 2: the fragment at x + 1, after lane 0); fr_pair is 0 otherwise.
+  const std::uint8_t* fr_pair = nullptr;
+  TapField fr_depth1;
   const std::uint8_t *sh_valid = nullptr, *sh_ready = nullptr, *sh_eol = nullptr;
   const std::uint16_t* sh_x = nullptr;
   TapField sh_depth, sh_poly;
   const std::uint32_t* sh_rgb = nullptr;
+  const std::uint8_t* sh_pair = nullptr;
+  TapField sh_depth1;
+  const std::uint32_t* sh_rgb1 = nullptr;
 };
 
 // `root` is the Verilated model's root (model.rootp, e.g. Vwatkins_top___024root).
@@ -90,6 +96,8 @@ StageTaps stage_taps(const Root& root) {
   t.fr_depth = TapField(root.watkins_top__DOT__fr_depth);
   t.fr_material = TapField(root.watkins_top__DOT__fr_material);
   t.fr_normal = &root.watkins_top__DOT__fr_normal;
+  t.fr_pair = &root.watkins_top__DOT__fr_pair;
+  t.fr_depth1 = TapField(root.watkins_top__DOT__fr_depth1);
   t.sh_valid = &root.watkins_top__DOT__sh_valid;
   t.sh_ready = &root.watkins_top__DOT__sh_ready;
   t.sh_eol = &root.watkins_top__DOT__sh_eol;
@@ -97,6 +105,9 @@ StageTaps stage_taps(const Root& root) {
   t.sh_depth = TapField(root.watkins_top__DOT__sh_depth);
   t.sh_poly = TapField(root.watkins_top__DOT__sh_poly);
   t.sh_rgb = &root.watkins_top__DOT__sh_rgb;
+  t.sh_pair = &root.watkins_top__DOT__sh_pair;
+  t.sh_depth1 = TapField(root.watkins_top__DOT__sh_depth1);
+  t.sh_rgb1 = &root.watkins_top__DOT__sh_rgb1;
   return t;
 }
 

@@ -74,6 +74,24 @@ TEST(CliBoard, EitherTopOnEitherBoard) {
   EXPECT_NE(r.output.find("the compact top has no smoother"), std::string::npos) << r.output;
 }
 
+// overdraw (2,548 fragments a line) on the iCEBreaker: one lane misses lines, so the sized
+// compact configuration takes two and meets every line; a --config file says for itself.
+TEST(CliBoard, OverdrawTakesTwoLanesOnTheIcebreaker) {
+  const std::string scene = WATKINS_SOURCE_DIR "/scenes/overdraw.json";
+  CliRun r = run_cli("board check " + scene + " --board icebreaker");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("compact top (2 fragment lanes), edge record"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("missed        0 lines"), std::string::npos) << r.output;
+  ScratchDir dir;
+  const std::string one = dir.write("one.json", "{\"smoothing\": false, \"compact\": true, \"max_width\": 320}");
+  r = run_cli("board check " + scene + " --board icebreaker --config " + one);
+  EXPECT_EQ(r.exit_code, 4) << r.output;
+  EXPECT_NE(r.output.find("compact top, edge record"), std::string::npos) << r.output;
+  // The default scene needs one lane.
+  r = run_cli("board check " WATKINS_SOURCE_DIR "/scenes/default.json --board icebreaker");
+  EXPECT_NE(r.output.find("compact top, edge record"), std::string::npos) << r.output;
+}
+
 TEST(CliBoard, RefusesOtherSizesAndOptions) {
   ScratchDir dir;
   const std::string scene = WATKINS_SOURCE_DIR "/scenes/default.json";

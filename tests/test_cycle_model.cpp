@@ -251,7 +251,8 @@ long long list_alone(const PreparedScene& p, const Config& cfg) {
 long long interpolator_alone(const PreparedScene& p, const Config& cfg, long long& fragments) {
   const std::vector<CompactSegmentInterpolatorTiming::Item> items = compact_segment_items(p, cfg.max_active_edges, cfg);
   const ChannelFormats f = cfg.channels(p.shading);
-  CompactSegmentInterpolatorTiming t(f.bits[fmt::ChanX], f.bits[fmt::ChanZ], f.bits[fmt::ChanR]);
+  CompactSegmentInterpolatorTiming t(f.bits[fmt::ChanX], f.bits[fmt::ChanZ], f.bits[fmt::ChanR],
+                                     rtl_timing::CompactQuotientBitsPerClock, cfg.lanes);
   std::size_t next = 0;
   int markers = 0;
   fragments = 0;
@@ -259,7 +260,7 @@ long long interpolator_alone(const PreparedScene& p, const Config& cfg, long lon
     const bool valid = next < items.size();
     const auto pins = t.clock(valid, valid ? items[next] : CompactSegmentInterpolatorTiming::Item{}, true);
     if (pins.frag_valid && pins.frag_eol && ++markers == p.height) return c + 1;
-    fragments += pins.frag_valid && !pins.frag_eol;
+    fragments += (pins.frag_valid && !pins.frag_eol) * (1 + pins.frag_pair);
     if (valid && pins.seg_ready) ++next;
     if (c > 100'000'000) throw std::logic_error("interpolator alone: no end");
   }
@@ -330,6 +331,47 @@ TEST(CompactCycleModel, SizedScenes) {
     ++ran;
   }
   EXPECT_GE(ran, 12);
+}
+
+// Two fragment lanes on overdraw (eight screen-wide quads: 2,548 fragments a line), the
+// fragment-bound scene, at its sized configuration built compact: the interpolator alone emits
+// the same fragments in fewer clocks, about half on spans of 319 pixels; the frame takes at least
+// a pixel a clock of the reader (H(W + 1) + 10) and no line takes more than the 1,600 clocks a
+// line doubled on 640 x 480 gives it, which one lane misses (about 2,570 a line).
+TEST(CompactCycleModel, TwoLanesOnOverdraw) {
+  Config cfg = load_config(WATKINS_SOURCE_DIR "/scenes/sized/overdraw.gouraud.json");
+  cfg.compact = true;
+  cfg.smoothing = false;
+  const PreparedScene p =
+      prepare(load_scene(WATKINS_SOURCE_DIR "/scenes/overdraw.json", shading_options(ShadingMode::Gouraud)), cfg);
+  auto slowest_line = [&p](const std::vector<long long>& takes) {
+    long long worst = 0, before = -1;
+    for (int y = 0; y < p.height; ++y) {
+      const long long end = takes[std::size_t(y) * std::size_t(p.width) + std::size_t(p.width) - 1];
+      worst = std::max(worst, end - before);
+      before = end;
+    }
+    return worst;
+  };
+  Config two = cfg;
+  two.lanes = 2;
+  std::vector<long long> takes1, takes2;
+  const CyclePrediction one_lane = compact_cycles(p, cfg, -1, &takes1);
+  const CyclePrediction two_lanes = compact_cycles(p, two, -1, &takes2);
+  long long frags1 = 0, frags2 = 0;
+  const long long alone1 = interpolator_alone(p, cfg, frags1), alone2 = interpolator_alone(p, two, frags2);
+  EXPECT_EQ(frags1, frags2);
+  EXPECT_GT(frags1, 2500LL * p.height);
+  EXPECT_LT(alone2, alone1 * 55 / 100) << alone1 << " clocks alone with one lane";
+  EXPECT_GE(alone2, frags2 / 2);
+  EXPECT_GE(two_lanes.cycles, static_cast<long long>(p.height) * (p.width + 1) + 10);
+  EXPECT_LT(two_lanes.cycles, one_lane.cycles * 55 / 100);
+  ASSERT_EQ(takes2.size(), takes1.size());
+  EXPECT_GT(slowest_line(takes1), 1600);
+  EXPECT_LE(slowest_line(takes2), 1600);
+  std::printf("  overdraw: one lane %lld cycles (slowest line %lld), two lanes %lld (slowest line %lld); "
+              "interpolator alone %lld and %lld\n",
+              one_lane.cycles, slowest_line(takes1), two_lanes.cycles, slowest_line(takes2), alone1, alone2);
 }
 
 // The edge source's pace (CycleOptions::edge_interval, edge_gap), on both micro-architectures:

@@ -56,13 +56,14 @@ CyclePrediction predict_compact_cycles(const Frame& frame, const Config& cfg, co
   CompactActiveEdgeListTiming list(opt.max_active_edges, formats, id_bits(cfg.max_edges));
   CompactSegmentFormerTiming former(id_bits(cfg.max_polygons));
   CompactSegmentInterpolatorTiming interp(formats.bits[fmt::ChanX], formats.bits[fmt::ChanZ],
-                                          formats.bits[fmt::ChanR], rtl_timing::CompactQuotientBitsPerClock);
-  CompactScanlineBufferTiming buffer(cfg.max_width);
+                                          formats.bits[fmt::ChanR], rtl_timing::CompactQuotientBitsPerClock,
+                                          cfg.lanes);
+  CompactScanlineBufferTiming buffer(cfg.max_width, cfg.lanes);
   buffer.set_frame(frame.width, frame.height);
   // The clears after reset (the former's table, the buffer's marks), run with the pins at rest
   // for the clocks before the first beat, at most to their end (idle clocks after it change
   // nothing).
-  const long long clears = std::max<long long>(1LL << id_bits(cfg.max_polygons), cfg.max_width);
+  const long long clears = std::max<long long>(1LL << id_bits(cfg.max_polygons), buffer.clear_clocks());
   const long long rest = opt.after_reset >= 0 ? std::min(opt.after_reset, clears) : clears;
   for (long long i = 0; i < rest; ++i) {
     former.clock(false, false, 0, false);

@@ -3,7 +3,8 @@
 // edge source offering records at its pace (CycleOptions: back to back, or the iCEBreaker's
 // SPRAM frame player's), compact_active_edge_list, compact_segment_former
 // straight into compact_segment_interpolator (no segment skid: the interpolator's seg_ready_o is
-// a flop), the fragment queue (stream_fifo, FragQueueDepth), compact_scanline_buffer and the
+// a flop), the fragment queue (stream_fifo, FragQueueDepth; an entry is a beat of cfg.lanes
+// fragments at most), compact_scanline_buffer and the
 // pixel skid (stream_skid), pixel_ready_i from the consumer. Each twin is the one its unit bench
 // holds equal to its RTL on every clock. Every cycle is clocked, so each pixel's take is exact
 // under any ready pattern. The twins take from the data what decides their clocks: the records

@@ -69,6 +69,7 @@ def resources(rows):
 ALONE = re.compile(r"^alone\s+(\d+) cycles a frame, (\d+) fragments \(([\d.]+) per clock\), slowest line (\d+): (\d+) clocks")
 WORST = re.compile(r"^worst line\s+frame (\d+) line (\d+): slack (-?\d+)")
 MISSED = re.compile(r"^missed\s+(\d+) lines")
+LANES = re.compile(r"^config\s+.*: (?:compact|pipelined) top(?: \((\d) fragment lanes\))?,")
 RECORDS = re.compile(r"^scene\s+\S+\s+(\d+)x(\d+)\s+shading \S+ (\d+) polygons, (\d+) edge records")
 
 
@@ -79,7 +80,7 @@ def check(watkins, scene, top):
         return {"error": (p.stderr.strip().splitlines() or ["exit %d" % p.returncode])[-1]}
     got = {}
     for line in p.stdout.splitlines():
-        for key, rx in (("alone", ALONE), ("worst", WORST), ("missed", MISSED), ("scene", RECORDS)):
+        for key, rx in (("alone", ALONE), ("worst", WORST), ("missed", MISSED), ("scene", RECORDS), ("lanes", LANES)):
             m = rx.match(line)
             if m:
                 got[key] = m.groups()
@@ -90,7 +91,7 @@ def scenes_table(watkins):
     names = sorted(os.path.basename(p)[:-len(".gouraud.json")]
                    for p in glob.glob(os.path.join(ROOT, "scenes", "sized", "*.gouraud.json")))
     out = ["| scene | polygons, edge records | fragments | pipelined: cycles a frame, fragments per clock, "
-           "slowest line | compact: cycles a frame, fragments per clock, slowest line | compact / pipelined "
+           "slowest line | compact: cycles a frame, fragments per clock, slowest line (lanes) | compact / pipelined "
            "cycles | iCEBreaker, compact: worst slack of 1,600 clocks, lines missed of 720 |",
            "|---|---|---|---|---|---|---|"]
     off = []
@@ -104,10 +105,11 @@ def scenes_table(watkins):
             continue
         pc, cc = p["alone"], c["alone"]
         worst = c["worst"]
-        out.append("| %s | %s, %s | %s | %s, %s, %s | %s, %s, %s | %.3f | %s (frame %s line %s), %s |" % (
+        lanes = int((c.get("lanes") or (None,))[0] or 1)
+        out.append("| %s | %s, %s | %s | %s, %s, %s | %s, %s, %s%s | %.3f | %s (frame %s line %s), %s |" % (
             name, c["scene"][2], c["scene"][3], format(int(cc[1]), ","),
             format(int(pc[0]), ","), pc[2], format(int(pc[4]), ","),
-            format(int(cc[0]), ","), cc[2], format(int(cc[4]), ","),
+            format(int(cc[0]), ","), cc[2], format(int(cc[4]), ","), " (2 lanes)" if lanes == 2 else "",
             int(cc[0]) / int(pc[0]), format(int(worst[2]), ","), worst[0], worst[1], c["missed"][0]))
     return out, off
 
@@ -147,7 +149,9 @@ def main():
             "the frame alone from its first edge beat to its last pixel, edge records back to back and every pixel taken as it comes "
             "(the slowest line: clocks from the line before's last pixel to its own), then the compact top "
             "racing the beam on the iCEBreaker (one 25.125 MHz clock, 1,600 clocks a rendered line, two "
-            "line slots, three frames, the edge records at the pace of the SPRAM bank's player).",
+            "line slots, three frames, the edge records at the pace of the SPRAM bank's player). The compact "
+            "top takes two fragment lanes where one lane misses lines (`watkins board check` chooses; "
+            "docs/reference/compact.md, Lanes).",
             ""] + table + [""]
     if off:
         text += ["Not on the board: " + "; ".join(off) + ".", ""]

@@ -1,7 +1,8 @@
 // The compact top (watkins_top with Compact = 1: the compact_* blocks, docs/reference/compact.md)
-// against the model built for the same configuration, at the two compact configurations the build
+// against the model built for the same configuration, at the three compact configurations the build
 // Verilates (tests/configs/compact_default.gouraud.json: the default scene's sized configuration,
-// the UP5K's; tests/configs/compact.gouraud.json: the default one's sizes): every shipped scene
+// the UP5K's; tests/configs/compact.gouraud.json: the default one's sizes;
+// tests/configs/compact_lanes.gouraud.json: the default sizes with two fragment lanes): every shipped scene
 // that fits, 200 random scenes, and the hard cases (empty frames, frames back to back and runs
 // without a reset, an active-edge overflow, depth ties under both rules, the narrowest and the
 // widest screens), under random input gaps and output stalls. Every pixel and every stage stream
@@ -32,6 +33,7 @@ namespace {
 
 const char* const SizedFile = "tests/configs/compact_default.gouraud.json";  // MaxWidth 320, 36 edges
 const char* const WideFile = "tests/configs/compact.gouraud.json";           // MaxWidth 1024, 64 edges
+const char* const LanesFile = "tests/configs/compact_lanes.gouraud.json";    // the same, Lanes 2
 
 Config compact_config(const char* file) {
   const Config c = load_config(std::string(WATKINS_SOURCE_DIR "/") + file);
@@ -115,6 +117,7 @@ void check_shipped(const std::string& name, const char* file) {
 
 TEST_P(CompactShippedScenes, AtTheSizedDefault) { check_shipped(GetParam(), SizedFile); }
 TEST_P(CompactShippedScenes, AtTheDefaultSizes) { check_shipped(GetParam(), WideFile); }
+TEST_P(CompactShippedScenes, AtTwoLanes) { check_shipped(GetParam(), LanesFile); }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, CompactShippedScenes, ::testing::ValuesIn(shipped_scenes()), scene_test_name);
 
@@ -146,25 +149,27 @@ class CompactRandomScenes : public ::testing::TestWithParam<int> {};
 constexpr int ScenesPerBatch = 25;
 
 // 8 batches of 25 random scenes (tests/support/random_scene) at the default sizes, each batch back
-// to back in one run under its own stall pattern (random_options: none, light, heavy, bursts).
+// to back in one run under its own stall pattern (random_options: none, light, heavy, bursts);
+// batches 0-7 on the one-lane top, 8-15 (the same scenes) on the two-lane top.
 TEST_P(CompactRandomScenes, MatchTheModel) {
-  const Config cfg = compact_config(WideFile);
+  const char* const file = GetParam() < 8 ? WideFile : LanesFile;
+  const Config cfg = compact_config(file);
   std::vector<PreparedScene> frames;
-  for (std::uint64_t seed = 5000 + static_cast<std::uint64_t>(GetParam()) * 100;
+  for (std::uint64_t seed = 5000 + static_cast<std::uint64_t>(GetParam() % 8) * 100;
        static_cast<int>(frames.size()) < ScenesPerBatch; ++seed) {
     try {
       frames.push_back(prepare(random_scene(seed), cfg));
     } catch (const SceneError&) {  // over a capacity of the configuration
     }
   }
-  REQUIRE_COMPACT_TOP(cfg, WideFile);
+  REQUIRE_COMPACT_TOP(cfg, file);
   std::vector<const PreparedScene*> ptrs;
   for (const PreparedScene& p : frames) ptrs.push_back(&p);
-  expect_frames("random scenes, batch " + std::to_string(GetParam()), ptrs,
+  expect_frames("random scenes, batch " + std::to_string(GetParam()) + " at " + file, ptrs,
                 random_options(static_cast<std::uint64_t>(GetParam())));
 }
 
-INSTANTIATE_TEST_SUITE_P(Batches, CompactRandomScenes, ::testing::Range(0, 8));  // 8 x 25 = 200 scenes
+INSTANTIATE_TEST_SUITE_P(Batches, CompactRandomScenes, ::testing::Range(0, 16));  // 200 scenes on each top
 
 // ---------------------------------------------------------------- hard cases
 
@@ -205,7 +210,7 @@ std::vector<PreparedScene> frames_of_every_size(const Config& cfg) {
 // Frames of several sizes back to back (among them the widest the line buffer holds, one pixel,
 // empty ones), then runs one after another without a reset, on both compact tops.
 TEST(CosimCompact, FramesBackToBackAndEdgeSizes) {
-  for (const char* file : {SizedFile, WideFile}) {
+  for (const char* file : {SizedFile, WideFile, LanesFile}) {
     const Config cfg = compact_config(file);
     const std::vector<PreparedScene> frames = frames_of_every_size(cfg);
     bool widest = false, one = false, empty = false;
@@ -259,7 +264,7 @@ TEST(CosimCompact, ActiveEdgeListOverflowSetsOverflowO) {
 
 // Depth ties: coplanar.json (made for the rule) under both rules, frame by frame in one run.
 TEST(CosimCompact, DepthTieRulesFrameByFrame) {
-  for (const char* file : {SizedFile, WideFile}) {
+  for (const char* file : {SizedFile, WideFile, LanesFile}) {
     const Config cfg = compact_config(file);
     PreparedScene sub;
     const std::string why = prepare_shipped("coplanar.json", cfg, sub);

@@ -297,9 +297,11 @@ TEST(CycleModelStalled, RandomScenesTakesEqualRtl) {
 
 // ---------------------------------------------------------------- the compact top
 
-// The two compact tops the test build Verilates: the default scene's sized configuration (the
-// UP5K's: MaxWidth 320, 36 active edges) and the default sizes (MaxWidth 1,024, 64).
-const char* const CompactFiles[] = {"tests/configs/compact_default.gouraud.json", "tests/configs/compact.gouraud.json"};
+// The three compact tops the test build Verilates: the default scene's sized configuration (the
+// UP5K's: MaxWidth 320, 36 active edges), the default sizes (MaxWidth 1,024, 64) and the default
+// sizes with two fragment lanes.
+const char* const CompactFiles[] = {"tests/configs/compact_default.gouraud.json", "tests/configs/compact.gouraud.json",
+                                    "tests/configs/compact_lanes.gouraud.json"};
 
 #ifdef WATKINS_RTL_CONFIGS_DEFAULT
 constexpr bool RequireCompactTops = true;  // CI's build has both: a missing one fails
@@ -390,6 +392,7 @@ void expect_compact_shipped(const std::string& name, const char* file) {
 
 TEST_P(CompactCycleModelShipped, AtTheSizedDefault) { expect_compact_shipped(GetParam(), CompactFiles[0]); }
 TEST_P(CompactCycleModelShipped, AtTheDefaultSizes) { expect_compact_shipped(GetParam(), CompactFiles[1]); }
+TEST_P(CompactCycleModelShipped, AtTwoLanes) { expect_compact_shipped(GetParam(), CompactFiles[2]); }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, CompactCycleModelShipped, ::testing::ValuesIn(shipped_scenes()), scene_test_name);
 
