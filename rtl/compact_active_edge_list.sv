@@ -41,8 +41,10 @@
 // compare of the read register); out_valid_o and out_eol_o decode the state register; out_* are
 // the RAM's read register, which holds while a beat waits.
 // Paths: each compare is one carry chain from flops (the key compare from ram_q and cmp_q, the
-// head's from edge_i and line_q); the read address and enable, the record select and
-// edge_ready_o are pairs from registers that the key compare picks between as their last logic.
+// crossing's from pend_key_q and max_q, the head's from edge_i and line_q); the next count, pos
+// and rd, the read address and enable, the record select and edge_ready_o are pairs from
+// registers that the key compare picks between as their last logic; the next state is a pair
+// that the key compare picks, or in SEol the crossing compare (eol_q, a flip-flop, says which).
 `include "watkins_assert.svh"
 
 module compact_active_edge_list #(
@@ -127,7 +129,8 @@ module compact_active_edge_list #(
     SFPlace,  // FIX: ram_q = the scratch word: write it to A[pos_q]
     SDrain    // after the last line: read the input up to EOF
   } state_t;
-  state_t state_q, state_d;
+  // Plain words so the next state can be picked by AND and OR (yosys 0.23 has no enum casts).
+  logic [3:0] state_q, state_d;
 
   // no_rw_check: no clock reads the word it writes (a_no_ram_collision), so yosys need not
   // emulate either read-during-write behaviour around the block RAM.
@@ -153,6 +156,7 @@ module compact_active_edge_list #(
   // OUT: the key of the entry written back on the clock before (at A[pend_pos_q]), compared with
   // max_q one clock later: the step's adders and the compare are then not in one clock.
   logic                  pend_q, pend_d;
+  logic                  eol_q, eol_d;  // state_q == SEol, a flip-flop of its own for the pick
   logic [KeyBits-1:0]    pend_key_q, pend_key_d;
   logic [AddrBits-1:0]   pend_pos_q, pend_pos_d;
   logic [EdgeIdBits-1:0] id_q;
@@ -216,12 +220,21 @@ module compact_active_edge_list #(
   assign out_material_o = ram_q.material;
   assign out_value_o    = ram_q.value;
 
+  // The registers the key compare decides (state, count, pos, rd) get their next value for
+  // either outcome (c1: ram_q below cmp_q, c0: not), from registers and the head's and the
+  // crossing's compares; the key compare picks one as their last logic (below), as it does the
+  // RAM's ports. Every state that does not compare gives both the same value. The pairs are kept
+  // as nets and picked by AND and OR rather than a multiplexer, so synthesis neither folds the
+  // compare into their earlier levels nor makes it a flip-flop enable.
+  (* keep *) logic [3:0]           state_c0, state_c1;
+  (* keep *) logic [CountBits-1:0] cnt_c0, cnt_c1;
+  (* keep *) logic [AddrBits-1:0]  pos_c0, pos_c1, rd_c0, rd_c1;
   always_comb begin
-    state_d = state_q;
-    cnt_d   = cnt_q;
+    {state_c1, state_c0} = {2{state_q}};
+    {cnt_c1, cnt_c0}     = {2{cnt_q}};
+    {rd_c1, rd_c0}       = {2{rd_q}};
+    {pos_c1, pos_c0}     = {2{pos_q}};
     kept_d  = kept_q;
-    rd_d    = rd_q;
-    pos_d   = pos_q;
     first_d = first_q;
     cross_d = cross_q;
     max_d   = max_q;
@@ -243,89 +256,97 @@ module compact_active_edge_list #(
       SIns: if (edge_valid_i) begin
         if (head_past) begin
           // The line is complete: stream it, its first entry read now.
-          rd_d    = '0;
+          {rd_c1, rd_c0} = '0;
           kept_d  = '0;
           cross_d = 1'b0;
-          state_d = empty ? SEol : SOut;
+          {state_c1, state_c0} = {2{empty ? SEol : SOut}};
         end else if (head_late || full) begin
           ov_set = !head_late;  // taken, skipped or dropped
         end else if (empty) begin
-          cnt_d = CountBits'(1);  // taken, written at A[0]
+          {cnt_c1, cnt_c0} = {2{CountBits'(1)}};  // taken, written at A[0]
         end else begin
-          pos_d   = AddrBits'(cnt_q - 1'b1);
-          state_d = SShift;
+          {pos_c1, pos_c0} = {2{AddrBits'(cnt_q - 1'b1)}};
+          {state_c1, state_c0} = {2{SShift}};
         end
       end
       SShift: begin
-        if (ram_below) begin  // ram_q sorts before the record: its place is above ram_q
-          cnt_d   = cnt_q + 1'b1;
-          state_d = SIns;
-        end else if (pos_q == '0) begin
-          state_d = SPlace;
+        // c1: ram_q sorts before the record: its place is above ram_q.
+        cnt_c1   = cnt_q + 1'b1;
+        state_c1 = SIns;
+        if (pos_q == '0) begin
+          state_c0 = SPlace;
         end else begin
-          pos_d = pos_q - 1'b1;
+          pos_c0 = pos_q - 1'b1;
         end
       end
       SPlace: begin
-        cnt_d   = cnt_q + 1'b1;
-        state_d = SIns;
+        {cnt_c1, cnt_c0} = {2{cnt_q + 1'b1}};
+        {state_c1, state_c0} = {2{SIns}};
       end
       SOut: if (out_ready_i) begin
         // The edge leaves, steps and, unless it retires, is written back at A[kept].
-        rd_d = rd_q + 1'b1;
+        {rd_c1, rd_c0} = {2{rd_q + 1'b1}};
         if (!retire) begin
           kept_d = kept_q + 1'b1;
           pend_d = 1'b1;
         end
-        if (CountBits'(rd_q) + 1'b1 == cnt_q) state_d = SEol;
+        if (CountBits'(rd_q) + 1'b1 == cnt_q) {state_c1, state_c0} = {2{SEol}};
       end
       SEol: if (out_ready_i) begin
-        cnt_d = kept_q;
+        {cnt_c1, cnt_c0} = {2{kept_q}};
+        // The next state's pair is the crossing compare's here (c1: the last edge, if pending,
+        // sorts below the maximum): FIX when the line has a crossing.
         if (last_line) begin
-          state_d = SDrain;
-        end else if (cross_d) begin  // with the last edge's compare, if pending
-          state_d = SFix;
+          {state_c1, state_c0} = {2{SDrain}};
         end else begin
-          state_d = SIns;
+          state_c1 = (cross_q || (pend_q && pend_pos_q != '0)) ? SFix : SIns;
+          state_c0 = cross_q ? SFix : SIns;
         end
       end
       SFix: begin
-        rd_d    = first_q;
-        state_d = SScan;
+        {rd_c1, rd_c0} = {2{first_q}};
+        {state_c1, state_c0} = {2{SScan}};
       end
       SScan: begin
-        if (ram_below) begin
-          // Out of order: the entries above its place move up.
-          pos_d   = rd_q - 1'b1;
-          state_d = SFShift;
-        end else begin
-          max_d = key_ram;
-          rd_d  = rd_q + 1'b1;
-          if (scan_last) state_d = SIns;
-        end
+        // c1: out of order: the entries above its place move up; c0: the greatest so far.
+        pos_c1   = rd_q - 1'b1;
+        state_c1 = SFShift;
+        if (!ram_below) max_d = key_ram;
+        rd_c0 = rd_q + 1'b1;
+        if (scan_last) state_c0 = SIns;
       end
       SFShift: begin
-        if (ram_below) begin  // its place is above ram_q
-          pos_d   = pos_q + 1'b1;
-          state_d = SFPlace;
-        end else if (pos_q == '0) begin
-          state_d = SFPlace;
+        // c1: its place is above ram_q.
+        pos_c1   = pos_q + 1'b1;
+        state_c1 = SFPlace;
+        if (pos_q == '0) begin
+          state_c0 = SFPlace;
         end else begin
-          pos_d = pos_q - 1'b1;
+          pos_c0 = pos_q - 1'b1;
         end
       end
       SFPlace: begin
         if (!scan_last) begin
-          rd_d    = rd_q + 1'b1;
-          state_d = SScan;
+          {rd_c1, rd_c0} = {2{rd_q + 1'b1}};
+          {state_c1, state_c0} = {2{SScan}};
         end else begin
-          state_d = SIns;
+          {state_c1, state_c0} = {2{SIns}};
         end
       end
-      SDrain: if (edge_valid_i && edge_eof_i) state_d = SIdle;
+      SDrain: if (edge_valid_i && edge_eof_i) {state_c1, state_c0} = {2{SIdle}};
       default: ;
     endcase
   end
+  // The state's pair is picked by the crossing compare in SEol (eol_q), by the key compare in
+  // every other state: each is a don't-care where the other decides.
+  logic state_below;
+  assign state_below = eol_q ? pend_below : ram_below;
+  assign state_d = ({4{state_below}} & state_c1) | ({4{!state_below}} & state_c0);
+  // No compare state goes to SEol, so c0 alone says whether the next state is SEol.
+  assign eol_d   = state_c0 == SEol;
+  assign cnt_d   = ({CountBits{ram_below}} & cnt_c1) | ({CountBits{!ram_below}} & cnt_c0);
+  assign pos_d   = ({AddrBits{ram_below}} & pos_c1) | ({AddrBits{!ram_below}} & pos_c0);
+  assign rd_d    = ({AddrBits{ram_below}} & rd_c1) | ({AddrBits{!ram_below}} & rd_c0);
 
   // The compared key for the next clock, whichever way this clock's compares go: the record's
   // (INS, for the shift); the scanned entry's (the greatest so far, or the one moving back); the
@@ -455,6 +476,7 @@ module compact_active_edge_list #(
       // overflow flag, and a frame start leaves frame_q set.
       frame_q <= rst_ni;
       state_q <= rst_ni ? SIns : SIdle;
+      eol_q   <= 1'b0;
       pend_q  <= 1'b0;
       line_q  <= '0;
       cnt_q   <= '0;
@@ -462,6 +484,7 @@ module compact_active_edge_list #(
       if (!rst_ni) overflow_o <= 1'b0;
     end else begin
       state_q <= state_d;
+      eol_q   <= eol_d;
       pend_q  <= pend_d;
       cnt_q   <= cnt_d;
       if (state_q == SEol && out_ready_i && !last_line) line_q <= line_q + 1'b1;
@@ -492,6 +515,7 @@ module compact_active_edge_list #(
   `WATKINS_ASSERT(a_kept, (state_q == SOut) |-> kept_q <= CountBits'(rd_q))
   `WATKINS_ASSERT(a_busy, frame_q == (state_q != SIdle))
   `WATKINS_ASSERT(a_pend, pend_q |-> (state_q == SOut || state_q == SEol))
+  `WATKINS_ASSERT(a_eol, eol_q == (state_q == SEol))
   `WATKINS_COVER(c_overflow, ov_set)
   `WATKINS_COVER(c_crossing, state_q == SFPlace)
 endmodule
