@@ -426,9 +426,10 @@ module watkins_top #(
   logic                  sh_valid /*verilator public_flat_rd*/;
   logic                  sh_ready /*verilator public_flat_rd*/;
   logic                  sh_ready_next;  // sh_ready on the next clock (the Phong pipes' lookahead)
-  logic                  sh_pair;        // lane 1 (Lanes = 2, Gouraud): sh_x + 1's fragment
-  logic [DepthBits-1:0]  sh_depth1;
-  watkins_pkg::rgb_t     sh_rgb1;
+  // Lane 1 (Lanes = 2, Gouraud): the fragment at sh_x + 1, after lane 0; 0 otherwise.
+  logic                  sh_pair   /*verilator public_flat_rd*/;
+  logic [DepthBits-1:0]  sh_depth1 /*verilator public_flat_rd*/;
+  watkins_pkg::rgb_t     sh_rgb1   /*verilator public_flat_rd*/;
 
   if (Phong != 0) begin : g_phong
     localparam int unsigned UnitBits         = watkins_pkg::UnitBits;
