@@ -6,10 +6,11 @@
 //
 // The clock, as the RTL's header states it: after reset the marks of both banks are cleared, one
 // address of every way per clock, clear_clocks() = ceil(max_width / lanes) clocks with
-// frag_ready_o low; then a beat (lanes fragments at most) is taken every clock it is offered. A marker is taken when the reader is idle, or in the clock the reader loads the
-// previous line's last pixel. The reader starts the clock after the marker: one clock reads pixel
-// 0, then each clock the output register can take a pixel (empty, or emptied by pixel_ready_i in
-// that clock) loads pixel x and reads x + 1. A line read out at full rate takes width + 1 clocks.
+// frag_ready_o low; then a beat (lanes fragments at most) is taken every clock it is offered. A
+// marker is taken when the reader is idle, or in the clock the reader loads the previous line's
+// last pixel. The reader starts the clock after the marker: one clock reads pixel 0, then each
+// clock the output register can take a pixel (empty, or emptied by pixel_ready_i in that clock)
+// loads pixel x and reads x + 1. A line read out at full rate takes width + 1 clocks.
 #pragma once
 
 namespace watkins {
