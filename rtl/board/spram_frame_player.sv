@@ -12,6 +12,7 @@
 // pipeline (its stream not yet at EOF or frame_done_i not yet seen) waits until it has left, then
 // runs the same sequence. Registered: the read address and enable's inputs, the frame pins,
 // edge_o, edge_eof_o and edge_valid_o; the material port is the read data with a compare.
+// edge_ready_i reaches the state and valid_q only, as their last logic (one pick of two).
 
 module spram_frame_player #(
   parameter int unsigned BankWords      = 512,  // bank words the SPRAMs hold, a power of two
@@ -64,7 +65,8 @@ module spram_frame_player #(
   localparam logic        FirstNotLast = Parts > 1;  // a record's first read is not its last
 
   typedef enum logic [1:0] {Idle, Load, Edges} state_e;
-  state_e state_q;
+  // A plain word so the next state can be picked by AND and OR (yosys 0.23 has no enum casts).
+  logic [1:0] state_q;
 
   logic                     pending_q;    // a start waits for the previous frame to leave
   logic                     in_flight_q;  // a frame is in the pipeline (from its start to its last pixel)
@@ -91,7 +93,7 @@ module spram_frame_player #(
   // The beat offered.
   logic                     valid_q, eof_q;
   logic [EdgeBits-1:0]      edge_q;
-  logic                     fetch, load, record_read, take;
+  logic                     fetch, load, record_read;
   /* verilator lint_off UNUSEDSIGNAL */  // the bits past the record in its last part
   logic [64*Parts-1:0]      whole;        // the fetched beat: its last part on rd_data_i
   /* verilator lint_on UNUSEDSIGNAL */
@@ -106,7 +108,29 @@ module spram_frame_player #(
   assign record_read = (fetch && left_q != '0) || (reads_q != '0 && !feof_q);
   assign rd_en_o     = state_q == Load || record_read;
   assign rd_addr_o   = addr_q;
-  assign take        = valid_q && edge_ready_i;
+
+  // The registers edge_ready_i decides (the state and valid_q) get their next value for either
+  // value of it (r1: ready, r0: not) from registers, and edge_ready_i picks one as their last
+  // logic: the compact active-edge list's ready is combinational, from its key compare. The pairs
+  // are kept as nets and picked by AND and OR, so synthesis neither folds the pick into their
+  // earlier levels nor makes edge_ready_i a flip-flop enable.
+  (* keep *) logic [1:0] state_r0, state_r1;
+  (* keep *) logic       valid_r0, valid_r1;
+  always_comb begin
+    state_r0 = state_q;
+    unique case (state_q)
+      Idle: if (go) state_r0 = Load;
+      // The last load address goes out in clock LoadWords of the sequence; m_q (word 7) is
+      // loaded by clock 10, so with LoadWords >= 10 the first record's address is ready.
+      Load: if (step_q == StepBits'(LoadWords - 1)) state_r0 = Edges;
+      Edges: ;
+      default: state_r0 = Idle;
+    endcase
+    // Taken, the EOF beat ends the sequence.
+    state_r1 = (state_q == Edges && valid_q && eof_q) ? Idle : state_r0;
+    valid_r0 = load || valid_q;
+    valid_r1 = load;  // loads only when empty; an offered beat is taken
+  end
 
   if (Parts > 1) begin : g_parts
     assign whole = {rd_data_i, asm_q};
@@ -145,14 +169,7 @@ module spram_frame_player #(
       rd_load_q  <= state_q == Load;
       rd_shift_q <= record_read && (fetch ? FirstNotLast : reads_q != PartBits'(1));
       fresh_q    <= state_q == Load && step_q == StepBits'(LoadWords - 1);
-      unique case (state_q)
-        Idle: if (go) state_q <= Load;
-        // The last load address goes out in clock LoadWords of the sequence; m_q (word 7) is
-        // loaded by clock 10, so with LoadWords >= 10 the first record's address is ready.
-        Load: if (step_q == StepBits'(LoadWords - 1)) state_q <= Edges;
-        Edges: if (take && eof_q) state_q <= Idle;
-        default: state_q <= Idle;
-      endcase
+      state_q <= ({2{edge_ready_i}} & state_r1) | ({2{!edge_ready_i}} & state_r0);
 
       if (go) over_q <= 1'b0;
       else if (fetch && left_q == '0) over_q <= 1'b1;
@@ -160,8 +177,7 @@ module spram_frame_player #(
       else if (reads_q != '0) reads_q <= reads_q - 1'b1;
       if (load) have_q <= 1'b0;
       else if (fetch ? !FirstNotLast : reads_q == PartBits'(1)) have_q <= 1'b1;
-      if (load) valid_q <= 1'b1;
-      else if (take) valid_q <= 1'b0;
+      valid_q <= (edge_ready_i && valid_r1) || (!edge_ready_i && valid_r0);
     end
   end
 
