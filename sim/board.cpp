@@ -345,6 +345,7 @@ CLI::App* add_board_command(CLI::App& app, BoardArgs& a) {
       ->capture_default_str();
   a.build_app = build;
   a.stream_app = add_stream_command(b, a.stream);
+  a.sim_app = add_sim_command(b, a.sim);
   return b;
 }
 
@@ -360,6 +361,7 @@ int run_board(const BoardArgs& a) {
   if (a.image_app && *a.image_app) return run_image(a.image);
   if (a.build_app && *a.build_app) return run_build(a.build);
   if (a.stream_app && *a.stream_app) return run_stream(a.stream);
+  if (a.sim_app && *a.sim_app) return run_sim(a.sim);
   return 0;
 }
 

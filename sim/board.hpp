@@ -3,11 +3,13 @@
 // (model/board/beam_schedule.hpp): the worst line's slack and the lines that miss their deadline.
 // `board image` writes the frame's scene bank; `board build` checks the deadline, then builds the
 // bitstream through the shared FPGA flow (board_build.hpp) and reports resources and clocks;
-// `board stream` sends frames to the board's host link (board_stream.hpp).
+// `board stream` sends frames to the board's host link (board_stream.hpp); `board sim` runs the
+// Verilated board top on a scene, frame by frame (board_sim.hpp).
 #pragma once
 
 #include <string>
 
+#include "board_sim.hpp"
 #include "board_stream.hpp"
 
 namespace CLI {
@@ -53,11 +55,13 @@ struct BoardArgs {
   ImageArgs image;
   BuildArgs build;
   StreamArgs stream;  // `board stream` (board_stream.hpp)
+  SimArgs sim;        // `board sim` (board_sim.hpp)
   CLI::App* board_app = nullptr;
   CLI::App* check_app = nullptr;
   CLI::App* image_app = nullptr;
   CLI::App* build_app = nullptr;
   CLI::App* stream_app = nullptr;
+  CLI::App* sim_app = nullptr;
 };
 
 // Registers `watkins board` and its subcommands on `app`; returns the `board` subcommand.

@@ -128,7 +128,7 @@ BoardRun run_top(std::unique_ptr<VerilatedContext>& context, const BoardOptions&
       if (r.first_visible < 0 && s.de) {
         r.first_visible = pixel_clock;
         frame_pixels_left = frames * FrameClocks;
-        r.video.reserve(static_cast<std::size_t>(frame_pixels_left));
+        if (opt.record_video) r.video.reserve(static_cast<std::size_t>(frame_pixels_left));
       }
       if (r.first_visible >= 0) {
         const long long k = pixel_clock - r.first_visible;
@@ -137,7 +137,7 @@ BoardRun run_top(std::unique_ptr<VerilatedContext>& context, const BoardOptions&
           r.frames.emplace_back(VideoWidth, VideoHeight);
           frame = &r.frames.back();
         }
-        r.video.push_back(s);
+        if (opt.record_video) r.video.push_back(s);
         if (s.de && h < VideoWidth && v < VideoHeight) {
           const std::uint32_t rgb = root.ulx3s_top__DOT__enc_rgb;
           std::uint8_t* p = &frame->rgb[(std::size_t(v) * VideoWidth + std::size_t(h)) * 3];
@@ -146,6 +146,13 @@ BoardRun run_top(std::unique_ptr<VerilatedContext>& context, const BoardOptions&
           p[2] = std::uint8_t(rgb);
         }
         --frame_pixels_left;
+        if (opt.on_frame && k % FrameClocks == FrameClocks - 1) {
+          r.pixel_clocks = pixel_clock + 1;
+          r.pipe_clocks = pipe_clock;
+          r.missed_count = root.ulx3s_top__DOT__missed_count_q;
+          r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+          opt.on_frame(r);
+        }
       }
       ++pixel_clock;
       if (frame_pixels_left == 0) break;
@@ -163,6 +170,11 @@ BoardRun run_top(std::unique_ptr<VerilatedContext>& context, const BoardOptions&
   dut->final();
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
+}
+
+TopBuild top_build(BoardTop top) {
+  if (top == BoardTop::Native) return {WATKINS_BOARD_NATIVE_CONFIG, 1, WATKINS_BOARD_BANK_WORDS};
+  return {WATKINS_BOARD_DEFAULT_CONFIG, WATKINS_BOARD_DOUBLING, WATKINS_BOARD_BANK_WORDS};
 }
 
 BoardBench::BoardBench(BoardTop top) : top_(top), context_(std::make_unique<VerilatedContext>()) {}

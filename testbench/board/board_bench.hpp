@@ -30,6 +30,8 @@ constexpr int VideoWidth = 640, VideoHeight = 480;
 constexpr int LineClocks = 800, FrameLines = 525;
 constexpr long long FrameClocks = static_cast<long long>(LineClocks) * FrameLines;  // pixel clocks
 
+struct BoardRun;
+
 struct BoardOptions {
   std::string bank_file;     // +watkins_bank=FILE (empty: the BankFile the top was built with)
   int video_frames = 3;      // video frames from the first visible pixel after reset
@@ -37,6 +39,11 @@ struct BoardOptions {
   // The FT231X's transmit line (ftdi_txd) at a time in seconds from tick 0, set before every
   // eval() (e.g. UartLine::level, uart_line.hpp); empty: held high (idle).
   std::function<bool(double)> ftdi_txd;
+  bool record_video = true;  // keep BoardRun::video (false: the frames and the records only)
+  // Called after the last pixel clock of each captured video frame (frames.back()), with the
+  // records, the clocks, the evals, missed_count and wall_seconds so far; it may release the
+  // pixels of the frames it has read.
+  std::function<void(BoardRun&)> on_frame;
 };
 
 // A pixel clock's signals at the encoders' inputs.
@@ -78,6 +85,15 @@ struct BoardRun {
 // a 640 x 480 native configuration (Vulx3s_top_native: tests/board/native.gouraud.json, Doubling
 // 1, bank 0 from +watkins_bank only).
 enum class BoardTop { Default, Native };
+
+// What a Verilated top was built for: the configuration file its -G list came from (its path in
+// the source tree), its Doubling and its BankWords.
+struct TopBuild {
+  std::string config;
+  int doubling = 2;
+  int bank_words = 512;
+};
+TopBuild top_build(BoardTop top);
 
 class BoardBench {
  public:

@@ -69,7 +69,7 @@ IcebreakerRun run_top(std::unique_ptr<VerilatedContext>& context, const Icebreak
     if (r.first_visible < 0 && s.de) {
       r.first_visible = m;
       frames_left = frames * FrameClocks;
-      r.video.reserve(static_cast<std::size_t>(frames_left));
+      if (opt.record_video) r.video.reserve(static_cast<std::size_t>(frames_left));
     }
     if (r.first_visible >= 0) {
       const long long k = m - r.first_visible;
@@ -78,7 +78,7 @@ IcebreakerRun run_top(std::unique_ptr<VerilatedContext>& context, const Icebreak
         r.frames.emplace_back(VideoWidth, VideoHeight);
         frame = &r.frames.back();
       }
-      r.video.push_back(s);
+      if (opt.record_video) r.video.push_back(s);
       if (s.de && h < VideoWidth && v < VideoHeight) {
         std::uint8_t* p = &frame->rgb[(std::size_t(v) * VideoWidth + std::size_t(h)) * 3];
         p[0] = std::uint8_t(dut->dvi_r << 4);
@@ -91,6 +91,12 @@ IcebreakerRun run_top(std::unique_ptr<VerilatedContext>& context, const Icebreak
     dut->eval();
     ++r.evals;
     out.dvi_clk_bad += !(clock_low && dut->dvi_clk == 1);
+    if (opt.on_frame && r.first_visible >= 0 && (m - r.first_visible) % FrameClocks == FrameClocks - 1) {
+      r.pixel_clocks = r.pipe_clocks = m + 1;
+      r.missed_count = root.icebreaker_top__DOT__missed_count_q;
+      r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      opt.on_frame(r);
+    }
     if (frames_left == 0) {
       r.pixel_clocks = r.pipe_clocks = m + 1;
       break;
@@ -107,6 +113,11 @@ IcebreakerRun run_top(std::unique_ptr<VerilatedContext>& context, const Icebreak
 }
 
 }  // namespace
+
+TopBuild top_build(IcebreakerTop top) {
+  return {top == IcebreakerTop::Pipelined ? WATKINS_ICEBREAKER_PIPELINED_CONFIG : WATKINS_ICEBREAKER_CONFIG, 2,
+          WATKINS_ICEBREAKER_BANK_WORDS};
+}
 
 IcebreakerBench::IcebreakerBench(IcebreakerTop top) : top_(top), context_(std::make_unique<VerilatedContext>()) {}
 IcebreakerBench::~IcebreakerBench() = default;

@@ -18,6 +18,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -32,6 +33,10 @@ enum class IcebreakerTop { Compact, Pipelined };
 struct IcebreakerOptions {
   std::vector<std::uint8_t> flash;  // the flash's bytes from SpramBank::FlashAddress on (flash_image)
   int video_frames = 3;             // video frames from the first visible pixel on the pins
+  bool record_video = true;         // keep BoardRun::video (false: the frames and the records only)
+  // Called after the last clock of each captured video frame (run.frames.back()), as
+  // BoardOptions::on_frame.
+  std::function<void(BoardRun&)> on_frame;
 };
 
 struct IcebreakerRun {
@@ -40,6 +45,9 @@ struct IcebreakerRun {
   long long flash_bits = 0;   // bits the flash put out
   long long flash_bad_commands = 0;  // commands other than Read Data and Release Power-down
 };
+
+// The configuration file, Doubling and BankWords the top was built with.
+TopBuild top_build(IcebreakerTop top);
 
 class IcebreakerBench {
  public:
