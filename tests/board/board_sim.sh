@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# ctest board_sim_<board> (label board): `watkins board sim --frames 2` of the default scene on the
+# Verilated board top. Both rendered frames report 0 missed lines and equal the model's image, the
+# run exits 0, and frame_000.png and frame_001.png are 640 x 480 PNGs. A scene that does not fit
+# the top's configuration (scenes/teapot.json: more polygons than the polygon id holds) is one
+# error line naming what does not fit, exit 1, and no folder of frames.
+#   board_sim.sh WATKINS SOURCE_DIR WORK_DIR BOARD
+set -euo pipefail
+watkins=$1 src=$2 work=$3 board=$4
+rm -rf "$work"
+mkdir -p "$work"
+fail() { echo "board_sim_$board: $*"; cat "$work/out.txt"; exit 1; }
+
+"$watkins" board sim --board "$board" --frames 2 --out "$work/frames" > "$work/out.txt" 2>&1 || fail "exit $?"
+cat "$work/out.txt"
+for f in 0 1; do
+  grep -qE "^frame $f +0 missed lines, equals the model's image; " "$work/out.txt" ||
+    fail "frame $f: not 0 missed lines and equal to the model"
+  png="$work/frames/frame_00$f.png"
+  [ -s "$png" ] || fail "no $png"
+  [ "$(od -An -tx1 -N 8 "$png" | tr -d ' ')" = 89504e470d0a1a0a ] || fail "$png is not a PNG"
+  # IHDR: the width and the height, big-endian, at bytes 16 and 20.
+  [ "$(od -An -tu1 -j 16 -N 8 "$png" | tr -s ' ')" = " 0 0 2 128 0 0 1 224" ] || fail "$png is not 640 x 480"
+done
+grep -qE "^total +2 frames: 0 missed lines, 2 equal the model's image; " "$work/out.txt" || fail "no total line"
+
+rc=0
+"$watkins" board sim "$src/scenes/teapot.json" --board "$board" --frames 1 --out "$work/teapot" \
+  > "$work/teapot.txt" 2>&1 || rc=$?
+[ "$rc" -eq 1 ] || { cat "$work/teapot.txt"; fail "teapot: exit $rc, not 1"; }
+[ "$(wc -l < "$work/teapot.txt")" -eq 1 ] || { cat "$work/teapot.txt"; fail "teapot: not one line"; }
+grep -q "does not fit the $board board top .*polygon" "$work/teapot.txt" ||
+  { cat "$work/teapot.txt"; fail "teapot: the line does not name the polygons"; }
+[ ! -e "$work/teapot" ] || fail "teapot: the folder of frames was created"
+echo "board_sim_$board: OK"
