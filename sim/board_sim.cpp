@@ -213,7 +213,15 @@ int run_sim(const SimArgs& a) {
                   (std::filesystem::path(a.out) / file).string().c_str());
     }
     std::fflush(stdout);
-    shown.rgb = std::vector<std::uint8_t>();  // written: the run keeps no frame's pixels
+    // Written and counted: a long run keeps no frame's pixels and no records.
+    shown = Image();
+    r.missed.clear();
+    missed_seen = 0;
+    r.lines.clear();
+    r.start_clocks.clear();
+    r.begin_clocks.clear();
+    r.request_pixel_clocks.clear();
+    r.begin_banks.clear();
   };
 
   tb::BoardRun run;

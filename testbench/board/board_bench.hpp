@@ -42,7 +42,7 @@ struct BoardOptions {
   bool record_video = true;  // keep BoardRun::video (false: the frames and the records only)
   // Called after the last pixel clock of each captured video frame (frames.back()), with the
   // records, the clocks, the evals, missed_count and wall_seconds so far; it may release the
-  // pixels of the frames it has read.
+  // frames it has read and clear the records (the run only appends to them).
   std::function<void(BoardRun&)> on_frame;
 };
 
