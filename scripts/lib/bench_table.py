@@ -166,6 +166,25 @@ def main():
         figures.append(("verilator_ipc.phong_over_gouraud", "%.3f" % r, "ratio"))
         out.append("| Verilator, Phong top against Gouraud top (instructions per cycle, stage checker on) | %.2fx | %s (≤ 1.20x) |"
                    % (r, "met" if r <= 1.2 else "not met"))
+    # The virtual board (scripts/lib/bench/board.sh): frames per second against the 1 frame/s target,
+    # with its instructions per simulated clock.
+    board_ipc = {m.group(1): (m.group(2), m.group(3)) for l in lines
+                 for m in [re.match(r"^virtual board (\S+) +(\d+) instructions per (pipeline clock|clock) ", l)] if m}
+    for l in lines:
+        m = re.match(r"^virtual board (\S+) +([0-9.]+) frames/s, (\d+) (pipeline clocks|clocks)/s", l)
+        if not m:
+            continue
+        board, fps, rate, unit = m.group(1), float(m.group(2)), int(m.group(3)), m.group(4)
+        figures += [("virtual_board.%s.fps" % board, m.group(2), "frames/s"),
+                    ("virtual_board.%s.clocks_per_second" % board, rate, "%s/s" % unit)]
+        figure = "**%.2f frames/s** (wall, best of 5), %.2f M %s/s" % (fps, rate / 1e6, unit)
+        if board in board_ipc:
+            ipc, per = board_ipc[board]
+            figures.append(("virtual_board.%s.instructions_per_clock" % board, ipc, "instructions/%s" % per))
+            figure += "; %s instructions per %s (callgrind)" % (ipc, per)
+        top = "ulx3s_top, pipelined" if board == "ulx3s" else "icebreaker_top, compact"
+        out.append("| virtual board (`watkins board sim`), %s (%s), default scene | %s | %s (≥ 1 frame/s) |"
+                   % (board, top, figure, "met" if fps >= 1 else "not met"))
     for l in lines:
         m = re.match(r"^shipped scenes +model at least as fast as the double reference on (\d+) of (\d+) \(scene, shading\); closest (.*) ([0-9.]+)x$", l)
         if m:
