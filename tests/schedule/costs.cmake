@@ -5,7 +5,7 @@
 set(_watkins_costs
   synth_seeds 127
   CosimConfigs.HermanLiuAtThePapersResolution 77
-  icebreaker_board_build 72
+  icebreaker_board_build 93
   CosimDepthTie.ShippedScenesSubmissionOrder 38
   synth_smoke 28
   synth_options 25
