@@ -25,12 +25,26 @@ struct PhongFrame {
   PhongShader::Vec light{}, eye{};
   i64 le = 0;
   std::vector<PhongShader::MaterialTerms> materials;  // by material id, as frame.materials
+  // The material terms by field (by material id), for a line kernel's gathers: Cp per channel,
+  // 1 - d, the d term, the specular scale and n's NBits bits.
+  std::vector<i64> cp[3], one_minus_d, d_term, spec_scale, shininess;
+  // Whether the light and the eye fit 32-bit lanes (a line kernel's products of them with a unit
+  // normal are 32 x 32 bits); a Q2.14 vector always does.
+  bool narrow_vectors = true;
   explicit PhongFrame(const Frame& frame)
       : light(frame.light), eye(frame.eye), le(PhongShader::frame_le(frame.light, frame.eye)) {
     if (frame.shading != ShadingMode::Phong) return;
     materials.reserve(frame.materials.size());
-    for (const QuantizedMaterial& m : frame.materials)
-      materials.push_back(PhongShader::material_terms(m.cp, m.d, m.w, m.shininess));
+    for (const QuantizedMaterial& m : frame.materials) {
+      const PhongShader::MaterialTerms t = PhongShader::material_terms(m.cp, m.d, m.w, m.shininess);
+      materials.push_back(t);
+      for (int c = 0; c < 3; ++c) cp[c].push_back(t.cp[static_cast<std::size_t>(c)]);
+      one_minus_d.push_back(t.one_minus_d), d_term.push_back(t.d_term), spec_scale.push_back(t.spec_scale);
+      shininess.push_back(static_cast<unsigned>(t.shininess) & ((1u << PhongShader::NBits) - 1));
+    }
+    for (int c = 0; c < 3; ++c)
+      narrow_vectors &= light[static_cast<std::size_t>(c)] == static_cast<std::int32_t>(light[static_cast<std::size_t>(c)]) &&
+                        eye[static_cast<std::size_t>(c)] == static_cast<std::int32_t>(eye[static_cast<std::size_t>(c)]);
   }
   // normalizer → phong_shader on one normal of material `id` (checked by the caller).
   std::array<int, 3> shade(const std::array<i64, 3>& normal, int id) const {
@@ -145,6 +159,11 @@ struct SpanKernels {
   // the four slots side by side, for a line's n segments at once (independent setups overlap in
   // the processor): span k's x0, x1, poly, value and step and its outcome. nullptr: none.
   void (*setup)(const Segment*, std::size_t n, const GouraudSetupConsts&, GouraudSpan*, FusedSetup*) = nullptr;
+  // A deferred Phong line's read-out: each covered pixel of keys [lo, hi) (key not Empty) gets
+  // the shade of normal[x] and material[x] in rgb[3x..3x+2], as PhongFrame::shade gives it.
+  // nullptr: the scalar loop.
+  void (*phong_line)(const PhongFrame&, const std::array<i64, 3>* normal, const int* material, const std::uint64_t* keys,
+                     int lo, int hi, std::uint8_t* rgb) = nullptr;
 };
 
 void empty_keys(std::uint64_t* keys, int lo, int hi) {
@@ -161,6 +180,9 @@ void empty_keys(std::uint64_t* keys, int lo, int hi) {
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #endif
 #define WATKINS_AVX512 "avx512f,avx512vl,avx512dq,avx512bw,avx512vbmi,bmi2"
+// Bytes 8k, 8k+1, 8k+2 of eight 64-bit lanes (r | g << 8 | b << 16) packed as 24 rgb bytes.
+alignas(64) constexpr std::uint8_t RgbPackIndex[64] = {0,  1,  2,  8,  9,  10, 16, 17, 18, 24, 25, 26,
+                                                       32, 33, 34, 40, 41, 42, 48, 49, 50, 56, 57, 58};
 __attribute__((target(WATKINS_AVX512))) long long gouraud_span_avx512(const GouraudSpan& s,
                                                                       const FrameLine::Row& out) {
   const __m512i lane = _mm512_setr_epi64(0, 1, 2, 3, 4, 5, 6, 7);
@@ -177,9 +199,7 @@ __attribute__((target(WATKINS_AVX512))) long long gouraud_span_avx512(const Gour
   const __m256i poly = _mm256_set1_epi32(s.poly);
   const __m128i one = _mm_set1_epi8(1);
   // Bytes 8k, 8k+1, 8k+2 of the eight lanes (r | g << 8 | b << 16) packed as 24 rgb bytes.
-  alignas(64) static constexpr std::uint8_t pack_index[64] = {
-      0, 1, 2, 8, 9, 10, 16, 17, 18, 24, 25, 26, 32, 33, 34, 40, 41, 42, 48, 49, 50, 56, 57, 58};
-  const __m512i pack = _mm512_load_si512(pack_index);
+  const __m512i pack = _mm512_load_si512(RgbPackIndex);
   long long won = 0;
   for (int x = s.x0; x < s.x1; x += 8) {
     const int left = s.x1 - x;
@@ -212,6 +232,114 @@ __attribute__((target(WATKINS_AVX512))) void empty_keys_avx512(std::uint64_t* ke
   for (int x = lo; x < hi; x += 8) {
     const int left = hi - x;
     _mm512_mask_storeu_epi64(keys + x, left >= 8 ? __mmask8(0xff) : static_cast<__mmask8>((1u << left) - 1), empty);
+  }
+}
+
+// PhongFrame::shade (Normalizer::normalize, then PhongShader::shade with the material's terms) on
+// the covered pixels of a line, eight at a time: the same products, roundings and clamps in 64-bit
+// lanes. A product takes the 32 x 32-bit multiply where both factors provably fit 32 bits (the
+// bounds in normalizer.hpp, rsqrt_unit.hpp and phong_shader.hpp: |N_i| < 2^17, mant < 2^20,
+// y0 < 2^15, 0 <= u < 2^26, y < 2^23, |unit| < 2^16, cos(i) and N.E below 2^25 in magnitude,
+// powers <= 2^20; the light and the eye are checked per frame), the 64-bit one where a material
+// term is a factor. An arithmetic shift of v + 2^(s-1) is round_shift62; the power is the stage
+// list's square-and-multiply over every bit up to the lanes' highest (power_bits' skipped
+// products change no bit).
+// (a b + 2^(P-1)) >> P for powers a, b in [0, 1.0] (P fraction bits, below 2^32).
+__attribute__((target(WATKINS_AVX512), always_inline)) inline __m512i pow_round(__m512i a, __m512i b, __m512i half) {
+  return _mm512_srli_epi64(_mm512_add_epi64(_mm512_mul_epu32(a, b), half), PhongShader::P);
+}
+// One material term per lane (material id[k] of a covered lane k; 0 elsewhere).
+__attribute__((target(WATKINS_AVX512), always_inline)) inline __m512i material_term(__mmask8 cov, __m256i id,
+                                                                                   const std::vector<i64>& term) {
+  return _mm512_mask_i32gather_epi64(_mm512_setzero_si512(), cov, id, term.data(), 8);
+}
+__attribute__((target(WATKINS_AVX512 ",avx512cd"))) void phong_line_avx512(const PhongFrame& ph,
+                                                                         const std::array<i64, 3>* normal,
+                                                                         const int* material,
+                                                                         const std::uint64_t* keys, int lo, int hi,
+                                                                         std::uint8_t* rgb) {
+  using RU = RsqrtUnit;
+  using PS = PhongShader;
+  static_assert(sizeof(std::array<i64, 3>) == 3 * sizeof(i64), "normals are three packed words");
+  constexpr int S1 = (RU::W + 1) + 2 * RU::T - RU::G, S2 = RU::T + RU::G + 1 - RU::F;  // rsqrt_mant's
+  constexpr int SDot = 2 * PS::UF - PS::D, SCs = 2 * PS::D - PS::P;                    // shade's
+  const __m512i zero = _mm512_setzero_si512(), one = _mm512_set1_epi64(1);
+  const __m512i lv[3] = {_mm512_set1_epi64(ph.light[0]), _mm512_set1_epi64(ph.light[1]), _mm512_set1_epi64(ph.light[2])};
+  const __m512i ev[3] = {_mm512_set1_epi64(ph.eye[0]), _mm512_set1_epi64(ph.eye[1]), _mm512_set1_epi64(ph.eye[2])};
+  const __m512i le_term = _mm512_set1_epi64(ph.le * (i64{1} << PS::D));
+  const __m512i dot_hi = _mm512_set1_epi64((i64{1} << (PS::D + 1)) - 1);
+  const __m512i dot_lo = _mm512_set1_epi64(-(i64{1} << (PS::D + 1)));
+  const __m512i pow_one = _mm512_set1_epi64(PS::One), pow_half = _mm512_set1_epi64(i64{1} << (PS::P - 1));
+  const __m512i level_half = _mm512_set1_epi64(i64{1} << (PS::OutFrac - 1)), level_max = _mm512_set1_epi64(fmt::ShadeMax);
+  const __m512i lane3 = _mm512_setr_epi64(0, 3, 6, 9, 12, 15, 18, 21);
+  const __m512i pack = _mm512_load_si512(RgbPackIndex);
+  const i64* words = normal->data();
+  for (int x = lo; x < hi; x += 8) {
+    const int left = hi - x;
+    const __mmask8 valid = left >= 8 ? __mmask8(0xff) : static_cast<__mmask8>((1u << left) - 1);
+    const __mmask8 cov = _mm512_mask_cmpneq_epu64_mask(valid, _mm512_maskz_loadu_epi64(valid, keys + x),
+                                                      _mm512_set1_epi64(-1));
+    if (!cov) continue;
+    // Normalizer stages 0..7.
+    const __m512i at = _mm512_add_epi64(_mm512_set1_epi64(3 * static_cast<i64>(x)), lane3);
+    const __m512i nx = _mm512_mask_i64gather_epi64(zero, cov, at, words, 8);
+    const __m512i ny = _mm512_mask_i64gather_epi64(zero, cov, at, words + 1, 8);
+    const __m512i nz = _mm512_mask_i64gather_epi64(zero, cov, at, words + 2, 8);
+    const __m512i m = _mm512_add_epi64(_mm512_add_epi64(_mm512_mul_epi32(nx, nx), _mm512_mul_epi32(ny, ny)),
+                                       _mm512_mul_epi32(nz, nz));
+    // j = (leading zeros in MBits bits) / 2; m = 0 gives j = 18 and mant = 0, so y = 0 and a zero
+    // unit vector, as j = 0 does.
+    const __m512i j = _mm512_srli_epi64(_mm512_sub_epi64(_mm512_lzcnt_epi64(m), _mm512_set1_epi64(64 - RU::MBits)), 1);
+    const __m512i mant = _mm512_srli_epi64(_mm512_sllv_epi64(m, _mm512_add_epi64(j, j)), RU::MBits - RU::W);
+    const __m512i y0 = _mm512_cvtepu32_epi64(
+        _mm512_i64gather_epi32(_mm512_srli_epi64(mant, RU::W - RU::P), RsqrtSeedRom.data(), 4));
+    const __m512i mc = _mm512_or_si512(_mm512_slli_epi64(mant, 1), one);
+    const __m512i t = _mm512_srli_epi64(
+        _mm512_add_epi64(_mm512_mul_epu32(mc, _mm512_mul_epu32(y0, y0)), _mm512_set1_epi64(i64{1} << (S1 - 1))), S1);
+    const __m512i u = _mm512_sub_epi64(_mm512_set1_epi64(i64{3} << RU::G), t);
+    const __m512i y = _mm512_srli_epi64(_mm512_add_epi64(_mm512_mul_epu32(y0, u), _mm512_set1_epi64(i64{1} << (S2 - 1))), S2);
+    const __m512i shift = _mm512_sub_epi64(_mm512_set1_epi64(Normalizer::F + 4), j);
+    const __m512i half = _mm512_sllv_epi64(one, _mm512_sub_epi64(shift, one));
+    const __m512i n[3] = {_mm512_srav_epi64(_mm512_add_epi64(_mm512_mul_epi32(nx, y), half), shift),
+                          _mm512_srav_epi64(_mm512_add_epi64(_mm512_mul_epi32(ny, y), half), shift),
+                          _mm512_srav_epi64(_mm512_add_epi64(_mm512_mul_epi32(nz, y), half), shift)};
+    // Shader stages 1..3.
+    __m512i nl = _mm512_mul_epi32(n[0], lv[0]), ne = _mm512_mul_epi32(n[0], ev[0]);
+    for (int c = 1; c < 3; ++c) {
+      nl = _mm512_add_epi64(nl, _mm512_mul_epi32(n[c], lv[c]));
+      ne = _mm512_add_epi64(ne, _mm512_mul_epi32(n[c], ev[c]));
+    }
+    const __m512i dot_half = _mm512_set1_epi64(i64{1} << (SDot - 1));
+    const __m512i cos_i = _mm512_min_epi64(_mm512_srli_epi64(_mm512_add_epi64(_mm512_max_epi64(nl, zero), dot_half), SDot), dot_hi);
+    ne = _mm512_max_epi64(_mm512_min_epi64(_mm512_srai_epi64(_mm512_add_epi64(ne, dot_half), SDot), dot_hi), dot_lo);
+    const __m512i cs2 = _mm512_sub_epi64(_mm512_slli_epi64(_mm512_mul_epi32(cos_i, ne), 1), le_term);
+    const __m512i cs = _mm512_min_epi64(
+        _mm512_srli_epi64(_mm512_add_epi64(_mm512_max_epi64(cs2, zero), _mm512_set1_epi64(i64{1} << (SCs - 1))), SCs),
+        pow_one);
+    // The material's terms.
+    const __m256i id = _mm256_maskz_loadu_epi32(cov, material + x);
+    const __m512i f = _mm512_add_epi64(_mm512_mullo_epi64(cos_i, material_term(cov, id, ph.one_minus_d)), material_term(cov, id, ph.d_term));
+    // Stages 4..11 on the lanes with a specular term.
+    const __mmask8 spec = _mm512_mask_cmpgt_epi64_mask(_mm512_cmpgt_epi64_mask(cos_i, zero), cs, zero) & cov;
+    __m512i bits = _mm512_maskz_mov_epi64(spec, material_term(cov, id, ph.shininess)), base = cs, acc = pow_one;
+    for (;;) {
+      acc = _mm512_mask_mov_epi64(acc, _mm512_test_epi64_mask(bits, one), pow_round(acc, base, pow_half));
+      bits = _mm512_srli_epi64(bits, 1);
+      if (!_mm512_test_epi64_mask(bits, bits)) break;
+      base = pow_round(base, base, pow_half);
+    }
+    const __m512i specular = _mm512_maskz_mullo_epi64(spec, material_term(cov, id, ph.spec_scale), acc);
+    // Stages 12, 13.
+    __m512i out = zero;
+    for (int c = 0; c < 3; ++c) {
+      const __m512i level = _mm512_add_epi64(_mm512_mullo_epi64(material_term(cov, id, ph.cp[c]), f), specular);
+      const __m512i v = _mm512_min_epi64(
+          _mm512_srli_epi64(_mm512_add_epi64(_mm512_max_epi64(level, zero), level_half), PS::OutFrac), level_max);
+      out = _mm512_or_si512(out, _mm512_slli_epi64(v, 8 * c));
+    }
+    const std::uint32_t bit = _pdep_u32(cov, 0x249249u);
+    _mm256_mask_storeu_epi8(rgb + 3 * x, bit | (bit << 1) | (bit << 2),
+                            _mm512_castsi512_si256(_mm512_permutexvar_epi8(pack, out)));
   }
 }
 
@@ -369,7 +497,11 @@ SpanKernels span_kernels(SpanPath path) {
   const bool avx512 = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
                       __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512bw") &&
                       __builtin_cpu_supports("avx512vbmi") && __builtin_cpu_supports("bmi2");
-  if (path != SpanPath::Avx2 && avx512) return SpanKernels{gouraud_span_avx512, empty_keys_avx512, gouraud_setups_avx512};
+  if (path != SpanPath::Avx2 && avx512) {
+    SpanKernels wide{gouraud_span_avx512, empty_keys_avx512, gouraud_setups_avx512};
+    if (__builtin_cpu_supports("avx512cd")) wide.phong_line = phong_line_avx512;
+    return wide;
+  }
   if (__builtin_cpu_supports("avx2")) return SpanKernels{gouraud_span_avx2, empty_keys_avx2};
 #endif
   return k;
@@ -579,7 +711,10 @@ void draw_lines(const FrameSetup& fs, int capacity, int y_begin, int y_end, Imag
     stats.visible += n.visible;
     if (observe.fragments_end) observe.fragments_end(y);
     // Phong with nobody observing shades each covered pixel once, from its last winner.
-    if (deferred)
+    if (deferred && fs.kernels.phong_line && fs.phong.narrow_vectors)
+      fs.kernels.phong_line(fs.phong, scratch.normal.data(), scratch.material.data(), line.row().keys, line.lo(),
+                            line.hi(), line.row().rgb);
+    else if (deferred)
       line.each_covered([&](int x, std::uint8_t* rgb) {
         const std::array<int, 3> p = fs.phong.shade(scratch.normal[static_cast<std::size_t>(x)],
                                                     scratch.material[static_cast<std::size_t>(x)]);
