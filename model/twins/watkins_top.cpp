@@ -57,6 +57,7 @@ struct PhongFrame {
     const std::array<int, 3> rgb = shade(f.normal, check(f.material));
     for (int c = 0; c < 3; ++c) f.rgb[c] = static_cast<std::uint8_t>(rgb[c]);
   }
+  bool valid(int id) const { return id >= 0 && static_cast<std::size_t>(id) < materials.size(); }
   int check(int id) const {
     (void)materials.at(static_cast<std::size_t>(id));
     return id;
@@ -152,6 +153,14 @@ struct GouraudSetupConsts {
 // they leave the fused setup's 64-bit bounds.
 enum class FusedSetup { Span, Empty, General };
 
+// PixelPath's normal readings (Normalizer input, FracBits fraction bits) of slots Nx, Ny, Nz, when
+// each rounds away extra fraction bits (shift >= 0): round_shift64 by shift (half = 2^(shift-1),
+// 0 for shift 0), saturated to NormalInBits.
+struct NormalReading {
+  std::uint64_t half[3] = {};
+  int shift[3] = {};
+};
+
 struct SpanKernels {
   long long (*draw)(const GouraudSpan&, const FrameLine::Row&) = nullptr;  // nullptr: the scalar loop
   void (*empty)(std::uint64_t* keys, int lo, int hi) = nullptr;
@@ -164,6 +173,13 @@ struct SpanKernels {
   // nullptr: the scalar loop.
   void (*phong_line)(const PhongFrame&, const std::array<i64, 3>* normal, const int* material, const std::uint64_t* keys,
                      int lo, int hi, std::uint8_t* rgb) = nullptr;
+  // A deferred Phong span in range (slots Z, Nx, Ny, Nz of the GouraudSpan; its tie and poly):
+  // the depth test, and for each winner its key, coverage and polygon in the line and its normal
+  // reading and material (valid, checked by the caller) in normal[x] and material[x], as the
+  // scalar loop stores them (the winner's rgb is the read-out's). Returns the winners. nullptr:
+  // the scalar loop.
+  long long (*phong_span)(const GouraudSpan&, const NormalReading&, int material, const FrameLine::Row&,
+                          std::array<i64, 3>* normal, int* materials) = nullptr;
 };
 
 void empty_keys(std::uint64_t* keys, int lo, int hi) {
@@ -233,6 +249,56 @@ __attribute__((target(WATKINS_AVX512))) void empty_keys_avx512(std::uint64_t* ke
     const int left = hi - x;
     _mm512_mask_storeu_epi64(keys + x, left >= 8 ? __mmask8(0xff) : static_cast<__mmask8>((1u << left) - 1), empty);
   }
+}
+
+__attribute__((target(WATKINS_AVX512))) long long phong_span_avx512(const GouraudSpan& s, const NormalReading& r,
+                                                                     int material, const FrameLine::Row& out,
+                                                                     std::array<i64, 3>* normal, int* materials) {
+  static_assert(sizeof(std::array<i64, 3>) == 3 * sizeof(i64), "normals are three packed words");
+  const __m512i lane = _mm512_setr_epi64(0, 1, 2, 3, 4, 5, 6, 7);
+  __m512i v[4], stride[4];
+  for (int c = 0; c < 4; ++c) {
+    const __m512i step = _mm512_set1_epi64(static_cast<long long>(s.step[c]));
+    v[c] = _mm512_add_epi64(_mm512_set1_epi64(static_cast<long long>(s.value[c])), _mm512_mullo_epi64(lane, step));
+    stride[c] = _mm512_slli_epi64(step, 3);
+  }
+  const __m512i z_half = _mm512_set1_epi64(static_cast<long long>(s.half[0]));
+  const __m128i z_shift = _mm_cvtsi32_si128(s.shift[0]);
+  __m512i n_half[3];
+  __m128i n_shift[3];
+  for (int c = 0; c < 3; ++c) {
+    n_half[c] = _mm512_set1_epi64(static_cast<long long>(r.half[c]));
+    n_shift[c] = _mm_cvtsi32_si128(r.shift[c]);
+  }
+  const __m512i n_hi = _mm512_set1_epi64((i64{1} << (fmt::NormalInBits - 1)) - 1);
+  const __m512i n_lo = _mm512_set1_epi64(-(i64{1} << (fmt::NormalInBits - 1)));
+  const __m512i tie = _mm512_set1_epi64(static_cast<long long>(s.tie));
+  const __m256i poly = _mm256_set1_epi32(s.poly), id = _mm256_set1_epi32(material);
+  const __m128i one = _mm_set1_epi8(1);
+  const __m512i lane3 = _mm512_setr_epi64(0, 3, 6, 9, 12, 15, 18, 21);
+  i64* const words = normal->data();
+  long long won = 0;
+  for (int x = s.x0; x < s.x1; x += 8) {
+    const int left = s.x1 - x;
+    const __mmask8 valid = left >= 8 ? __mmask8(0xff) : static_cast<__mmask8>((1u << left) - 1);
+    const __m512i depth = _mm512_srl_epi64(_mm512_add_epi64(v[0], z_half), z_shift);
+    const __m512i key = _mm512_or_si512(_mm512_slli_epi64(depth, 32), tie);
+    const __mmask8 win = _mm512_mask_cmplt_epu64_mask(valid, key, _mm512_maskz_loadu_epi64(valid, out.keys + x));
+    if (win) {
+      _mm512_mask_storeu_epi64(out.keys + x, win, key);
+      _mm_mask_storeu_epi8(out.covered + x, win, one);
+      _mm256_mask_storeu_epi32(out.owner + x, win, poly);
+      _mm256_mask_storeu_epi32(materials + x, win, id);
+      const __m512i at = _mm512_add_epi64(_mm512_set1_epi64(3 * static_cast<i64>(x)), lane3);
+      for (int c = 0; c < 3; ++c) {
+        const __m512i reading = _mm512_sra_epi64(_mm512_add_epi64(v[c + 1], n_half[c]), n_shift[c]);
+        _mm512_mask_i64scatter_epi64(words + c, win, at, _mm512_max_epi64(_mm512_min_epi64(reading, n_hi), n_lo), 8);
+      }
+      won += __builtin_popcount(win);
+    }
+    for (int c = 0; c < 4; ++c) v[c] = _mm512_add_epi64(v[c], stride[c]);
+  }
+  return won;
 }
 
 // PhongFrame::shade (Normalizer::normalize, then PhongShader::shade with the material's terms) on
@@ -499,6 +565,7 @@ SpanKernels span_kernels(SpanPath path) {
                       __builtin_cpu_supports("avx512vbmi") && __builtin_cpu_supports("bmi2");
   if (path != SpanPath::Avx2 && avx512) {
     SpanKernels wide{gouraud_span_avx512, empty_keys_avx512, gouraud_setups_avx512};
+    wide.phong_span = phong_span_avx512;
     if (__builtin_cpu_supports("avx512cd")) wide.phong_line = phong_line_avx512;
     return wide;
   }
@@ -537,6 +604,8 @@ struct FrameSetup {
   PhongFrame phong;
   SpanKernels kernels;
   GouraudSpan readings;  // the kernel's shifts and halves (PixelPath's in-range readings)
+  NormalReading normal_reading;
+  bool normal_kernel = true;  // every normal reading rounds (NormalReading): the span kernel may read
   // The fused span setup of the kernels, when the frame's readings have unclamped ranges
   // (nullptr: every span takes SegmentInterpolator::setup), and its constants.
   void (*fused_setup)(const Segment*, std::size_t, const GouraudSetupConsts&, GouraudSpan*, FusedSetup*) = nullptr;
@@ -552,6 +621,12 @@ struct FrameSetup {
       const int shift = cf.frac[fmt::ChanZ + c];
       readings.shift[c] = shift;
       readings.half[c] = shift == 0 ? 0 : std::uint64_t{1} << (shift - 1);
+    }
+    for (int c = 0; c < 3; ++c) {
+      const int shift = cf.frac[fmt::ChanNx + c] - fmt::FracBits;  // PixelPath's normal_shift_
+      normal_kernel &= shift >= 0 && shift <= 61;
+      normal_reading.shift[c] = shift;
+      normal_reading.half[c] = shift <= 0 ? 0 : std::uint64_t{1} << (shift - 1);
     }
     setup_consts.width = f.width;
     setup_consts.fx = cf.x_frac();
@@ -660,6 +735,9 @@ LineCounts draw_segments(const FrameSetup& fs, const std::vector<Segment>& segme
       run(std::false_type{});
     } else if (P == Pipe::Gouraud && !Observed && fs.kernels.draw) {
       n.visible += fs.kernels.draw(fs.gouraud_span(span, line.tie_bits(span.poly)), line.row());
+    } else if (defer && fs.kernels.phong_span && fs.normal_kernel && phong.valid(span.material)) {
+      n.visible += fs.kernels.phong_span(fs.gouraud_span(span, line.tie_bits(span.poly)), fs.normal_reading,
+                                         span.material, line.row(), scratch.normal.data(), scratch.material.data());
     } else {
       run(std::true_type{});
     }
