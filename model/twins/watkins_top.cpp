@@ -314,10 +314,25 @@ __attribute__((target(WATKINS_AVX512))) long long phong_span_avx512(const Gourau
 __attribute__((target(WATKINS_AVX512), always_inline)) inline __m512i pow_round(__m512i a, __m512i b, __m512i half) {
   return _mm512_srli_epi64(_mm512_add_epi64(_mm512_mul_epu32(a, b), half), PhongShader::P);
 }
-// One material term per lane (material id[k] of a covered lane k; 0 elsewhere).
-__attribute__((target(WATKINS_AVX512), always_inline)) inline __m512i material_term(__mmask8 cov, __m256i id,
-                                                                                   const std::vector<i64>& term) {
-  return _mm512_mask_i32gather_epi64(_mm512_setzero_si512(), cov, id, term.data(), 8);
+// The material terms of eight pixels (PhongFrame's by field), lane k that of material id[k] for
+// a covered lane k: one broadcast when every covered pixel has the same material (most groups of
+// eight do), a gather otherwise.
+struct MaterialLanes {
+  __m512i cp[3], one_minus_d, d_term, spec_scale, shininess;
+};
+__attribute__((target(WATKINS_AVX512), always_inline)) inline void material_lanes(const PhongFrame& ph, __mmask8 cov,
+                                                                                 const int* id, MaterialLanes& m) {
+  const int first = id[__builtin_ctz(cov)];
+  const __m256i ids = _mm256_maskz_loadu_epi32(cov, id);
+  const std::vector<i64>* const terms[7] = {&ph.cp[0],   &ph.cp[1],      &ph.cp[2],    &ph.one_minus_d,
+                                            &ph.d_term,  &ph.spec_scale, &ph.shininess};
+  __m512i* const lanes[7] = {&m.cp[0], &m.cp[1], &m.cp[2], &m.one_minus_d, &m.d_term, &m.spec_scale, &m.shininess};
+  if (_mm256_mask_cmpeq_epi32_mask(cov, ids, _mm256_set1_epi32(first)) == cov) {
+    for (int t = 0; t < 7; ++t) *lanes[t] = _mm512_set1_epi64((*terms[t])[static_cast<std::size_t>(first)]);
+  } else {
+    for (int t = 0; t < 7; ++t)
+      *lanes[t] = _mm512_mask_i32gather_epi64(_mm512_setzero_si512(), cov, ids, terms[t]->data(), 8);
+  }
 }
 __attribute__((target(WATKINS_AVX512 ",avx512cd"))) void phong_line_avx512(const PhongFrame& ph,
                                                                          const std::array<i64, 3>* normal,
@@ -337,20 +352,29 @@ __attribute__((target(WATKINS_AVX512 ",avx512cd"))) void phong_line_avx512(const
   const __m512i dot_lo = _mm512_set1_epi64(-(i64{1} << (PS::D + 1)));
   const __m512i pow_one = _mm512_set1_epi64(PS::One), pow_half = _mm512_set1_epi64(i64{1} << (PS::P - 1));
   const __m512i level_half = _mm512_set1_epi64(i64{1} << (PS::OutFrac - 1)), level_max = _mm512_set1_epi64(fmt::ShadeMax);
-  const __m512i lane3 = _mm512_setr_epi64(0, 3, 6, 9, 12, 15, 18, 21);
+  // Component c of pixel k is word 3k + c of the 24: words 0..15 picked from the first two
+  // vectors, then words 16..23 from the third (index 8 + word - 16).
+  const __m512i pick_x01 = _mm512_setr_epi64(0, 3, 6, 9, 12, 15, 0, 0), pick_x2 = _mm512_setr_epi64(0, 1, 2, 3, 4, 5, 10, 13);
+  const __m512i pick_y01 = _mm512_setr_epi64(1, 4, 7, 10, 13, 0, 0, 0), pick_y2 = _mm512_setr_epi64(0, 1, 2, 3, 4, 8, 11, 14);
+  const __m512i pick_z01 = _mm512_setr_epi64(2, 5, 8, 11, 14, 0, 0, 0), pick_z2 = _mm512_setr_epi64(0, 1, 2, 3, 4, 9, 12, 15);
   const __m512i pack = _mm512_load_si512(RgbPackIndex);
-  const i64* words = normal->data();
+  const i64* const words = normal->data();
   for (int x = lo; x < hi; x += 8) {
     const int left = hi - x;
     const __mmask8 valid = left >= 8 ? __mmask8(0xff) : static_cast<__mmask8>((1u << left) - 1);
     const __mmask8 cov = _mm512_mask_cmpneq_epu64_mask(valid, _mm512_maskz_loadu_epi64(valid, keys + x),
                                                       _mm512_set1_epi64(-1));
     if (!cov) continue;
-    // Normalizer stages 0..7.
-    const __m512i at = _mm512_add_epi64(_mm512_set1_epi64(3 * static_cast<i64>(x)), lane3);
-    const __m512i nx = _mm512_mask_i64gather_epi64(zero, cov, at, words, 8);
-    const __m512i ny = _mm512_mask_i64gather_epi64(zero, cov, at, words + 1, 8);
-    const __m512i nz = _mm512_mask_i64gather_epi64(zero, cov, at, words + 2, 8);
+    // Normalizer stages 0..7, on the eight pixels' normals: 24 words, three per pixel left of hi
+    // (an uncovered pixel's words are a stale normal, shaded and dropped).
+    const i64* const at = words + 3 * static_cast<std::ptrdiff_t>(x);
+    const std::uint32_t word_bits = left >= 8 ? 0xffffffu : (1u << (3 * left)) - 1;
+    const __m512i w0 = _mm512_maskz_loadu_epi64(static_cast<__mmask8>(word_bits), at);
+    const __m512i w1 = _mm512_maskz_loadu_epi64(static_cast<__mmask8>(word_bits >> 8), at + 8);
+    const __m512i w2 = _mm512_maskz_loadu_epi64(static_cast<__mmask8>(word_bits >> 16), at + 16);
+    const __m512i nx = _mm512_permutex2var_epi64(_mm512_permutex2var_epi64(w0, pick_x01, w1), pick_x2, w2);
+    const __m512i ny = _mm512_permutex2var_epi64(_mm512_permutex2var_epi64(w0, pick_y01, w1), pick_y2, w2);
+    const __m512i nz = _mm512_permutex2var_epi64(_mm512_permutex2var_epi64(w0, pick_z01, w1), pick_z2, w2);
     const __m512i m = _mm512_add_epi64(_mm512_add_epi64(_mm512_mul_epi32(nx, nx), _mm512_mul_epi32(ny, ny)),
                                        _mm512_mul_epi32(nz, nz));
     // j = (leading zeros in MBits bits) / 2; m = 0 gives j = 18 and mant = 0, so y = 0 and a zero
@@ -382,23 +406,23 @@ __attribute__((target(WATKINS_AVX512 ",avx512cd"))) void phong_line_avx512(const
     const __m512i cs = _mm512_min_epi64(
         _mm512_srli_epi64(_mm512_add_epi64(_mm512_max_epi64(cs2, zero), _mm512_set1_epi64(i64{1} << (SCs - 1))), SCs),
         pow_one);
-    // The material's terms.
-    const __m256i id = _mm256_maskz_loadu_epi32(cov, material + x);
-    const __m512i f = _mm512_add_epi64(_mm512_mullo_epi64(cos_i, material_term(cov, id, ph.one_minus_d)), material_term(cov, id, ph.d_term));
+    MaterialLanes mat;
+    material_lanes(ph, cov, material + x, mat);
+    const __m512i f = _mm512_add_epi64(_mm512_mullo_epi64(cos_i, mat.one_minus_d), mat.d_term);
     // Stages 4..11 on the lanes with a specular term.
     const __mmask8 spec = _mm512_mask_cmpgt_epi64_mask(_mm512_cmpgt_epi64_mask(cos_i, zero), cs, zero) & cov;
-    __m512i bits = _mm512_maskz_mov_epi64(spec, material_term(cov, id, ph.shininess)), base = cs, acc = pow_one;
+    __m512i bits = _mm512_maskz_mov_epi64(spec, mat.shininess), base = cs, acc = pow_one;
     for (;;) {
       acc = _mm512_mask_mov_epi64(acc, _mm512_test_epi64_mask(bits, one), pow_round(acc, base, pow_half));
       bits = _mm512_srli_epi64(bits, 1);
       if (!_mm512_test_epi64_mask(bits, bits)) break;
       base = pow_round(base, base, pow_half);
     }
-    const __m512i specular = _mm512_maskz_mullo_epi64(spec, material_term(cov, id, ph.spec_scale), acc);
+    const __m512i specular = _mm512_maskz_mullo_epi64(spec, mat.spec_scale, acc);
     // Stages 12, 13.
     __m512i out = zero;
     for (int c = 0; c < 3; ++c) {
-      const __m512i level = _mm512_add_epi64(_mm512_mullo_epi64(material_term(cov, id, ph.cp[c]), f), specular);
+      const __m512i level = _mm512_add_epi64(_mm512_mullo_epi64(mat.cp[c], f), specular);
       const __m512i v = _mm512_min_epi64(
           _mm512_srli_epi64(_mm512_add_epi64(_mm512_max_epi64(level, zero), level_half), PS::OutFrac), level_max);
       out = _mm512_or_si512(out, _mm512_slli_epi64(v, 8 * c));
