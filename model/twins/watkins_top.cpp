@@ -370,8 +370,9 @@ __attribute__((target(WATKINS_AVX512 ",avx512cd"))) void phong_line_avx512(const
     const i64* const at = words + 3 * static_cast<std::ptrdiff_t>(x);
     const std::uint32_t word_bits = left >= 8 ? 0xffffffu : (1u << (3 * left)) - 1;
     const __m512i w0 = _mm512_maskz_loadu_epi64(static_cast<__mmask8>(word_bits), at);
-    const __m512i w1 = _mm512_maskz_loadu_epi64(static_cast<__mmask8>(word_bits >> 8), at + 8);
-    const __m512i w2 = _mm512_maskz_loadu_epi64(static_cast<__mmask8>(word_bits >> 16), at + 16);
+    // A block of eight words past the array is not addressed (no load, no pointer past its end).
+    const __m512i w1 = word_bits >> 8 ? _mm512_maskz_loadu_epi64(static_cast<__mmask8>(word_bits >> 8), at + 8) : zero;
+    const __m512i w2 = word_bits >> 16 ? _mm512_maskz_loadu_epi64(static_cast<__mmask8>(word_bits >> 16), at + 16) : zero;
     const __m512i nx = _mm512_permutex2var_epi64(_mm512_permutex2var_epi64(w0, pick_x01, w1), pick_x2, w2);
     const __m512i ny = _mm512_permutex2var_epi64(_mm512_permutex2var_epi64(w0, pick_y01, w1), pick_y2, w2);
     const __m512i nz = _mm512_permutex2var_epi64(_mm512_permutex2var_epi64(w0, pick_z01, w1), pick_z2, w2);
