@@ -574,6 +574,195 @@ __attribute__((target("avx2"))) void empty_keys_avx2(std::uint64_t* keys, int lo
   for (; x + 4 <= hi; x += 4) _mm256_storeu_si256(reinterpret_cast<__m256i*>(keys + x), empty);
   for (; x < hi; ++x) keys[x] = FrameLine::Empty;
 }
+
+// The AVX-512 Phong kernels' arithmetic on four lanes (AVX2 has no 64-bit minimum, maximum,
+// arithmetic shift, low product or leading-zero count): each built from the operations it has,
+// the same values.
+__attribute__((target("avx2"), always_inline)) inline __m256i min64(__m256i a, __m256i b) {
+  return _mm256_blendv_epi8(a, b, _mm256_cmpgt_epi64(a, b));
+}
+__attribute__((target("avx2"), always_inline)) inline __m256i max64(__m256i a, __m256i b) {
+  return _mm256_blendv_epi8(b, a, _mm256_cmpgt_epi64(a, b));
+}
+// floor(v / 2^s) per lane for |v| < 2^62 and s in [0, 62]: the bias 2^62, a multiple of 2^s,
+// makes the word non-negative for a logical shift and comes off after (round_shift62's argument).
+__attribute__((target("avx2"), always_inline)) inline __m256i floor_shift_lanes(__m256i v, __m256i s) {
+  const __m256i bias = _mm256_set1_epi64x(i64{1} << 62);
+  return _mm256_sub_epi64(_mm256_srlv_epi64(_mm256_add_epi64(v, bias), s), _mm256_srlv_epi64(bias, s));
+}
+// a b modulo 2^64 (i64's product, where it does not overflow) from three 32 x 32-bit products.
+__attribute__((target("avx2"), always_inline)) inline __m256i mullo64(__m256i a, __m256i b) {
+  const __m256i cross = _mm256_add_epi64(_mm256_mul_epu32(_mm256_srli_epi64(a, 32), b),
+                                         _mm256_mul_epu32(a, _mm256_srli_epi64(b, 32)));
+  return _mm256_add_epi64(_mm256_mul_epu32(a, b), _mm256_slli_epi64(cross, 32));
+}
+
+__attribute__((target("avx2"))) long long phong_span_avx2(const GouraudSpan& s, const NormalReading& r, int material,
+                                                          const FrameLine::Row& out, std::array<i64, 3>* normal,
+                                                          int* materials) {
+  __m256i v[4], stride[4];
+  for (int c = 0; c < 4; ++c) {
+    // value + k·step for k = 0..3, by additions.
+    const __m256i step = _mm256_set1_epi64x(static_cast<long long>(s.step[c]));
+    const __m256i step2 = _mm256_add_epi64(step, step);
+    const __m256i odd = _mm256_blend_epi32(_mm256_setzero_si256(), step, 0xcc);
+    const __m256i pairs = _mm256_blend_epi32(_mm256_setzero_si256(), step2, 0xf0);
+    v[c] = _mm256_add_epi64(_mm256_set1_epi64x(static_cast<long long>(s.value[c])), _mm256_add_epi64(odd, pairs));
+    stride[c] = _mm256_add_epi64(step2, step2);
+  }
+  const __m256i lane = _mm256_setr_epi64x(0, 1, 2, 3);
+  const __m256i z_half = _mm256_set1_epi64x(static_cast<long long>(s.half[0]));
+  const __m128i z_shift = _mm_cvtsi32_si128(s.shift[0]);
+  const __m256i tie = _mm256_set1_epi64x(static_cast<long long>(s.tie));
+  const __m256i sign = _mm256_set1_epi64x(static_cast<long long>(std::uint64_t{1} << 63));
+  const __m256i end = _mm256_set1_epi64x(s.x1);
+  __m256i n_half[3], n_shift[3];
+  for (int c = 0; c < 3; ++c) {
+    n_half[c] = _mm256_set1_epi64x(static_cast<long long>(r.half[c]));
+    n_shift[c] = _mm256_set1_epi64x(r.shift[c]);
+  }
+  const __m256i n_hi = _mm256_set1_epi64x((i64{1} << (fmt::NormalInBits - 1)) - 1);
+  const __m256i n_lo = _mm256_set1_epi64x(-(i64{1} << (fmt::NormalInBits - 1)));
+  long long won = 0;
+  for (int x = s.x0; x < s.x1; x += 4) {
+    const __m256i valid = _mm256_cmpgt_epi64(end, _mm256_add_epi64(lane, _mm256_set1_epi64x(x)));
+    const __m256i depth = _mm256_srl_epi64(_mm256_add_epi64(v[0], z_half), z_shift);
+    const __m256i key = _mm256_or_si256(_mm256_slli_epi64(depth, 32), tie);
+    const __m256i old = _mm256_maskload_epi64(reinterpret_cast<const long long*>(out.keys + x), valid);
+    const __m256i less = _mm256_cmpgt_epi64(_mm256_xor_si256(old, sign), _mm256_xor_si256(key, sign));
+    const __m256i win = _mm256_and_si256(less, valid);
+    unsigned bits = static_cast<unsigned>(_mm256_movemask_pd(_mm256_castsi256_pd(win)));
+    if (bits) {
+      _mm256_maskstore_epi64(reinterpret_cast<long long*>(out.keys + x), win, key);
+      alignas(32) i64 reading[3][4];
+      for (int c = 0; c < 3; ++c) {
+        const __m256i n = floor_shift_lanes(_mm256_add_epi64(v[c + 1], n_half[c]), n_shift[c]);
+        _mm256_store_si256(reinterpret_cast<__m256i*>(reading[c]), max64(min64(n, n_hi), n_lo));
+      }
+      won += __builtin_popcount(bits);
+      for (; bits; bits &= bits - 1) {
+        const int k = __builtin_ctz(bits);
+        const std::size_t px = static_cast<std::size_t>(x + k);
+        out.covered[px] = 1;
+        out.owner[px] = s.poly;
+        materials[px] = material;
+        normal[px] = {reading[0][k], reading[1][k], reading[2][k]};
+      }
+    }
+    for (int c = 0; c < 4; ++c) v[c] = _mm256_add_epi64(v[c], stride[c]);
+  }
+  return won;
+}
+
+// phong_line_avx512 on four lanes, with the operations above.
+__attribute__((target("avx2"))) void phong_line_avx2(const PhongFrame& ph, const std::array<i64, 3>* normal,
+                                                     const int* material, const std::uint64_t* keys, int lo, int hi,
+                                                     std::uint8_t* rgb) {
+  using RU = RsqrtUnit;
+  using PS = PhongShader;
+  constexpr int S1 = (RU::W + 1) + 2 * RU::T - RU::G, S2 = RU::T + RU::G + 1 - RU::F;
+  constexpr int SDot = 2 * PS::UF - PS::D, SCs = 2 * PS::D - PS::P;
+  const __m256i zero = _mm256_setzero_si256(), one = _mm256_set1_epi64x(1), empty = _mm256_set1_epi64x(-1);
+  const __m256i lv[3] = {_mm256_set1_epi64x(ph.light[0]), _mm256_set1_epi64x(ph.light[1]), _mm256_set1_epi64x(ph.light[2])};
+  const __m256i ev[3] = {_mm256_set1_epi64x(ph.eye[0]), _mm256_set1_epi64x(ph.eye[1]), _mm256_set1_epi64x(ph.eye[2])};
+  const __m256i le_term = _mm256_set1_epi64x(ph.le * (i64{1} << PS::D));
+  const __m256i dot_hi = _mm256_set1_epi64x((i64{1} << (PS::D + 1)) - 1);
+  const __m256i dot_lo = _mm256_set1_epi64x(-(i64{1} << (PS::D + 1)));
+  const __m256i dot_shift = _mm256_set1_epi64x(SDot), dot_half = _mm256_set1_epi64x(i64{1} << (SDot - 1));
+  const __m256i pow_one = _mm256_set1_epi64x(PS::One), pow_half = _mm256_set1_epi64x(i64{1} << (PS::P - 1));
+  const __m256i level_half = _mm256_set1_epi64x(i64{1} << (PS::OutFrac - 1));
+  const __m256i level_max = _mm256_set1_epi64x(fmt::ShadeMax);
+  const __m256i lane = _mm256_setr_epi64x(0, 1, 2, 3), lane3 = _mm256_setr_epi64x(0, 3, 6, 9);
+  // m as a double (exact below 2^52: the word 2^52 + m less 2^52): its exponent is m's top bit.
+  const __m256i magic = _mm256_set1_epi64x(0x4330000000000000);
+  const i64* const words = normal->data();
+  const std::vector<i64>* const terms[7] = {&ph.cp[0], &ph.cp[1], &ph.cp[2], &ph.one_minus_d,
+                                            &ph.d_term, &ph.spec_scale, &ph.shininess};
+  for (int x = lo; x < hi; x += 4) {
+    const __m256i valid = _mm256_cmpgt_epi64(_mm256_set1_epi64x(hi), _mm256_add_epi64(lane, _mm256_set1_epi64x(x)));
+    const __m256i k = _mm256_maskload_epi64(reinterpret_cast<const long long*>(keys + x), valid);
+    const __m256i cov = _mm256_andnot_si256(_mm256_cmpeq_epi64(k, empty), valid);
+    const unsigned cov_bits = static_cast<unsigned>(_mm256_movemask_pd(_mm256_castsi256_pd(cov)));
+    if (!cov_bits) continue;
+    // Normalizer stages 0..7.
+    const __m256i at = _mm256_add_epi64(_mm256_set1_epi64x(3 * static_cast<i64>(x)), lane3);
+    const __m256i nx = _mm256_mask_i64gather_epi64(zero, reinterpret_cast<const long long*>(words), at, cov, 8);
+    const __m256i ny = _mm256_mask_i64gather_epi64(zero, reinterpret_cast<const long long*>(words + 1), at, cov, 8);
+    const __m256i nz = _mm256_mask_i64gather_epi64(zero, reinterpret_cast<const long long*>(words + 2), at, cov, 8);
+    const __m256i m = _mm256_add_epi64(_mm256_add_epi64(_mm256_mul_epi32(nx, nx), _mm256_mul_epi32(ny, ny)),
+                                       _mm256_mul_epi32(nz, nz));
+    const __m256d md = _mm256_sub_pd(_mm256_castsi256_pd(_mm256_or_si256(m, magic)), _mm256_castsi256_pd(magic));
+    const __m256i msb = _mm256_sub_epi64(_mm256_srli_epi64(_mm256_castpd_si256(md), 52), _mm256_set1_epi64x(1023));
+    // j = (MBits - 1 - msb) / 2; m = 0 takes j = 0 (mant = 0: y = 0, a zero unit vector).
+    const __m256i j = _mm256_andnot_si256(_mm256_cmpeq_epi64(m, zero),
+                                          _mm256_srli_epi64(_mm256_sub_epi64(_mm256_set1_epi64x(RU::MBits - 1), msb), 1));
+    const __m256i mant = _mm256_srli_epi64(_mm256_sllv_epi64(m, _mm256_add_epi64(j, j)), RU::MBits - RU::W);
+    const __m256i y0 = _mm256_cvtepu32_epi64(_mm256_i64gather_epi32(reinterpret_cast<const int*>(RsqrtSeedRom.data()),
+                                                                    _mm256_srli_epi64(mant, RU::W - RU::P), 4));
+    const __m256i mc = _mm256_or_si256(_mm256_slli_epi64(mant, 1), one);
+    const __m256i t = _mm256_srli_epi64(
+        _mm256_add_epi64(_mm256_mul_epu32(mc, _mm256_mul_epu32(y0, y0)), _mm256_set1_epi64x(i64{1} << (S1 - 1))), S1);
+    const __m256i u = _mm256_sub_epi64(_mm256_set1_epi64x(i64{3} << RU::G), t);
+    const __m256i y = _mm256_srli_epi64(_mm256_add_epi64(_mm256_mul_epu32(y0, u), _mm256_set1_epi64x(i64{1} << (S2 - 1))), S2);
+    const __m256i shift = _mm256_sub_epi64(_mm256_set1_epi64x(Normalizer::F + 4), j);
+    const __m256i half = _mm256_sllv_epi64(one, _mm256_sub_epi64(shift, one));
+    const __m256i n[3] = {floor_shift_lanes(_mm256_add_epi64(_mm256_mul_epi32(nx, y), half), shift),
+                          floor_shift_lanes(_mm256_add_epi64(_mm256_mul_epi32(ny, y), half), shift),
+                          floor_shift_lanes(_mm256_add_epi64(_mm256_mul_epi32(nz, y), half), shift)};
+    // Shader stages 1..3.
+    __m256i nl = _mm256_mul_epi32(n[0], lv[0]), ne = _mm256_mul_epi32(n[0], ev[0]);
+    for (int c = 1; c < 3; ++c) {
+      nl = _mm256_add_epi64(nl, _mm256_mul_epi32(n[c], lv[c]));
+      ne = _mm256_add_epi64(ne, _mm256_mul_epi32(n[c], ev[c]));
+    }
+    const __m256i cos_i = min64(_mm256_srli_epi64(_mm256_add_epi64(max64(nl, zero), dot_half), SDot), dot_hi);
+    ne = max64(min64(floor_shift_lanes(_mm256_add_epi64(ne, dot_half), dot_shift), dot_hi), dot_lo);
+    const __m256i cs2 = _mm256_sub_epi64(_mm256_slli_epi64(_mm256_mul_epi32(cos_i, ne), 1), le_term);
+    const __m256i cs = min64(
+        _mm256_srli_epi64(_mm256_add_epi64(max64(cs2, zero), _mm256_set1_epi64x(i64{1} << (SCs - 1))), SCs), pow_one);
+    // The material's terms: broadcast when the covered pixels share one, gathered otherwise.
+    const int first = material[x + __builtin_ctz(cov_bits)];
+    bool one_material = true;
+    for (unsigned b = cov_bits; b; b &= b - 1) one_material &= material[x + __builtin_ctz(b)] == first;
+    __m256i mat[7];
+    if (one_material) {
+      for (int i = 0; i < 7; ++i) mat[i] = _mm256_set1_epi64x((*terms[i])[static_cast<std::size_t>(first)]);
+    } else {
+      alignas(16) int id[4] = {0, 0, 0, 0};
+      for (unsigned b = cov_bits; b; b &= b - 1) id[__builtin_ctz(b)] = material[x + __builtin_ctz(b)];
+      const __m128i ids = _mm_load_si128(reinterpret_cast<const __m128i*>(id));
+      for (int i = 0; i < 7; ++i)
+        mat[i] = _mm256_mask_i32gather_epi64(zero, reinterpret_cast<const long long*>(terms[i]->data()), ids, cov, 8);
+    }
+    const __m256i f = _mm256_add_epi64(mullo64(cos_i, mat[3]), mat[4]);
+    // Stages 4..11 on the lanes with a specular term.
+    const __m256i spec = _mm256_and_si256(
+        _mm256_and_si256(_mm256_cmpgt_epi64(cos_i, zero), _mm256_cmpgt_epi64(cs, zero)), cov);
+    __m256i bits = _mm256_and_si256(spec, mat[6]), base = cs, acc = pow_one;
+    for (;;) {
+      const __m256i take = _mm256_cmpeq_epi64(_mm256_and_si256(bits, one), one);
+      const __m256i product = _mm256_srli_epi64(_mm256_add_epi64(_mm256_mul_epu32(acc, base), pow_half), PS::P);
+      acc = _mm256_blendv_epi8(acc, product, take);
+      bits = _mm256_srli_epi64(bits, 1);
+      if (_mm256_testz_si256(bits, bits)) break;
+      base = _mm256_srli_epi64(_mm256_add_epi64(_mm256_mul_epu32(base, base), pow_half), PS::P);
+    }
+    const __m256i specular = _mm256_and_si256(spec, mullo64(mat[5], acc));
+    // Stages 12, 13.
+    alignas(32) i64 level[3][4];
+    for (int c = 0; c < 3; ++c) {
+      const __m256i sum = _mm256_add_epi64(mullo64(mat[c], f), specular);
+      _mm256_store_si256(reinterpret_cast<__m256i*>(level[c]),
+                         min64(_mm256_srli_epi64(_mm256_add_epi64(max64(sum, zero), level_half), PS::OutFrac), level_max));
+    }
+    for (unsigned b = cov_bits; b; b &= b - 1) {
+      const int l = __builtin_ctz(b);
+      std::uint8_t* const p = rgb + 3 * static_cast<std::size_t>(x + l);
+      p[0] = static_cast<std::uint8_t>(level[0][l]), p[1] = static_cast<std::uint8_t>(level[1][l]);
+      p[2] = static_cast<std::uint8_t>(level[2][l]);
+    }
+  }
+}
 #pragma GCC diagnostic pop
 #endif
 
@@ -591,10 +780,14 @@ SpanKernels span_kernels(SpanPath path) {
   if (path != SpanPath::Avx2 && avx512) {
     SpanKernels wide{gouraud_span_avx512, empty_keys_avx512, gouraud_setups_avx512};
     wide.phong_span = phong_span_avx512;
-    if (__builtin_cpu_supports("avx512cd")) wide.phong_line = phong_line_avx512;
+    wide.phong_line = __builtin_cpu_supports("avx512cd") ? phong_line_avx512 : phong_line_avx2;
     return wide;
   }
-  if (__builtin_cpu_supports("avx2")) return SpanKernels{gouraud_span_avx2, empty_keys_avx2};
+  if (__builtin_cpu_supports("avx2")) {
+    SpanKernels narrow{gouraud_span_avx2, empty_keys_avx2};
+    narrow.phong_span = phong_span_avx2, narrow.phong_line = phong_line_avx2;
+    return narrow;
+  }
 #endif
   return k;
 }
