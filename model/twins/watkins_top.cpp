@@ -846,6 +846,7 @@ struct FrameSetup {
       normal_reading.shift[c] = shift;
       normal_reading.half[c] = shift <= 0 ? 0 : std::uint64_t{1} << (shift - 1);
     }
+    const bool phong = f.shading == ShadingMode::Phong;
     setup_consts.width = f.width;
     setup_consts.fx = cf.x_frac();
     bool ranges = true;
@@ -853,11 +854,14 @@ struct FrameSetup {
       const int bits = cf.bits[fmt::ChanZ + c];
       setup_consts.wrap_shift[c] = static_cast<std::uint64_t>(64 - bits);
       setup_consts.step_hi[c] = (i64{1} << (bits - 1)) - 1;
-      setup_consts.read_lo[c] = path.shade_lo(fmt::ChanZ + c);
-      setup_consts.read_hi[c] = path.shade_hi(fmt::ChanZ + c);
+      // Phong reads the normal slots with a clamp (PixelPath::in_range<Readings::Normal>): their
+      // whole word is in range.
+      const bool word = phong && c > 0;
+      setup_consts.read_lo[c] = word ? -(i64{1} << (bits - 1)) : path.shade_lo(fmt::ChanZ + c);
+      setup_consts.read_hi[c] = word ? (i64{1} << (bits - 1)) - 1 : path.shade_hi(fmt::ChanZ + c);
       ranges &= setup_consts.read_lo[c] <= setup_consts.read_hi[c];
     }
-    if (ranges && k.draw) fused_setup = k.setup;
+    if (ranges && (phong ? k.phong_span && normal_kernel : k.draw != nullptr)) fused_setup = k.setup;
   }
   GouraudSpan gouraud_span(const SpanSetup& span, std::uint64_t tie) const {
     GouraudSpan g = readings;
@@ -889,9 +893,10 @@ LineCounts draw_segments(const FrameSetup& fs, const std::vector<Segment>& segme
   LineCounts n;
   SpanSetup span;
   span.formats = formats;
-  // An unobserved Gouraud line whose kernels fuse the setup: every span set up first, then drawn
-  // in order; a span the fused setup hands back takes the general path in its turn.
-  constexpr bool Fused = P == Pipe::Gouraud && !Observed;
+  // An unobserved Gouraud or Phong line whose kernels fuse the setup: every span set up first,
+  // then drawn in order; a span the fused setup hands back (or a Phong span of a material past
+  // the table, whose error the scalar loop raises) takes the general path in its turn.
+  constexpr bool Fused = (P == Pipe::Gouraud || P == Pipe::Phong) && !Observed;
   const bool fused = Fused && fs.fused_setup;
   if (fused) {
     if (scratch.spans.size() < segments.size()) {
@@ -902,13 +907,17 @@ LineCounts draw_segments(const FrameSetup& fs, const std::vector<Segment>& segme
   }
   for (std::size_t i = 0; i < segments.size(); ++i) {
     const Segment& s = segments[i];
-    if (fused && scratch.setups[i] != FusedSetup::General) {
+    if (fused && scratch.setups[i] != FusedSetup::General && (P != Pipe::Phong || phong.valid(s.material))) {
       if (scratch.setups[i] == FusedSetup::Span) {
         GouraudSpan& g = scratch.spans[i];
         n.fragments += g.x1 - g.x0;
         line.touch(g.x0, g.x1);
         g.tie = line.tie_bits(s.poly);
-        n.visible += fs.kernels.draw(g, line.row());
+        if (P == Pipe::Phong)
+          n.visible += fs.kernels.phong_span(g, fs.normal_reading, s.material, line.row(), scratch.normal.data(),
+                                             scratch.material.data());
+        else
+          n.visible += fs.kernels.draw(g, line.row());
       }
       continue;
     }
