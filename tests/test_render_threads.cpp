@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cctype>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -92,6 +93,51 @@ TEST(RenderBands, CurvedEdgesAtEdgeOrderThree) {
     ASSERT_EQ(p.config.edge_order, 3);
     check_frame(p, "curve scene");
   }
+}
+
+// A Phong frame whose polygons name materials past its table: every path raises the scalar loop's
+// std::out_of_range, or draws its frame where no such polygon wins a pixel (the table of a scene
+// with several materials cut to k entries).
+TEST(RenderBands, PhongMaterialPastTheTableOnEveryPath) {
+  for (const std::string& name : test::shipped_scene_names()) {
+    BuildOptions opt;
+    opt.shading = ShadingMode::Phong;
+    BuiltScene scene;
+    try {
+      scene = load_scene(WATKINS_SOURCE_DIR "/scenes/" + name, opt);
+    } catch (const std::exception&) {
+      continue;
+    }
+    const PreparedScene full = prepare(scene, holding_with_order(scene));
+    if (full.materials.size() < 2) continue;  // a scene where a cut table leaves some polygons drawn
+    for (std::size_t k = 0; k < full.materials.size(); ++k) {
+      PreparedScene p = full;
+      p.materials.resize(k);
+      WatkinsTop ref(p.config);
+      ref.set_span_path(SpanPath::Scalar);
+      Image want;
+      bool threw = false;
+      try {
+        ref.render_into(p, want);
+      } catch (const std::out_of_range&) {
+        threw = true;
+      }
+      for (const SpanPath path : {SpanPath::Auto, SpanPath::Avx2, SpanPath::Avx512}) {
+        WatkinsTop top(p.config);
+        top.set_span_path(path);
+        Image got;
+        const std::string what = name + " materials " + std::to_string(k) + " path " + std::to_string(static_cast<int>(path));
+        if (threw) {
+          EXPECT_THROW(top.render_into(p, got), std::out_of_range) << what;
+        } else {
+          top.render_into(p, got);
+          expect_same_frame(want, ref.stats(), got, top.stats(), what);
+        }
+      }
+    }
+    return;  // one such scene
+  }
+  FAIL() << "no shipped scene builds in Phong with two materials";
 }
 
 // k lines at once equal k single steps, for random words (wrapping ones included) of any width.
