@@ -136,7 +136,7 @@ module watkins_top #(
     $error("watkins_top: Compact = 1 needs Phong = 0, Smoothing = 0 and HasEq2 = 0");
   end
   if (Lanes != 1 && (Compact == 0 || Lanes != 2)) begin : g_lanes_unsupported
-    $error("watkins_top: Lanes = 2 needs Compact = 1 (the pipelined blocks take one fragment a clock)");
+    $error("watkins_top: Lanes must be 1, or 2 with Compact = 1 (the pipelined blocks take one fragment a clock)");
   end
 
   // ------------------------------------------------------------ frame control

@@ -147,10 +147,8 @@ int run_sim(const SimArgs& a) {
 
   // The model's image as the board shows it: doubled; on the iCEBreaker's 12-bit Pmod each 8-bit
   // level's top four bits.
-  Image model = WatkinsTop(cfg).render(prepared);
-  if (top.icebreaker)
-    for (std::uint8_t& level : model.rgb) level &= 0xF0;
-  const Image want = tb::doubled(model, doubling);
+  const Image model = WatkinsTop(cfg).render(prepared);
+  const Image want = tb::doubled(top.icebreaker ? board::pmod_levels(model) : model, doubling);
 
   const board::BoardTiming timing = board::board_timing(top.icebreaker ? board::Board::Icebreaker : board::Board::Ulx3s);
   const double pixel_mhz = timing.ticks_per_us / timing.ticks_per_pixel;

@@ -108,4 +108,9 @@ void write_readmemh_file(const std::string& path, const BankImage& bank) {
   if (!out) throw std::runtime_error(path + ": cannot write the bank image");
 }
 
+Image pmod_levels(Image image) {
+  for (std::uint8_t& level : image.rgb) level &= 0xF0;
+  return image;
+}
+
 }  // namespace watkins::board

@@ -17,6 +17,7 @@
 #include "config.hpp"
 #include "edge_packing.hpp"
 #include "frame.hpp"
+#include "image.hpp"
 
 namespace watkins::board {
 
@@ -38,6 +39,10 @@ struct BankImage {
 // Throws std::invalid_argument, naming the field, when a value does not fit its word, the record
 // is narrower than MinWordBits, or the bank would hold more than bank_words words (0: no limit).
 BankImage bank_image(const Frame& frame, const Config& config, int bank_words = 0);
+
+// `image` as the iCEBreaker's 12-bit DVI Pmod shows it: each 8-bit level's top four bits (the
+// board top drives rgb[7:4] of each channel onto the Pmod's pins).
+Image pmod_levels(Image image);
 
 // One word a line, ceil(word_bits / 4) hexadecimal digits, most significant first: $readmemh.
 void write_readmemh(std::ostream& out, const BankImage& bank);

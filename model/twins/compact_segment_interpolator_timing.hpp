@@ -53,7 +53,6 @@ class CompactSegmentInterpolatorTiming {
   // the head's pop, the next take) or the divider's (start, normalize, Iterations).
   int span_clocks() const { return std::max(issue_clocks() + 6, 3 + iterations_); }
   int iterations() const { return iterations_; }
-  int lanes() const { return lanes_; }
 
   Pins clock(bool seg_valid, const Item& in, bool frag_ready) {
     const bool in_recip = !in.eol && in.x_end > in.x_start;

@@ -53,8 +53,7 @@ Scene prepare_scene(const std::string& path, IcebreakerTop top) {
   const Config config = load_config(config_of(top));
   Scene s;
   s.frame = prepare(load_scene(path), config);
-  s.model = WatkinsTop(config).render(s.frame);
-  for (std::uint8_t& level : s.model.rgb) level &= 0xF0;
+  s.model = board::pmod_levels(WatkinsTop(config).render(s.frame));
   return s;
 }
 
