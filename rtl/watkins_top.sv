@@ -57,12 +57,20 @@
 // the cycles differ. Its glue is the pipelined top's but for one thing: the former's segments go
 // straight to the interpolator, in the clock the former offers one and the interpolator's
 // seg_ready_o (a flop) is high -- no segment skid. The fragment queue (two entries, latency 1)
-// and the pixel skid stay as in the pipelined top. It needs Phong = 0, Smoothing = 0 and
-// HasEq2 = 0 (checked at elaboration) and sparse_i = 0 at every frame start (asserted: the
-// compact buffer emits full frames only). Lanes = 2 (Config::lanes, compact only): the
-// interpolator's beats carry up to two consecutive pixels of a span (fr_pair: lane 1 at x + 1),
-// the fragment queue carries both, and the line buffer writes both in one clock; the values and
-// their order are the same, a long span takes half the clocks.
+// and the pixel skid stay as in the pipelined top. It needs Smoothing = 0 and HasEq2 = 0
+// (checked at elaboration) and sparse_i = 0 at every frame start (asserted: the compact buffer
+// emits full frames only). With Phong = 1 compact_normalizer and compact_phong_shader take the
+// pipelined Phong blocks' places (docs/reference/compact-phong.md): the same shades in the same
+// order before the depth test, one fragment per 5 clocks at most through them, latency 33 + 65
+// clocks (the interpolator stalls on the normalizer's ready_o, a flop). The compact shader needs
+// L and E stable from 10 clocks before a frame's first pixel reaches it to its last shade: the
+// top loads them only at a frame's start (after the previous frame's last pixel, so after its
+// last shade), and the frame's first fragment reaches the shader no sooner than the
+// interpolator's span setup and the normalizer's 33 clocks later. Lanes = 2 (Config::lanes,
+// compact Gouraud only, checked at elaboration): the interpolator's beats carry up to two
+// consecutive pixels of a span (fr_pair: lane 1 at x + 1), the fragment queue carries both, and
+// the line buffer writes both in one clock; the values and their order are the same, a long span
+// takes half the clocks.
 `include "watkins_assert.svh"
 
 module watkins_top #(
@@ -85,7 +93,7 @@ module watkins_top #(
   /* verilator lint_off UNUSEDPARAM */  // read by the divider only, so unused where HasEq2 = 0
   parameter int unsigned Eq2RecipBits   = watkins_pkg::Eq2RecipBits,  // its 1/depth mantissa
   /* verilator lint_on UNUSEDPARAM */
-  parameter int          Compact        = 0,  // 1: the compact blocks (Gouraud, no smoother, full frames)
+  parameter int          Compact        = 0,  // 1: the compact blocks (no smoother, full frames)
   parameter int unsigned Lanes          = 1,  // fragments per beat of the compact fragment path: 1 or 2
   localparam int unsigned XBits    = XIntBits + XFracBits,
   localparam int unsigned ZBits    = DepthIntBits + DepthFracBits,
@@ -131,12 +139,15 @@ module watkins_top #(
   localparam int unsigned VectorBits = watkins_pkg::vector_bits(XBits, ZBits, AttrBits);  // channel
                                                                                           // vector
 
-  // The compact blocks serve the Gouraud top without the smoother and the eq. (2) divider.
-  if (Compact != 0 && (Phong != 0 || Smoothing != 0 || HasEq2 != 0)) begin : g_compact_unsupported
-    $error("watkins_top: Compact = 1 needs Phong = 0, Smoothing = 0 and HasEq2 = 0");
+  // The compact blocks serve the top without the smoother and the eq. (2) divider.
+  if (Compact != 0 && (Smoothing != 0 || HasEq2 != 0)) begin : g_compact_unsupported
+    $error("watkins_top: Compact = 1 needs Smoothing = 0 and HasEq2 = 0");
   end
   if (Lanes != 1 && (Compact == 0 || Lanes != 2)) begin : g_lanes_unsupported
     $error("watkins_top: Lanes must be 1, or 2 with Compact = 1 (the pipelined blocks take one fragment a clock)");
+  end
+  if (Lanes != 1 && Phong != 0) begin : g_lanes_phong_unsupported
+    $error("watkins_top: Lanes = 2 needs Phong = 0 (the compact Phong blocks shade one fragment a beat)");
   end
 
   // ------------------------------------------------------------ frame control
@@ -431,7 +442,90 @@ module watkins_top #(
   logic [DepthBits-1:0]  sh_depth1 /*verilator public_flat_rd*/;
   watkins_pkg::rgb_t     sh_rgb1   /*verilator public_flat_rd*/;
 
-  if (Phong != 0) begin : g_phong
+  if (Phong != 0 && Compact != 0) begin : g_compact_phong
+    // The compact Phong blocks in the pipelined ones' places (the header says why L and E are
+    // stable for the shader): the interpolator's stall is the normalizer's ready_o, a flop.
+    localparam int unsigned UnitBits         = watkins_pkg::UnitBits;
+    // {eol, x, depth, poly} rides along
+    localparam int unsigned ShadePayloadBits = 1 + LineBits + DepthBits + PolyIdBits;
+    logic [3*UnitBits-1:0] light_q, eye_q;
+    always_ff @(posedge clk_i) begin
+      if (start) begin
+        light_q <= light_i;
+        eye_q   <= eye_i;
+      end
+    end
+
+    // Material table: flops, read combinationally at the shader's take (the normalizer's output
+    // register holds the material id until then).
+    localparam int unsigned EntryBits = watkins_pkg::RgbBits + 2 * watkins_pkg::MaterialBits
+                                      + watkins_pkg::ShininessBits;
+    logic [EntryBits-1:0] material_q [2**MaterialIdBits];
+    always_ff @(posedge clk_i) begin
+      if (material_we_i)
+        material_q[material_addr_i] <= {material_cp_i, material_d_i, material_w_i, material_n_i};
+    end
+
+    logic [3*UnitBits-1:0]       nm_unit;
+    logic [MaterialIdBits-1:0]   nm_material;
+    logic [ShadePayloadBits-1:0] nm_payload, sh_payload;
+    logic                        nm_valid, nm_ready, nm_ready_next;
+    /* verilator lint_off UNUSEDSIGNAL */
+    logic                        nm_ready_next_unused;  // the interpolator's stall is not a flop
+    /* verilator lint_on UNUSEDSIGNAL */
+    logic                        nm_null_unused;  // a null normal already reads as (0,0,0): cos(i) = 0
+
+    compact_normalizer #(
+      .PayloadBits(MaterialIdBits + ShadePayloadBits),
+      .LookAhead  (1'b1)
+    ) u_normalizer (
+      .clk_i, .rst_ni,
+      .normal_i (fr_normal),
+      .payload_i({fr_material, fr_eol, fr_x, fr_depth, fr_poly}),
+      .valid_i  (fr_valid),
+      .ready_o  (fr_ready),
+      .ready_next_o(nm_ready_next_unused),
+      .unit_o   (nm_unit),
+      .null_o   (nm_null_unused),
+      .payload_o({nm_material, nm_payload}),
+      .valid_o  (nm_valid),
+      .ready_i  (nm_ready),
+      .ready_next_i(nm_ready_next)
+    );
+
+    watkins_pkg::rgb_t                     m_cp;
+    logic [watkins_pkg::MaterialBits-1:0]  m_d, m_w;
+    logic [watkins_pkg::ShininessBits-1:0] m_n;
+    assign {m_cp, m_d, m_w, m_n} = material_q[nm_material];
+
+    compact_phong_shader #(
+      .PayloadBits(ShadePayloadBits),
+      .LookAhead  (1'b1)
+    ) u_phong_shader (
+      .clk_i, .rst_ni,
+      .light_i    (light_q),
+      .eye_i      (eye_q),
+      .normal_i   (nm_unit),
+      .cp_i       (m_cp),
+      .d_i        (m_d),
+      .w_i        (m_w),
+      .shininess_i(m_n),
+      .payload_i  (nm_payload),
+      .valid_i    (nm_valid),
+      .ready_o    (nm_ready),
+      .rgb_o      (sh_rgb),
+      .payload_o  (sh_payload),
+      .valid_o    (sh_valid),
+      .ready_i    (sh_ready),
+      .ready_next_i(sh_ready_next),
+      .ready_next_o(nm_ready_next)
+    );
+    assign {sh_eol, sh_x, sh_depth, sh_poly} = sh_payload;
+    assign {sh_pair, sh_depth1, sh_rgb1} = '0;
+    logic unused_eq2;
+    assign unused_eq2 = ^{eq2_i, fr_attr, fr_pair, fr_depth1, fr_rgb1};
+    `WATKINS_ASSERT(a_phong_no_eq2, start |-> !eq2_i)
+  end else if (Phong != 0) begin : g_phong
     localparam int unsigned UnitBits         = watkins_pkg::UnitBits;
     // {eol, x, depth, poly} rides along
     localparam int unsigned ShadePayloadBits = 1 + LineBits + DepthBits + PolyIdBits;

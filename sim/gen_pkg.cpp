@@ -32,6 +32,7 @@ int print_params(const char* path, const char* shading_name) {
     else if (std::strcmp(shading_name, "phong") == 0) shading = ShadingMode::Phong;
     else throw std::runtime_error(std::string("--shading: expected gouraud or phong, got ") + shading_name);
     const Config c = load_config(path);
+    if (const std::string e = c.check(shading); !e.empty()) throw std::runtime_error(std::string(path) + ": " + e);
     for (const RtlParameter& p : rtl_parameters(c, shading)) std::cout << "-G" << p.name << "=" << p.value << "\n";
     return 0;
   } catch (const std::exception& e) {

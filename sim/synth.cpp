@@ -15,8 +15,9 @@
 // LUT per output bit.
 //
 // Parameters: a top gets exactly rtl_parameters(config, shading) (what `watkins_gen_pkg --params`
-// prints), the compact top (top-compact) those of the configuration with compact true, smoothing
-// and eq2 false (the compact top is a Gouraud top without the smoother and the divider); a block
+// prints), the compact tops (top-compact, Gouraud; top-compact-phong, Phong at one lane) those of
+// the configuration with compact true, smoothing and eq2 false (a compact top has neither the
+// smoother nor the divider); a block
 // gets what that top gives it (read from the elaborated top, so the widths are derived in one
 // place, rtl/watkins_top.sv): the Gouraud top's instance, except normalizer and phong_shader,
 // which exist in the Phong top only. A parameter the top does not declare is listed
@@ -109,6 +110,7 @@ const Design kDesigns[] = {
     {"top-gouraud", "watkins_top", ShadingMode::Gouraud, true},
     {"top-phong", "watkins_top", ShadingMode::Phong, true},
     {"top-compact", "watkins_top", ShadingMode::Gouraud, true, nullptr, true},
+    {"top-compact-phong", "watkins_top", ShadingMode::Phong, true, nullptr, true},
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -529,7 +531,8 @@ CLI::App* add_synth_command(CLI::App& app, SynthArgs& a) {
                                         "span_reciprocal, segment_interpolator, normalizer, phong_shader, "
                                         "scanline_buffer, smoother, compact_active_edge_list, compact_segment_former, "
                                         "compact_segment_interpolator, compact_scanline_buffer, compact_normalizer, "
-                                        "compact_phong_shader, top-gouraud, top-phong, top-compact (default: all)");
+                                        "compact_phong_shader, top-gouraud, top-phong, top-compact, top-compact-phong "
+                                        "(default: all)");
   s->add_option("--targets", a.targets, "comma-separated: ice40-up5k, ice40-hx8k, ecp5-85")->capture_default_str();
   cli::add_file(s, "--work", a.work, "directory for wrappers, netlists, logs and reports")->capture_default_str();
   cli::add_file(s, "--md", a.md, "markdown table to write");
@@ -682,6 +685,7 @@ int run_synth(const SynthArgs& a) {
           built.compact = true;
           built.smoothing = false;
           built.eq2 = false;
+          if (d->shading == ShadingMode::Phong) built.lanes = 1;  // the compact Phong top shades one a beat
         }
         Parameters top;
         for (const RtlParameter& p : rtl_parameters(built, d->shading)) top.emplace_back(p.name, p.value);

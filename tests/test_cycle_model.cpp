@@ -424,19 +424,97 @@ TEST(CompactCycleModel, AlwaysReadyEqualsNoConsumer) {
   EXPECT_EQ(a, b);
 }
 
-// What the compact top does not have: sparse output, Phong stages, the smoother, the divider.
+// What the compact top does not have: sparse output, Phong at two lanes, the smoother, the divider.
 TEST(CompactCycleModel, RefusesWhatTheCompactTopLacks) {
   const Config cfg = compact_sized();
   const PreparedScene g = prepare(screen(8, 4, {}, "empty"), cfg);
   EXPECT_THROW(predict_cycles(g, PixelOutput::Sparse, cfg.max_active_edges, cfg), std::invalid_argument);
-  EXPECT_THROW(predict_cycles(with_shading(g, ShadingMode::Phong), PixelOutput::FullFrame, cfg.max_active_edges, cfg),
+  Config two = cfg;
+  two.lanes = 2;
+  EXPECT_THROW(predict_cycles(with_shading(g, ShadingMode::Phong), PixelOutput::FullFrame, cfg.max_active_edges, two),
                std::invalid_argument);
+  EXPECT_NO_THROW(predict_cycles(with_shading(g, ShadingMode::Phong), PixelOutput::FullFrame, cfg.max_active_edges, cfg));
   PreparedScene smoothed = g;
   smoothed.smooth_w = 4;
   EXPECT_THROW(predict_cycles(smoothed, PixelOutput::FullFrame, cfg.max_active_edges, cfg), std::invalid_argument);
   Config divided = cfg;
   divided.eq2 = true;
   EXPECT_THROW(predict_cycles(g, PixelOutput::FullFrame, cfg.max_active_edges, divided), std::invalid_argument);
+}
+
+// The compact Phong top: every beat (fragment or marker) holds the normalizer and the shader for
+// a 5-clock period each, so a frame takes at least 5 clocks per beat; an empty frame's markers
+// add the two blocks' latencies (33 + 65) to the first pixel and, at 5 clocks a marker against
+// the reader's W + 1 a line, nothing to the rest for W >= 4.
+TEST(CompactCycleModel, PhongEmptyFrameAndFiveClocksAFragment) {
+  const Config cfg = load_config(WATKINS_SOURCE_DIR "/tests/configs/compact.phong.json");
+  for (const int w : {4, 40}) {
+    const PreparedScene g = with_shading(prepare(screen(w, 6, {}, "empty"), compact_sized()), ShadingMode::Phong);
+    const CyclePrediction gouraud = compact_cycles(g, compact_sized());
+    const CyclePrediction phong = compact_cycles(g, cfg);
+    EXPECT_GE(phong.first_pixel, gouraud.first_pixel + 33 + 65) << w;
+    EXPECT_LE(phong.cycles - phong.first_pixel, gouraud.cycles - gouraud.first_pixel + 5) << w;
+  }
+  const PreparedScene p =
+      prepare(load_scene(WATKINS_SOURCE_DIR "/scenes/default.json", shading_options(ShadingMode::Phong)), cfg);
+  long long fragments = 0;
+  interpolator_alone(p, cfg, fragments);
+  EXPECT_GE(compact_cycles(p, cfg).cycles, 5 * (fragments + p.height));
+}
+
+// The shipped scenes of width <= 320 rendered Phong at their sized Phong configurations made
+// compact (what the iCEBreaker's UP5K would hold), against the 1,600 clocks a line that a
+// 320 x 240 frame doubled on 640 x 480 gives: the frame's clocks per covered pixel and its slowest
+// line (lines 1 onwards, each from the previous line's last pixel taken to its own; line 0 holds
+// the pipeline's fill, which the board starts lines ahead of the beam). Printed for
+// docs/reference/compact.md; the bound itself is the board check's.
+TEST(CompactCycleModel, PhongLinesAgainstTheBeam) {
+  int ran = 0;
+  std::printf("  %-18s %7s %9s %9s %8s %10s %6s %s\n", "scene", "WxH", "fragments", "covered", "cycles",
+              "clk/covered", "worst", "lines > 1600");
+  std::vector<std::string> stems;
+  for (const auto& e : std::filesystem::directory_iterator(WATKINS_SOURCE_DIR "/scenes/sized")) {
+    const std::string n = e.path().filename().string();
+    const std::string suffix = ".phong.json";
+    if (n.size() > suffix.size() && n.compare(n.size() - suffix.size(), suffix.size(), suffix) == 0)
+      stems.push_back(n.substr(0, n.size() - suffix.size()));
+  }
+  std::sort(stems.begin(), stems.end());
+  for (const std::string& stem : stems) {
+    const std::string scene = WATKINS_SOURCE_DIR "/scenes/" + stem + ".json";
+    if (!std::filesystem::exists(scene)) continue;
+    Config cfg = load_config(WATKINS_SOURCE_DIR "/scenes/sized/" + stem + ".phong.json");
+    cfg.compact = true;
+    cfg.smoothing = false;
+    cfg.eq2 = false;
+    PreparedScene p;
+    try {
+      p = prepare(load_scene(scene, shading_options(ShadingMode::Phong)), cfg);
+    } catch (const std::exception&) {  // a smoothed or curved scene
+      continue;
+    }
+    if (p.width > 320 || p.smoothed()) continue;
+    std::vector<long long> takes;
+    const CyclePrediction c = compact_cycles(p, cfg, -1, &takes);
+    ASSERT_EQ(takes.size(), static_cast<std::size_t>(p.width) * static_cast<std::size_t>(p.height));
+    long long fragments = 0;
+    interpolator_alone(p, cfg, fragments);
+    const Image img = WatkinsTop(cfg).render(p);
+    long long covered = 0;
+    for (const auto v : img.covered) covered += v != 0;
+    long long worst = 0, missed = 0, before = takes[std::size_t(p.width) - 1];
+    for (int y = 1; y < p.height; ++y) {
+      const long long end = takes[std::size_t(y) * std::size_t(p.width) + std::size_t(p.width) - 1];
+      worst = std::max(worst, end - before);
+      missed += end - before > 1600;
+      before = end;
+    }
+    EXPECT_GE(c.cycles, 5 * fragments) << stem;
+    std::printf("  %-18s %3dx%-3d %9lld %9lld %8lld %10.2f %6lld %lld\n", stem.c_str(), p.width, p.height, fragments,
+                covered, c.cycles, covered ? double(c.cycles) / double(covered) : 0.0, worst, missed);
+    ++ran;
+  }
+  EXPECT_GE(ran, 5);
 }
 
 }  // namespace

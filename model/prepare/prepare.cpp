@@ -203,7 +203,7 @@ Config fit_int_bits(const BuiltScene& scene, const Config& base_in, PreparedScen
 }
 
 PreparedScene prepare(const BuiltScene& scene, const Config& cfg) {
-  if (const std::string e = cfg.check(); !e.empty()) throw SceneError("configuration: " + e);
+  if (const std::string e = cfg.check(scene.shading); !e.empty()) throw SceneError("configuration: " + e);
   try {
     return prepare_unnamed(scene, cfg);
   } catch (const SceneError& e) {

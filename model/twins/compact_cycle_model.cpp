@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <array>
+#include <deque>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "compact_active_edge_list_timing.hpp"
+#include "compact_normalizer_timing.hpp"
+#include "compact_phong_shader_timing.hpp"
 #include "compact_scanline_buffer_timing.hpp"
 #include "compact_segment_former_timing.hpp"
 #include "scan_lines.hpp"
@@ -40,8 +43,9 @@ CyclePrediction predict_compact_cycles(const Frame& frame, const Config& cfg, co
   if (frame.width < 1 || frame.height < 1)  // the top asserts a_frame_size: no frame to time
     throw std::invalid_argument("cycle model: frame size " + std::to_string(frame.width) + "x" +
                                 std::to_string(frame.height));
-  if (frame.shading != ShadingMode::Gouraud)
-    throw std::invalid_argument("cycle model: the compact top is Gouraud only (the frame is Phong)");
+  const bool phong = frame.shading == ShadingMode::Phong;
+  if (phong && cfg.lanes != 1)
+    throw std::invalid_argument("cycle model: lanes: 2 is Gouraud only (the frame is Phong)");
   if (frame.smoothed())
     throw std::invalid_argument("cycle model: the compact top has no smoother (the frame is smoothed)");
   if (cfg.eq2)
@@ -69,6 +73,16 @@ CyclePrediction predict_compact_cycles(const Frame& frame, const Config& cfg, co
     former.clock(false, false, 0, false);
     buffer.clock(false, false, false);
   }
+  // The Phong blocks' schedules count their 5-clock periods from reset whether or not they hold
+  // a fragment: idle, only the phase matters, after_reset's clocks modulo the period.
+  CompactNormalizerTiming normalizer;
+  CompactPhongShaderTiming shader;
+  if (phong)
+    for (long long i = 0; i < std::max(opt.after_reset, 0LL) % CompactScheduleTiming::Period; ++i) {
+      normalizer.clock(false, true);
+      shader.clock(false, true);
+    }
+  std::deque<bool> shading_eol;  // the marker flags of the beats inside the normalizer and shader
 
   // The glue: the fragment queue's entries (their marker flags), the pixel skid's slot; the edge
   // source's position.
@@ -103,8 +117,12 @@ CyclePrediction predict_compact_cycles(const Frame& frame, const Config& cfg, co
       throw std::logic_error("cycle model: the segment former offers more items than the twins' " +
                              std::to_string(items.size()));
     const Item offered = seg_valid ? items[next_item] : Item{};
-    const CompactSegmentInterpolatorTiming::Pins pins = interp.clock(seg_valid, offered, q_ready);
-    const bool q_push = pins.frag_valid && q_ready;
+    // Phong: the interpolator's beats go to the normalizer (its ready a flop), the normalizer's
+    // to the shader, the shader's to the queue; Gouraud: the beats to the queue.
+    const bool nm_ready = normalizer.ready(), nm_valid = normalizer.valid();
+    const bool sh_ready = shader.ready(), sh_valid = shader.valid();
+    const CompactSegmentInterpolatorTiming::Pins pins = interp.clock(seg_valid, offered, phong ? nm_ready : q_ready);
+    const bool q_push = (phong ? sh_valid : pins.frag_valid) && q_ready;
     const bool former_seg_ready = pins.seg_ready;
     in.start = t == 0;
     in.edge_valid = !eof_taken && t >= offered_at;
@@ -132,8 +150,21 @@ CyclePrediction predict_compact_cycles(const Frame& frame, const Config& cfg, co
       for (int i = 0; i + 1 < rtl_timing::FragQueueDepth; ++i) q_eol[std::size_t(i)] = q_eol[std::size_t(i) + 1];
       --q_count;
     }
+    bool push_eol = pins.frag_eol;
+    if (phong) {
+      if (q_push) {
+        push_eol = shading_eol.front();
+        shading_eol.pop_front();
+      }
+      if (pins.frag_valid && nm_ready) {
+        shading_eol.push_back(pins.frag_eol);
+        last_progress = t;
+      }
+      normalizer.clock(pins.frag_valid, sh_ready);
+      shader.clock(nm_valid, q_ready);
+    }
     if (q_push) {
-      q_eol[std::size_t(q_count++)] = pins.frag_eol;
+      q_eol[std::size_t(q_count++)] = push_eol;
       last_progress = t;
     }
     px_skid_full = top_valid && !take;

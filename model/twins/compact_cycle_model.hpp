@@ -3,7 +3,9 @@
 // edge source offering records at its pace (CycleOptions: back to back, or the iCEBreaker's
 // SPRAM frame player's), compact_active_edge_list, compact_segment_former
 // straight into compact_segment_interpolator (no segment skid: the interpolator's seg_ready_o is
-// a flop), the fragment queue (stream_fifo, FragQueueDepth; an entry is a beat of cfg.lanes
+// a flop), [Phong: compact_normalizer, the interpolator's stall its ready_o, then
+// compact_phong_shader (compact_normalizer_timing.hpp, compact_phong_shader_timing.hpp)], the
+// fragment queue (stream_fifo, FragQueueDepth; an entry is a beat of cfg.lanes
 // fragments at most), compact_scanline_buffer and the
 // pixel skid (stream_skid), pixel_ready_i from the consumer. Each twin is the one its unit bench
 // holds equal to its RTL on every clock. Every cycle is clocked, so each pixel's take is exact
@@ -25,10 +27,12 @@ namespace rtl_timing {
 constexpr int CompactQuotientBitsPerClock = 2;  // compact_segment_interpolator's QuotientBitsPerClock
 }  // namespace rtl_timing
 
-// predict_cycles for cfg.compact: a Gouraud frame (frame.shading) in full-frame output, neither
-// smoothed nor divided (the compact top has no sparse output, no smoother and no Phong stages);
-// anything else is std::invalid_argument naming what the compact top lacks. opt.after_reset
-// says whether the blocks' reset clears still run when the frame's first beat is offered.
+// predict_cycles for cfg.compact: a Gouraud or Phong frame (frame.shading; Phong at one lane) in
+// full-frame output, neither smoothed nor divided (the compact top has no sparse output, no
+// smoother and no divider); anything else is std::invalid_argument naming what the compact top
+// lacks. opt.after_reset says whether the blocks' reset clears still run when the frame's first
+// beat is offered and, for Phong, the phase of the normalizer's and the shader's 5-clock
+// schedules then (after_reset modulo 5; a negative one counts as phase 0).
 CyclePrediction predict_compact_cycles(const Frame& frame, const Config& cfg, const CycleOptions& opt);
 
 // The segment former's output stream as the compact interpolator takes it: each line's segments in

@@ -116,4 +116,11 @@ std::string Config::check() const {
   return "";
 }
 
+std::string Config::check(ShadingMode shading) const {
+  if (std::string e = check(); !e.empty()) return e;
+  if (lanes != 1 && shading == ShadingMode::Phong)
+    return "lanes: 2 is Gouraud only (the compact Phong blocks shade one fragment a beat)";
+  return "";
+}
+
 }  // namespace watkins

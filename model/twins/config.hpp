@@ -129,6 +129,9 @@ struct Config {
   int edge_record_bits(ShadingMode shading) const;
   // "" when valid, else the first problem as "field: message" (e.g. "x.frac_bits: ...").
   std::string check() const;
+  // check(), then what the `shading` top cannot build: lanes 2 in Phong (the compact Phong blocks
+  // shade one fragment a beat).
+  std::string check(ShadingMode shading) const;
 
   bool operator==(const Config& o) const {
     return x == o.x && depth == o.depth && shade == o.shade && normal == o.normal &&

@@ -74,7 +74,9 @@ struct CycleOptions {
   // line buffer's marks (MaxWidth clocks) after reset, refusing input meanwhile: the clocks from
   // reset's release (its first clock with rst_ni high = 0) to the one the frame's first beat is
   // offered (the benches' edge source: 1); negative: the clears are over (a frame after another,
-  // or long after reset). The pipelined top has no clears: ignored.
+  // or long after reset). The pipelined top has no clears: ignored. The compact Phong top's
+  // normalizer and shader count 5-clock periods from reset: their phase at the first beat is
+  // after_reset modulo 5 (negative: 0).
   long long after_reset = -1;
   // The edge source's pace (a board's frame player): beat 0 (a record or the EOF beat) is offered
   // from cycle 0, and beat k + 1 from cycle max(O_k + edge_interval, T_k + edge_gap) on, O_k the

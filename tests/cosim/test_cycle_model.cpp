@@ -3,7 +3,7 @@
 // on every shipped scene and on random scenes, Gouraud and Phong tops, full-frame and sparse.
 // Under output back-pressure (any pixel_ready_i pattern, random or a function of the pixels
 // taken, as a line buffer drives it), the cycle of every pixel taken must equal the model's.
-// The compact tops (Compact = 1) the same way: every frame's cycles and every pixel's take equal
+// The compact tops (Compact = 1, Gouraud and Phong) the same way: every frame's cycles and every pixel's take equal
 // to the compact composition's, from the bench's reset.
 #include <gtest/gtest.h>
 
@@ -20,6 +20,7 @@
 #include "cosim_support.hpp"
 #include "cycle_model.hpp"
 #include "frame_driver.hpp"
+#include "phong_hard_cases.hpp"
 #include "prepare.hpp"
 #include "random_scene.hpp"
 #include "rtl_bench.hpp"
@@ -449,6 +450,84 @@ TEST(CompactCycleModel, CornerFramesEqualRtl) {
     expect_compact_takes(scene.name, p, &patterns[2]);  // every other cycle
     if (HasFailure()) return;
   }
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------- the compact Phong top
+namespace {
+
+// The compact Phong top the test build Verilates: the default scene's sized Phong configuration
+// with compact true (the UP5K's).
+const char* const CompactPhongFile = "tests/configs/compact.phong.json";
+
+#define REQUIRE_COMPACT_PHONG_TOP(cfg)                                                 \
+  do {                                                                                 \
+    const std::string why = rtl_unavailable(cfg, ShadingMode::Phong, CompactPhongFile); \
+    if (!why.empty()) {                                                                \
+      ASSERT_FALSE(RequireCompactTops) << why;                                         \
+      GTEST_SKIP() << why;                                                             \
+    }                                                                                  \
+  } while (0)
+
+// Every shipped scene that fits the compact Phong top in Phong shading: at full rate, then under
+// two of the ready patterns picked by its name.
+class CompactPhongCycleModelShipped : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(CompactPhongCycleModelShipped, EqualsRtl) {
+  const std::string name = GetParam();
+  if (name == "<none>") GTEST_SKIP() << "no scenes/*.json";
+  const Config cfg = load_config(std::string(WATKINS_SOURCE_DIR "/") + CompactPhongFile);
+  PreparedScene p;
+  std::string why;
+  try {
+    why = prepare_compact(load_scene(WATKINS_SOURCE_DIR "/scenes/" + name, shading_options(ShadingMode::Phong)), cfg, p);
+  } catch (const SceneError& e) {
+    why = e.what();
+  }
+  if (!why.empty()) GTEST_SKIP() << name << " does not fit " << CompactPhongFile << ": " << why;
+  ASSERT_EQ(p.shading, ShadingMode::Phong);
+  REQUIRE_COMPACT_PHONG_TOP(cfg);
+  const std::string what = name + " at " + CompactPhongFile;
+  expect_compact_takes(what, p, nullptr);
+  const std::vector<NamedPattern> patterns = ready_patterns(p.width);
+  for (const std::size_t k : pick_patterns(name, patterns.size())) {
+    if (HasFailure()) return;
+    expect_compact_takes(what, p, &patterns[k]);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, CompactPhongCycleModelShipped, ::testing::ValuesIn(shipped_scenes()),
+                         scene_test_name);
+
+// Random Phong scenes (materials folded onto the table's two) and the hard cases, at full rate
+// and under one ready pattern each: the normalizer's and the shader's 5-clock schedules, their
+// stalls, and the interpolator's stall on the normalizer.
+TEST(CompactPhongCycleModel, RandomAndHardScenesEqualRtl) {
+  const Config cfg = load_config(std::string(WATKINS_SOURCE_DIR "/") + CompactPhongFile);
+  REQUIRE_COMPACT_PHONG_TOP(cfg);
+  std::vector<BuiltScene> scenes = {antipodal_normals_scene(), screen_plane_normals_scene(), grazing_light_scene(),
+                                    shininess_scene(0), shininess_scene(255)};
+  for (std::uint64_t seed = 8000; seed < 8040; ++seed) {
+    BuiltScene s = random_phong_scene(seed);
+    if (static_cast<int>(s.materials.size()) > cfg.max_materials) {
+      for (ScreenPolygon& poly : s.polygons) poly.material %= cfg.max_materials;
+      s.materials.resize(static_cast<std::size_t>(cfg.max_materials));
+    }
+    scenes.push_back(s);
+  }
+  int ran = 0;
+  for (std::size_t k = 0; k < scenes.size(); ++k) {
+    PreparedScene p;
+    if (!prepare_compact(scenes[k], cfg, p).empty()) continue;
+    const std::string what = scenes[k].name + " at " + CompactPhongFile;
+    expect_compact_takes(what, p, nullptr);
+    const std::vector<NamedPattern> patterns = ready_patterns(p.width);
+    expect_compact_takes(what, p, &patterns[k % patterns.size()]);
+    if (HasFailure()) return;
+    ++ran;
+  }
+  EXPECT_GE(ran, 20);
 }
 
 }  // namespace
