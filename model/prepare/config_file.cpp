@@ -54,6 +54,21 @@ class ConfigReader {
     integer(*it, key, "int_bits", out.int_bits);
     integer(*it, key, "frac_bits", out.frac_bits);
   }
+  // "phong": {"formats": "model" | "narrow"} when present (kept otherwise).
+  void phong(const json& j, PhongFormat& out) const {
+    auto it = j.find("phong");
+    if (it == j.end()) return;
+    keys(*it, "phong", {"formats"});
+    auto f = it->find("formats");
+    if (f == it->end()) return;
+    if (f->is_string() && f->get<std::string>() == "model") {
+      out = PhongFormat::Model;
+    } else if (f->is_string() && f->get<std::string>() == "narrow") {
+      out = PhongFormat::Narrow;
+    } else {
+      fail("phong.formats", "expected \"model\" or \"narrow\", got " + show(*f));
+    }
+  }
 
  private:
   std::string name_;
@@ -66,7 +81,7 @@ Config parse_config(const std::string& text, const std::string& name) {
   const ConfigReader r(name);
   r.keys(root, "", {"x", "depth", "shade", "normal", "depth_bits", "max_active_edges", "max_width",
                     "max_materials", "max_polygons", "max_edges", "edge_order", "smoothing", "eq2", "eq2_recip_bits",
-                    "compact", "lanes"});
+                    "compact", "lanes", "phong"});
   Config c;
   r.group(root, "x", c.x);
   r.group(root, "depth", c.depth);
@@ -84,6 +99,7 @@ Config parse_config(const std::string& text, const std::string& name) {
   r.integer(root, "", "eq2_recip_bits", c.eq2_recip_bits);
   r.boolean(root, "compact", c.compact);
   r.integer(root, "", "lanes", c.lanes);
+  r.phong(root, c.phong);
   if (const std::string e = c.check(); !e.empty()) throw SceneError(name + ": " + e);
   return c;
 }
@@ -127,6 +143,8 @@ std::string config_json(const Config& c) {
   if (c.compact) o << ",\n  \"compact\": true";
   // Likewise: absent means one fragment a clock.
   if (c.lanes != 1) o << ",\n  \"lanes\": " << c.lanes;
+  // Likewise: absent means the model's Phong formats.
+  if (c.phong != PhongFormat::Model) o << ",\n  \"phong\": {\"formats\": \"" << phong_format_name(c.phong) << "\"}";
   o << "\n}\n";
   return o.str();
 }

@@ -16,6 +16,8 @@ const char* channel_group_name(int c, ShadingMode shading) {
   return shading == ShadingMode::Phong ? "normal" : "shade";
 }
 
+const char* phong_format_name(PhongFormat f) { return f == PhongFormat::Narrow ? "narrow" : "model"; }
+
 int id_bits(int n) {
   int b = 1;
   while ((1LL << b) < n) ++b;
@@ -63,6 +65,8 @@ std::vector<RtlParameter> rtl_parameters(const Config& c, ShadingMode shading) {
   if (c.compact) p.push_back({"Compact", 1});
   // Likewise Lanes (RTL default 1).
   if (c.lanes != 1) p.push_back({"Lanes", c.lanes});
+  // Likewise PhongNarrow (RTL default 0), a parameter of the Phong blocks only.
+  if (phong && c.phong == PhongFormat::Narrow) p.push_back({"PhongNarrow", 1});
   return p;
 }
 
@@ -113,6 +117,8 @@ std::string Config::check() const {
   if (lanes != 1 && lanes != 2)
     return "lanes: " + std::to_string(lanes) + " is neither 1 nor 2 (fragments per clock of the compact top)";
   if (lanes != 1 && !compact) return "lanes: 2 needs compact true (the pipelined top takes one fragment per clock)";
+  if (phong == PhongFormat::Narrow && !compact)
+    return "phong.formats: narrow needs compact true (the pipelined Phong blocks take the model's formats)";
   return "";
 }
 

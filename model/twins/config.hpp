@@ -32,6 +32,9 @@
 //   lanes            Lanes: fragments per clock of the compact top's fragment path (interpolator's
 //                    stepper, line buffer's writer): 1, or 2 for a scene whose lines hold more
 //                    fragments than a line's clocks (compact only); listed only when not 1
+//   phong.formats    PhongNarrow (Phong top only): the normalizer's and shader's internal formats,
+//                    the model's or the narrow set (phong_format.hpp; compact only); listed only
+//                    when narrow
 // Each twin's header lists which of its registers takes which of these.
 #pragma once
 
@@ -40,6 +43,7 @@
 #include <vector>
 
 #include "formats.hpp"
+#include "phong_format.hpp"
 #include "shading_mode.hpp"
 
 namespace watkins {
@@ -63,6 +67,7 @@ struct ChannelFormats {
   int depth_bits = fmt::DepthBits;  // fragment depth: clamp(round(Z), 0, 2^depth_bits - 1)
   int edge_order = 1;  // 1: value += slope; 3: value += d1, d1 += d2, d2 += d3 (edge_incrementer)
   int eq2_recip_bits = fmt::Eq2RecipBits;  // the shade divider's 1/depth mantissa (shade_divider.hpp)
+  PhongFormat phong = PhongFormat::Model;  // the Phong blocks' internal formats (phong_format.hpp)
   int x_frac() const { return frac[fmt::ChanX]; }
 };
 
@@ -96,6 +101,10 @@ struct Config {
   // Fragments per clock of the compact fragment path: 1, or 2 (two consecutive pixels of a span a
   // beat; the line buffer's RAMs split by x parity). The values are the same either way.
   int lanes = 1;
+  // The Phong blocks' internal formats: the model's (formats.hpp) or the narrow set, every product
+  // one 16 x 16 product and 1/sqrt and cos(s)^n from tables (phong_format.hpp; compact only). The
+  // values differ between the two; each is bit-exact with the RTL built for it.
+  PhongFormat phong = PhongFormat::Model;
 
   // Limits a configuration must respect (validate() checks them).
   static constexpr int MaxWordBits = 62;      // the model keeps every word in 64 bits, products in 128
@@ -123,6 +132,7 @@ struct Config {
     f.depth_bits = depth_bits;
     f.edge_order = edge_order;
     f.eq2_recip_bits = eq2_recip_bits;
+    f.phong = phong;
     return f;
   }
   // Bits of one edge record ($bits(edge_t) of the RTL built for this configuration).
@@ -138,7 +148,7 @@ struct Config {
            depth_bits == o.depth_bits && max_active_edges == o.max_active_edges &&
            max_width == o.max_width && max_materials == o.max_materials && max_polygons == o.max_polygons &&
            max_edges == o.max_edges && edge_order == o.edge_order && smoothing == o.smoothing && eq2 == o.eq2 &&
-           eq2_recip_bits == o.eq2_recip_bits && compact == o.compact && lanes == o.lanes;
+           eq2_recip_bits == o.eq2_recip_bits && compact == o.compact && lanes == o.lanes && phong == o.phong;
   }
   bool operator!=(const Config& o) const { return !(*this == o); }
 };
@@ -159,6 +169,9 @@ std::vector<RtlParameter> rtl_parameters(const Config& config, ShadingMode shadi
 // (the configuration's field): x, depth, shade or normal.
 const char* channel_name(int c, ShadingMode shading);
 const char* channel_group_name(int c, ShadingMode shading);
+
+// The config file's names of the Phong formats: "model", "narrow".
+const char* phong_format_name(PhongFormat f);
 
 // ceil(log2(n)) for n >= 1: the id width that numbers n things (at least 1 bit).
 int id_bits(int n);

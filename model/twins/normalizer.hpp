@@ -23,6 +23,7 @@
 
 #include "fixed_point.hpp"
 #include "formats.hpp"
+#include "phong_format.hpp"
 #include "rsqrt_unit.hpp"
 
 namespace watkins {
@@ -52,6 +53,24 @@ struct Normalizer {
   }
   // The whole block: components are NormalInBits signed, FracBits fraction bits.
   static Unit normalize(i64 nx, i64 ny, i64 nz);
+
+  // The narrow set (PhongFormat::Narrow), from the same NormalInBits input:
+  //   stage 0  n_c = clamp(round(N_c / 2), -2^15, 2^15 - 1): 16 bits signed, 15 fraction bits
+  //            (exact when the normal slot has int_bits 1 and frac_bits <= 15)
+  //   stage 1  m = nx^2 + ny^2 + nz^2, exact: < 3 2^30, 30 fraction bits (three 16 x 16 products)
+  //   stage 2  j = floor(lz32(m) / 2) in 0..15, M = m << 2j in [2^30, 2^32): m = (M 2^-32) 2^(2-2j)
+  //   stage 3  y' = RsqrtUnit::rsqrt_narrow(M) ~ 1/sqrt(M 2^-32) - 1 (one 16 x 16 product)
+  //   stage 4  unit_c = saturate16(round(n_c (2^16 + y') / 2^(18-j))): n_c y' + n_c 2^16 is one
+  //            16 x 16 product with the MAC16's accumulator adding n_c 2^16
+  // m = 0 (every n_c 0) gives unit 0 with no special case (n_c y = 0) and raises null.
+  static i64 narrow_input(i64 n) {
+    constexpr i64 hi = (i64{1} << (narrow::InBits - 1)) - 1;
+    return std::clamp<i64>(round_shift64(n, fmt::FracBits - narrow::InFracBits), -hi - 1, hi);
+  }
+  static Unit normalize_narrow(i64 nx, i64 ny, i64 nz);
+  static Unit normalize(i64 nx, i64 ny, i64 nz, PhongFormat format) {
+    return format == PhongFormat::Narrow ? normalize_narrow(nx, ny, nz) : normalize(nx, ny, nz);
+  }
 };
 
 // Inline: the Phong pipeline runs them per shaded pixel.
@@ -67,6 +86,23 @@ inline Normalizer::Unit Normalizer::normalize(i64 nx, i64 ny, i64 nz) {
   Unit u;
   u.null = mm.null;
   u.n = {scale_unsaturated(nx, y, mm.j), scale_unsaturated(ny, y, mm.j), scale_unsaturated(nz, y, mm.j)};
+  return u;
+}
+
+inline Normalizer::Unit Normalizer::normalize_narrow(i64 nx, i64 ny, i64 nz) {
+  const i64 n[3] = {narrow_input(nx), narrow_input(ny), narrow_input(nz)};
+  const std::uint64_t m = static_cast<std::uint64_t>(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  Unit u;
+  if (m == 0) {
+    u.null = true;
+    return u;
+  }
+  const int j = (31 - msb_index(m)) >> 1;
+  const std::uint32_t big_m = static_cast<std::uint32_t>(m << (2 * j));
+  const i64 y = (i64{1} << narrow::RsqrtFracBits) + RsqrtUnit::rsqrt_narrow(big_m);
+  constexpr i64 hi = (i64{1} << (fmt::UnitBits - 1)) - 1;
+  for (int c = 0; c < 3; ++c)
+    u.n[static_cast<std::size_t>(c)] = std::clamp<i64>(round_shift64(n[c] * y, 18 - j), -hi - 1, hi);
   return u;
 }
 

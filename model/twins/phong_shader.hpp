@@ -32,6 +32,8 @@
 
 #include "fixed_point.hpp"
 #include "formats.hpp"
+#include "phong_format.hpp"
+#include "rsqrt_unit.hpp"
 
 namespace watkins {
 
@@ -98,7 +100,133 @@ struct PhongShader {
   static std::array<int, 3> shade(const Pixel& px, const Vec& light, const Vec& eye) {
     return shade(px, light, eye, frame_le(light, eye));
   }
+
+  // The narrow set (PhongFormat::Narrow; docs/reference/compact-phong.md, "Narrow formats"):
+  //   1  ndl = N.L, nde = N.E exact (28 fraction bits; six 16 x 16 products)
+  //   2  cos_i = clamp(round(ndl, 15 bits), 0, 2^16 - 1); ne = clamp(round(nde, 14 bits), -2^15,
+  //      2^15 - 1): the model set's clamps to [0, 2) and (-2, 2), each one 16-bit operand
+  //   3  cs = clamp(round(cos_i ne - le 2^12, 12 bits), 0, 2^16): 2 cos(i)(N.E) - L.E at 16 bits
+  //      (one product; cos_i ne has 29 fraction bits, so it is 2 cos(i)(N.E) at 28);
+  //      f = cos_i (256 - d) + d 2^15 exact (23 fraction bits; one product), fr = round(f, 15 bits)
+  //   4  pow = power_narrow(cs, n) when front (cos_i > 0) and cs > 0, else 0 (three products)
+  //   5  level = clamp(round(Cp fr 2^9 + 255 W pow, 24 bits), 0, 255) (four products: Cp_c fr, W pow)
+  // le = narrow_le(light, eye) = clamp(round(L.E, 16 bits), -2^17, 2^17 - 1), once per frame.
+  static i64 narrow_round(i64 v, int bits, i64 lo, i64 hi) {
+    return std::clamp<i64>(round_shift64(v, 2 * UF - bits), lo, hi);
+  }
+  static i64 narrow_le(const Vec& light, const Vec& eye) {
+    constexpr i64 hi = (i64{1} << (narrow::LeBits + 1)) - 1;
+    return narrow_round(dot(light, eye), narrow::LeBits, -hi - 1, hi);
+  }
+  static i64 frame_le(const Vec& light, const Vec& eye, PhongFormat format) {
+    return format == PhongFormat::Narrow ? narrow_le(light, eye) : frame_le(light, eye);
+  }
+  // cos(s)^n, PowBits fraction bits (0..2^16 - 1), for cs in [1, 2^16] (CosBits fraction bits):
+  // -log2 cos(s) from the log table, times n, 2^-(that) from the exp table.
+  static i64 power_narrow(i64 cs, int n);
+  static Terms terms_narrow(const Pixel& px, const Vec& light, const Vec& eye, i64 le);
+  static std::array<int, 3> shade_narrow(const Pixel& px, const Vec& light, const Vec& eye, i64 le);
+  static std::array<int, 3> shade(const Pixel& px, const Vec& light, const Vec& eye, i64 le, PhongFormat format) {
+    return format == PhongFormat::Narrow ? shade_narrow(px, light, eye, le) : shade(px, light, eye, le);
+  }
 };
+
+// The narrow set's power tables, 256 rows of 16 bits each (one block RAM each), filled by integer
+// algorithms at G = 30 fraction bits that rtl/ runs as constant functions:
+//   log_row(i) = round(2^16 log2(1 + i/256)): 17 bits of log2 by repeated squaring (square,
+//     truncate to G bits; a square >= 2 is a 1 bit and is halved), then rounded to 16
+//   exp_row(i) = (2^17 - round(2^17 2^(-i/256))) mod 2^16: 2^(-i/256) as the product (truncated to
+//     G bits) of c_b = 2^(-2^-b) for the set bits of i/256, c_0 = 1/2, c_b = isqrt(c_(b-1) 2^G)
+// Both functions are 0 at both ends of [0, 1] modulo 2^16 (log2 1 = 0, log2 2 = 1; 2 - 2^(1-0) = 0,
+// 2 - 2^0 = 1), so row 255's successor is row 0 and the slope (T[i+1] - T[i]) mod 2^16 needs no
+// special case.
+struct PhongPowerTables {
+  static constexpr int G = 30;
+  static constexpr std::uint32_t log_row(int i) {
+    std::uint64_t x = static_cast<std::uint64_t>(256 + i) << (G - 8), r = 0;
+    for (int b = 0; b < narrow::LogFracBits + 1; ++b) {
+      x = (x * x) >> G;
+      r <<= 1;
+      if ((x >> (G + 1)) != 0) r |= 1, x >>= 1;
+    }
+    return static_cast<std::uint32_t>((r + 1) >> 1);
+  }
+  static constexpr std::uint32_t exp_row(int i) {
+    std::uint64_t c = std::uint64_t{1} << (G - 1), p = std::uint64_t{1} << G;
+    for (int b = 1; b <= narrow::TableBits; ++b) {
+      c = RsqrtUnit::isqrt(c << G);
+      if (((i >> (narrow::TableBits - b)) & 1) != 0) p = (p * c) >> G;
+    }
+    const std::uint64_t q = (p + (std::uint64_t{1} << (G - 18))) >> (G - 17);
+    return static_cast<std::uint32_t>(((std::uint64_t{1} << 17) - q) & 0xffffu);
+  }
+  static constexpr std::array<std::uint32_t, 1 << narrow::TableBits> rom(bool log) {
+    std::array<std::uint32_t, 1 << narrow::TableBits> t{};
+    for (int i = 0; i < (1 << narrow::TableBits); ++i) t[static_cast<std::size_t>(i)] = log ? log_row(i) : exp_row(i);
+    return t;
+  }
+};
+inline constexpr std::array<std::uint32_t, 1 << narrow::TableBits> PhongLogRom = PhongPowerTables::rom(true);
+inline constexpr std::array<std::uint32_t, 1 << narrow::TableBits> PhongExpRom = PhongPowerTables::rom(false);
+
+// A table read with linear interpolation: row i and the 8 bits d below it,
+// T[i] + round(((T[i+1] - T[i]) mod 2^16) d / 2^8), row 255's successor row 0.
+inline i64 narrow_table_lerp(const std::array<std::uint32_t, 1 << narrow::TableBits>& t, unsigned i, unsigned d) {
+  const std::uint32_t t0 = t[i], t1 = t[(i + 1) & 255u];
+  const i64 slope = static_cast<i64>((t1 - t0) & 0xffffu);
+  return static_cast<i64>(t0) + ((slope * d + 128) >> 8);
+}
+
+inline i64 PhongShader::power_narrow(i64 cs, int n) {
+  n = static_cast<int>(static_cast<unsigned>(n) & ((1u << NBits) - 1));
+  // -log2 cs = K - log2(x): cs = x 2^(e - 16), x in [1, 2) from the 16 bits below the leading one.
+  const int e = msb_index(static_cast<std::uint64_t>(cs));
+  const auto frac = static_cast<unsigned>((cs << (narrow::CosBits - e)) & 0xffff);
+  const i64 lx = narrow_table_lerp(PhongLogRom, frac >> 8, frac & 255u);  // [0, 2^16]
+  const i64 lc = (i64{narrow::CosBits - e} << narrow::LogFracBits) - lx;     // [0, 16 2^16]
+  // n lc as one 16 x 16 product: lc < 1 as it is; lc >= 1 (cs <= 1/2) only matters for n <= 16
+  // (else n lc >= 17 and the power is 0), as lc >> 5 (truncated) times n 2^5.
+  i64 et;
+  if (lc < (i64{1} << narrow::LogFracBits)) {
+    et = n * lc;
+  } else {
+    if (n > 16) return 0;
+    et = (i64{n} << 5) * (lc >> 5);
+  }
+  const i64 ei = et >> narrow::LogFracBits;
+  if (ei > 16) return 0;
+  const auto ef = static_cast<unsigned>(et & 0xffff);
+  const i64 h = narrow_table_lerp(PhongExpRom, ef >> 8, ef & 255u);  // 2^17 - 2^(17 - ef), [0, 2^16]
+  return std::min<i64>(round_shift64((i64{1} << 17) - h, static_cast<int>(ei) + 1), (i64{1} << narrow::PowBits) - 1);
+}
+
+inline PhongShader::Terms PhongShader::terms_narrow(const Pixel& px, const Vec& light, const Vec& eye, i64 le) {
+  using namespace narrow;
+  Terms t;
+  t.cos_i = narrow_round(dot(px.n, light), CosIBits, 0, (i64{1} << (CosIBits + 1)) - 1);
+  t.ne = narrow_round(dot(px.n, eye), NeBits, -(i64{1} << (NeBits + 1)), (i64{1} << (NeBits + 1)) - 1);
+  t.front = t.cos_i > 0;
+  constexpr int CsFrac = CosIBits + NeBits - 1;  // 28: cos_i ne is 2 cos(i)(N.E) at 28 fraction bits
+  const i64 cs2 = t.cos_i * t.ne - le * (i64{1} << (CsFrac - LeBits));
+  t.cs = std::clamp<i64>(round_shift64(cs2, CsFrac - CosBits), 0, i64{1} << CosBits);
+  t.spec = t.front && t.cs > 0;
+  const i64 d = px.d > (1 << MF) ? (1 << MF) : px.d;
+  t.f = round_shift64(t.cos_i * ((1 << MF) - d) + (d << CosIBits), CosIBits + MF - DiffuseBits);
+  t.pow = t.spec ? power_narrow(t.cs, px.shininess) : 0;
+  return t;
+}
+
+inline std::array<int, 3> PhongShader::shade_narrow(const Pixel& px, const Vec& light, const Vec& eye, i64 le) {
+  const Terms t = terms_narrow(px, light, eye, le);
+  constexpr int L = narrow::LevelFracBits;
+  const i64 spec = 255 * static_cast<i64>(px.w) * t.pow;  // MF + PowBits = 24 fraction bits
+  std::array<int, 3> out{};
+  for (int c = 0; c < 3; ++c) {
+    const i64 level = px.cp[c] * t.f * (i64{1} << (L - narrow::DiffuseBits)) + spec;  // Cp fr 2^9
+    out[c] = static_cast<int>(std::clamp<i64>(round_shift64(level, L), 0, fmt::ShadeMax));
+  }
+  return out;
+}
 
 // Inline (the per-pixel path). Stage for stage as terms_of() and shade() in phong_shader.cpp, with
 // two exact rewrites of "round, then clamp": every word rounded is below 2^61 in magnitude (the

@@ -9,6 +9,7 @@
 
 #include "fixed_point.hpp"
 #include "formats.hpp"
+#include "phong_format.hpp"
 
 namespace watkins {
 
@@ -71,10 +72,42 @@ struct RsqrtUnit {
   static Mantissa normalize_mantissa(std::uint64_t m);
   // Stages 2..5: the refined y ~ 1/sqrt(m'c), RsqrtBits fraction bits, in [1, 2]; 0 for mant 0.
   static std::uint32_t rsqrt_mant(std::uint32_t mant);
+
+  // The narrow set (PhongFormat::Narrow): 1/sqrt(m') - 1 from one 256-row table with linear
+  // interpolation. Row k covers m' in [1/4 + k 2^-9, +2^-9) for k < 128 and [k 2^-8, +2^-8) for
+  // k >= 128 (7 bits below m''s leading one: the rows are twice as fine where 1/sqrt bends most).
+  // Row k holds round(2^16 (1/sqrt(x_k) - 1)), x_k = a_k 2^-9 its start (a_k = 128 + k, or 2k),
+  // computed as round(sqrt(2^41 / a_k)) - 2^16 with seed()'s integer rounding; row 0 (y' = 1.0)
+  // saturates at 2^16 - 1. The end of row 255 (m' = 1, y' = 0) is the constant 0, not a row.
+  static constexpr std::uint32_t narrow_row(int k) {
+    const std::uint64_t a = k < 128 ? 128u + static_cast<unsigned>(k) : 2u * static_cast<unsigned>(k);
+    const std::uint64_t r = ((isqrt((std::uint64_t{1} << 43) / a) + 1) >> 1) - (std::uint64_t{1} << 16);
+    return static_cast<std::uint32_t>(r > 0xffffu ? 0xffffu : r);
+  }
+  static constexpr std::array<std::uint32_t, 1 << narrow::TableBits> narrow_rom() {
+    std::array<std::uint32_t, 1 << narrow::TableBits> rom{};
+    for (int k = 0; k < (1 << narrow::TableBits); ++k) rom[static_cast<std::size_t>(k)] = narrow_row(k);
+    return rom;
+  }
+  // y' ~ 1/sqrt(m') - 1 (16 fraction bits, 0..2^16 - 1) for M = m' 2^32 in [2^30, 2^32): row k
+  // and the 16 bits d below it, y' = T[k] - round((T[k] - T[k+1]) d / 2^16).
+  static std::uint32_t rsqrt_narrow(std::uint32_t big_m);
 };
 
 // The seed ROM as rtl/rsqrt_unit.sv holds it, one constant table for every RsqrtUnit.
 inline constexpr std::array<std::uint32_t, (1 << RsqrtUnit::P)> RsqrtSeedRom = RsqrtUnit::seed_rom();
+
+// The narrow rsqrt table, one 256 x 16 block RAM.
+inline constexpr std::array<std::uint32_t, 1 << narrow::TableBits> RsqrtNarrowRom = RsqrtUnit::narrow_rom();
+
+inline std::uint32_t RsqrtUnit::rsqrt_narrow(std::uint32_t big_m) {
+  const bool upper = (big_m >> 31) != 0;  // m' >= 1/2
+  const std::uint32_t k = upper ? 128u + ((big_m >> 24) & 127u) : (big_m >> 23) & 127u;
+  const std::uint64_t d = upper ? (big_m >> 8) & 0xffffu : (big_m >> 7) & 0xffffu;
+  const std::uint64_t t0 = RsqrtNarrowRom[k], t1 = k == 255 ? 0 : RsqrtNarrowRom[k + 1];
+  constexpr int S = narrow::RsqrtDeltaBits;
+  return static_cast<std::uint32_t>(t0 - (((t0 - t1) * d + (std::uint64_t{1} << (S - 1))) >> S));
+}
 
 inline RsqrtUnit::Mantissa RsqrtUnit::normalize_mantissa(std::uint64_t m) {
   Mantissa r;

@@ -20,19 +20,24 @@ namespace watkins {
 namespace {
 
 // The Phong blocks' frame constants: light, eye, L.E (PhongShader::frame_le) and each material's
-// terms (PhongShader::material_terms), worked out once per frame instead of per pixel.
+// terms (PhongShader::material_terms), worked out once per frame instead of per pixel. The narrow
+// formats (Config::phong) shade each pixel through Normalizer::normalize_narrow and
+// PhongShader::shade_narrow, from the materials as given (narrow_materials).
 struct PhongFrame {
   PhongShader::Vec light{}, eye{};
+  PhongFormat format = PhongFormat::Model;
   i64 le = 0;
   std::vector<PhongShader::MaterialTerms> materials;  // by material id, as frame.materials
+  std::vector<PhongShader::Pixel> narrow_materials;   // Cp, d, W, n by material id (the narrow set)
   // The material terms by field (by material id), for a line kernel's gathers: Cp per channel,
   // 1 - d, the d term, the specular scale and n's NBits bits.
   std::vector<i64> cp[3], one_minus_d, d_term, spec_scale, shininess;
   // Whether the light and the eye fit 32-bit lanes (a line kernel's products of them with a unit
   // normal are 32 x 32 bits); a Q2.14 vector always does.
   bool narrow_vectors = true;
-  explicit PhongFrame(const Frame& frame)
-      : light(frame.light), eye(frame.eye), le(PhongShader::frame_le(frame.light, frame.eye)) {
+  PhongFrame(const Frame& frame, PhongFormat phong_format)
+      : light(frame.light), eye(frame.eye), format(phong_format),
+        le(PhongShader::frame_le(frame.light, frame.eye, phong_format)) {
     if (frame.shading != ShadingMode::Phong) return;
     materials.reserve(frame.materials.size());
     for (const QuantizedMaterial& m : frame.materials) {
@@ -41,13 +46,24 @@ struct PhongFrame {
       for (int c = 0; c < 3; ++c) cp[c].push_back(t.cp[static_cast<std::size_t>(c)]);
       one_minus_d.push_back(t.one_minus_d), d_term.push_back(t.d_term), spec_scale.push_back(t.spec_scale);
       shininess.push_back(static_cast<unsigned>(t.shininess) & ((1u << PhongShader::NBits) - 1));
+      PhongShader::Pixel px;
+      for (int c = 0; c < 3; ++c) px.cp[static_cast<std::size_t>(c)] = m.cp[static_cast<std::size_t>(c)];
+      px.d = m.d, px.w = m.w, px.shininess = m.shininess;
+      narrow_materials.push_back(px);
     }
     for (int c = 0; c < 3; ++c)
       narrow_vectors &= light[static_cast<std::size_t>(c)] == static_cast<std::int32_t>(light[static_cast<std::size_t>(c)]) &&
                         eye[static_cast<std::size_t>(c)] == static_cast<std::int32_t>(eye[static_cast<std::size_t>(c)]);
   }
+  // Whether the line kernels may shade: they compute the model's formats.
+  bool kernel_formats() const { return format == PhongFormat::Model && narrow_vectors; }
   // normalizer → phong_shader on one normal of material `id` (checked by the caller).
   std::array<int, 3> shade(const std::array<i64, 3>& normal, int id) const {
+    if (format == PhongFormat::Narrow) {
+      PhongShader::Pixel px = narrow_materials[static_cast<std::size_t>(id)];
+      px.n = Normalizer::normalize_narrow(normal[0], normal[1], normal[2]).n;
+      return PhongShader::shade_narrow(px, light, eye, le);
+    }
     const Normalizer::Unit u = Normalizer::normalize(normal[0], normal[1], normal[2]);
     return PhongShader::shade(u.n, materials[static_cast<std::size_t>(id)], light, eye, le);
   }
@@ -832,7 +848,7 @@ struct FrameSetup {
   std::vector<std::uint8_t> background_rgb, background_covered;
   std::vector<int> background_owner;
   FrameSetup(const Frame& f, const ChannelFormats& cf, SpanKernels k)
-      : frame(f), formats(cf), path(cf), divider(cf), phong(f), kernels(k),
+      : frame(f), formats(cf), path(cf), divider(cf), phong(f, cf.phong), kernels(k),
         background_covered(static_cast<std::size_t>(f.width), 0), background_owner(static_cast<std::size_t>(f.width), -1) {
     for (int x = 0; x < f.width; ++x) background_rgb.insert(background_rgb.end(), f.background.begin(), f.background.end());
     for (int c = 0; c < 4; ++c) {
@@ -1016,7 +1032,7 @@ void draw_lines(const FrameSetup& fs, int capacity, int y_begin, int y_end, Imag
     stats.visible += n.visible;
     if (observe.fragments_end) observe.fragments_end(y);
     // Phong with nobody observing shades each covered pixel once, from its last winner.
-    if (deferred && fs.kernels.phong_line && fs.phong.narrow_vectors)
+    if (deferred && fs.kernels.phong_line && fs.phong.kernel_formats())
       fs.kernels.phong_line(fs.phong, scratch.normal.data(), scratch.material.data(), line.row().keys, line.lo(),
                             line.hi(), line.row().rgb);
     else if (deferred)
