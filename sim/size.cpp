@@ -14,7 +14,10 @@
 // shade divider's mantissa), coordinate descent until no width can drop a bit; in four orders of the
 // widths, keeping the smallest edge record (then line buffer). Integer bits are exactly
 // what SceneNeeds reports at the chosen fractions; capacities are the scene's needs; the smoother
-// (smoothing) only when the scene's shading.smooth turns it on.
+// (smoothing) only when the scene's shading.smooth turns it on. With --compact the configuration is
+// the compact top's: "compact" true and, for a Phong scene, the narrow Phong formats
+// (phong.formats, docs/reference/compact-phong.md), every point judged at them; the normal group's
+// fraction starts at the narrow normalizer's 15 bits, which its input rounds to.
 #include "size.hpp"
 
 #include <CLI/CLI.hpp>
@@ -60,9 +63,12 @@ const char* dim_name(int d, ShadingMode shading) {
   }
 }
 
-Widths default_widths() {
+// Where the search starts: the default configuration's widths; for the narrow Phong formats the
+// normal's fraction at most the narrow normalizer's input fraction (more bits are rounded away).
+Widths default_widths(bool narrow_phong = false) {
   const Config d;
-  return {d.x.frac_bits, d.shade.frac_bits, d.depth_bits, d.depth.frac_bits, d.eq2_recip_bits};
+  const int attr = narrow_phong ? std::min(d.normal.frac_bits, narrow::InFracBits) : d.shade.frac_bits;
+  return {d.x.frac_bits, attr, d.depth_bits, d.depth.frac_bits, d.eq2_recip_bits};
 }
 
 // One rendered point of the search.
@@ -81,11 +87,15 @@ struct Point {
 // The scene, its reference and the default configuration's image: what every point is judged by.
 class Judge {
  public:
-  Judge(const BuiltScene& scene, int bound) : scene_(scene), bound_(bound) {
+  Judge(const BuiltScene& scene, int bound, bool compact)
+      : scene_(scene), bound_(bound), compact_(compact),
+        phong_format_(compact && scene.shading == ShadingMode::Phong ? PhongFormat::Narrow : PhongFormat::Model) {
     reference_ = render_float_reference(scene_);
-    // The default formats (at edge_order 3 when the scene has curves); the list need not limit
-    // the baseline.
+    // The default formats (at edge_order 3 when the scene has curves; the compact top's Phong
+    // formats with --compact); the list need not limit the baseline.
     Config def = with_scene_edge_order(scene_, Config{});
+    def.compact = compact_;
+    def.phong = phong_format_;
     def.max_active_edges = 1 << 30;
     const PreparedScene prepared = prepare(scene_, def);
     WatkinsTop top(def);
@@ -166,6 +176,8 @@ class Judge {
     c.depth_bits = w[DimDepthBits];
     c.depth.frac_bits = w[DimDepth];
     c.eq2_recip_bits = w[DimRecip];  // read by the divider only (fit_int_bits adds it for an eq2 scene)
+    c.compact = compact_;
+    c.phong = phong_format_;
     PreparedScene probe;
     c = fit_int_bits(scene_, c, &probe);  // the integer bits, as the sweep derives them
     const SceneNeeds& needs = probe.needs;
@@ -186,12 +198,16 @@ class Judge {
   int default_over() const { return default_over_; }
   int default_flips() const { return default_flips_; }
   int evaluations() const { return evaluations_; }
+  // The search's start: default_widths() at this judge's Phong formats.
+  Widths start() const { return default_widths(phong_format_ == PhongFormat::Narrow); }
 
  private:
   ChannelFormat& attr(Config& c) const { return scene_.shading == ShadingMode::Phong ? c.normal : c.shade; }
 
   const BuiltScene& scene_;
   int bound_;
+  bool compact_;
+  PhongFormat phong_format_;
   Image reference_;
   ImageError baseline_;
   std::vector<int> allowance_;          // per pixel: max(L, the default's |Δ|)
@@ -266,16 +282,16 @@ Descent descend(Judge& judge, const BuiltScene& scene, int bound) {
   out.dims = orders[0];
   out.orders = orders.size();
   out.eq2 = eq2;
-  if (!judge.evaluate(default_widths()).passes())  // the default passes by construction
+  if (!judge.evaluate(judge.start()).passes())  // the default passes by construction
     throw std::runtime_error("the default configuration fails its own criterion: " +
-                             broke(judge.evaluate(default_widths()), bound));
+                             broke(judge.evaluate(judge.start()), bound));
   auto cost = [&](const Point& p) {
     const Widths& w = p.w;
     return std::make_tuple(p.cfg.edge_record_bits(shading), line_buffer_bits(p.cfg), w[0] + w[1] + w[2] + w[3] + w[4]);
   };
   Widths& cur = out.widths;
   for (std::size_t o = 0; o < orders.size(); ++o) {
-    Widths w = default_widths();
+    Widths w = judge.start();
     int r = 0;
     for (bool moved = true; moved; ++r) {
       moved = false;
@@ -310,6 +326,8 @@ CLI::App* add_size_command(CLI::App& app, SizeArgs& a) {
                 "gouraud: eq1 or eq2 (Gouraud's eq. 2, sizing the shade divider's eq2_recip_bits too); overrides "
                 "shading.interpolation");
   cli::add_file(s, "--out,-o", a.out, "configuration file to write (default: <scene>.config.json)");
+  s->add_flag("--compact", a.compact, "size the compact top: writes compact true and, for a Phong scene, the narrow "
+                                      "Phong formats (phong.formats), every width judged at them");
   s->add_option("--patches", a.patches, "patch objects drawn as curves (Whitted's edges; sized at edge_order 3) or "
                                         "polygons; overrides each object's \"draw\"")
       ->check(CLI::IsMember({"curves", "polygons"}));
@@ -337,8 +355,8 @@ void check_size(const SizeArgs& a) {
   (void)build_options(a);
 }
 
-Config sized_config(const BuiltScene& scene, int bound) {
-  Judge judge(scene, bound);
+Config sized_config(const BuiltScene& scene, int bound, bool compact) {
+  Judge judge(scene, bound, compact);
   return judge.evaluate(descend(judge, scene, bound).widths).cfg;
 }
 
@@ -355,7 +373,7 @@ int run_size(const SizeArgs& a) {
   const BuiltScene scene = build_scene(parsed, opt);
   const ShadingMode shading = scene.shading;
 
-  Judge judge(scene, bound);
+  Judge judge(scene, bound, a.compact);
   const Descent found = descend(judge, scene, bound);
   const std::vector<int>& dims = found.dims;
   const Widths& cur = found.widths;
@@ -402,6 +420,9 @@ int run_size(const SizeArgs& a) {
               c.max_active_edges, c.max_width, c.max_materials, id_bits(c.max_materials),
               phong ? "" : ": Gouraud edges carry material 0", c.max_polygons, id_bits(c.max_polygons),
               c.max_edges, id_bits(c.max_edges));
+  if (c.compact)
+    std::printf("compact       true (the compact top)%s\n",
+                c.phong == PhongFormat::Narrow ? "; phong.formats narrow (the compact Phong blocks' 16 x 16 products)" : "");
   std::printf("smoothing     %s\n", c.smoothing ? "true (the scene smooths: the top has the smoother)"
                                                  : "false (the scene never smooths: the top has no smoother)");
   std::printf("edge record   %d bits (default %d)\n", c.edge_record_bits(shading), def.edge_record_bits(shading));
@@ -417,7 +438,7 @@ int run_size(const SizeArgs& a) {
                   p.err.max_abs, p.err.mean_abs, p.err.over_one, p.err.visibility_differs, p.err.coverage_differs);
     return std::string(buf);
   };
-  std::printf("error default %s\n", error(judge.evaluate(default_widths())).c_str());
+  std::printf("error default %s\n", error(judge.evaluate(judge.start())).c_str());
   std::printf("error chosen  %s\n", error(chosen).c_str());
   std::printf("one bit below\n");
   for (int d : dims) {

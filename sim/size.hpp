@@ -22,6 +22,7 @@ struct SizeArgs {
   std::string shading;        // gouraud | phong; default the scene's
   std::string interpolation;  // eq1 or eq2 (Gouraud's equations); else the scene's
   std::string patches;        // curves | polygons; default each patch object's "draw"
+  bool compact = false;       // the compact top: compact true, a Phong scene's narrow formats
 };
 
 // Registers `watkins size` and its options on `app`; returns the subcommand.
@@ -32,7 +33,7 @@ void check_size(const SizeArgs& args);
 // Bad input throws (one line, no file written).
 int run_size(const SizeArgs& args);
 // The configuration run_size chooses for a built scene at `bound` levels (its search, without the
-// report and the file): what `watkins board` sizes a scene with.
-Config sized_config(const BuiltScene& scene, int bound = 1);
+// report and the file): what `watkins board` sizes a scene with. `compact`: as --compact.
+Config sized_config(const BuiltScene& scene, int bound = 1, bool compact = false);
 
 }  // namespace watkins::size

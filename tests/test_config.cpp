@@ -162,6 +162,67 @@ TEST(Config, SmoothingFalseBuildsATopWithoutTheSmoother) {
   EXPECT_EQ(ib.covered, ia.covered);
 }
 
+// "phong": {"formats": "narrow"}: a field of the compact configuration only (one line naming it
+// otherwise), written only when narrow, listed to the RTL as PhongNarrow = 1 for a Phong top only.
+// Its images come from the narrow twins on every path (one thread or several, observed or not)
+// and stay within a few levels of the model set's.
+TEST(Config, NarrowPhongFormatsAreACompactField) {
+  auto err = [](const std::string& text) { return error_of([&] { parse_config(text, "c.json"); }); };
+  EXPECT_EQ(err(R"({"phong": {"formats": "narrow"}})"),
+            "c.json: phong.formats: narrow needs compact true (the pipelined Phong blocks take the model's formats)");
+  EXPECT_EQ(err(R"({"compact": true, "phong": {"formats": "wide"}})"),
+            "c.json: phong.formats: expected \"model\" or \"narrow\", got \"wide\"");
+  EXPECT_EQ(err(R"({"phong": {"format": "narrow"}})"), "c.json: phong: unknown key \"format\"");
+  EXPECT_EQ(err(R"({"phong": "narrow"})"), "c.json: phong: expected an object, got \"narrow\"");
+  EXPECT_TRUE(parse_config(R"({"phong": {"formats": "model"}})", "c.json") == Config{});
+  EXPECT_TRUE(parse_config(R"({"phong": {}})", "c.json") == Config{});
+  Config compact;
+  compact.compact = true;
+  Config narrow = compact;
+  narrow.phong = PhongFormat::Narrow;
+  EXPECT_TRUE(parse_config(R"({"compact": true, "phong": {"formats": "narrow"}})", "c.json") == narrow);
+  EXPECT_FALSE(narrow == compact);
+  EXPECT_TRUE(parse_config(config_json(narrow), "c.json") == narrow);
+  EXPECT_NE(config_json(narrow).find("\"phong\": {\"formats\": \"narrow\"}"), std::string::npos);
+  EXPECT_EQ(config_json(compact).find("phong"), std::string::npos);
+  EXPECT_EQ(narrow.channels(ShadingMode::Phong).phong, PhongFormat::Narrow);
+  std::vector<RtlParameter> with = rtl_parameters(narrow, ShadingMode::Phong);
+  const std::vector<RtlParameter> without = rtl_parameters(compact, ShadingMode::Phong);
+  ASSERT_EQ(with.size(), without.size() + 1);
+  EXPECT_TRUE((with.back() == RtlParameter{"PhongNarrow", 1}));
+  with.pop_back();
+  EXPECT_EQ(with, without);
+  EXPECT_EQ(rtl_parameters(narrow, ShadingMode::Gouraud), rtl_parameters(compact, ShadingMode::Gouraud));
+
+  BuildOptions opt;
+  opt.shading = ShadingMode::Phong;
+  for (const char* name : {"/scenes/sphere.json", "/scenes/highlight.json"}) {
+    const BuiltScene scene = load_scene(std::string(WATKINS_SOURCE_DIR) + name, opt);
+    const PreparedScene pm = prepare(scene, compact), pn = prepare(scene, narrow);
+    const Image model = render(pm, compact);
+    WatkinsTop top(narrow);
+    const Image img = top.render(pn);
+    // Every covered pixel is the narrow twins' shade of its fragment, observed or not, threaded.
+    Image observed_img;
+    {
+      WatkinsTop o(narrow);
+      observed_img = o.render(pn, [](int, const Fragment&, bool) {});
+    }
+    EXPECT_EQ(observed_img.rgb, img.rgb) << name;
+    for (SpanPath path : {SpanPath::Scalar, SpanPath::Auto}) {
+      WatkinsTop t(narrow);
+      t.set_threads(3);
+      t.set_span_path(path);
+      EXPECT_EQ(t.render(pn).rgb, img.rgb) << name;
+    }
+    EXPECT_EQ(img.covered, model.covered) << name;
+    EXPECT_NE(img.rgb, model.rgb) << name;
+    const ImageError e = compare_images(img, model);
+    EXPECT_LE(e.max_abs, 12) << name;
+    EXPECT_LT(e.mean_abs, 0.5) << name;
+  }
+}
+
 // Narrower shade fraction bits F on the Gouraud scenes. X and depth keep their formats, so
 // coverage, spans, α0 and visibility are identical; only the shade values move. Against the
 // exact interpolation v* of the exact vertex shades over the same spans, with q = 2^-(F+1):
