@@ -121,8 +121,8 @@ struct PhongShader {
   static i64 frame_le(const Vec& light, const Vec& eye, PhongFormat format) {
     return format == PhongFormat::Narrow ? narrow_le(light, eye) : frame_le(light, eye);
   }
-  // cos(s)^n, PowBits fraction bits (0..2^16 - 1), for cs in [1, 2^16] (CosBits fraction bits):
-  // -log2 cos(s) from the log table, times n, 2^-(that) from the exp table.
+  // cos(s)^n, PowBits fraction bits (0..2^16 - 1), for cs in [0, 2^16] (CosBits fraction bits):
+  // -log2 cos(s) from the log table, times n, 2^-(that) from the exp table; 0 for cs = 0.
   static i64 power_narrow(i64 cs, int n);
   static Terms terms_narrow(const Pixel& px, const Vec& light, const Vec& eye, i64 le);
   static std::array<int, 3> shade_narrow(const Pixel& px, const Vec& light, const Vec& eye, i64 le);
@@ -179,6 +179,7 @@ inline i64 narrow_table_lerp(const std::array<std::uint32_t, 1 << narrow::TableB
 
 inline i64 PhongShader::power_narrow(i64 cs, int n) {
   n = static_cast<int>(static_cast<unsigned>(n) & ((1u << NBits) - 1));
+  if (cs <= 0) return 0;  // no specular (the shader never asks: spec needs cs > 0)
   // -log2 cs = K - log2(x): cs = x 2^(e - 16), x in [1, 2) from the 16 bits below the leading one.
   const int e = msb_index(static_cast<std::uint64_t>(cs));
   const auto frac = static_cast<unsigned>((cs << (narrow::CosBits - e)) & 0xffff);
