@@ -225,9 +225,9 @@ module compact_segment_interpolator #(
   // ---------------------------------------------------------------- setup
   // Multiplications one DigitBits-bit digit of the unsigned operand per clock, least significant
   // first: p = digit * B (B = recip or alpha0, unsigned), x = the running sum, its low digit
-  // shifted out into x_lo_q. A negative delta multiplies |delta| with the sum started at -1, so
-  // x holds |delta| B - 1 = Q, and the product -|delta| B is ~Q: the s stage shifts {Q, 1} and
-  // inverts (floor(-2P / 2^s) = ~floor((2P - 1) / 2^s)), the value adds ~Q.
+  // shifted out into x_lo_q. A negative delta multiplies ~delta = |delta| - 1 with the sum
+  // started at B - 1, so x holds |delta| B - 1 = Q, and the product -|delta| B is ~Q: the s stage
+  // shifts {Q, 1} and inverts (floor(-2P / 2^s) = ~floor((2P - 1) / 2^s)), the value adds ~Q.
   localparam int unsigned DigitBits    = 16;  // an SB_MAC16's operand
   localparam int unsigned BBits        = max2(RecipBits, AlphaBits) + 1;
   localparam int unsigned ProductBits  = DigitBits + BBits;
@@ -241,7 +241,14 @@ module compact_segment_interpolator #(
   localparam int unsigned DigitIdxBits = (MaxDigits > 1) ? $clog2(MaxDigits) : 1;
   // The signed product (or Q): any operand below 2^max(DxBits, ZBits, AttrBits) times B.
   localparam int unsigned QBits        = max2(DxBits, max2(ZBits, AttrBits)) + BBits + 1;
-  localparam int unsigned UBits        = QBits + 1;
+  // The s stage's window: the bits of u the w stage reads -- alpha0's AlphaBits + 2 (u and its
+  // rounding bit), a step's SlotBits + 1 -- and two above it that keep u's sign and whether
+  // every bit of u above the window equals it, which is all a saturation test asks of them.
+  localparam int unsigned MaxSlotBits  = max2(ZBits, AttrBits);
+  localparam int unsigned WindowBits   = max2(AlphaBits + 2, MaxSlotBits + 1);
+  localparam int unsigned UBits        = WindowBits + 2;
+  // The shifter's operand, sign-extended so that every level's slice lies inside it.
+  localparam int unsigned ShiftInBits  = max2(QBits + 2, WindowBits + (1 << ExponentBits) - 1);
   // The s stage's constant shifts: alpha0 by p + RecipBits - AlphaBits, a step by
   // p + RecipBits - XFracBits; p is the shifter's amount.
   localparam int unsigned AlphaShift   = RecipBits - AlphaBits;
@@ -253,7 +260,8 @@ module compact_segment_interpolator #(
   logic [OpBits-1:0]          m_op_q;      // the operation issued next (Ops: all issued)
   logic [DigitIdxBits-1:0]    m_dig_q;     // its digit
   logic [DxBits-1:0]          m_offset_q;  // x_start + 1/2 - X_E >= 0, X units
-  logic [MagVectorBits-1:0]   m_mag_q;     // |F - E| per slot (ilo(c, ZBits + 1, AttrBits + 1))
+  // per slot (ilo(c, ZBits + 1, AttrBits + 1)): F - E, or ~(F - E) = |F - E| - 1 when negative
+  logic [MagVectorBits-1:0]   m_mag_q;
   logic [InterpolatedSlots:1] m_neg_q;     // F - E < 0 per slot
   logic [RecipBits:0]         m_recip_q;
   logic [ExponentBits-1:0]    m_p_q;
@@ -296,6 +304,7 @@ module compact_segment_interpolator #(
   logic                    p_valid_q, p_first_q, p_last_q, p_neg_q;
   logic [OpBits-1:0]       p_op_q;
   logic [ProductBits-1:0]  p_prod_q;
+  logic signed [BBits:0]   p_init_q;
   // x: the running sum, its digits shifted out, and the finished Q.
   logic signed [SumBits-1:0] x_hi_q;
   logic [LoBits-1:0]         x_lo_q;
@@ -366,21 +375,19 @@ module compact_segment_interpolator #(
     localparam int unsigned SlotBits = watkins_pkg::slot_bits(c, XBits, ZBits, AttrBits);
     localparam int unsigned InputLow = watkins_pkg::slot_lo(c, XBits, ZBits, AttrBits);
     localparam int unsigned MagLow   = ilo(c, ZBits + 1, AttrBits + 1);
-    logic signed [SlotBits:0] fe, ef;  // F - E, E - F
+    logic signed [SlotBits:0] fe;  // F - E
     assign fe = $signed({seg_f_i[InputLow+SlotBits-1], seg_f_i[InputLow +: SlotBits]})
               - $signed({seg_e_i[InputLow+SlotBits-1], seg_e_i[InputLow +: SlotBits]});
-    assign ef = $signed({seg_e_i[InputLow+SlotBits-1], seg_e_i[InputLow +: SlotBits]})
-              - $signed({seg_f_i[InputLow+SlotBits-1], seg_f_i[InputLow +: SlotBits]});
     always_ff @(posedge clk_i) begin
       if (take) begin
-        m_mag_q[MagLow +: SlotBits + 1] <= fe[SlotBits] ? ef : fe;
+        m_mag_q[MagLow +: SlotBits + 1] <= fe ^ {(SlotBits + 1){fe[SlotBits]}};
         m_neg_q[c]                      <= fe[SlotBits];
       end
     end
   end
 
-  // o: digit m_dig_q of the operation's unsigned operand, and B. Each slot's |delta| widened to
-  // the operand's digits (slot 0: the offset).
+  // o: digit m_dig_q of the operation's unsigned operand, and B. Each slot's |delta| (less one
+  // when negative) widened to the operand's digits (slot 0: the offset).
   logic [(InterpolatedSlots+1)*OperandBits-1:0] m_operand;  // slot s at s OperandBits
   logic [InterpolatedSlots:0]                    m_neg_ext;
   assign m_operand[0 +: OperandBits] = OperandBits'(m_offset_q);
@@ -405,11 +412,15 @@ module compact_segment_interpolator #(
     end
   end
 
-  // p: the digit's product. x: the running sum (started at -1 for a negative operand); on the
-  // last digit the whole of Q, its digits placed by the operation's digit count.
+  logic signed [BBits:0] o_b_less;  // B - 1: -1 when alpha0 is 0
+  assign o_b_less = $signed({1'b0, o_b_q} - (BBits + 1)'(1));
+  // p: the digit's product, and the sum's start (B - 1 for a negative operand, else 0). x: the
+  // running sum; on the last digit the whole of Q, its digits placed by the operation's digit
+  // count.
   always_ff @(posedge clk_i) begin
     if (o_valid_q) begin
       p_prod_q  <= ProductBits'(o_a_q) * ProductBits'(o_b_q);
+      p_init_q  <= o_neg_q ? o_b_less : '0;
       p_op_q    <= o_op_q;
       p_first_q <= o_first_q;
       p_last_q  <= o_last_q;
@@ -419,7 +430,8 @@ module compact_segment_interpolator #(
 
   logic signed [SumBits-1:0] x_sum;
   logic signed [QBits-1:0]   x_q_offset, x_q_z, x_q_attr;  // Q for each digit count
-  assign x_sum = (p_first_q ? (p_neg_q ? -SumBits'(1) : '0) : x_hi_q)
+  assign x_sum = (p_first_q ? $signed({{(SumBits - BBits - 1){p_init_q[BBits]}}, p_init_q})
+                            : x_hi_q)
                + $signed({2'b00, p_prod_q});
   function automatic logic signed [QBits-1:0] assemble(logic signed [SumBits-1:0] hi,
                                                        logic [LoBits-1:0] lo, int unsigned n);
@@ -457,29 +469,65 @@ module compact_segment_interpolator #(
   end
 
   // s: alpha0's and the steps' u = floor(2 x / 2^s) (round_shift(x, s) = floor((u + 1) / 2)),
-  // the constant part of the shift wired, p through one shifter; a value's Q as it is. Both
-  // inverted for a negative delta.
+  // the constant part of the shift wired, p through one shifter; a value's u = floor(Q /
+  // 2^(AlphaBits-1)), wired. Both inverted for a negative delta. Only u's window is kept: the
+  // shifter's levels go from the largest, each keeping the bits that a smaller shift can still
+  // bring into the window and testing the bits it drops against the sign.
+  localparam int unsigned ValueShift = AlphaBits - 1;
+  logic signed [QBits:0]                    s_alpha_in, s_step_in;
+  logic                                     s_sign;  // u's sign before the inversion: Q's
+  /* verilator lint_off UNUSEDSIGNAL */
+  // level k's word at k ShiftInBits (split: each level reads the one above it)
+  logic [(ExponentBits+1)*ShiftInBits-1:0] s_level /* verilator split_var */;
+  logic [ShiftInBits-1:0]                  s_value_in;
+  /* verilator lint_on UNUSEDSIGNAL */
+  logic [ExponentBits-1:0]                  s_level_eq;  // the bits level k drops equal the sign
+  logic [UBits-1:0]                         s_u;
+  assign s_sign     = x_q_q[QBits-1];
+  assign s_alpha_in = $signed({x_q_q, 1'b0}) >>> AlphaShift;
+  assign s_step_in  = $signed({x_q_q, x_neg_q}) >>> StepShift;
+  assign s_level[ExponentBits*ShiftInBits +: ShiftInBits] =
+      {{(ShiftInBits - QBits - 1){s_sign}}, (x_op_q == 0) ? s_alpha_in : s_step_in};
+  for (genvar k = 0; k < ExponentBits; k++) begin : g_shift
+    localparam int unsigned Step    = 1 << k;
+    localparam int unsigned OutBits = WindowBits + Step - 1;  // what shifts below k can use
+    localparam int unsigned InBits  = (k == ExponentBits - 1) ? ShiftInBits
+                                                              : WindowBits + 2 * Step - 1;
+    logic [InBits-1:0] in;
+    logic              drop_eq, drop_shifted_eq;
+    assign in = s_level[(k + 1)*ShiftInBits +: InBits];
+    assign s_level[k*ShiftInBits +: OutBits] = m_p_q[k] ? in[Step +: OutBits] : in[0 +: OutBits];
+    assign s_level[k*ShiftInBits + OutBits +: ShiftInBits - OutBits] = '0;
+    assign drop_eq = in[InBits-1:OutBits] == {(InBits - OutBits){s_sign}};
+    if (InBits > Step + OutBits) begin : g_drop_shifted
+      assign drop_shifted_eq = in[InBits-1:Step+OutBits] == {(InBits - Step - OutBits){s_sign}};
+    end else begin : g_drop_none
+      assign drop_shifted_eq = 1'b1;
+    end
+    assign s_level_eq[k] = m_p_q[k] ? drop_shifted_eq : drop_eq;
+  end
+  assign s_value_in = $signed({{(ShiftInBits - QBits){s_sign}}, x_q_q}) >>> ValueShift;
+  assign s_u = (x_op_q > 4) ? {s_sign, s_sign, s_value_in[WindowBits-1:0]}
+             : {s_sign, s_sign ^ !(&s_level_eq), s_level[0 +: WindowBits]};
   always_ff @(posedge clk_i) begin
-    if (x_valid_q) begin : s_set
-      logic signed [UBits-1:0] v;
-      v = (x_op_q == 0) ? ($signed({x_q_q, 1'b0}) >>> AlphaShift)
-                        : ($signed({x_q_q, x_neg_q}) >>> StepShift);
-      v = v >>> m_p_q;
-      if (x_op_q > 4) v = UBits'(x_q_q);
-      s_u_q  <= x_neg_q ? ~v : v;
+    if (x_valid_q) begin
+      s_u_q  <= x_neg_q ? ~s_u : s_u;
       s_op_q <= x_op_q;
     end
   end
 
   // w: alpha0 rounded and clamped to 2^AlphaBits; a step rounded and saturated to its slot; a
-  // value E + round_shift(delta alpha0, AlphaBits) wrapped to its slot.
+  // value E + round_shift(delta alpha0, AlphaBits) wrapped to its slot. One rounding adder
+  // serves all three: floor((u + 1) / 2) = u[.. 1] + u[0].
+  logic [WindowBits-2:0] w_round;
+  assign w_round = s_u_q[WindowBits-1:1] + (WindowBits - 1)'(s_u_q[0]);
   always_ff @(posedge clk_i) begin
     if (s_valid_q && s_op_q == 0) begin : w_alpha
       logic [AlphaBits:0] ua;
       logic               over;
       ua   = s_u_q[AlphaBits+1:1];
       over = |s_u_q[UBits-1:AlphaBits+2] || (ua[AlphaBits] && (|ua[AlphaBits-1:0] || s_u_q[0]));
-      m_alpha_q <= over ? (AlphaBits + 1)'(1 << AlphaBits) : ua + (AlphaBits + 1)'(s_u_q[0]);
+      m_alpha_q <= over ? (AlphaBits + 1)'(1 << AlphaBits) : w_round[AlphaBits:0];
     end
   end
   for (genvar c = 1; c <= InterpolatedSlots; c++) begin : g_w
@@ -490,24 +538,20 @@ module compact_segment_interpolator #(
     always_ff @(posedge clk_i) begin
       if (s_valid_q && s_op_q == OpBits'(c)) begin : w_step
         logic fits, at_max;
-        logic [SlotBits-1:0] inc;
         fits   = &s_u_q[UBits-1:SlotBits] || ~|s_u_q[UBits-1:SlotBits];
         at_max = !s_u_q[SlotBits] && &s_u_q[SlotBits-1:1];
-        inc    = s_u_q[SlotBits:1] + SlotBits'(s_u_q[0]);
         if (!fits) h_step_q[SlotLow +: SlotBits] <= s_u_q[UBits-1] ? StepMin : StepMax;
         else if (at_max) h_step_q[SlotLow +: SlotBits] <= StepMax;
-        else h_step_q[SlotLow +: SlotBits] <= inc;
+        else h_step_q[SlotLow +: SlotBits] <= w_round[SlotBits-1:0];
       end
       if (take) begin
         h_value_q[SlotLow +: SlotBits] <=
             seg_e_i[watkins_pkg::slot_lo(c, XBits, ZBits, AttrBits) +: SlotBits];
       end else if (s_valid_q && s_op_q == OpBits'(c + 4)) begin
-        // E + round_shift(X, AlphaBits) = E + X[AlphaBits +: SlotBits] + X[AlphaBits-1]: the
-        // rounding constant 2^(AlphaBits-1) carries out of X's low bits exactly when that bit
-        // is set, so only the slot's bits are added.
+        // E + round_shift(X, AlphaBits) with u = floor(X / 2^(AlphaBits-1)): only the slot's
+        // bits of the rounded u are added.
         h_value_q[SlotLow +: SlotBits] <= h_value_q[SlotLow +: SlotBits]
-                                        + s_u_q[AlphaBits +: SlotBits]
-                                        + SlotBits'(s_u_q[AlphaBits-1]);
+                                        + w_round[SlotBits-1:0];
       end
     end
   end
