@@ -107,6 +107,8 @@ const Design kDesigns[] = {
     {"compact_scanline_buffer", "compact_scanline_buffer", ShadingMode::Gouraud, false, "scanline_buffer"},
     {"compact_normalizer", "compact_normalizer", ShadingMode::Phong, false, "normalizer"},
     {"compact_phong_shader", "compact_phong_shader", ShadingMode::Phong, false, "phong_shader"},
+    // The compact Phong blocks at the narrow formats (docs/reference/compact-phong.md).
+    {"compact_normalizer_narrow", "compact_normalizer_narrow", ShadingMode::Phong, false, "normalizer"},
     {"top-gouraud", "watkins_top", ShadingMode::Gouraud, true},
     {"top-phong", "watkins_top", ShadingMode::Phong, true},
     {"top-compact", "watkins_top", ShadingMode::Gouraud, true, nullptr, true},
@@ -531,7 +533,8 @@ CLI::App* add_synth_command(CLI::App& app, SynthArgs& a) {
                                         "span_reciprocal, segment_interpolator, normalizer, phong_shader, "
                                         "scanline_buffer, smoother, compact_active_edge_list, compact_segment_former, "
                                         "compact_segment_interpolator, compact_scanline_buffer, compact_normalizer, "
-                                        "compact_phong_shader, top-gouraud, top-phong, top-compact, top-compact-phong "
+                                        "compact_phong_shader, compact_normalizer_narrow, top-gouraud, top-phong, "
+                                        "top-compact, top-compact-phong "
                                         "(default: all)");
   s->add_option("--targets", a.targets, "comma-separated: ice40-up5k, ice40-hx8k, ecp5-85")->capture_default_str();
   cli::add_file(s, "--work", a.work, "directory for wrappers, netlists, logs and reports")->capture_default_str();
