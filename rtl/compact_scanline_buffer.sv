@@ -104,7 +104,7 @@ module compact_scanline_buffer #(
   logic rd_load, rd_read, rd_last, rd_lastline;
   logic [XBits-1:0] rx_next, rd_addr;
   logic [WayBits-1:0] rd_way_addr;  // rd_addr in its way
-  logic [WayBits-1:0] rx_way_addr;  // rx_q in its way; in the clear, the address cleared
+  logic [WayBits-1:0] rx_way_addr;  // rx_q in its way: the pixel loaded, or the address cleared
   // rx_q + 1 == width_i, from a flop: set from the reader's next x a clock ahead, so the
   // end-of-line decision (and frag_ready_o through it) has no compare in its clock.
   logic last_q;
@@ -115,7 +115,12 @@ module compact_scanline_buffer #(
   assign frag_x = frag_x_i;
   /* verilator lint_on UNUSEDSIGNAL */
 
-  assign rx_next     = rx_q + 1'b1;
+  // The clear steps x by Lanes (one address of every way a clock), the reader by one pixel.
+  if (Lanes == 2) begin : g_rx_step_two
+    assign rx_next = rx_q + XBits'({clear_q, !clear_q});
+  end else begin : g_rx_step_one
+    assign rx_next = rx_q + 1'b1;
+  end
   assign rd_last     = last_q;
   assign rd_lastline = rline_q + 1'b1 == height_i;
   // The output register takes a pixel when empty or emptied this clock.
@@ -124,7 +129,7 @@ module compact_scanline_buffer #(
   assign rd_read = rd_busy_q && (!pf_q || (rd_load && !rd_last));
   assign rd_addr = pf_q ? rx_next : rx_q;
   assign rd_way_addr = WayBits'(rd_addr >> WayShift);
-  assign rx_way_addr = clear_q ? WayBits'(rx_q) : WayBits'(rx_q >> WayShift);
+  assign rx_way_addr = WayBits'(rx_q >> WayShift);
 
   assign eol_ok       = !clear_q && (!rd_busy_q || (rd_load && rd_last));
   assign frag_ready_o = !clear_q && (!frag_eol_i || eol_ok);
@@ -266,8 +271,8 @@ module compact_scanline_buffer #(
     assign covered    = way_covered[0];
     assign loaded_rgb = way_rgb;
   end else begin : g_load_two
-    assign covered    = way_covered[rx_q[0]];
-    assign loaded_rgb = rx_q[0] ? way_rgb[RgbBits +: RgbBits] : way_rgb[0 +: RgbBits];
+    assign {covered, loaded_rgb} = rx_q[0] ? {way_covered[1], way_rgb[RgbBits +: RgbBits]}
+                                           : {way_covered[0], way_rgb[0 +: RgbBits]};
   end
   always_ff @(posedge clk_i) begin
     if (!rst_ni) begin
@@ -281,7 +286,7 @@ module compact_scanline_buffer #(
     end else begin
       if (clear_q) begin
         rx_q <= rx_next;
-        if (LineBits'(rx_q) == LineBits'(WayWords - 1)) begin
+        if (LineBits'(rx_way_addr) == LineBits'(WayWords - 1)) begin
           clear_q <= 1'b0;
           rx_q    <= '0;
         end
