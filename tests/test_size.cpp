@@ -52,8 +52,10 @@ struct Verdict {
 
 class Criterion {
  public:
-  Criterion(const BuiltScene& scene, int bound) : scene_(scene), bound_(bound), ref_(render_float_reference(scene)) {
-    Config def;
+  // `def`: the default configuration the allowance comes from (the compact top's Phong formats
+  // for --compact).
+  Criterion(const BuiltScene& scene, int bound, Config def = Config{})
+      : scene_(scene), bound_(bound), ref_(render_float_reference(scene)) {
     def.max_active_edges = 1 << 20;
     default_ = render_with(scene, def);
   }
@@ -160,6 +162,39 @@ TEST_F(Size, GouraudSphereConeAndDefault) {
 
 TEST_F(Size, PhongHighlightAndTorus) {
   for (const Case& k : {Case{"highlight", "phong", 1}, Case{"torus", "phong", 1}}) check_scene(dir_, k);
+}
+
+// --compact: the compact top's configuration, "compact": true and, for a Phong scene, the narrow
+// Phong formats, its widths judged at them (the criterion against the narrow default); a Gouraud
+// scene keeps the model's formats and writes no "phong".
+TEST_F(Size, CompactWritesTheNarrowPhongFormats) {
+  const std::string scene_path = std::string(WATKINS_SOURCE_DIR) + "/scenes/torus.json";
+  const std::string out = dir_ + "/torus.compact.json";
+  const CliRun r = run("size " + scene_path + " --shading phong --compact --out " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("compact       true (the compact top); phong.formats narrow"), std::string::npos) << r.output;
+  const Config cfg = load_config(out);
+  EXPECT_TRUE(cfg.compact);
+  EXPECT_EQ(cfg.phong, PhongFormat::Narrow);
+  EXPECT_LE(cfg.normal.frac_bits, narrow::InFracBits);
+  BuildOptions opt;
+  opt.shading = ShadingMode::Phong;
+  const BuiltScene scene = load_scene(scene_path, opt);
+  Config narrow_default;
+  narrow_default.compact = true;
+  narrow_default.phong = PhongFormat::Narrow;
+  const Verdict v = Criterion(scene, 1, narrow_default).judge(render_with(scene, cfg));
+  EXPECT_TRUE(v.ok()) << v.over_bound << " pixels over the bound, " << v.extra_flips << " extra flips";
+  EXPECT_EQ(run("render " + scene_path + " --shading phong --config " + out + " --out " + dir_ + "/r.png").exit_code, 0);
+
+  const std::string gouraud = dir_ + "/torus.gouraud.json";
+  ASSERT_EQ(run("size " + scene_path + " --shading gouraud --compact --out " + gouraud).exit_code, 0);
+  const Config g = load_config(gouraud);
+  EXPECT_TRUE(g.compact);
+  EXPECT_EQ(g.phong, PhongFormat::Model);
+  std::ifstream in(gouraud);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(text.find("phong"), std::string::npos) << text;
 }
 
 TEST_F(Size, LooserBoundIsNoWiderOnTheCone) {
