@@ -65,7 +65,7 @@ BoardScene load_board_scene(const CheckArgs& a, RunFiles& files) {
   files.scene_inputs(parsed);
   files.input("the --config file", a.config);
   BoardScene b;
-  b.scene = build_scene(parsed);
+  b.scene = build_scene(parsed, cli::shading_options(a.shading));
   const BuiltScene& scene = b.scene;
   b.name = a.scene.empty() ? std::string("the default scene") : a.scene;
   b.stem = a.scene.empty() ? std::string("default") : std::filesystem::path(a.scene).stem().string();
@@ -95,6 +95,20 @@ BoardScene load_board_scene(const CheckArgs& a, RunFiles& files) {
                              "); --top pipelined draws it");
   if (!b.cfg.compact) b.cfg.lanes = 1;  // the pipelined top takes one fragment a clock
   b.prepared = prepare(scene, b.cfg);
+  // The deadline is proven by the top's cycle model; a frame that model does not time (a Phong
+  // frame where the compact cycle model takes Gouraud frames only) is refused before any bank or
+  // bitstream is made.
+  if (b.cfg.compact && scene.shading == ShadingMode::Phong) {
+    try {
+      CycleOptions opt;
+      opt.max_active_edges = b.cfg.max_active_edges;
+      (void)predict_cycles(b.prepared, b.cfg, opt);
+    } catch (const std::invalid_argument& e) {
+      throw std::runtime_error(b.name + ": shading phong on the " + a.board +
+                               " board's compact top: no line deadline can be proven (" + e.what() +
+                               "); the ulx3s board's pipelined top draws Phong");
+    }
+  }
   // A sized compact configuration gets the fewest fragment lanes whose lines all meet the
   // deadline: two only where one misses and two miss fewer (the values are the same).
   if (a.config.empty() && b.cfg.compact && b.cfg.lanes == 1) {
@@ -312,6 +326,8 @@ CLI::App* add_board_command(CLI::App& app, BoardArgs& a) {
     sub->add_option("--top", t.top, "the micro-architecture: compact or pipelined (default: the board's, icebreaker "
                                     "compact and ulx3s pipelined; with --config, its \"compact\")")
         ->check(CLI::IsMember({"compact", "pipelined"}));
+    cli::add_shading(sub, t.shading, "gouraud or phong: the pipeline sized, timed and built (default: the scene's "
+                                     "shading.mode)");
   };
   CheckArgs& c = a.check;
   auto* check = b->add_subcommand("check", "each rendered line's completion against the moment the video shows it "

@@ -1,6 +1,8 @@
 // watkins board: the pipeline on an FPGA board racing the beam (docs/reference/board.md).
 // `board check` sizes a scene, prepares its frame and runs the board's beam schedule
 // (model/board/beam_schedule.hpp): the worst line's slack and the lines that miss their deadline.
+// Every subcommand takes --shading gouraud|phong (the scene's shading.mode when not given): the
+// pipeline the frame is prepared, sized, timed and built for.
 // `board image` writes the frame's scene bank; `board build` checks the deadline, then builds the
 // bitstream through the shared FPGA flow (board_build.hpp) and reports resources and clocks;
 // `board stream` sends frames to the board's host link (board_stream.hpp); `board sim` runs the
@@ -29,6 +31,7 @@ struct CheckArgs {
   std::string config;         // a configuration file instead of sizing the scene (`watkins size`, bound 1)
   std::string top;            // "compact" or "pipelined"; empty: the board's (icebreaker: compact,
                               // ulx3s: pipelined; a --config file: its own "compact")
+  std::string shading;        // "gouraud" or "phong"; empty: the scene's shading.mode
 };
 
 // `board image`: the scene bank's $readmemh file, as the board build initializes bank 0.

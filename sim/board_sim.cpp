@@ -43,6 +43,8 @@ CLI::App* add_sim_command(CLI::App* board, SimArgs& a) {
   s->add_option("--board", a.board, "the board")->check(CLI::IsMember({"ulx3s", "icebreaker"}))->capture_default_str();
   s->add_option("--top", a.top, "icebreaker: the top built compact (default, what the UP5K holds) or pipelined")
       ->check(CLI::IsMember({"compact", "pipelined"}));
+  cli::add_shading(s, a.shading, "gouraud or phong: the top built with that pipeline (default: the scene's "
+                                 "shading.mode)");
   s->add_option("--frames", a.frames, "rendered frames to show (each after the video frame before it)")
       ->check(cli::integer_in(1, 100000))
       ->capture_default_str();
@@ -66,24 +68,41 @@ namespace tb = board_tb;
 // The top a run uses and what it was built for.
 struct SimTop {
   bool icebreaker = false;
+  tb::BoardTop ulx3s = tb::BoardTop::Default;
   tb::IcebreakerTop ice = tb::IcebreakerTop::Compact;
   tb::TopBuild build;
-  std::string label;  // "ulx3s_top (pipelined)"
+  std::string label;  // "ulx3s_top (pipelined, Gouraud)"
 };
 
-SimTop sim_top(const SimArgs& a) {
+// The Verilated top of the board that draws `shading`: on the ULX3S the pipelined Gouraud or
+// Phong top; on the iCEBreaker the Gouraud top built compact or pipelined (--top), or the Phong top
+// where the build has one, its blocks those its configuration names.
+SimTop sim_top(const SimArgs& a, ShadingMode shading) {
   SimTop t;
   t.icebreaker = a.board == "icebreaker";
+  const bool phong = shading == ShadingMode::Phong;
   if (!t.icebreaker) {
     if (a.top == "compact")
-      throw UsageError("--top compact: the ulx3s board top is built pipelined (testbench/board/CMakeLists.txt)");
-    t.build = tb::top_build(tb::BoardTop::Default);
-    t.label = "ulx3s_top (pipelined)";
+      throw UsageError("--top compact: the ulx3s board tops are built pipelined (testbench/board/CMakeLists.txt)");
+    t.ulx3s = phong ? tb::BoardTop::Phong : tb::BoardTop::Default;
+    t.build = tb::top_build(t.ulx3s);
+  } else if (phong) {
+    if (!tb::top_built(tb::IcebreakerTop::Phong))
+      throw std::runtime_error("shading phong: this build has no Verilated icebreaker board top with Phong = 1 "
+                               "(cmake -DWATKINS_BOARD_ICEBREAKER_PHONG_CONFIG=FILE builds one); --board ulx3s "
+                               "draws Phong");
+    t.ice = tb::IcebreakerTop::Phong;
+    t.build = tb::top_build(t.ice);
   } else {
     t.ice = a.top == "pipelined" ? tb::IcebreakerTop::Pipelined : tb::IcebreakerTop::Compact;
     t.build = tb::top_build(t.ice);
-    t.label = std::string("icebreaker_top (") + (t.ice == tb::IcebreakerTop::Pipelined ? "pipelined" : "compact") + ")";
   }
+  const bool compact = load_config(t.build.config).compact;
+  if (!a.top.empty() && (a.top == "compact") != compact)
+    throw UsageError("--top " + a.top + ": the " + a.board + " board's " + to_string(shading) + " top is built " +
+                     (compact ? "compact" : "pipelined") + " (testbench/board/CMakeLists.txt)");
+  t.label = std::string(t.icebreaker ? "icebreaker_top" : "ulx3s_top") + " (" + (compact ? "compact" : "pipelined") +
+            ", " + (phong ? "Phong" : "Gouraud") + ")";
   return t;
 }
 
@@ -105,12 +124,12 @@ int run_sim(const SimArgs& a) {
   const Scene parsed = parse_scene_file(a.scene);
   if (!a.scene.empty()) files.input("the scene file", a.scene);
   files.scene_inputs(parsed);
-  const SimTop top = sim_top(a);
+  const BuiltScene scene = build_scene(parsed, cli::shading_options(a.shading));
+  const SimTop top = sim_top(a, scene.shading);
   files.input("the top's configuration", top.build.config);
   files.output_folder("--out", a.out);
 
-  // The scene against what the top was built for: its screen, its shading and its configuration.
-  const BuiltScene scene = build_scene(parsed);
+  // The scene against what the top was built for: its screen and its configuration.
   const std::string name = a.scene.empty() ? std::string("the default scene") : a.scene;
   const std::string config_name = relative_to_source(top.build.config);
   const std::string built = "the " + a.board + " board top (built for " + config_name + ")";
@@ -120,9 +139,6 @@ int run_sim(const SimArgs& a) {
     throw std::runtime_error(name + ": screen " + std::to_string(scene.width) + "x" + std::to_string(scene.height) +
                              ": " + built + " shows " + std::to_string(want_w) + "x" + std::to_string(want_h) +
                              (doubling > 1 ? " doubled" : ""));
-  if (scene.shading != ShadingMode::Gouraud)
-    throw std::runtime_error(name + ": shading " + std::string(to_string(scene.shading)) + ": " + built +
-                             " draws Gouraud shading");
   const Config cfg = load_config(top.build.config);
   const Config needs = with_scene_edge_order(scene, cfg);
   if (needs.eq2 != cfg.eq2)
@@ -243,7 +259,7 @@ int run_sim(const SimArgs& a) {
       }
     } remove{bank_file};
     board::write_readmemh_file(bank_file.string(), board::bank_image(prepared, cfg, top.build.bank_words));
-    tb::BoardBench bench(tb::BoardTop::Default);
+    tb::BoardBench bench(top.ulx3s);
     tb::BoardOptions opt;
     opt.bank_file = bank_file.string();
     opt.video_frames = a.frames + 1;

@@ -95,6 +95,8 @@ CLI::App* add_stream_command(CLI::App* board, StreamArgs& a) {
   s->add_option("--slots", a.slots, "line-buffer slots, a power of two (the deadline check)")
       ->check(cli::integer_in(1, 1024))
       ->capture_default_str();
+  cli::add_shading(s, a.shading, "gouraud or phong, as the bitstream was built (default: the first scene's "
+                                 "shading.mode)");
   return s;
 }
 
@@ -136,7 +138,8 @@ int run_stream(const StreamArgs& a) {
   if (a.loop && !tty) throw UsageError("--loop: " + a.port + " is not a serial port");
 
   // The board's configuration, size and bank, from the first scene (or --config, --bank-words).
-  const BuiltScene first = build_scene(parsed.front());
+  const BuildOptions opt = cli::shading_options(a.shading);
+  const BuiltScene first = build_scene(parsed.front(), opt);
   const std::string first_name = a.scenes.front();
   if (!((first.width == board::HVisible && first.height == board::VVisible) ||
         (first.width == board::HVisible / 2 && first.height == board::VVisible / 2)))
@@ -157,13 +160,13 @@ int run_stream(const StreamArgs& a) {
       const double deg = 360.0 * k / a.turntable;
       f.name = first_name + " at " + degrees_text(deg) + " degrees (frame " + std::to_string(k) + ")";
       try {
-        scene = k == 0 ? first : build_scene(board::turntable(parsed.front(), deg));
+        scene = k == 0 ? first : build_scene(board::turntable(parsed.front(), deg), opt);
       } catch (const std::invalid_argument& e) {
         throw std::runtime_error(e.what());
       }
     } else {
       f.name = a.scenes[static_cast<std::size_t>(k)];
-      scene = k == 0 ? first : build_scene(parsed[static_cast<std::size_t>(k)]);
+      scene = k == 0 ? first : build_scene(parsed[static_cast<std::size_t>(k)], opt);
     }
     if (scene.width != first.width || scene.height != first.height)
       throw std::runtime_error(f.name + ": screen " + std::to_string(scene.width) + "x" + std::to_string(scene.height) +

@@ -4,9 +4,10 @@
 // --config: the one the bitstream was built with), checked against the bank (BankWords words, as
 // `board build` sizes it from the first scene, or --bank-words) and the beam deadline, and packed
 // (model/board/frame_packet.hpp) before anything is sent; a frame that does not fit is refused
-// with one line naming it. A serial port (a tty) is set raw 8N1 at 3,000,000 baud and the frames
-// are written at --fps, once or --loop'ed; any other file (a regular file, a FIFO) gets the
-// packets once, back to back, all or nothing.
+// with one line naming it. Every frame is shaded as the bitstream was built: --shading, or the
+// first scene's shading.mode, which the others must share. A serial port (a tty) is set raw 8N1
+// at 3,000,000 baud and the frames are written at --fps, once or --loop'ed; any other file (a
+// regular file, a FIFO) gets the packets once, back to back, all or nothing.
 #pragma once
 
 #include <string>
@@ -27,6 +28,7 @@ struct StreamArgs {
   bool loop = false;                // repeat the frames until interrupted (a serial port only)
   int bank_words = 0;               // the board's BankWords; 0: as `board build` sizes the first scene's
   int slots = 2;                    // the line buffer's slots (the beam check)
+  std::string shading;              // "gouraud" or "phong" for every frame; empty: each scene's shading.mode
 };
 
 // Registers `stream` under the `board` subcommand; returns it.

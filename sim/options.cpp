@@ -169,6 +169,22 @@ CLI::Option* add_name_list(CLI::App* app, const std::string& name, std::vector<s
   return o;
 }
 
+CLI::Option* add_shading(CLI::App* app, std::string& target, const std::string& help) {
+  return app->add_option("--shading", target, help)
+      ->check(CLI::Validator(
+          [](std::string& s) {
+            return parse_shading_mode(s) ? std::string()
+                                         : "unknown shading mode " + in_quotes(s) + " (gouraud, phong)";
+          },
+          "gouraud|phong"));
+}
+
+BuildOptions shading_options(const std::string& name) {
+  BuildOptions opt;
+  if (!name.empty()) opt.shading = parse_shading_mode(name);
+  return opt;
+}
+
 void parse_shard(const std::string& option, const std::string& text, long long& i, long long& n) {
   const std::size_t slash = text.find('/');
   const auto digits = [](const std::string& s) {

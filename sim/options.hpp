@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "scene.hpp"
+
 namespace watkins::cli {
 
 // A real number, finite, in [lo, hi] (CLI::Range alone lets NaN through).
@@ -33,6 +35,12 @@ CLI::Option* add_int_list(CLI::App* app, const std::string& name, std::vector<in
                           int lo, int hi);
 CLI::Option* add_name_list(CLI::App* app, const std::string& name, std::vector<std::string>& target,
                            const std::string& help, const std::vector<std::string>& allowed);
+
+// --shading: a pipeline's name, "gouraud" or "phong" (parse_shading_mode's); anything else is
+// "--shading: unknown shading mode "x" (gouraud, phong)". Not given: the scene's shading.mode.
+CLI::Option* add_shading(CLI::App* app, std::string& target, const std::string& help);
+// The scene's build options that --shading `name` sets (none when `name` is empty).
+BuildOptions shading_options(const std::string& name);
 
 // `i/N`: two decimal integers, 0 <= i < N; anything else (extra fields, signs, spaces) is refused
 // (UsageError naming `option`).

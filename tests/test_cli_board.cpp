@@ -1,8 +1,9 @@
 // `watkins board check` as users run it: the default scene's report and exit 0, a native scene
 // too heavy for the beam named line by line with exit 4, either micro-architecture on either
-// board, and sizes and options refused.
+// board, --shading on every board subcommand, and sizes and options refused.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 #include "cli_run.hpp"
@@ -90,6 +91,49 @@ TEST(CliBoard, OverdrawTakesTwoLanesOnTheIcebreaker) {
   // The default scene needs one lane.
   r = run_cli("board check " WATKINS_SOURCE_DIR "/scenes/default.json --board icebreaker");
   EXPECT_NE(r.output.find("compact top, edge record"), std::string::npos) << r.output;
+}
+
+// --shading on the board subcommands: the default scene shaded by Phong is sized, banked, timed
+// and packed as Phong (190-bit edge records, the material table); on the iCEBreaker's compact top
+// the deadline is proven by the compact cycle model where that model times Phong frames, and
+// refused in one line naming why where it does not. A name that is no pipeline is one line, exit
+// 2, and no file written, on every subcommand.
+TEST(CliBoard, ShadingOnEverySubcommand) {
+  ScratchDir dir;
+  const std::string probe = dir.write("probe", "");
+  const std::string here = probe.substr(0, probe.rfind('/'));
+  const std::string scene = WATKINS_SOURCE_DIR "/scenes/default.json";
+  CliRun r = run_cli("board check " + scene + " --shading phong");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("shading phong, 79 polygons"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("pipelined top, edge record 190 bits"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("missed        0 lines"), std::string::npos) << r.output;
+  r = run_cli("board image " + scene + " --shading phong -o phong.hex", here);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("words of 190 bits (278 edge records, 2 materials)"), std::string::npos) << r.output;
+  r = run_cli("board stream " + scene + " --shading phong --port packets.bin", here);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("edge record 190 bits"), std::string::npos) << r.output;
+  EXPECT_TRUE(dir.has("packets.bin"));
+  r = run_cli("board check " + scene + " --shading phong --board icebreaker");
+  if (r.exit_code == 1) {
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_NE(r.output.find("shading phong on the icebreaker board's compact top: no line deadline can be proven"),
+              std::string::npos)
+        << r.output;
+  } else {
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("shading phong, 79 polygons"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("compact top"), std::string::npos) << r.output;
+  }
+  for (const char* sub : {"check", "image -o bad.out", "build -o bad.out --work bad.work", "stream --port bad.out",
+                          "sim --out bad.out"}) {
+    r = run_cli("board " + std::string(sub) + " " + scene + " --shading flat", here);
+    EXPECT_EQ(r.exit_code, 2) << sub << ": " << r.output;
+    EXPECT_EQ(r.output, "watkins: usage: --shading: unknown shading mode \"flat\" (gouraud, phong)\n") << sub;
+    EXPECT_FALSE(dir.has("bad.out")) << sub;
+    EXPECT_FALSE(dir.has("bad.work")) << sub;
+  }
 }
 
 TEST(CliBoard, RefusesOtherSizesAndOptions) {

@@ -9,6 +9,8 @@
 #include "Vulx3s_top___024root.h"
 #include "Vulx3s_top_native.h"
 #include "Vulx3s_top_native___024root.h"
+#include "Vulx3s_top_phong.h"
+#include "Vulx3s_top_phong___024root.h"
 #include "verilated.h"
 
 namespace watkins::board_tb {
@@ -173,16 +175,22 @@ BoardRun run_top(std::unique_ptr<VerilatedContext>& context, const BoardOptions&
 }
 
 TopBuild top_build(BoardTop top) {
-  if (top == BoardTop::Native) return {WATKINS_BOARD_NATIVE_CONFIG, 1, WATKINS_BOARD_BANK_WORDS};
-  return {WATKINS_BOARD_DEFAULT_CONFIG, WATKINS_BOARD_DOUBLING, WATKINS_BOARD_BANK_WORDS};
+  if (top == BoardTop::Native) return {WATKINS_BOARD_NATIVE_CONFIG, ShadingMode::Gouraud, 1, WATKINS_BOARD_BANK_WORDS};
+  if (top == BoardTop::Phong)
+    return {WATKINS_BOARD_PHONG_CONFIG, ShadingMode::Phong, WATKINS_BOARD_DOUBLING, WATKINS_BOARD_BANK_WORDS};
+  return {WATKINS_BOARD_DEFAULT_CONFIG, ShadingMode::Gouraud, WATKINS_BOARD_DOUBLING, WATKINS_BOARD_BANK_WORDS};
 }
 
 BoardBench::BoardBench(BoardTop top) : top_(top), context_(std::make_unique<VerilatedContext>()) {}
 BoardBench::~BoardBench() = default;
 
 BoardRun BoardBench::run(const BoardOptions& options) {
-  return top_ == BoardTop::Native ? run_top<Vulx3s_top_native>(context_, options)
-                                  : run_top<Vulx3s_top>(context_, options);
+  switch (top_) {
+    case BoardTop::Native: return run_top<Vulx3s_top_native>(context_, options);
+    case BoardTop::Phong: return run_top<Vulx3s_top_phong>(context_, options);
+    case BoardTop::Default: break;
+  }
+  return run_top<Vulx3s_top>(context_, options);
 }
 
 }  // namespace watkins::board_tb

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "image.hpp"
+#include "shading_mode.hpp"
 
 class VerilatedContext;
 
@@ -80,16 +81,19 @@ struct BoardRun {
   double wall_seconds = 0;
 };
 
-// The two Verilated board tops (testbench/board/CMakeLists.txt): the default scene's sized
-// configuration doubled (Vulx3s_top: Doubling 2, bank 0 from the build's default_bank.mem), and
-// a 640 x 480 native configuration (Vulx3s_top_native: tests/board/native.gouraud.json, Doubling
-// 1, bank 0 from +watkins_bank only).
-enum class BoardTop { Default, Native };
+// The three Verilated board tops (testbench/board/CMakeLists.txt): the default scene's sized
+// configuration doubled (Vulx3s_top: Doubling 2, bank 0 from the build's default_bank.mem); a
+// 640 x 480 native configuration (Vulx3s_top_native: tests/board/native.gouraud.json, Doubling
+// 1, bank 0 from +watkins_bank only); the default scene's sized Phong configuration doubled
+// (Vulx3s_top_phong: scenes/sized/default.phong.json, Phong = 1, Doubling 2, bank 0 from
+// +watkins_bank only).
+enum class BoardTop { Default, Native, Phong };
 
 // What a Verilated top was built for: the configuration file its -G list came from (its path in
-// the source tree), its Doubling and its BankWords.
+// the source tree), the shading its Phong parameter draws, its Doubling and its BankWords.
 struct TopBuild {
   std::string config;
+  ShadingMode shading = ShadingMode::Gouraud;
   int doubling = 2;
   int bank_words = 512;
 };

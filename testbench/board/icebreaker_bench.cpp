@@ -13,6 +13,10 @@
 #include "Vicebreaker_top___024root.h"
 #include "Vicebreaker_top_pipelined.h"
 #include "Vicebreaker_top_pipelined___024root.h"
+#ifdef WATKINS_ICEBREAKER_PHONG_CONFIG
+#include "Vicebreaker_top_phong.h"
+#include "Vicebreaker_top_phong___024root.h"
+#endif
 #include "verilated.h"
 
 namespace watkins::board_tb {
@@ -114,17 +118,46 @@ IcebreakerRun run_top(std::unique_ptr<VerilatedContext>& context, const Icebreak
 
 }  // namespace
 
+bool top_built(IcebreakerTop top) {
+#ifdef WATKINS_ICEBREAKER_PHONG_CONFIG
+  (void)top;
+  return true;
+#else
+  return top != IcebreakerTop::Phong;
+#endif
+}
+
 TopBuild top_build(IcebreakerTop top) {
-  return {top == IcebreakerTop::Pipelined ? WATKINS_ICEBREAKER_PIPELINED_CONFIG : WATKINS_ICEBREAKER_CONFIG, 2,
-          WATKINS_ICEBREAKER_BANK_WORDS};
+  switch (top) {
+    case IcebreakerTop::Compact: break;
+    case IcebreakerTop::Pipelined:
+      return {WATKINS_ICEBREAKER_PIPELINED_CONFIG, ShadingMode::Gouraud, 2, WATKINS_ICEBREAKER_BANK_WORDS};
+    case IcebreakerTop::Phong:
+#ifdef WATKINS_ICEBREAKER_PHONG_CONFIG
+      return {WATKINS_ICEBREAKER_PHONG_CONFIG, ShadingMode::Phong, 2, WATKINS_ICEBREAKER_BANK_WORDS};
+#else
+      throw std::logic_error("icebreaker bench: this build has no Phong top (WATKINS_BOARD_ICEBREAKER_PHONG_CONFIG)");
+#endif
+  }
+  return {WATKINS_ICEBREAKER_CONFIG, ShadingMode::Gouraud, 2, WATKINS_ICEBREAKER_BANK_WORDS};
 }
 
 IcebreakerBench::IcebreakerBench(IcebreakerTop top) : top_(top), context_(std::make_unique<VerilatedContext>()) {}
 IcebreakerBench::~IcebreakerBench() = default;
 
 IcebreakerRun IcebreakerBench::run(const IcebreakerOptions& options) {
-  return top_ == IcebreakerTop::Pipelined ? run_top<Vicebreaker_top_pipelined>(context_, options)
-                                          : run_top<Vicebreaker_top>(context_, options);
+  switch (top_) {
+    case IcebreakerTop::Pipelined: return run_top<Vicebreaker_top_pipelined>(context_, options);
+    case IcebreakerTop::Phong:
+#ifdef WATKINS_ICEBREAKER_PHONG_CONFIG
+      return run_top<Vicebreaker_top_phong>(context_, options);
+#else
+      (void)top_build(top_);  // throws: not built
+      break;
+#endif
+    case IcebreakerTop::Compact: break;
+  }
+  return run_top<Vicebreaker_top>(context_, options);
 }
 
 }  // namespace watkins::board_tb

@@ -1,10 +1,11 @@
 // The iCEBreaker bench: rtl/board/icebreaker_top Verilated (--cc, the PLL, the I/O cells and the
-// SPRAMs as the stand-ins of testbench/board/primitives/) twice, each at the default scene's sized
+// SPRAMs as the stand-ins of testbench/board/primitives/), each top at the default scene's sized
 // configuration, Doubling 2, the scene bank copied from the SPI flash model (spi_flash.hpp) holding
 // the options' flash image at SpramBank::FlashAddress: Vicebreaker_top built compact
-// (tests/configs/compact_default.gouraud.json: Compact = 1, what the UP5K holds) and
+// (tests/configs/compact_default.gouraud.json: Compact = 1, what the UP5K holds),
 // Vicebreaker_top_pipelined (scenes/sized/default.gouraud.json: the pipelined blocks, the same
-// board logic around another timing). One clock (docs/reference/board.md, "iCEBreaker"):
+// board logic around another timing) and, where the build names its configuration,
+// Vicebreaker_top_phong (IcebreakerTop::Phong). One clock (docs/reference/board.md, "iCEBreaker"):
 // clock m is its m-th rising edge, the first at m = 0; each clock is two eval()s, the rising edge
 // and the falling edge (where dvi_clk rises). LOCK is high and the button up from the start. The
 // bench records, per clock:
@@ -28,7 +29,10 @@ class VerilatedContext;
 
 namespace watkins::board_tb {
 
-enum class IcebreakerTop { Compact, Pipelined };
+// Phong: icebreaker_top with Phong = 1 at the configuration file the build names
+// (WATKINS_BOARD_ICEBREAKER_PHONG_CONFIG, testbench/board/CMakeLists.txt; its "compact" says
+// which blocks), Vicebreaker_top_phong; a build that names none has no such top (top_built).
+enum class IcebreakerTop { Compact, Pipelined, Phong };
 
 struct IcebreakerOptions {
   std::vector<std::uint8_t> flash;  // the flash's bytes from SpramBank::FlashAddress on (flash_image)
@@ -46,7 +50,11 @@ struct IcebreakerRun {
   long long flash_bad_commands = 0;  // commands other than Read Data and Release Power-down
 };
 
-// The configuration file, Doubling and BankWords the top was built with.
+// Whether this build has the top (Compact and Pipelined always; Phong when the build names its
+// configuration).
+bool top_built(IcebreakerTop top);
+// The configuration file, shading, Doubling and BankWords the top was built with
+// (std::logic_error for a top not built).
 TopBuild top_build(IcebreakerTop top);
 
 class IcebreakerBench {

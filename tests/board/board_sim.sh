@@ -1,19 +1,23 @@
 #!/usr/bin/env bash
-# ctest board_sim_<board> (label board): `watkins board sim --frames 2` of the default scene on the
-# Verilated board top. Both rendered frames report 0 missed lines and equal the model's image, the
+# ctest board_sim_<board>[_phong] (label board): `watkins board sim --frames 2` of the default scene
+# on the Verilated board top built for SHADING (gouraud when not given; phong: --shading phong, the
+# Phong top). Both rendered frames report 0 missed lines and equal the model's image, the
 # run exits 0, and frame_000.png and frame_001.png are 640 x 480 PNGs. A scene that does not fit
 # the top's configuration (scenes/teapot.json: more polygons than the polygon id holds) is one
 # error line naming what does not fit, exit 1, and no folder of frames. On the iCEBreaker a scene
 # built to miss exits 4 with its missed lines counted and its frame written.
-#   board_sim.sh WATKINS SOURCE_DIR WORK_DIR BOARD
+#   board_sim.sh WATKINS SOURCE_DIR WORK_DIR BOARD [SHADING]
 set -euo pipefail
-watkins=$1 src=$2 work=$3 board=$4
+watkins=$1 src=$2 work=$3 board=$4 shading=${5:-gouraud}
 rm -rf "$work"
 mkdir -p "$work"
-fail() { echo "board_sim_$board: $*"; cat "$work/out.txt"; exit 1; }
+name=board_sim_$board$([ "$shading" = gouraud ] || echo "_$shading")
+fail() { echo "$name: $*"; cat "$work/out.txt"; exit 1; }
 
-"$watkins" board sim --board "$board" --frames 2 --out "$work/frames" > "$work/out.txt" 2>&1 || fail "exit $?"
+"$watkins" board sim --board "$board" --shading "$shading" --frames 2 --out "$work/frames" > "$work/out.txt" 2>&1 ||
+  fail "exit $?"
 cat "$work/out.txt"
+grep -qE "^scene +.* shading $shading, " "$work/out.txt" || fail "the scene is not shaded $shading"
 for f in 0 1; do
   grep -qE "^frame $f +0 missed lines, equals the model's image; " "$work/out.txt" ||
     fail "frame $f: not 0 missed lines and equal to the model"
@@ -26,7 +30,7 @@ done
 grep -qE "^total +2 frames: 0 missed lines, 2 equal the model's image; " "$work/out.txt" || fail "no total line"
 
 rc=0
-"$watkins" board sim "$src/scenes/teapot.json" --board "$board" --frames 1 --out "$work/teapot" \
+"$watkins" board sim "$src/scenes/teapot.json" --board "$board" --shading "$shading" --frames 1 --out "$work/teapot" \
   > "$work/teapot.txt" 2>&1 || rc=$?
 [ "$rc" -eq 1 ] || { cat "$work/teapot.txt"; fail "teapot: exit $rc, not 1"; }
 [ "$(wc -l < "$work/teapot.txt")" -eq 1 ] || { cat "$work/teapot.txt"; fail "teapot: not one line"; }
@@ -35,7 +39,7 @@ grep -q "does not fit the $board board top .*polygon" "$work/teapot.txt" ||
 [ ! -e "$work/teapot" ] || fail "teapot: the folder of frames was created"
 # On the iCEBreaker, a scene built to miss (tests/board/miss_doubled.json): exit 4, the frame's
 # missed lines counted, the frame written.
-if [ "$board" = icebreaker ]; then
+if [ "$board" = icebreaker ] && [ "$shading" = gouraud ]; then
   rc=0
   "$watkins" board sim "$src/tests/board/miss_doubled.json" --board "$board" --frames 1 --out "$work/miss" \
     > "$work/miss.txt" 2>&1 || rc=$?
@@ -44,4 +48,4 @@ if [ "$board" = icebreaker ]; then
     { cat "$work/miss.txt"; fail "miss_doubled: no missed lines reported"; }
   [ -s "$work/miss/frame_000.png" ] || fail "miss_doubled: no frame_000.png"
 fi
-echo "board_sim_$board: OK"
+echo "$name: OK"

@@ -2,11 +2,12 @@
 // the default scene at its sized configuration (scenes/sized/default.gouraud.json) from bank 0,
 // 320 x 240 doubled to 640 x 480 at 60 Hz. Two video frames after the first request equal the
 // model's image bit for bit and each other, the encoders' inputs follow the 800 x 525 timing on
-// every pixel clock, and no line misses its deadline. A 640 x 480 native scene built to miss
-// (tests/board/miss.json at tests/board/native.gouraud.json, Doubling 1) shows missed lines, the
-// same ones every frame, and the model's pixels on every other line; one whose frame outlasts a
-// video frame (tests/board/slow.json) makes the frame player wait for the frame before to leave.
-// Both runs equal the cycle model's beam schedule line for line (completion edges, missed lines).
+// every pixel clock, and no line misses its deadline; the same scene shaded by Phong on the Phong
+// top (scenes/sized/default.phong.json) equals the model's Phong image. A 640 x 480 native scene
+// built to miss (tests/board/miss.json at tests/board/native.gouraud.json, Doubling 1) shows
+// missed lines, the same ones every frame, and the model's pixels on every other line; one whose
+// frame outlasts a video frame (tests/board/slow.json) makes the frame player wait for the frame
+// before to leave. The runs equal the cycle model's beam schedule line for line (completion edges, missed lines).
 // WATKINS_BOARD_PNG=FILE writes the captured frame of the default scene as a PNG
 // (docs/results/images/board_default.png); WATKINS_BOARD_LINES=FILE writes every rendered line's
 // completion (pipeline clocks from its frame's start pulse) and every missed line as CSV.
@@ -42,10 +43,10 @@ struct Scene {
   Image model;
 };
 
-Scene prepare_scene(const std::string& path, const std::string& config_path) {
+Scene prepare_scene(const std::string& path, const std::string& config_path, const BuildOptions& opt = {}) {
   const Config config = load_config(config_path);
   Scene s;
-  s.frame = prepare(load_scene(path), config);
+  s.frame = prepare(load_scene(path, opt), config);
   s.model = WatkinsTop(config).render(s.frame);
   return s;
 }
@@ -169,6 +170,36 @@ TEST(Board, DefaultSceneFrameByFrame) {
                                                static_cast<std::streamsize>(bytes.size()));
   }
   if (const char* csv = std::getenv("WATKINS_BOARD_LINES")) write_lines_csv(csv, "default", r, s.frame.height, false);
+}
+
+// The default scene shaded by Phong's eq. (3) at its sized Phong configuration on the Phong top
+// (Vulx3s_top_phong, bank 0 from +watkins_bank): the light, the eye and the material table from
+// the bank's header, each rendered frame the model's image bit for bit, every line on time and
+// done when the beam schedule has it.
+TEST(Board, PhongDefaultSceneFrameByFrame) {
+  BuildOptions phong;
+  phong.shading = ShadingMode::Phong;
+  const Scene s = prepare_scene(WATKINS_SOURCE_DIR "/scenes/default.json",
+                                WATKINS_SOURCE_DIR "/scenes/sized/default.phong.json", phong);
+  ASSERT_EQ(s.frame.shading, ShadingMode::Phong);
+  ASSERT_EQ(top_build(BoardTop::Phong).shading, ShadingMode::Phong);
+  const std::string bank = std::string(WATKINS_BOARD_WORK_DIR) + "/phong_bank." + std::to_string(::getpid()) + ".mem";
+  write_bank(s, bank);
+  BoardBench bench(BoardTop::Phong);
+  BoardOptions opt;
+  opt.bank_file = bank;
+  opt.record_video = false;
+  const BoardRun r = bench.run(opt);
+  std::remove(bank.c_str());
+  std::printf("board bench (Phong): %s\n", run_summary(r).c_str());
+  ASSERT_EQ(r.frames.size(), 3u);
+  const Image want = doubled(s.model, Doubling);
+  EXPECT_EQ(pixel_mismatches(r.frames[1], want), 0) << "video frame 1 against the model";
+  EXPECT_EQ(pixel_mismatches(r.frames[2], want), 0) << "video frame 2 against the model";
+  EXPECT_EQ(r.missed_count, 0);
+  EXPECT_TRUE(r.missed.empty());
+  EXPECT_FALSE(r.overflow);
+  expect_model_schedule(r, board::beam_schedule(s.frame, s.frame.config), 2);
 }
 
 TEST(Board, SceneThatMissesItsDeadline) {

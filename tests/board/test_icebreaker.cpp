@@ -1,7 +1,8 @@
 // The iCEBreaker board top on its Verilated bench (testbench/board/icebreaker_bench.hpp), built
 // compact (tests/configs/compact_default.gouraud.json, what the UP5K holds) and pipelined
-// (scenes/sized/default.gouraud.json: the same board logic around another timing): the default
-// scene at the sized configuration, 320 x 240 doubled to 640 x 480 at 60 Hz on the 12-bit DVI Pmod,
+// (scenes/sized/default.gouraud.json: the same board logic around another timing), and with
+// Phong = 1 where the build names its configuration (its frames the model's Phong image): the
+// default scene at the sized configuration, 320 x 240 doubled to 640 x 480 at 60 Hz on the 12-bit DVI Pmod,
 // one 25.125 MHz clock, the scene copied into the SPRAMs from the SPI flash model holding the bank
 // as `watkins board build` writes it (the whole bank read, no other command). Two video frames after the
 // first request equal the model's image, each 8-bit level truncated to its top four bits as the
@@ -45,14 +46,14 @@ struct Scene {
   Image model;  // as the Pmod shows it: each 8-bit level's top four bits
 };
 
-const char* config_of(IcebreakerTop top) {
-  return top == IcebreakerTop::Compact ? WATKINS_ICEBREAKER_CONFIG : WATKINS_ICEBREAKER_PIPELINED_CONFIG;
-}
-
+// The scene shaded as the top was built (its configuration and its Phong parameter).
 Scene prepare_scene(const std::string& path, IcebreakerTop top) {
-  const Config config = load_config(config_of(top));
+  const TopBuild built = top_build(top);
+  const Config config = load_config(built.config);
+  BuildOptions opt;
+  opt.shading = built.shading;
   Scene s;
-  s.frame = prepare(load_scene(path), config);
+  s.frame = prepare(load_scene(path, opt), config);
   s.model = board::pmod_levels(WatkinsTop(config).render(s.frame));
   return s;
 }
@@ -204,6 +205,11 @@ TEST(Icebreaker, CompactDefaultSceneFrameByFrame) { default_scene_frame_by_frame
 TEST(Icebreaker, CompactSceneThatMissesItsDeadline) { scene_that_misses_its_deadline(IcebreakerTop::Compact); }
 TEST(Icebreaker, PipelinedDefaultSceneFrameByFrame) { default_scene_frame_by_frame(IcebreakerTop::Pipelined); }
 TEST(Icebreaker, PipelinedSceneThatMissesItsDeadline) { scene_that_misses_its_deadline(IcebreakerTop::Pipelined); }
+// The Phong top, where the build has one (WATKINS_BOARD_ICEBREAKER_PHONG_CONFIG).
+TEST(Icebreaker, PhongDefaultSceneFrameByFrame) {
+  if (!top_built(IcebreakerTop::Phong)) GTEST_SKIP() << "this build has no Verilated iCEBreaker Phong top";
+  default_scene_frame_by_frame(IcebreakerTop::Phong);
+}
 
 }  // namespace
 }  // namespace watkins::board_tb
