@@ -27,8 +27,7 @@ void walk_scan_lines(const std::vector<EdgeRecord>& edges, int y_begin, int y_en
       if (!active.insert(edges[next]))
         throw CapacityError("active-edge list overflow on scan line " + std::to_string(y) +
                             " (capacity " + std::to_string(capacity) + ")");
-    segments.clear();
-    former.pair(active.edges(), segments);
+    former.pair_line(active.edges(), segments);
     visit(ScanLine{y, entered, active, segments});
     active.advance();
   }

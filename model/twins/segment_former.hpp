@@ -27,6 +27,10 @@ class SegmentFormer {
   // Appends one line's segments to `out`. The open table is kept between lines (indexed by
   // polygon id, left empty after each line), so a frame allocates it once.
   void pair(const std::vector<ActiveEdge>& x_ordered, std::vector<Segment>& out);
+  // The same, except that `line` becomes the line's segments (not appended to): its elements
+  // are overwritten in place, so a walk reusing one vector line after line initializes only the
+  // room a line needs beyond the line before it.
+  void pair_line(const std::vector<ActiveEdge>& x_ordered, std::vector<Segment>& line);
   // One line with a fresh table.
   static void form(const std::vector<ActiveEdge>& x_ordered, std::vector<Segment>& out) {
     SegmentFormer former;
@@ -34,6 +38,9 @@ class SegmentFormer {
   }
 
  private:
+  template <class Poly, class Close>
+  void pair_edges(std::size_t n, Poly&& poly_of, Close&& close);
+
   std::vector<int> open_;  // polygon id -> index of its unpaired edge in x_ordered, or -1
 };
 

@@ -102,6 +102,7 @@ class FrameLine {
   // Pixels [x0, x1) may be written (a span's).
   void touch(int x0, int x1) { lo_ = std::min(lo_, x0), hi_ = std::max(hi_, x1); }
   std::uint64_t tie_bits(int poly) const { return static_cast<std::uint32_t>(poly) & poly_key_mask_; }
+  std::uint32_t tie_mask() const { return poly_key_mask_; }  // tie_bits(poly) = poly & tie_mask()
   static std::uint64_t key(std::uint32_t depth, std::uint64_t tie_bits) { return (std::uint64_t{depth} << 32) | tie_bits; }
   bool wins_key(int x, std::uint64_t key) const { return key < key_[static_cast<std::size_t>(x)]; }
   // A winner: its key, shade, coverage and polygon (the shade alone when Phong shades later).
@@ -177,6 +178,13 @@ struct NormalReading {
   int shift[3] = {};
 };
 
+// What a run of spans drawn by SpanKernels::draw_run adds to its line: fragments, winners, and
+// the pixels [lo, hi) its spans cover (FrameLine::touch).
+struct SpanRun {
+  long long fragments = 0, visible = 0;
+  int lo = 0, hi = 0;
+};
+
 struct SpanKernels {
   long long (*draw)(const GouraudSpan&, const FrameLine::Row&) = nullptr;  // nullptr: the scalar loop
   void (*empty)(std::uint64_t* keys, int lo, int hi) = nullptr;
@@ -184,6 +192,13 @@ struct SpanKernels {
   // the four slots side by side, for a line's n segments at once (independent setups overlap in
   // the processor): span k's x0, x1, poly, value and step and its outcome. nullptr: none.
   void (*setup)(const Segment*, std::size_t n, const GouraudSetupConsts&, GouraudSpan*, FusedSetup*) = nullptr;
+  // Spans i .. of a line after the fused setup, in order, while it drew them (Span: draw's
+  // arithmetic and stores, the frame's readings held across the spans) or found no pixel
+  // (Empty); returns the index of the first General span (or n), and adds the drawn spans'
+  // fragments, winners and pixels to `run`. nullptr: each span through draw.
+  std::size_t (*draw_run)(const GouraudSpan* spans, const FusedSetup* got, std::size_t i, std::size_t n,
+                          const GouraudSpan& readings, std::uint32_t tie_mask, const FrameLine::Row& out,
+                          SpanRun& run) = nullptr;
   // A deferred Phong line's read-out: each covered pixel of keys [lo, hi) (key not Empty) gets
   // the shade of normal[x] and material[x] in rgb[3x..3x+2], as PhongFrame::shade gives it.
   // nullptr: the scalar loop.
@@ -257,6 +272,69 @@ __attribute__((target(WATKINS_AVX512))) long long gouraud_span_avx512(const Gour
     for (int c = 0; c < 4; ++c) v[c] = _mm512_add_epi64(v[c], stride[c]);
   }
   return won;
+}
+
+// gouraud_span_avx512 over a run of a line's spans (SpanKernels::draw_run): the same lanes and
+// stores, with the readings' halves and shifts held across the spans. Lane k's k·step is summed
+// from step, 2·step and 4·step by lane bits: the same word modulo 2^64 as the product.
+__attribute__((target(WATKINS_AVX512))) std::size_t gouraud_run_avx512(const GouraudSpan* spans, const FusedSetup* got,
+                                                                        std::size_t i, std::size_t n,
+                                                                        const GouraudSpan& readings,
+                                                                        std::uint32_t tie_mask,
+                                                                        const FrameLine::Row& out, SpanRun& run) {
+  __m512i half[4];
+  __m128i shift[4];
+  for (int c = 0; c < 4; ++c) {
+    half[c] = _mm512_set1_epi64(static_cast<long long>(readings.half[c]));
+    shift[c] = _mm_cvtsi32_si128(readings.shift[c]);
+  }
+  const __m128i one = _mm_set1_epi8(1);
+  const __m512i pack = _mm512_load_si512(RgbPackIndex);
+  long long fragments = 0, won = 0;
+  int lo = run.lo, hi = run.hi;
+  for (; i < n; ++i) {
+    const FusedSetup o = got[i];
+    if (o == FusedSetup::General) break;
+    if (o == FusedSetup::Empty) continue;
+    const GouraudSpan& s = spans[i];
+    fragments += s.x1 - s.x0;
+    lo = std::min(lo, s.x0), hi = std::max(hi, s.x1);
+    __m512i v[4], stride[4];
+    for (int c = 0; c < 4; ++c) {
+      const __m512i step = _mm512_set1_epi64(static_cast<long long>(s.step[c]));
+      __m512i k_step = _mm512_maskz_mov_epi64(0xaa, step);
+      k_step = _mm512_mask_add_epi64(k_step, 0xcc, k_step, _mm512_slli_epi64(step, 1));
+      k_step = _mm512_mask_add_epi64(k_step, 0xf0, k_step, _mm512_slli_epi64(step, 2));
+      v[c] = _mm512_add_epi64(_mm512_set1_epi64(static_cast<long long>(s.value[c])), k_step);
+      stride[c] = _mm512_slli_epi64(step, 3);
+    }
+    const __m512i tie = _mm512_set1_epi64(static_cast<long long>(static_cast<std::uint32_t>(s.poly) & tie_mask));
+    const __m256i poly = _mm256_set1_epi32(s.poly);
+    for (int x = s.x0; x < s.x1; x += 8) {
+      const int left = s.x1 - x;
+      const __mmask8 valid = left >= 8 ? __mmask8(0xff) : static_cast<__mmask8>((1u << left) - 1);
+      const __m512i depth = _mm512_srl_epi64(_mm512_add_epi64(v[0], half[0]), shift[0]);
+      const __m512i key = _mm512_or_si512(_mm512_slli_epi64(depth, 32), tie);
+      const __m512i old = _mm512_maskz_loadu_epi64(valid, out.keys + x);
+      const __mmask8 win = _mm512_mask_cmplt_epu64_mask(valid, key, old);
+      if (win) {
+        _mm512_mask_storeu_epi64(out.keys + x, win, key);
+        const __m512i r = _mm512_srl_epi64(_mm512_add_epi64(v[1], half[1]), shift[1]);
+        const __m512i g = _mm512_srl_epi64(_mm512_add_epi64(v[2], half[2]), shift[2]);
+        const __m512i b = _mm512_srl_epi64(_mm512_add_epi64(v[3], half[3]), shift[3]);
+        const __m512i rgb = _mm512_or_si512(r, _mm512_or_si512(_mm512_slli_epi64(g, 8), _mm512_slli_epi64(b, 16)));
+        const std::uint32_t bit = _pdep_u32(win, 0x249249u);
+        const __mmask32 bytes = bit | (bit << 1) | (bit << 2);
+        _mm256_mask_storeu_epi8(out.rgb + 3 * x, bytes, _mm512_castsi512_si256(_mm512_permutexvar_epi8(pack, rgb)));
+        _mm_mask_storeu_epi8(out.covered + x, win, one);
+        _mm256_mask_storeu_epi32(out.owner + x, win, poly);
+        won += __builtin_popcount(win);
+      }
+      for (int c = 0; c < 4; ++c) v[c] = _mm512_add_epi64(v[c], stride[c]);
+    }
+  }
+  run.fragments += fragments, run.visible += won, run.lo = lo, run.hi = hi;
+  return i;
 }
 
 __attribute__((target(WATKINS_AVX512))) void empty_keys_avx512(std::uint64_t* keys, int lo, int hi) {
@@ -796,6 +874,7 @@ SpanKernels span_kernels(SpanPath path) {
   if (path != SpanPath::Avx2 && avx512) {
     SpanKernels wide{gouraud_span_avx512, empty_keys_avx512, gouraud_setups_avx512};
     wide.phong_span = phong_span_avx512;
+    wide.draw_run = gouraud_run_avx512;
     wide.phong_line = __builtin_cpu_supports("avx512cd") ? phong_line_avx512 : phong_line_avx2;
     return wide;
   }
@@ -921,7 +1000,18 @@ LineCounts draw_segments(const FrameSetup& fs, const std::vector<Segment>& segme
     }
     fs.fused_setup(segments.data(), segments.size(), fs.setup_consts, scratch.spans.data(), scratch.setups.data());
   }
+  // Gouraud with a run kernel: the runs of spans the fused setup drew go through it at once; it
+  // stops at a span the setup handed back, which the general path below takes.
+  const bool runs = P == Pipe::Gouraud && fused && fs.kernels.draw_run;
   for (std::size_t i = 0; i < segments.size(); ++i) {
+    if (runs) {
+      SpanRun run{0, 0, line.lo(), line.hi()};
+      i = fs.kernels.draw_run(scratch.spans.data(), scratch.setups.data(), i, segments.size(), fs.readings,
+                              line.tie_mask(), line.row(), run);
+      n.fragments += run.fragments, n.visible += run.visible;
+      line.touch(run.lo, run.hi);
+      if (i == segments.size()) break;
+    }
     const Segment& s = segments[i];
     if (fused && scratch.setups[i] != FusedSetup::General && (P != Pipe::Phong || phong.valid(s.material))) {
       if (scratch.setups[i] == FusedSetup::Span) {
