@@ -442,9 +442,7 @@ module watkins_top #(
   logic [DepthBits-1:0]  sh_depth1 /*verilator public_flat_rd*/;
   watkins_pkg::rgb_t     sh_rgb1   /*verilator public_flat_rd*/;
 
-  if (Phong != 0 && Compact != 0) begin : g_compact_phong
-    // The compact Phong blocks in the pipelined ones' places (the header says why L and E are
-    // stable for the shader): the interpolator's stall is the normalizer's ready_o, a flop.
+  if (Phong != 0) begin : g_phong
     localparam int unsigned UnitBits         = watkins_pkg::UnitBits;
     // {eol, x, depth, poly} rides along
     localparam int unsigned ShadePayloadBits = 1 + LineBits + DepthBits + PolyIdBits;
@@ -456,88 +454,8 @@ module watkins_top #(
       end
     end
 
-    // Material table: flops, read combinationally at the shader's take (the normalizer's output
-    // register holds the material id until then).
-    localparam int unsigned EntryBits = watkins_pkg::RgbBits + 2 * watkins_pkg::MaterialBits
-                                      + watkins_pkg::ShininessBits;
-    logic [EntryBits-1:0] material_q [2**MaterialIdBits];
-    always_ff @(posedge clk_i) begin
-      if (material_we_i)
-        material_q[material_addr_i] <= {material_cp_i, material_d_i, material_w_i, material_n_i};
-    end
-
-    logic [3*UnitBits-1:0]       nm_unit;
-    logic [MaterialIdBits-1:0]   nm_material;
-    logic [ShadePayloadBits-1:0] nm_payload, sh_payload;
-    logic                        nm_valid, nm_ready, nm_ready_next;
-    /* verilator lint_off UNUSEDSIGNAL */
-    logic                        nm_ready_next_unused;  // the interpolator's stall is not a flop
-    /* verilator lint_on UNUSEDSIGNAL */
-    logic                        nm_null_unused;  // a null normal already reads as (0,0,0): cos(i) = 0
-
-    compact_normalizer #(
-      .PayloadBits(MaterialIdBits + ShadePayloadBits),
-      .LookAhead  (1'b1)
-    ) u_normalizer (
-      .clk_i, .rst_ni,
-      .normal_i (fr_normal),
-      .payload_i({fr_material, fr_eol, fr_x, fr_depth, fr_poly}),
-      .valid_i  (fr_valid),
-      .ready_o  (fr_ready),
-      .ready_next_o(nm_ready_next_unused),
-      .unit_o   (nm_unit),
-      .null_o   (nm_null_unused),
-      .payload_o({nm_material, nm_payload}),
-      .valid_o  (nm_valid),
-      .ready_i  (nm_ready),
-      .ready_next_i(nm_ready_next)
-    );
-
-    watkins_pkg::rgb_t                     m_cp;
-    logic [watkins_pkg::MaterialBits-1:0]  m_d, m_w;
-    logic [watkins_pkg::ShininessBits-1:0] m_n;
-    assign {m_cp, m_d, m_w, m_n} = material_q[nm_material];
-
-    compact_phong_shader #(
-      .PayloadBits(ShadePayloadBits),
-      .LookAhead  (1'b1)
-    ) u_phong_shader (
-      .clk_i, .rst_ni,
-      .light_i    (light_q),
-      .eye_i      (eye_q),
-      .normal_i   (nm_unit),
-      .cp_i       (m_cp),
-      .d_i        (m_d),
-      .w_i        (m_w),
-      .shininess_i(m_n),
-      .payload_i  (nm_payload),
-      .valid_i    (nm_valid),
-      .ready_o    (nm_ready),
-      .rgb_o      (sh_rgb),
-      .payload_o  (sh_payload),
-      .valid_o    (sh_valid),
-      .ready_i    (sh_ready),
-      .ready_next_i(sh_ready_next),
-      .ready_next_o(nm_ready_next)
-    );
-    assign {sh_eol, sh_x, sh_depth, sh_poly} = sh_payload;
-    assign {sh_pair, sh_depth1, sh_rgb1} = '0;
-    logic unused_eq2;
-    assign unused_eq2 = ^{eq2_i, fr_attr, fr_pair, fr_depth1, fr_rgb1};
-    `WATKINS_ASSERT(a_phong_no_eq2, start |-> !eq2_i)
-  end else if (Phong != 0) begin : g_phong
-    localparam int unsigned UnitBits         = watkins_pkg::UnitBits;
-    // {eol, x, depth, poly} rides along
-    localparam int unsigned ShadePayloadBits = 1 + LineBits + DepthBits + PolyIdBits;
-    logic [3*UnitBits-1:0] light_q, eye_q;
-    always_ff @(posedge clk_i) begin
-      if (start) begin
-        light_q <= light_i;
-        eye_q   <= eye_i;
-      end
-    end
-
-    // Material table: flops (16 x 50 bits), read combinationally by the shader's input stage.
+    // Material table: flops (16 x 50 bits), read combinationally at the shader's take (the
+    // normalizer's output register holds the material id until then).
     localparam int unsigned EntryBits = watkins_pkg::RgbBits + 2 * watkins_pkg::MaterialBits
                                       + watkins_pkg::ShininessBits;
     logic [EntryBits-1:0] material_q [2**MaterialIdBits];
@@ -559,51 +477,96 @@ module watkins_top #(
     /* verilator lint_on UNUSEDSIGNAL */
     logic                        nm_null_unused;  // a null normal already reads as (0,0,0): cos(i) = 0
 
-    normalizer #(
-      .PayloadBits(MaterialIdBits + ShadePayloadBits),
-      .LookAhead  (1'b1)
-    ) u_normalizer (
-      .clk_i, .rst_ni,
-      .normal_i (fr_normal),
-      .payload_i({fr_material, fr_eol, fr_x, fr_depth, fr_poly}),
-      .valid_i  (fr_valid),
-      .ready_o  (fr_ready),
-      .ready_next_o(nm_ready_next_unused),
-      .unit_o   (nm_unit),
-      .null_o   (nm_null_unused),
-      .payload_o({nm_material, nm_payload}),
-      .valid_o  (nm_valid),
-      .ready_i  (nm_ready),
-      .ready_next_i(nm_ready_next)
-    );
-
     watkins_pkg::rgb_t                     m_cp;
     logic [watkins_pkg::MaterialBits-1:0]  m_d, m_w;
     logic [watkins_pkg::ShininessBits-1:0] m_n;
     assign {m_cp, m_d, m_w, m_n} = material_q[nm_material];
 
-    phong_shader #(
-      .PayloadBits(ShadePayloadBits),
-      .LookAhead  (1'b1)
-    ) u_phong_shader (
-      .clk_i, .rst_ni,
-      .light_i    (light_q),
-      .eye_i      (eye_q),
-      .normal_i   (nm_unit),
-      .cp_i       (m_cp),
-      .d_i        (m_d),
-      .w_i        (m_w),
-      .shininess_i(m_n),
-      .payload_i  (nm_payload),
-      .valid_i    (nm_valid),
-      .ready_o    (nm_ready),
-      .rgb_o      (sh_rgb),
-      .payload_o  (sh_payload),
-      .valid_o    (sh_valid),
-      .ready_i    (sh_ready),
-      .ready_next_i(sh_ready_next),
-      .ready_next_o(nm_ready_next)
-    );
+    // The compact blocks keep the pipelined ones' ports and handshakes (the header says why L
+    // and E are stable for the compact shader).
+    if (Compact != 0) begin : g_compact
+      compact_normalizer #(
+        .PayloadBits(MaterialIdBits + ShadePayloadBits),
+        .LookAhead  (1'b1)
+      ) u_normalizer (
+        .clk_i, .rst_ni,
+        .normal_i (fr_normal),
+        .payload_i({fr_material, fr_eol, fr_x, fr_depth, fr_poly}),
+        .valid_i  (fr_valid),
+        .ready_o  (fr_ready),
+        .ready_next_o(nm_ready_next_unused),
+        .unit_o   (nm_unit),
+        .null_o   (nm_null_unused),
+        .payload_o({nm_material, nm_payload}),
+        .valid_o  (nm_valid),
+        .ready_i  (nm_ready),
+        .ready_next_i(nm_ready_next)
+      );
+
+      compact_phong_shader #(
+        .PayloadBits(ShadePayloadBits),
+        .LookAhead  (1'b1)
+      ) u_phong_shader (
+        .clk_i, .rst_ni,
+        .light_i    (light_q),
+        .eye_i      (eye_q),
+        .normal_i   (nm_unit),
+        .cp_i       (m_cp),
+        .d_i        (m_d),
+        .w_i        (m_w),
+        .shininess_i(m_n),
+        .payload_i  (nm_payload),
+        .valid_i    (nm_valid),
+        .ready_o    (nm_ready),
+        .rgb_o      (sh_rgb),
+        .payload_o  (sh_payload),
+        .valid_o    (sh_valid),
+        .ready_i    (sh_ready),
+        .ready_next_i(sh_ready_next),
+        .ready_next_o(nm_ready_next)
+      );
+    end else begin : g_pipelined
+      normalizer #(
+        .PayloadBits(MaterialIdBits + ShadePayloadBits),
+        .LookAhead  (1'b1)
+      ) u_normalizer (
+        .clk_i, .rst_ni,
+        .normal_i (fr_normal),
+        .payload_i({fr_material, fr_eol, fr_x, fr_depth, fr_poly}),
+        .valid_i  (fr_valid),
+        .ready_o  (fr_ready),
+        .ready_next_o(nm_ready_next_unused),
+        .unit_o   (nm_unit),
+        .null_o   (nm_null_unused),
+        .payload_o({nm_material, nm_payload}),
+        .valid_o  (nm_valid),
+        .ready_i  (nm_ready),
+        .ready_next_i(nm_ready_next)
+      );
+
+      phong_shader #(
+        .PayloadBits(ShadePayloadBits),
+        .LookAhead  (1'b1)
+      ) u_phong_shader (
+        .clk_i, .rst_ni,
+        .light_i    (light_q),
+        .eye_i      (eye_q),
+        .normal_i   (nm_unit),
+        .cp_i       (m_cp),
+        .d_i        (m_d),
+        .w_i        (m_w),
+        .shininess_i(m_n),
+        .payload_i  (nm_payload),
+        .valid_i    (nm_valid),
+        .ready_o    (nm_ready),
+        .rgb_o      (sh_rgb),
+        .payload_o  (sh_payload),
+        .valid_o    (sh_valid),
+        .ready_i    (sh_ready),
+        .ready_next_i(sh_ready_next),
+        .ready_next_o(nm_ready_next)
+      );
+    end
     assign {sh_eol, sh_x, sh_depth, sh_poly} = sh_payload;
     assign {sh_pair, sh_depth1, sh_rgb1} = '0;
     logic unused_eq2;
