@@ -83,11 +83,16 @@ BoardScene load_board_scene(const CheckArgs& a, RunFiles& files) {
                              (a.doubling ? "; --doubling " + std::to_string(doubling) + " needs " + std::to_string(want_h)
                                          : std::string()));
   b.doubling = doubling;
-  b.cfg = a.config.empty() ? size::sized_config(scene) : load_config(a.config);
-  // The UP5K holds the compact micro-architecture only (docs/reference/compact.md): the sized
-  // configuration is built compact there; a --config file says for itself.
-  if (a.config.empty() && board_of(a.board) == board::Board::Icebreaker) b.cfg.compact = true;
-  if (!a.top.empty()) b.cfg.compact = a.top == "compact";
+  // The UP5K holds the compact micro-architecture only (docs/reference/compact.md): the scene is
+  // sized for the compact top there (`watkins size --compact`: a Phong frame at the compact
+  // blocks' narrow formats), and wherever --top compact asks for it; a --config file says for
+  // itself.
+  const bool compact = a.top.empty() ? board_of(a.board) == board::Board::Icebreaker : a.top == "compact";
+  b.cfg = a.config.empty() ? size::sized_config(scene, 1, compact) : load_config(a.config);
+  if (!a.top.empty()) b.cfg.compact = compact;
+  if (!b.cfg.compact && b.cfg.phong == PhongFormat::Narrow)
+    throw std::runtime_error(b.name + ": the configuration's narrow Phong formats (phong.formats) are the compact "
+                             "top's; --top compact draws them");
   if (b.cfg.compact && (b.cfg.smoothing || b.cfg.eq2))
     throw std::runtime_error(b.name + ": the compact top has no " +
                              std::string(b.cfg.smoothing ? "smoother" : "eq. (2) divider") +
@@ -147,11 +152,14 @@ long long report_schedule(const CheckArgs& a, const BoardScene& b) {
                 a.board.c_str(), mhz(t.ticks_per_pixel), mhz(t.ticks_per_pipe), t.ticks_per_pixel / g,
                 t.ticks_per_pipe / g, mhz(t.ticks_per_pixel) * 5, doubling, a.slots);
   }
-  std::printf("config        %s: %s top%s, edge record %d bits, max_active_edges %d, %s\n",
+  std::printf("config        %s: %s top%s, edge record %d bits, max_active_edges %d, %s%s\n",
               a.config.empty() ? "sized (watkins size, bound 1 level)" : a.config.c_str(),
               cfg.compact ? "compact" : "pipelined", cfg.lanes == 2 ? " (2 fragment lanes)" : "",
               cfg.edge_record_bits(scene.shading), cfg.max_active_edges,
-              cfg.smoothing ? "smoother" : "no smoother");
+              cfg.smoothing ? "smoother" : "no smoother",
+              scene.shading != ShadingMode::Phong   ? ""
+              : cfg.phong == PhongFormat::Narrow ? ", narrow Phong formats"
+                                                 : ", the model's Phong formats");
   std::printf("budget        %.0f pipeline clocks per rendered line (%d video line%s of %d pixel clocks)\n",
               s.budget_per_line(), doubling, doubling > 1 ? "s" : "", board::HTotal);
   const board::FrameRun& f0 = s.frames.front();

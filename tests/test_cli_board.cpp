@@ -95,8 +95,9 @@ TEST(CliBoard, OverdrawTakesTwoLanesOnTheIcebreaker) {
 
 // --shading on the board subcommands: the default scene shaded by Phong is sized, banked, timed
 // and packed as Phong (190-bit edge records, the material table); on the iCEBreaker's compact top
-// the deadline is proven by the compact cycle model where that model times Phong frames, and
-// refused in one line naming why where it does not. A name that is no pipeline is one line, exit
+// the scene is sized as `watkins size --compact` sizes it (the narrow Phong formats) and the
+// deadline proven by the compact cycle model where that model times Phong frames, refused in one
+// line naming why where it does not. A name that is no pipeline is one line, exit
 // 2, and no file written, on every subcommand.
 TEST(CliBoard, ShadingOnEverySubcommand) {
   ScratchDir dir;
@@ -107,6 +108,7 @@ TEST(CliBoard, ShadingOnEverySubcommand) {
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("shading phong, 79 polygons"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("pipelined top, edge record 190 bits"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("no smoother, the model's Phong formats"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("missed        0 lines"), std::string::npos) << r.output;
   r = run_cli("board image " + scene + " --shading phong -o phong.hex", here);
   EXPECT_EQ(r.exit_code, 0) << r.output;
@@ -125,6 +127,7 @@ TEST(CliBoard, ShadingOnEverySubcommand) {
     EXPECT_EQ(r.exit_code, 0) << r.output;
     EXPECT_NE(r.output.find("shading phong, 79 polygons"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("compact top"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("narrow Phong formats"), std::string::npos) << r.output;  // as `size --compact`
   }
   for (const char* sub : {"check", "image -o bad.out", "build -o bad.out --work bad.work", "stream --port bad.out",
                           "sim --out bad.out"}) {
