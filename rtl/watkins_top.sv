@@ -95,6 +95,7 @@ module watkins_top #(
   /* verilator lint_on UNUSEDPARAM */
   parameter int          Compact        = 0,  // 1: the compact blocks (no smoother, full frames)
   parameter int unsigned Lanes          = 1,  // fragments per beat of the compact fragment path: 1 or 2
+  parameter int          PhongNarrow    = 0,  // 1 (Compact, Phong): the narrow formats' blocks
   localparam int unsigned XBits    = XIntBits + XFracBits,
   localparam int unsigned ZBits    = DepthIntBits + DepthFracBits,
   localparam int unsigned AttrBits = AttrIntBits + AttrFracBits,
@@ -145,6 +146,9 @@ module watkins_top #(
   end
   if (Lanes != 1 && (Compact == 0 || Lanes != 2)) begin : g_lanes_unsupported
     $error("watkins_top: Lanes must be 1, or 2 with Compact = 1 (the pipelined blocks take one fragment a clock)");
+  end
+  if (PhongNarrow != 0 && (Compact == 0 || Phong == 0)) begin : g_narrow_unsupported
+    $error("watkins_top: PhongNarrow = 1 needs Compact = 1 and Phong = 1 (the pipelined Phong blocks take the model's formats)");
   end
   if (Lanes != 1 && Phong != 0) begin : g_lanes_phong_unsupported
     $error("watkins_top: Lanes = 2 needs Phong = 0 (the compact Phong blocks shade one fragment a beat)");
@@ -485,46 +489,90 @@ module watkins_top #(
     // The compact blocks keep the pipelined ones' ports and handshakes (the header says why L
     // and E are stable for the compact shader).
     if (Compact != 0) begin : g_compact
-      compact_normalizer #(
-        .PayloadBits(MaterialIdBits + ShadePayloadBits),
-        .LookAhead  (1'b1)
-      ) u_normalizer (
-        .clk_i, .rst_ni,
-        .normal_i (fr_normal),
-        .payload_i({fr_material, fr_eol, fr_x, fr_depth, fr_poly}),
-        .valid_i  (fr_valid),
-        .ready_o  (fr_ready),
-        .ready_next_o(nm_ready_next_unused),
-        .unit_o   (nm_unit),
-        .null_o   (nm_null_unused),
-        .payload_o({nm_material, nm_payload}),
-        .valid_o  (nm_valid),
-        .ready_i  (nm_ready),
-        .ready_next_i(nm_ready_next)
-      );
+      // PhongNarrow picks the narrow formats' blocks: the same ports, other values and clocks.
+      if (PhongNarrow != 0) begin : g_narrow
+        compact_normalizer_narrow #(
+          .PayloadBits(MaterialIdBits + ShadePayloadBits),
+          .LookAhead  (1'b1)
+        ) u_normalizer (
+          .clk_i, .rst_ni,
+          .normal_i (fr_normal),
+          .payload_i({fr_material, fr_eol, fr_x, fr_depth, fr_poly}),
+          .valid_i  (fr_valid),
+          .ready_o  (fr_ready),
+          .ready_next_o(nm_ready_next_unused),
+          .unit_o   (nm_unit),
+          .null_o   (nm_null_unused),
+          .payload_o({nm_material, nm_payload}),
+          .valid_o  (nm_valid),
+          .ready_i  (nm_ready),
+          .ready_next_i(nm_ready_next)
+        );
 
-      compact_phong_shader #(
-        .PayloadBits(ShadePayloadBits),
-        .LookAhead  (1'b1)
-      ) u_phong_shader (
-        .clk_i, .rst_ni,
-        .light_i    (light_q),
-        .eye_i      (eye_q),
-        .normal_i   (nm_unit),
-        .cp_i       (m_cp),
-        .d_i        (m_d),
-        .w_i        (m_w),
-        .shininess_i(m_n),
-        .payload_i  (nm_payload),
-        .valid_i    (nm_valid),
-        .ready_o    (nm_ready),
-        .rgb_o      (sh_rgb),
-        .payload_o  (sh_payload),
-        .valid_o    (sh_valid),
-        .ready_i    (sh_ready),
-        .ready_next_i(sh_ready_next),
-        .ready_next_o(nm_ready_next)
-      );
+        compact_phong_shader_narrow #(
+          .PayloadBits(ShadePayloadBits),
+          .LookAhead  (1'b1)
+        ) u_phong_shader (
+          .clk_i, .rst_ni,
+          .light_i    (light_q),
+          .eye_i      (eye_q),
+          .normal_i   (nm_unit),
+          .cp_i       (m_cp),
+          .d_i        (m_d),
+          .w_i        (m_w),
+          .shininess_i(m_n),
+          .payload_i  (nm_payload),
+          .valid_i    (nm_valid),
+          .ready_o    (nm_ready),
+          .rgb_o      (sh_rgb),
+          .payload_o  (sh_payload),
+          .valid_o    (sh_valid),
+          .ready_i    (sh_ready),
+          .ready_next_i(sh_ready_next),
+          .ready_next_o(nm_ready_next)
+        );
+      end else begin : g_model
+        compact_normalizer #(
+          .PayloadBits(MaterialIdBits + ShadePayloadBits),
+          .LookAhead  (1'b1)
+        ) u_normalizer (
+          .clk_i, .rst_ni,
+          .normal_i (fr_normal),
+          .payload_i({fr_material, fr_eol, fr_x, fr_depth, fr_poly}),
+          .valid_i  (fr_valid),
+          .ready_o  (fr_ready),
+          .ready_next_o(nm_ready_next_unused),
+          .unit_o   (nm_unit),
+          .null_o   (nm_null_unused),
+          .payload_o({nm_material, nm_payload}),
+          .valid_o  (nm_valid),
+          .ready_i  (nm_ready),
+          .ready_next_i(nm_ready_next)
+        );
+
+        compact_phong_shader #(
+          .PayloadBits(ShadePayloadBits),
+          .LookAhead  (1'b1)
+        ) u_phong_shader (
+          .clk_i, .rst_ni,
+          .light_i    (light_q),
+          .eye_i      (eye_q),
+          .normal_i   (nm_unit),
+          .cp_i       (m_cp),
+          .d_i        (m_d),
+          .w_i        (m_w),
+          .shininess_i(m_n),
+          .payload_i  (nm_payload),
+          .valid_i    (nm_valid),
+          .ready_o    (nm_ready),
+          .rgb_o      (sh_rgb),
+          .payload_o  (sh_payload),
+          .valid_o    (sh_valid),
+          .ready_i    (sh_ready),
+          .ready_next_i(sh_ready_next),
+          .ready_next_o(nm_ready_next)
+        );
+      end
     end else begin : g_pipelined
       normalizer #(
         .PayloadBits(MaterialIdBits + ShadePayloadBits),

@@ -109,6 +109,7 @@ const Design kDesigns[] = {
     {"compact_phong_shader", "compact_phong_shader", ShadingMode::Phong, false, "phong_shader"},
     // The compact Phong blocks at the narrow formats (docs/reference/compact-phong.md).
     {"compact_normalizer_narrow", "compact_normalizer_narrow", ShadingMode::Phong, false, "normalizer"},
+    {"compact_phong_shader_narrow", "compact_phong_shader_narrow", ShadingMode::Phong, false, "phong_shader"},
     {"top-gouraud", "watkins_top", ShadingMode::Gouraud, true},
     {"top-phong", "watkins_top", ShadingMode::Phong, true},
     {"top-compact", "watkins_top", ShadingMode::Gouraud, true, nullptr, true},
@@ -533,7 +534,8 @@ CLI::App* add_synth_command(CLI::App& app, SynthArgs& a) {
                                         "span_reciprocal, segment_interpolator, normalizer, phong_shader, "
                                         "scanline_buffer, smoother, compact_active_edge_list, compact_segment_former, "
                                         "compact_segment_interpolator, compact_scanline_buffer, compact_normalizer, "
-                                        "compact_phong_shader, compact_normalizer_narrow, top-gouraud, top-phong, "
+                                        "compact_phong_shader, compact_normalizer_narrow, compact_phong_shader_narrow, "
+                                        "top-gouraud, top-phong, "
                                         "top-compact, top-compact-phong "
                                         "(default: all)");
   s->add_option("--targets", a.targets, "comma-separated: ice40-up5k, ice40-hx8k, ecp5-85")->capture_default_str();

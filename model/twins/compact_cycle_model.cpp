@@ -8,7 +8,9 @@
 #include <vector>
 
 #include "compact_active_edge_list_timing.hpp"
+#include "compact_normalizer_narrow_timing.hpp"
 #include "compact_normalizer_timing.hpp"
+#include "compact_phong_shader_narrow_timing.hpp"
 #include "compact_phong_shader_timing.hpp"
 #include "compact_scanline_buffer_timing.hpp"
 #include "compact_segment_former_timing.hpp"
@@ -75,8 +77,11 @@ CyclePrediction predict_compact_cycles(const Frame& frame, const Config& cfg, co
   }
   // The Phong blocks' schedules count their 5-clock periods from reset whether or not they hold
   // a fragment: idle, only the phase matters, after_reset's clocks modulo the period.
-  CompactNormalizerTiming normalizer;
-  CompactPhongShaderTiming shader;
+  const bool narrow = cfg.phong == PhongFormat::Narrow;  // the narrow formats' blocks
+  CompactScheduleTiming normalizer =
+      narrow ? CompactScheduleTiming(CompactNormalizerNarrowTiming()) : CompactScheduleTiming(CompactNormalizerTiming());
+  CompactScheduleTiming shader =
+      narrow ? CompactScheduleTiming(CompactPhongShaderNarrowTiming()) : CompactScheduleTiming(CompactPhongShaderTiming());
   if (phong)
     for (long long i = 0; i < std::max(opt.after_reset, 0LL) % CompactScheduleTiming::Period; ++i) {
       normalizer.clock(false, true);

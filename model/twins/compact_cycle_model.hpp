@@ -4,7 +4,8 @@
 // SPRAM frame player's), compact_active_edge_list, compact_segment_former
 // straight into compact_segment_interpolator (no segment skid: the interpolator's seg_ready_o is
 // a flop), [Phong: compact_normalizer, the interpolator's stall its ready_o, then
-// compact_phong_shader (compact_normalizer_timing.hpp, compact_phong_shader_timing.hpp)], the
+// compact_phong_shader (compact_normalizer_timing.hpp, compact_phong_shader_timing.hpp; at the
+// narrow formats, cfg.phong, their _narrow forms)], the
 // fragment queue (stream_fifo, FragQueueDepth; an entry is a beat of cfg.lanes
 // fragments at most), compact_scanline_buffer and the
 // pixel skid (stream_skid), pixel_ready_i from the consumer. Each twin is the one its unit bench
