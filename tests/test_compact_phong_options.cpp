@@ -11,8 +11,8 @@
 //    The interpolator feeds the queue and the buffer's writer a beat a clock.
 //  - the same at two fragment lanes ("def5-2lane"): the interpolator's beats and the buffer's
 //    writer carry up to two fragments (their Lanes = 2 twins), the read-out as above.
-//  - the same with 4-clock periods ("deferred4"): the two blocks' schedules at 4 clocks a period,
-//    their periods and load phases unchanged.
+//  - the same with 4-clock periods ("deferred4", and at two lanes "def4-2lane"): the two blocks'
+//    schedules at 4 clocks a period, their periods and load phases unchanged.
 //  - early depth test ("early-z"): each fragment's key is compared with its pixel's key as written
 //    so far (the depth RAM of its line's bank) in the clock the interpolator offers it; a
 //    fragment that loses is dropped in that clock, one that wins and each marker go on through the
@@ -327,6 +327,8 @@ TEST(CompactPhongOptions, LinesAgainstTheBeam) {
     row("deferred4", d4.shaded, d4.cycles, d4.takes);
     const OptionRun d52 = simulate(p, cfg, Option::Deferred, 5, 2, beats, covered);
     row("def5-2lane", d52.shaded, d52.cycles, d52.takes);
+    const OptionRun d42 = simulate(p, cfg, Option::Deferred, 4, 2, beats, covered);
+    row("def4-2lane", d42.shaded, d42.cycles, d42.takes);
     const OptionRun e = simulate(p, cfg, Option::EarlyDepth, 5, 1, beats, covered);
     row("early-z", e.shaded, e.cycles, e.takes);
     EXPECT_EQ(d5.shaded, n_covered) << stem;
