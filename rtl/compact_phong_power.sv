@@ -1,5 +1,5 @@
-// compact_phong_power: cos(s)^n of the narrow Phong formats, phong_power's values (twin:
-// PhongShader::power_narrow) in a compact shader's fixed schedule of 5 clocks per input: one
+// compact_phong_power: cos(s)^n of the narrow Phong formats (twin: PhongShader::power_narrow;
+// docs/reference/compact-phong.md) in a compact shader's fixed schedule of 5 clocks per input: one
 // 16 x 16 multiplier (MAC16) for the three products (log interpolation, n lc, exp interpolation,
 // in phases 3, 0 and 1 of successive periods), the log and the exp table in one block RAM each,
 // each read twice per input (rows i and i + 1 in phases 1, 2 and 3, 4). The parent's schedule
@@ -9,9 +9,10 @@
 // t + 19 (the whole of its fourth period), valid_o with it. Registered: pow_o, valid_o, every
 // product (operands from registers, the product with its addend in one register); no block-RAM
 // output feeds the multiplier. A value lives at most 5 clocks in its register (the next input
-// writes it 5 clocks later), so fields that wait longer are copied once.
+// writes it 5 clocks later), so fields that wait longer are copied once. The row registers count
+// up between their two reads (no address multiplexer), and LG[i] and EH[i] share one register.
 // The schedule, clock t of an input (t = -1 its take, phase 4; t = 5p + ph after it):
-//   t 0      msb(cs), the log row i, the 8 bits d below it, K = 16 - msb
+//   t -1     from cs_i: msb(cs), the log row i, the 8 bits d below it, K = 16 - msb
 //   t 1, 2   LG[i], LG[i + 1] read (rows i and i + 1 mod 256)
 //   t 3      the multiplier's operands: (LG[i+1] - LG[i]) mod 2^16, d, addend LG[i] 2^8 + 2^7
 //   t 4      lx 2^8 = the product plus the addend
@@ -37,7 +38,7 @@ module compact_phong_power (
 );
   localparam int unsigned G = 30;  // fraction bits of the tables' integer algorithms
 
-  // ---------------------------------------------------------------- the tables (phong_power's)
+  // ---------------------------------------------------------------- the tables
   function automatic logic [63:0] isqrt(input logic [63:0] v);
     logic [63:0] rem, root, b;
     rem  = v;
@@ -101,30 +102,31 @@ module compact_phong_power (
   assign p3 = ph_i == 3'd3;
   assign p4 = ph_i == 3'd4;
 
-  // ---------------------------------------------------------------- t -1: the input
-  logic [16:0] cs_q;
-  logic [7:0]  n_q;
-
-  // ---------------------------------------------------------------- t 0: msb, row, fraction
+  // ---------------------------------------------------------------- t -1: msb, row, fraction
+  // Worked out from cs_i at the take, so cs itself is never held.
   logic [4:0]  e;    // msb(cs), 0 for cs = 0
   logic [15:0] x;    // the bits below cs's leading one, left-aligned
   always_comb begin
     e = '0;
     for (int b = 1; b <= 16; b++)
-      if (cs_q[b]) e = 5'(b);
+      if (cs_i[b]) e = 5'(b);
   end
-  assign x = 16'(cs_q << (5'd16 - e));
-  logic [7:0] i0_q, d0_q, n0_q;  // t 0 .. 5
+  assign x = 16'(cs_i << (5'd16 - e));
+  logic [7:0] i0_q, d0_q;  // t -1 .. 3
+  logic [7:0] n_q;         // t -1 .. 0
+  logic [4:0] k_q;
+  logic       z_q;
+  logic [7:0] n0_q;        // t 0 .. 5: the next take rewrites n_q, k_q and z_q at t 4
   logic [4:0] k0_q;
   logic       z0_q;
 
   // ---------------------------------------------------------------- the block RAMs
-  logic [15:0] lg_rd_q, eh_rd_q, lga_q, eha_q;
+  logic [15:0] lg_rd_q, eh_rd_q, ta_q;
   logic [7:0]  i7_q, d7_q;  // the exp row and fraction: t 7 .. 11
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      lg_rd_q <= log_rom[p1 ? i0_q : i0_q + 8'd1];  // LG[i] at t 1, LG[i + 1] at t 2
-      eh_rd_q <= exp_rom[p3 ? i7_q : i7_q + 8'd1];  // EH[i] at t 8, EH[i + 1] at t 9
+      lg_rd_q <= log_rom[i0_q];  // LG[i] at t 1, LG[i + 1] at t 2 (i0_q counts up at t 1)
+      eh_rd_q <= exp_rom[i7_q];  // EH[i] at t 8, EH[i + 1] at t 9 (i7_q counts up at t 8)
     end
   end
 
@@ -165,23 +167,27 @@ module compact_phong_power (
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      if (p4 && take_i) begin
-        cs_q <= cs_i;
-        n_q  <= n_i;
-      end
-      if (p0) begin  // t 0
+      if (p4 && take_i) begin  // t -1
         i0_q <= x[15:8];
         d0_q <= x[7:0];
-        k0_q <= 5'd16 - e;
-        n0_q <= n_q;
-        z0_q <= cs_q == 17'd0;
+        k_q  <= 5'd16 - e;
+        n_q  <= n_i;
+        z_q  <= cs_i == 17'd0;
       end
-      if (p2) lga_q <= lg_rd_q;  // t 2: LG[i]
+      if (p0) begin  // t 0
+        k0_q <= k_q;
+        n0_q <= n_q;
+        z0_q <= z_q;
+      end
+      if (p1) i0_q <= i0_q + 8'd1;  // t 1: row i + 1 for t 2's read
+      if (p3) i7_q <= i7_q + 8'd1;  // t 8
+      // One register holds LG[i] (t 2 .. 3) and EH[i] (t 9 .. 11): their lives never meet.
+      if (p2) ta_q <= lg_rd_q;  // t 2: LG[i]
       // The multiplier's operands.
       if (p3) begin  // t 3: the log interpolation
-        ma_q <= lg_rd_q - lga_q;
+        ma_q <= lg_rd_q - ta_q;
         mb_q <= 13'(d0_q);
-        mc_q <= {lga_q, 8'd128};
+        mc_q <= {ta_q, 8'd128};
       end else if (p0) begin  // t 5: n lc
         ma_q <= lc_small ? lc[15:0] : lc[20:5];
         mb_q <= lc_small ? 13'(n0_q) : {n0_q, 5'd0};
@@ -189,7 +195,7 @@ module compact_phong_power (
       end else if (p1) begin  // t 11: the exp interpolation
         ma_q <= slope10_q;
         mb_q <= 13'(d7_q);
-        mc_q <= {eha_q, 8'd128};
+        mc_q <= {ta_q, 8'd128};
       end
       mp_q <= 29'(ma_q) * 29'(mb_q) + 29'(mc_q);
       if (p0) kill5_q <= z0_q || (!lc_small && n0_q > 8'd16);  // t 5
@@ -199,9 +205,9 @@ module compact_phong_power (
         ei7_q   <= mp_q[20:16];
         kill7_q <= kill5_q || mp_q[28:16] > 13'd16;
       end
-      if (p4) eha_q <= eh_rd_q;  // t 9: EH[i]
+      if (p4) ta_q <= eh_rd_q;  // t 9: EH[i]
       if (p0) begin  // t 10
-        slope10_q <= eh_rd_q - eha_q;
+        slope10_q <= eh_rd_q - ta_q;
         ei10_q    <= ei7_q;
         kill10_q  <= kill7_q;
       end
