@@ -149,7 +149,10 @@ module compact_phong_power (
   // ---------------------------------------------------------------- t 7 .. 14: exp
   logic [4:0]  ei7_q, ei10_q;
   logic        kill7_q, kill10_q;
-  logic [15:0] slope10_q;
+  // Every slope of both tables, (T[i+1] - T[i]) mod 2^16, is below 2^9 (LG's at most 369, EH's
+  // 355), so their low 9 bits are the whole slope.
+  logic [8:0]  lg_slope, slope10_q;
+  assign lg_slope = lg_rd_q[8:0] - ta_q[8:0];
   logic [17:0] num_q;
   logic [17:0] sh;
   logic [16:0] r;
@@ -185,7 +188,7 @@ module compact_phong_power (
       if (p2) ta_q <= lg_rd_q;  // t 2: LG[i]
       // The multiplier's operands.
       if (p3) begin  // t 3: the log interpolation
-        ma_q <= lg_rd_q - ta_q;
+        ma_q <= {7'd0, lg_slope};
         mb_q <= 13'(d0_q);
         mc_q <= {ta_q, 8'd128};
       end else if (p0) begin  // t 5: n lc
@@ -193,7 +196,7 @@ module compact_phong_power (
         mb_q <= lc_small ? 13'(n0_q) : {n0_q, 5'd0};
         mc_q <= '0;
       end else if (p1) begin  // t 11: the exp interpolation
-        ma_q <= slope10_q;
+        ma_q <= {7'd0, slope10_q};
         mb_q <= 13'(d7_q);
         mc_q <= {ta_q, 8'd128};
       end
@@ -207,7 +210,7 @@ module compact_phong_power (
       end
       if (p4) ta_q <= eh_rd_q;  // t 9: EH[i]
       if (p0) begin  // t 10
-        slope10_q <= eh_rd_q - ta_q;
+        slope10_q <= eh_rd_q[8:0] - ta_q[8:0];
         ei10_q    <= ei7_q;
         kill10_q  <= kill7_q;
       end
