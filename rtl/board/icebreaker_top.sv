@@ -43,6 +43,7 @@ module icebreaker_top #(
   parameter int unsigned Eq2RecipBits   = watkins_pkg::Eq2RecipBits,
   parameter int          Compact        = 0,
   parameter int unsigned Lanes          = 1,
+  parameter int          PhongNarrow    = 0,    // 1: the compact Phong top's narrow formats
   parameter int unsigned Doubling       = 2,    // 1 or 2
   parameter int unsigned LineSlots      = 2,    // line-buffer lines, a power of two
   parameter int unsigned BankWords      = 512,  // the scene bank's words, a power of two
@@ -266,7 +267,8 @@ module icebreaker_top #(
     .XIntBits(XIntBits), .XFracBits(XFracBits), .DepthIntBits(DepthIntBits), .DepthFracBits(DepthFracBits),
     .AttrIntBits(AttrIntBits), .AttrFracBits(AttrFracBits), .DepthBits(DepthBits), .PolyIdBits(PolyIdBits),
     .MaterialIdBits(MaterialIdBits), .EdgeIdBits(EdgeIdBits), .EdgeOrder(EdgeOrder), .Smoothing(Smoothing),
-    .HasEq2(HasEq2), .Eq2RecipBits(Eq2RecipBits), .Compact(Compact), .Lanes(Lanes)
+    .HasEq2(HasEq2), .Eq2RecipBits(Eq2RecipBits), .Compact(Compact), .Lanes(Lanes),
+    .PhongNarrow(PhongNarrow)
   ) u_watkins_top (
     .clk_i           (clk),
     .rst_ni          (rst_n),
