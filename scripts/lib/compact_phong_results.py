@@ -138,18 +138,21 @@ def read_csv(path, design, target):
 
 
 def head_line(path):
+    """The run's date and its formats, from a .head file (its first line names the commit)."""
     if not os.path.exists(path):
         return "", ""
     lines = open(path).read().splitlines()
-    m = re.search(r"at commit (\w+)", lines[0]) if lines else None
+    m = re.search(r", (\d{4}-\d\d-\d\d \d\d:\d\d UTC)\.$", lines[0]) if lines else None
     formats = next((l.split(": ", 1)[1] for l in lines if l.startswith("Formats: ")), "")
     return (m.group(1) if m else ""), formats
 
 
 def resources(results):
     synth = os.path.join(results, "synth")
-    cp_commit, formats = head_line(os.path.join(synth, "compact_phong.head"))
-    ph_commit, _ = head_line(os.path.join(synth, "phong.head"))
+    cp_date, formats = head_line(os.path.join(synth, "compact_phong.head"))
+    ph_date, _ = head_line(os.path.join(synth, "phong.head"))
+    cp_commit = "`scripts/results compact-phong`, %s (synth/compact_phong.head)" % cp_date
+    ph_commit = "`scripts/synth phong`, %s (synth/phong.head)" % ph_date
     fmt = {"narrow": "narrow Phong formats", "model": "the model's Phong formats (the narrow blocks not in the top yet)"}
     rows = [("Gouraud, UP5K (compact top)", "`top-compact`, `scenes/sized/default.gouraud.json` made compact",
              read_csv(os.path.join(synth, "compact_phong.csv"), "top-compact", "ice40-up5k"), cp_commit),
@@ -158,7 +161,7 @@ def resources(results):
              read_csv(os.path.join(synth, "compact_phong.csv"), "top-compact-phong", "ice40-up5k"), cp_commit),
             ("Phong, ECP5 (pipelined top)", "`top-phong`, `scenes/sized/default.phong.json`",
              read_csv(os.path.join(synth, "phong.csv"), "top-phong", "ecp5-85"), ph_commit)]
-    out = ["| setup | design, configuration | logic cells | LUT4 | FF | DSP | block RAM | other RAM | routed Fmax MHz (constraint) | run at commit |",
+    out = ["| setup | design, configuration | logic cells | LUT4 | FF | DSP | block RAM | other RAM | routed Fmax MHz (constraint) | run (its commit in the .head file's first line) |",
            "|---|---|---|---|---|---|---|---|---|---|"]
     for label, what, r, commit in rows:
         if not r:
@@ -245,8 +248,8 @@ def main():
             "`watkins synth` inside the wrapper that registers every input and output (its flip-flops "
             "included), nextpnr's default seed. The compact tops are run by `scripts/results "
             "compact-phong` (docs/results/synth/compact_phong.csv); the pipelined Phong top on the ECP5 "
-            "comes from `scripts/synth phong` (docs/results/synth/phong.csv, a run of over an hour), "
-            "at the commit the last column names. Where a design does not fit, nextpnr packs it and "
+            "comes from `scripts/synth phong` (docs/results/synth/phong.csv, a run of over an hour); "
+            "the last column names each figure's run. Where a design does not fit, nextpnr packs it and "
             "stops before placing: the cells are the packed count.",
             ""] + resources(a.results) + [
             "",
