@@ -592,6 +592,55 @@ __attribute__((target(WATKINS_AVX512))) void gouraud_setups_avx512(const Segment
   for (std::size_t i = 0; i < n; ++i) got[i] = gouraud_setup_avx512(s[i], k, g[i]);
 }
 
+// gouraud_setup_avx512's checks, products and roundings slot by slot in 64-bit scalars, for the
+// kernels without 64-bit vector multiplies (AVX2's): the same words and the same outcome. The
+// sums that may wrap (the wrap to the slot's word, the last pixel's value, the range checks) are
+// unsigned, as the vector lanes compute them.
+inline FusedSetup gouraud_setup_scalar(const Segment& s, const GouraudSetupConsts& k, GouraudSpan& g) {
+  using u64 = std::uint64_t;
+  const int fx = k.fx;
+  const i64 xe = s.e[fmt::ChanX], xf = s.f[fmt::ChanX];
+  const i64 centre = (i64{1} << fx) - 1 - (i64{1} << (fx - 1));  // first_centre_at_or_after's offset
+  const i64 x_start = std::max<i64>(floor_shift64(xe + centre, fx), 0);
+  const i64 x_end = std::max(std::min<i64>(floor_shift64(xf + centre, fx), k.width), x_start);
+  g.x0 = static_cast<int>(x_start), g.x1 = static_cast<int>(x_end), g.poly = s.poly;
+  if (x_end == x_start) return FusedSetup::Empty;
+  const SpanReciprocal r = SpanReciprocal::of(xf - xe);
+  constexpr int Small = 62 - std::max(fmt::RecipBits, fmt::AlphaBits) - 1;
+  constexpr i64 Limit = i64{1} << Small;
+  const i64 offset = x_start * (i64{1} << fx) + (i64{1} << (fx - 1)) - xe;
+  const int shift = r.p + fmt::RecipBits - fx;  // the step's rounding
+  if (offset >= Limit || shift < 1 || shift > 61 || x_end - x_start > (i64{1} << 21)) return FusedSetup::General;
+  const i64 alpha0 = std::min<i64>(round_shift64(offset * r.recip, r.p + fmt::RecipBits - fmt::AlphaBits),
+                                   i64{1} << fmt::AlphaBits);
+  i64 delta[4];
+  for (int c = 0; c < 4; ++c)
+    if (__builtin_sub_overflow(s.f[fmt::ChanZ + c], s.e[fmt::ChanZ + c], &delta[c]) || delta[c] <= -Limit ||
+        delta[c] >= Limit)
+      return FusedSetup::General;
+  const u64 count = static_cast<u64>(x_end - x_start - 1);
+  u64 value[4], step[4];
+  for (int c = 0; c < 4; ++c) {
+    // Products below 2^61 in magnitude (|delta| < Limit, recip and alpha0 <= 2^24): no overflow.
+    const i64 st = std::clamp<i64>((delta[c] * r.recip + (i64{1} << (shift - 1))) >> shift, -1 - k.step_hi[c], k.step_hi[c]);
+    if (st < -(i64{1} << 41) || st >= (i64{1} << 41)) return FusedSetup::General;
+    const i64 moved = (delta[c] * alpha0 + (i64{1} << (fmt::AlphaBits - 1))) >> fmt::AlphaBits;
+    const u64 w = k.wrap_shift[c];
+    const u64 v = static_cast<u64>(static_cast<i64>((static_cast<u64>(s.e[fmt::ChanZ + c]) + static_cast<u64>(moved)) << w) >> w);
+    const u64 last = v + count * static_cast<u64>(st);
+    const u64 lo = static_cast<u64>(k.read_lo[c]), span = static_cast<u64>(k.read_hi[c]) - lo;
+    if (v - lo > span || last - lo > span) return FusedSetup::General;
+    value[c] = v, step[c] = static_cast<u64>(st);
+  }
+  for (int c = 0; c < 4; ++c) g.value[c] = value[c], g.step[c] = step[c];
+  return FusedSetup::Span;
+}
+
+void gouraud_setups_scalar(const Segment* s, std::size_t n, const GouraudSetupConsts& k, GouraudSpan* g,
+                           FusedSetup* got) {
+  for (std::size_t i = 0; i < n; ++i) got[i] = gouraud_setup_scalar(s[i], k, g[i]);
+}
+
 __attribute__((target("avx2"))) long long gouraud_span_avx2(const GouraudSpan& s, const FrameLine::Row& out) {
   const __m256i lane = _mm256_setr_epi64x(0, 1, 2, 3);
   __m256i v[4], stride[4], half[4];
@@ -879,7 +928,7 @@ SpanKernels span_kernels(SpanPath path) {
     return wide;
   }
   if (__builtin_cpu_supports("avx2")) {
-    SpanKernels narrow{gouraud_span_avx2, empty_keys_avx2};
+    SpanKernels narrow{gouraud_span_avx2, empty_keys_avx2, gouraud_setups_scalar};
     narrow.phong_span = phong_span_avx2, narrow.phong_line = phong_line_avx2;
     return narrow;
   }
