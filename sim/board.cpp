@@ -115,8 +115,9 @@ BoardScene load_board_scene(const CheckArgs& a, RunFiles& files) {
     }
   }
   // A sized compact configuration gets the fewest fragment lanes whose lines all meet the
-  // deadline: two only where one misses and two miss fewer (the values are the same).
-  if (a.config.empty() && b.cfg.compact && b.cfg.lanes == 1) {
+  // deadline: two only where one misses and two miss fewer (the values are the same). The
+  // compact Phong blocks shade one fragment a beat, so a Phong frame keeps one lane.
+  if (a.config.empty() && b.cfg.compact && b.cfg.lanes == 1 && scene.shading == ShadingMode::Gouraud) {
     const board::BoardTiming t = timing_of(a, doubling);
     const long long one = board::beam_schedule(b.prepared, b.cfg, t).missed;
     if (one > 0) {
