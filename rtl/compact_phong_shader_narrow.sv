@@ -159,9 +159,10 @@ module compact_phong_shader_narrow #(
 
   // ---- cos_i, ne, le, cs: rounded (the sums hold the rounding constants) and clamped ------------
   // cos_i = clamp(ndl >> 13, 0, 2^16 - 1) at phase 4; ne = clamp(nde >> 14, -2^15, 2^15 - 1) at
-  // phase 0; -le = -clamp(LE >> 12, -2^17, 2^17 - 1) at phase 2 (every period: a frame constant);
-  // cs = clamp(P2 >> 12, 0, 2^16) at phase 1.
-  logic [18:0] nle_q;       // -le, 19 bits signed
+  // phase 0; le = clamp(LE >> 12, -2^17, 2^17 - 1) at phase 2 and -le at phase 3 (every period:
+  // a frame constant); cs = clamp(P2 >> 12, 0, 2^16) at phase 1.
+  logic [18:0] le_q;        // le, 19 bits signed (phase 3)
+  logic [18:0] nle_q;       // -le, 19 bits signed (phase 4)
   logic [16:0] cs_q;        // cs, t 12..16
   logic        front_q [5]; // cos_i > 0 in periods 2..6
   always_ff @(posedge clk_i) if (en) begin
@@ -178,11 +179,10 @@ module compact_phong_shader_narrow #(
       end
       3'd2: begin
         logic signed [19:0] v;
-        logic signed [18:0] le;
-        v  = 20'(signed'(p2_q) >>> 12);
-        le = v < -20'sd131072 ? -19'sd131072 : v > 20'sd131071 ? 19'sd131071 : v[18:0];
-        nle_q <= -le;
+        v    = 20'(signed'(p2_q) >>> 12);
+        le_q <= v < -20'sd131072 ? -19'sd131072 : v > 20'sd131071 ? 19'sd131071 : v[18:0];
       end
+      3'd3: nle_q <= -le_q;  // the spare clock between le and its use: the negation off S2's path
       3'd1: begin
         logic signed [19:0] v;
         v = 20'(signed'(p2_q) >>> 12);
