@@ -1,15 +1,19 @@
 // The compact Phong top (watkins_top with Compact = 1 and Phong = 1: compact_normalizer and
 // compact_phong_shader after the compact interpolator, docs/reference/compact.md) against the model
 // built for the same configuration, at tests/configs/compact.phong.json (the default scene's sized
-// Phong configuration with compact true, the UP5K's): every shipped scene that fits in Phong
+// Phong configuration with compact true, the UP5K's) and at tests/configs/compact_narrow.phong.json
+// (the same with "phong": {"formats": "narrow"}: compact_normalizer_narrow and
+// compact_phong_shader_narrow, docs/reference/compact-phong.md): every shipped scene that fits in Phong
 // shading, 100 random Phong scenes, and the hard cases (antipodal and in-plane normals, n = 0 and
 // 255, lights from every side, the eye at the light), under random input gaps and output stalls.
 // Every pixel and every stage stream (active edges, segments, fragments, shaded fragments) bit for
-// bit. Its cycles are the compact cycle model's (tests/cosim/test_cycle_model.cpp).
+// bit. Every frame's cycles are CompactCycleModel's for the configuration (its narrow path at the
+// narrow formats).
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "build_options.hpp"
@@ -28,13 +32,18 @@ using namespace watkins::test;
 
 namespace {
 
-const char* const PhongFile = "tests/configs/compact.phong.json";  // MaxWidth 320, 36 edges, 2 materials
+// MaxWidth 320, 36 edges, 2 materials; the model's formats and the narrow ones.
+const char* const PhongFiles[] = {"tests/configs/compact.phong.json", "tests/configs/compact_narrow.phong.json"};
 
-Config compact_phong_config() {
-  const Config c = load_config(std::string(WATKINS_SOURCE_DIR "/") + PhongFile);
-  EXPECT_TRUE(c.compact) << PhongFile;
-  EXPECT_EQ(c.lanes, 1) << PhongFile << ": the compact Phong top shades one fragment a beat";
+Config compact_phong_config(const char* file) {
+  const Config c = load_config(std::string(WATKINS_SOURCE_DIR "/") + file);
+  EXPECT_TRUE(c.compact) << file;
+  EXPECT_EQ(c.lanes, 1) << file << ": the compact Phong top shades one fragment a beat";
   return c;
+}
+
+std::string file_test_name(const ::testing::TestParamInfo<const char*>& info) {
+  return std::string(info.param).find("narrow") != std::string::npos ? "Narrow" : "ModelFormats";
 }
 
 // With the default WATKINS_RTL_CONFIGS (CI's) the compact Phong top is built: a missing one fails.
@@ -44,9 +53,9 @@ constexpr bool RequireTop = true;
 constexpr bool RequireTop = false;
 #endif
 
-#define REQUIRE_COMPACT_PHONG_TOP(cfg)                                         \
+#define REQUIRE_COMPACT_PHONG_TOP(cfg, file)                                   \
   do {                                                                         \
-    const std::string why = rtl_unavailable(cfg, ShadingMode::Phong, PhongFile); \
+    const std::string why = rtl_unavailable(cfg, ShadingMode::Phong, file);    \
     if (!why.empty()) {                                                        \
       ASSERT_FALSE(RequireTop) << why;                                         \
       GTEST_SKIP() << why;                                                     \
@@ -65,6 +74,8 @@ bool expect_frames(const std::string& what, const std::vector<const PreparedScen
   if (!r.ok()) return false;
   EXPECT_NE(r.top.find("Compact=1"), std::string::npos) << what << " ran on " << r.top;
   EXPECT_NE(r.top.find("Phong=1"), std::string::npos) << what << " ran on " << r.top;
+  const bool narrow = frames.front()->config.phong == PhongFormat::Narrow;
+  EXPECT_EQ(r.top.find("PhongNarrow=1") != std::string::npos, narrow) << what << " ran on " << r.top;
   EXPECT_GT(r.stage_items, 0) << what << ": the stage streams were not checked";
   EXPECT_TRUE(r.stage_mismatches.empty()) << what << ": " << r.summary();
   EXPECT_EQ(r.frames.size(), frames.size()) << what;
@@ -103,26 +114,35 @@ std::string prepare_shipped(const std::string& name, const Config& cfg, Prepared
 
 // ---------------------------------------------------------------- shipped scenes
 
-class CompactPhongShippedScenes : public ::testing::TestWithParam<std::string> {};
+class CompactPhongShippedScenes : public ::testing::TestWithParam<std::tuple<const char*, std::string>> {};
 
 TEST_P(CompactPhongShippedScenes, MatchTheModel) {
-  const std::string name = GetParam();
+  const char* const PhongFile = std::get<0>(GetParam());
+  const std::string name = std::get<1>(GetParam());
   if (name == "<none>") GTEST_SKIP() << "no scenes/*.json";
-  const Config cfg = compact_phong_config();
+  const Config cfg = compact_phong_config(PhongFile);
   PreparedScene p;
   const std::string why = prepare_shipped(name, cfg, p);
   if (!why.empty()) GTEST_SKIP() << name << " does not fit " << PhongFile << ": " << why;
   ASSERT_EQ(p.shading, ShadingMode::Phong);
-  REQUIRE_COMPACT_PHONG_TOP(cfg);
+  REQUIRE_COMPACT_PHONG_TOP(cfg, PhongFile);
   for (const RtlOptions& o : stall_patterns(7))
     if (!expect_frames(name + " at " + PhongFile, {&p}, o)) return;
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, CompactPhongShippedScenes, ::testing::ValuesIn(shipped_scenes()), scene_test_name);
+INSTANTIATE_TEST_SUITE_P(Scenes, CompactPhongShippedScenes,
+                         ::testing::Combine(::testing::ValuesIn(PhongFiles), ::testing::ValuesIn(shipped_scenes())),
+                         [](const ::testing::TestParamInfo<std::tuple<const char*, std::string>>& info) {
+                           return file_test_name({std::get<0>(info.param), info.index}) + "_" +
+                                  scene_test_name({std::get<1>(info.param), info.index});
+                         });
 
 // How many shipped scenes the compact Phong top holds (the others are skipped above, saying why).
-TEST(CosimCompactPhong, ShippedScenesThatFit) {
-  const Config cfg = compact_phong_config();
+class CosimCompactPhong : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(CosimCompactPhong, ShippedScenesThatFit) {
+  const char* const PhongFile = GetParam();
+  const Config cfg = compact_phong_config(PhongFile);
   int fit = 0, all = 0;
   for (const std::string& name : shipped_scenes()) {
     PreparedScene p;
@@ -131,7 +151,7 @@ TEST(CosimCompactPhong, ShippedScenesThatFit) {
     fit += why.empty();
     std::printf("%-24s %s\n", name.c_str(), why.empty() ? "fits" : why.c_str());
   }
-  std::printf("%d of %d shipped scenes fit the compact Phong top\n", fit, all);
+  std::printf("%d of %d shipped scenes fit the compact Phong top at %s\n", fit, all, PhongFile);
   EXPECT_GE(fit, 5);
 }
 
@@ -148,7 +168,7 @@ std::string prepare_random(std::uint64_t seed, const Config& cfg, PreparedScene&
   return prepare_at(s, cfg, p);
 }
 
-class CompactPhongRandomScenes : public ::testing::TestWithParam<int> {};
+class CompactPhongRandomScenes : public ::testing::TestWithParam<std::tuple<const char*, int>> {};
 
 constexpr int ScenesPerBatch = 25;
 
@@ -156,22 +176,30 @@ constexpr int ScenesPerBatch = 25;
 // configuration), each batch back to back in one run (the bench writes each frame's materials
 // between frames; L and E change with every frame) under its own stall pattern (random_options).
 TEST_P(CompactPhongRandomScenes, MatchTheModel) {
-  const Config cfg = compact_phong_config();
+  const char* const PhongFile = std::get<0>(GetParam());
+  const int batch = std::get<1>(GetParam());
+  const Config cfg = compact_phong_config(PhongFile);
   std::vector<PreparedScene> frames;
-  const std::uint64_t first = 7000 + static_cast<std::uint64_t>(GetParam()) * 1000;
+  const std::uint64_t first = 7000 + static_cast<std::uint64_t>(batch) * 1000;
   for (std::uint64_t seed = first; static_cast<int>(frames.size()) < ScenesPerBatch && seed < first + 1000; ++seed) {
     PreparedScene p;
     if (prepare_random(seed, cfg, p).empty()) frames.push_back(std::move(p));
   }
   ASSERT_EQ(static_cast<int>(frames.size()), ScenesPerBatch) << "random Phong scenes that fit " << PhongFile;
-  REQUIRE_COMPACT_PHONG_TOP(cfg);
+  REQUIRE_COMPACT_PHONG_TOP(cfg, PhongFile);
   std::vector<const PreparedScene*> ptrs;
   for (const PreparedScene& p : frames) ptrs.push_back(&p);
-  expect_frames("random Phong scenes, batch " + std::to_string(GetParam()), ptrs,
-                random_options(static_cast<std::uint64_t>(GetParam())));
+  expect_frames("random Phong scenes at " + std::string(PhongFile) + ", batch " + std::to_string(batch), ptrs,
+                random_options(static_cast<std::uint64_t>(batch)));
 }
 
-INSTANTIATE_TEST_SUITE_P(Batches, CompactPhongRandomScenes, ::testing::Range(0, 4));  // 100 scenes
+// 100 scenes per configuration.
+INSTANTIATE_TEST_SUITE_P(Batches, CompactPhongRandomScenes,
+                         ::testing::Combine(::testing::ValuesIn(PhongFiles), ::testing::Range(0, 4)),
+                         [](const ::testing::TestParamInfo<std::tuple<const char*, int>>& info) {
+                           return file_test_name({std::get<0>(info.param), info.index}) + "_" +
+                                  std::to_string(std::get<1>(info.param));
+                         });
 
 // ---------------------------------------------------------------- hard cases
 
@@ -197,8 +225,9 @@ std::vector<BuiltScene> hard_cases() {
   return v;
 }
 
-TEST(CosimCompactPhong, HardCasesMatchTheModel) {
-  const Config cfg = compact_phong_config();
+TEST_P(CosimCompactPhong, HardCasesMatchTheModel) {
+  const char* const PhongFile = GetParam();
+  const Config cfg = compact_phong_config(PhongFile);
   std::vector<PreparedScene> frames;
   std::vector<std::string> names;
   for (const BuiltScene& s : hard_cases()) {
@@ -206,9 +235,9 @@ TEST(CosimCompactPhong, HardCasesMatchTheModel) {
     const std::string why = prepare_at(s, cfg, p);
     ASSERT_EQ(why, "") << s.name;
     frames.push_back(std::move(p));
-    names.push_back(s.name);
+    names.push_back(s.name + " at " + PhongFile);
   }
-  REQUIRE_COMPACT_PHONG_TOP(cfg);
+  REQUIRE_COMPACT_PHONG_TOP(cfg, PhongFile);
   std::uint64_t seed = 300;
   for (std::size_t k = 0; k < frames.size(); ++k)
     for (const RtlOptions& o : {RtlOptions{seed++, 0.0, 0.0}, RtlOptions{seed++, 0.2, 0.3}})
@@ -216,16 +245,18 @@ TEST(CosimCompactPhong, HardCasesMatchTheModel) {
   // All of them back to back: materials, L and E change at every frame start.
   std::vector<const PreparedScene*> ptrs;
   for (const PreparedScene& p : frames) ptrs.push_back(&p);
-  expect_frames("hard cases back to back", ptrs, RtlOptions{seed, 0.1, 0.2, 40});
+  expect_frames(std::string("hard cases back to back at ") + PhongFile, ptrs, RtlOptions{seed, 0.1, 0.2, 40});
 }
 
 // Lanes 2 is the compact Gouraud top's only: the configuration check refuses it for Phong.
-TEST(CosimCompactPhong, TwoLanesRefused) {
-  Config cfg = compact_phong_config();
+TEST_P(CosimCompactPhong, TwoLanesRefused) {
+  Config cfg = compact_phong_config(GetParam());
   cfg.lanes = 2;
   EXPECT_EQ(cfg.check(), "");
   EXPECT_EQ(cfg.check(ShadingMode::Phong), "lanes: 2 is Gouraud only (the compact Phong blocks shade one fragment a beat)");
   EXPECT_THROW(prepare(hard_cases().front(), cfg), SceneError);
 }
+
+INSTANTIATE_TEST_SUITE_P(Configs, CosimCompactPhong, ::testing::ValuesIn(PhongFiles), file_test_name);
 
 }  // namespace

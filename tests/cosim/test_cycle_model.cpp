@@ -13,6 +13,7 @@
 #include <memory>
 #include <random>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "build_options.hpp"
@@ -325,6 +326,8 @@ void expect_compact_takes(const std::string& what, const PreparedScene& p, const
                          std::to_string(p.edges.size()) + " edge records, ready " + (pattern ? pattern->name : "always");
   ASSERT_TRUE(r.ok()) << at << ": " << r.summary();
   ASSERT_NE(r.top.find("Compact=1"), std::string::npos) << at << " ran on " << r.top;
+  ASSERT_EQ(r.top.find("PhongNarrow=1") != std::string::npos, p.config.phong == PhongFormat::Narrow)
+      << at << " ran on " << r.top;
   const RtlFrame& f = r.frames.at(0);
   std::vector<long long> takes;
   CycleOptions co;
@@ -457,11 +460,16 @@ TEST(CompactCycleModel, CornerFramesEqualRtl) {
 // ---------------------------------------------------------------- the compact Phong top
 namespace {
 
-// The compact Phong top the test build Verilates: the default scene's sized Phong configuration
-// with compact true (the UP5K's).
-const char* const CompactPhongFile = "tests/configs/compact.phong.json";
+// The compact Phong tops the test build Verilates: the default scene's sized Phong configuration
+// with compact true (the UP5K's), at the model's formats and at the narrow ones (CompactCycleModel's
+// narrow path: compact_normalizer_narrow and compact_phong_shader_narrow).
+const char* const CompactPhongFiles[] = {"tests/configs/compact.phong.json", "tests/configs/compact_narrow.phong.json"};
 
-#define REQUIRE_COMPACT_PHONG_TOP(cfg)                                                 \
+std::string phong_file_name(const char* file) {
+  return std::string(file).find("narrow") != std::string::npos ? "Narrow" : "ModelFormats";
+}
+
+#define REQUIRE_COMPACT_PHONG_TOP(cfg, CompactPhongFile)                               \
   do {                                                                                 \
     const std::string why = rtl_unavailable(cfg, ShadingMode::Phong, CompactPhongFile); \
     if (!why.empty()) {                                                                \
@@ -472,10 +480,11 @@ const char* const CompactPhongFile = "tests/configs/compact.phong.json";
 
 // Every shipped scene that fits the compact Phong top in Phong shading: at full rate, then under
 // two of the ready patterns picked by its name.
-class CompactPhongCycleModelShipped : public ::testing::TestWithParam<std::string> {};
+class CompactPhongCycleModelShipped : public ::testing::TestWithParam<std::tuple<const char*, std::string>> {};
 
 TEST_P(CompactPhongCycleModelShipped, EqualsRtl) {
-  const std::string name = GetParam();
+  const char* const CompactPhongFile = std::get<0>(GetParam());
+  const std::string name = std::get<1>(GetParam());
   if (name == "<none>") GTEST_SKIP() << "no scenes/*.json";
   const Config cfg = load_config(std::string(WATKINS_SOURCE_DIR "/") + CompactPhongFile);
   PreparedScene p;
@@ -487,7 +496,7 @@ TEST_P(CompactPhongCycleModelShipped, EqualsRtl) {
   }
   if (!why.empty()) GTEST_SKIP() << name << " does not fit " << CompactPhongFile << ": " << why;
   ASSERT_EQ(p.shading, ShadingMode::Phong);
-  REQUIRE_COMPACT_PHONG_TOP(cfg);
+  REQUIRE_COMPACT_PHONG_TOP(cfg, CompactPhongFile);
   const std::string what = name + " at " + CompactPhongFile;
   expect_compact_takes(what, p, nullptr);
   const std::vector<NamedPattern> patterns = ready_patterns(p.width);
@@ -497,15 +506,22 @@ TEST_P(CompactPhongCycleModelShipped, EqualsRtl) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, CompactPhongCycleModelShipped, ::testing::ValuesIn(shipped_scenes()),
-                         scene_test_name);
+INSTANTIATE_TEST_SUITE_P(Scenes, CompactPhongCycleModelShipped,
+                         ::testing::Combine(::testing::ValuesIn(CompactPhongFiles), ::testing::ValuesIn(shipped_scenes())),
+                         [](const ::testing::TestParamInfo<std::tuple<const char*, std::string>>& info) {
+                           return phong_file_name(std::get<0>(info.param)) + "_" +
+                                  scene_test_name({std::get<1>(info.param), info.index});
+                         });
 
 // Random Phong scenes (materials folded onto the table's two) and the hard cases, at full rate
 // and under one ready pattern each: the normalizer's and the shader's 5-clock schedules, their
 // stalls, and the interpolator's stall on the normalizer.
-TEST(CompactPhongCycleModel, RandomAndHardScenesEqualRtl) {
+class CompactPhongCycleModel : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(CompactPhongCycleModel, RandomAndHardScenesEqualRtl) {
+  const char* const CompactPhongFile = GetParam();
   const Config cfg = load_config(std::string(WATKINS_SOURCE_DIR "/") + CompactPhongFile);
-  REQUIRE_COMPACT_PHONG_TOP(cfg);
+  REQUIRE_COMPACT_PHONG_TOP(cfg, CompactPhongFile);
   std::vector<BuiltScene> scenes = {antipodal_normals_scene(), screen_plane_normals_scene(), grazing_light_scene(),
                                     shininess_scene(0), shininess_scene(255)};
   for (std::uint64_t seed = 8000; seed < 8040; ++seed) {
@@ -529,5 +545,8 @@ TEST(CompactPhongCycleModel, RandomAndHardScenesEqualRtl) {
   }
   EXPECT_GE(ran, 20);
 }
+
+INSTANTIATE_TEST_SUITE_P(Configs, CompactPhongCycleModel, ::testing::ValuesIn(CompactPhongFiles),
+                         [](const ::testing::TestParamInfo<const char*>& info) { return phong_file_name(info.param); });
 
 }  // namespace
