@@ -230,23 +230,11 @@ void empty_keys(std::uint64_t* keys, int lo, int hi) {
 // Bytes 8k, 8k+1, 8k+2 of eight 64-bit lanes (r | g << 8 | b << 16) packed as 24 rgb bytes.
 alignas(64) constexpr std::uint8_t RgbPackIndex[64] = {0,  1,  2,  8,  9,  10, 16, 17, 18, 24, 25, 26,
                                                        32, 33, 34, 40, 41, 42, 48, 49, 50, 56, 57, 58};
-__attribute__((target(WATKINS_AVX512))) long long gouraud_span_avx512(const GouraudSpan& s,
-                                                                      const FrameLine::Row& out) {
-  const __m512i lane = _mm512_setr_epi64(0, 1, 2, 3, 4, 5, 6, 7);
-  __m512i v[4], stride[4], half[4];
-  __m128i shift[4];
-  for (int c = 0; c < 4; ++c) {
-    const __m512i step = _mm512_set1_epi64(static_cast<long long>(s.step[c]));
-    v[c] = _mm512_add_epi64(_mm512_set1_epi64(static_cast<long long>(s.value[c])), _mm512_mullo_epi64(lane, step));
-    stride[c] = _mm512_slli_epi64(step, 3);
-    half[c] = _mm512_set1_epi64(static_cast<long long>(s.half[c]));
-    shift[c] = _mm_cvtsi32_si128(s.shift[c]);
-  }
-  const __m512i tie = _mm512_set1_epi64(static_cast<long long>(s.tie));
-  const __m256i poly = _mm256_set1_epi32(s.poly);
-  const __m128i one = _mm_set1_epi8(1);
-  // Bytes 8k, 8k+1, 8k+2 of the eight lanes (r | g << 8 | b << 16) packed as 24 rgb bytes.
-  const __m512i pack = _mm512_load_si512(RgbPackIndex);
+// A span's pixels eight at a time from v (the lanes' values, stepped by stride): the depth test,
+// and each winner's key, rgb, covered flag and owner stored into the row. Gives the winners.
+__attribute__((target(WATKINS_AVX512), always_inline)) inline long long gouraud_lanes_avx512(
+    const GouraudSpan& s, __m512i* v, const __m512i* stride, const __m512i* half, const __m128i* shift, __m512i tie,
+    __m256i poly, __m512i pack, __m128i one, const FrameLine::Row& out) {
   long long won = 0;
   for (int x = s.x0; x < s.x1; x += 8) {
     const int left = s.x1 - x;
@@ -272,6 +260,25 @@ __attribute__((target(WATKINS_AVX512))) long long gouraud_span_avx512(const Gour
     for (int c = 0; c < 4; ++c) v[c] = _mm512_add_epi64(v[c], stride[c]);
   }
   return won;
+}
+__attribute__((target(WATKINS_AVX512))) long long gouraud_span_avx512(const GouraudSpan& s,
+                                                                      const FrameLine::Row& out) {
+  const __m512i lane = _mm512_setr_epi64(0, 1, 2, 3, 4, 5, 6, 7);
+  __m512i v[4], stride[4], half[4];
+  __m128i shift[4];
+  for (int c = 0; c < 4; ++c) {
+    const __m512i step = _mm512_set1_epi64(static_cast<long long>(s.step[c]));
+    v[c] = _mm512_add_epi64(_mm512_set1_epi64(static_cast<long long>(s.value[c])), _mm512_mullo_epi64(lane, step));
+    stride[c] = _mm512_slli_epi64(step, 3);
+    half[c] = _mm512_set1_epi64(static_cast<long long>(s.half[c]));
+    shift[c] = _mm_cvtsi32_si128(s.shift[c]);
+  }
+  const __m512i tie = _mm512_set1_epi64(static_cast<long long>(s.tie));
+  const __m256i poly = _mm256_set1_epi32(s.poly);
+  const __m128i one = _mm_set1_epi8(1);
+  // Bytes 8k, 8k+1, 8k+2 of the eight lanes (r | g << 8 | b << 16) packed as 24 rgb bytes.
+  const __m512i pack = _mm512_load_si512(RgbPackIndex);
+  return gouraud_lanes_avx512(s, v, stride, half, shift, tie, poly, pack, one, out);
 }
 
 // gouraud_span_avx512 over a run of a line's spans (SpanKernels::draw_run): the same lanes and
@@ -310,28 +317,7 @@ __attribute__((target(WATKINS_AVX512))) std::size_t gouraud_run_avx512(const Gou
     }
     const __m512i tie = _mm512_set1_epi64(static_cast<long long>(static_cast<std::uint32_t>(s.poly) & tie_mask));
     const __m256i poly = _mm256_set1_epi32(s.poly);
-    for (int x = s.x0; x < s.x1; x += 8) {
-      const int left = s.x1 - x;
-      const __mmask8 valid = left >= 8 ? __mmask8(0xff) : static_cast<__mmask8>((1u << left) - 1);
-      const __m512i depth = _mm512_srl_epi64(_mm512_add_epi64(v[0], half[0]), shift[0]);
-      const __m512i key = _mm512_or_si512(_mm512_slli_epi64(depth, 32), tie);
-      const __m512i old = _mm512_maskz_loadu_epi64(valid, out.keys + x);
-      const __mmask8 win = _mm512_mask_cmplt_epu64_mask(valid, key, old);
-      if (win) {
-        _mm512_mask_storeu_epi64(out.keys + x, win, key);
-        const __m512i r = _mm512_srl_epi64(_mm512_add_epi64(v[1], half[1]), shift[1]);
-        const __m512i g = _mm512_srl_epi64(_mm512_add_epi64(v[2], half[2]), shift[2]);
-        const __m512i b = _mm512_srl_epi64(_mm512_add_epi64(v[3], half[3]), shift[3]);
-        const __m512i rgb = _mm512_or_si512(r, _mm512_or_si512(_mm512_slli_epi64(g, 8), _mm512_slli_epi64(b, 16)));
-        const std::uint32_t bit = _pdep_u32(win, 0x249249u);
-        const __mmask32 bytes = bit | (bit << 1) | (bit << 2);
-        _mm256_mask_storeu_epi8(out.rgb + 3 * x, bytes, _mm512_castsi512_si256(_mm512_permutexvar_epi8(pack, rgb)));
-        _mm_mask_storeu_epi8(out.covered + x, win, one);
-        _mm256_mask_storeu_epi32(out.owner + x, win, poly);
-        won += __builtin_popcount(win);
-      }
-      for (int c = 0; c < 4; ++c) v[c] = _mm512_add_epi64(v[c], stride[c]);
-    }
+    won += gouraud_lanes_avx512(s, v, stride, half, shift, tie, poly, pack, one, out);
   }
   run.fragments += fragments, run.visible += won, run.lo = lo, run.hi = hi;
   return i;
