@@ -62,11 +62,12 @@
 // emits full frames only). With Phong = 1 compact_normalizer and compact_phong_shader take the
 // pipelined Phong blocks' places (docs/reference/compact-phong.md): the same shades in the same
 // order before the depth test, one fragment per 5 clocks at most through them, latency 33 + 65
-// clocks (the interpolator stalls on the normalizer's ready_o, a flop). The compact shader needs
-// L and E stable from 10 clocks before a frame's first pixel reaches it to its last shade: the
-// top loads them only at a frame's start (after the previous frame's last pixel, so after its
-// last shade), and the frame's first fragment reaches the shader no sooner than the
-// interpolator's span setup and the normalizer's 33 clocks later. Lanes = 2 (Config::lanes,
+// clocks, or 15 + 42 with PhongNarrow = 1 (the narrow formats' blocks, whose cycle twins hold each
+// block's figure); the interpolator stalls on the normalizer's ready_o, a flop. The compact shader
+// needs L and E stable from 10 clocks before a frame's first pixel reaches it to its last shade:
+// the top loads them only at a frame's start (after the previous frame's last pixel, so after its
+// last shade), and the frame's first fragment reaches the shader no sooner than the interpolator's
+// span setup and the normalizer's latency later (33 clocks, 15 narrow). Lanes = 2 (Config::lanes,
 // compact Gouraud only, checked at elaboration): the interpolator's beats carry up to two
 // consecutive pixels of a span (fr_pair: lane 1 at x + 1), the fragment queue carries both, and
 // the line buffer writes both in one clock; the values and their order are the same, a long span

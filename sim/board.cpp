@@ -100,9 +100,9 @@ BoardScene load_board_scene(const CheckArgs& a, RunFiles& files) {
                              "); --top pipelined draws it");
   if (!b.cfg.compact) b.cfg.lanes = 1;  // the pipelined top takes one fragment a clock
   b.prepared = prepare(scene, b.cfg);
-  // The deadline is proven by the top's cycle model; a frame that model does not time (a Phong
-  // frame where the compact cycle model takes Gouraud frames only) is refused before any bank or
-  // bitstream is made.
+  // The deadline is proven by the top's cycle model; a Phong frame it does not time (a given
+  // configuration with two fragment lanes, which the compact Phong blocks do not take) is refused
+  // before any bank or bitstream is made.
   if (b.cfg.compact && scene.shading == ShadingMode::Phong) {
     try {
       CycleOptions opt;
