@@ -1,5 +1,8 @@
 // rtl/compact_normalizer.sv against Normalizer::normalize (values) and CompactNormalizerTiming
-// (cycles): every unit vector, null flag and payload equal to the twin's, and on every clock
+// (cycles), and with WATKINS_PHONG_NARROW (the bench test_rtl_compact_normalizer_narrow)
+// rtl/compact_normalizer_narrow.sv against Normalizer::normalize_narrow and
+// CompactNormalizerNarrowTiming, where the input's clamp to 16 bits acts at the range limits and
+// every rsqrt table row is read: every unit vector, null flag and payload equal to the twin's, and on every clock
 // ready_o and valid_o equal to the cycle twin's, under random valid gaps and ready back-pressure.
 // Inputs: every exponent class (component magnitudes below 2^e, e = 0..17) with the edges (axis
 // vectors, the range limits -2^17 and 2^17 - 1, null and near-null vectors), random normals of
@@ -13,8 +16,13 @@
 #include <string>
 #include <vector>
 
+#ifdef WATKINS_PHONG_NARROW
+#include "Vcompact_normalizer_narrow.h"
+#include "compact_normalizer_narrow_timing.hpp"
+#else
 #include "Vcompact_normalizer.h"
 #include "compact_normalizer_timing.hpp"
+#endif
 #include "fixed_point.hpp"
 #include "normalizer.hpp"
 #include "rtl_harness.hpp"
@@ -24,6 +32,19 @@ using namespace watkins;
 using namespace watkins::rtl;
 
 namespace {
+
+// The block under test and its twins: the model's formats, or the narrow ones.
+#ifdef WATKINS_PHONG_NARROW
+#define SUITE RtlCompactNormalizerNarrow
+using Dut = Vcompact_normalizer_narrow;
+using Timing = CompactNormalizerNarrowTiming;
+Normalizer::Unit twin(i64 x, i64 y, i64 z) { return Normalizer::normalize_narrow(x, y, z); }
+#else
+#define SUITE RtlCompactNormalizer
+using Dut = Vcompact_normalizer;
+using Timing = CompactNormalizerTiming;
+Normalizer::Unit twin(i64 x, i64 y, i64 z) { return Normalizer::normalize(x, y, z); }
+#endif
 
 constexpr int NB = fmt::NormalInBits, UB = fmt::UnitBits;
 constexpr int PayloadBits = WATKINS_RTL_PARAM_PayloadBits;  // PARAMS in tests/rtl/CMakeLists.txt
@@ -43,13 +64,13 @@ struct Result {
 // Streams the inputs under the given gaps and back-pressure: each output against the twin, each
 // clock against the cycle twin.
 Result run(const std::vector<Vec>& in, int gap_pct, int bp_pct, std::uint64_t seed) {
-  Harness<Vcompact_normalizer> h;
+  Harness<Dut> h;
   std::mt19937_64 rng(seed);
   StreamBench<std::size_t> b(rng, gap_pct, bp_pct);  // the index of each output's input
   b.report_limit = 5;
   const StreamPorts ports{h.dut.valid_i, h.dut.ready_o, h.dut.valid_o, h.dut.ready_i};
   reset_stream(h, ports);
-  CompactNormalizerTiming timing;
+  Timing timing;
   Result r;
   b.on_clock = [&] {
     if (bool(h.dut.ready_o) != timing.ready() || bool(h.dut.valid_o) != timing.valid()) {
@@ -72,7 +93,7 @@ Result run(const std::vector<Vec>& in, int gap_pct, int bp_pct, std::uint64_t se
       [&](std::deque<std::size_t>& inflight) { inflight.push_back(next++); },
       [&](std::size_t k) {
         const Vec& v = in[k];
-        const Normalizer::Unit u = Normalizer::normalize(v[0], v[1], v[2]);
+        const Normalizer::Unit u = twin(v[0], v[1], v[2]);
         const std::uint64_t tag = (k * 0x9E3779B97F4A7C15ull >> 20) & mask;
         bool same = h.dut.payload_o == tag && bool(h.dut.null_o) == u.null;
         for (int c = 0; c < 3; ++c) same &= wrap_signed(static_cast<i128>(h.dut.unit_o >> (c * UB)), UB) == u.n[c];
@@ -127,46 +148,61 @@ std::vector<Vec> random_normals(std::mt19937_64& rng, int n) {
 
 }  // namespace
 
-TEST(RtlCompactNormalizer, EveryExponentClassAndEdgesUnderStalls) {
+TEST(SUITE, EveryExponentClassAndEdgesUnderStalls) {
   std::mt19937_64 rng(31);
   run(classes_and_edges(rng, 2000), 30, 30, 5);
 }
 
-TEST(RtlCompactNormalizer, RandomNormalsUnderStalls) {
+TEST(SUITE, RandomNormalsUnderStalls) {
   std::mt19937_64 rng(32);
   run(random_normals(rng, 1000000), 20, 40, 6);
 }
 
+#ifdef WATKINS_PHONG_NARROW
+// Every row of the rsqrt table at its start and its last d: (a, 0, 0) with a^2 just above and
+// below a row's boundary, a over 2^15..2^17 (n_c = a / 2, m = n_c^2 over [2^28, 2^32)), and
+// sums of two squares that reach M = 2^32 - 1 (row 255, T[256] forced to 0).
+TEST(SUITE, EveryTableRow) {
+  std::vector<Vec> in;
+  for (i64 a = 1; a < Hi; a += 1 + a / 512) in.push_back({a, 0, 0}), in.push_back({-a, a / 3, 0});
+  for (i64 x = 46330; x < 46350; ++x)
+    for (i64 y = 46330; y < 46350; ++y) in.push_back({x, y, 0}), in.push_back({x, -y, 1});
+  run(in, 25, 25, 9);
+}
+#endif
+
 // Every normal offered at once and taken at once: one per Period clocks, the first offered
 // Latency clocks after its take.
-TEST(RtlCompactNormalizer, FullRateOnePerPeriod) {
+TEST(SUITE, FullRateOnePerPeriod) {
   std::mt19937_64 rng(33);
   constexpr int N = 20000;
   const Result r = run(random_normals(rng, N), 0, 0, 7);
   // From the first offer to the last output taken: the wait for the first take (up to a period),
   // N periods, the latency.
-  EXPECT_LE(r.cycles, std::uint64_t{CompactNormalizerTiming::Period} * (N + 1) + CompactNormalizerTiming::Latency + 1);
-  EXPECT_GE(r.cycles, std::uint64_t{CompactNormalizerTiming::Period} * (N - 1) + CompactNormalizerTiming::Latency);
+  EXPECT_LE(r.cycles, std::uint64_t{Timing::Period} * (N + 1) + Timing::Latency + 1);
+  EXPECT_GE(r.cycles, std::uint64_t{Timing::Period} * (N - 1) + Timing::Latency);
 }
 
 // Back-pressure from light to nearly always: the output load finds the register full in every
 // relation to the schedule; the twin agrees clock for clock.
-TEST(RtlCompactNormalizer, BackPressureFromLightToHeavy) {
+TEST(SUITE, BackPressureFromLightToHeavy) {
   std::mt19937_64 rng(34);
   const auto in = random_normals(rng, 6000);
   for (int bp : {10, 50, 80, 95}) run(in, 0, bp, 8 + static_cast<std::uint64_t>(bp));
 }
 
 // One normal alone: taken in the first period's last clock, offered Latency clocks after that.
-TEST(RtlCompactNormalizer, LatencyByHand) {
-  Harness<Vcompact_normalizer> h;
+TEST(SUITE, LatencyByHand) {
+  Harness<Dut> h;
   const StreamPorts ports{h.dut.valid_i, h.dut.ready_o, h.dut.valid_o, h.dut.ready_i};
   reset_stream(h, ports);
   h.dut.normal_i = pack({3 << 14, -(4 << 14), 0});
   const auto [taken, offered] = take_and_offer(h, ports, 60);
-  EXPECT_EQ(taken, CompactNormalizerTiming::Period - 1);
-  EXPECT_EQ(offered - taken, CompactNormalizerTiming::Latency);
-  // (3, -4, 0)/5 in Q2.14
-  EXPECT_EQ(wrap_signed(static_cast<i128>(h.dut.unit_o), UB), 9830);
-  EXPECT_EQ(wrap_signed(static_cast<i128>(h.dut.unit_o >> UB), UB), -13107);
+  EXPECT_EQ(taken, Timing::Period - 1);
+  EXPECT_EQ(offered - taken, Timing::Latency);
+  // (3, -4, 0)/5 in Q2.14, as the twin rounds it
+  const Normalizer::Unit u = twin(3 << 14, -(4 << 14), 0);
+  EXPECT_EQ(wrap_signed(static_cast<i128>(h.dut.unit_o), UB), u.n[0]);
+  EXPECT_EQ(wrap_signed(static_cast<i128>(h.dut.unit_o >> UB), UB), u.n[1]);
+  EXPECT_NEAR(static_cast<double>(u.n[0]), 9830.4, 1.0);
 }

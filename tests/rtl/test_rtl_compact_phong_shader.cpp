@@ -1,6 +1,8 @@
 // rtl/compact_phong_shader.sv against PhongShader::shade (values) and CompactPhongShaderTiming
-// (cycles): every shade and payload equal to the twin's, and on every clock ready_o and valid_o
-// equal to the cycle twin's, under random valid gaps and ready back-pressure.
+// (cycles), and with WATKINS_PHONG_NARROW (the bench test_rtl_compact_phong_shader_narrow)
+// rtl/compact_phong_shader_narrow.sv against PhongShader::shade_narrow and
+// CompactPhongShaderNarrowTiming: every shade and payload equal to the twin's, and on every clock
+// ready_o and valid_o equal to the cycle twin's, under random valid gaps and ready back-pressure.
 // Frames: random unit L and E (set with the block idle, as its port contract says), the eye at the
 // light and opposite it; pixels: random unit normals, normals near the highlight (about the half
 // vector of L and E), facing away from the light, grazing it (N.L near 0), the null normal; Cp,
@@ -15,8 +17,13 @@
 #include <string>
 #include <vector>
 
+#ifdef WATKINS_PHONG_NARROW
+#include "Vcompact_phong_shader_narrow.h"
+#include "compact_phong_shader_narrow_timing.hpp"
+#else
 #include "Vcompact_phong_shader.h"
 #include "compact_phong_shader_timing.hpp"
+#endif
 #include "fixed_point.hpp"
 #include "normalizer.hpp"
 #include "phong_shader.hpp"
@@ -28,6 +35,33 @@ using namespace watkins::rtl;
 using Vec = PhongShader::Vec;
 
 namespace {
+
+// The block under test and its twins: the model's formats, or the narrow ones.
+#ifdef WATKINS_PHONG_NARROW
+#define SUITE RtlCompactPhongShaderNarrow
+using Dut = Vcompact_phong_shader_narrow;
+using Timing = CompactPhongShaderNarrowTiming;
+std::array<int, 3> twin_shade(const PhongShader::Pixel& p, const Vec& l, const Vec& e) {
+  return PhongShader::shade_narrow(p, l, e, PhongShader::narrow_le(l, e));
+}
+PhongShader::Terms twin_terms(const PhongShader::Pixel& p, const Vec& l, const Vec& e) {
+  return PhongShader::terms_narrow(p, l, e, PhongShader::narrow_le(l, e));
+}
+// N = L = E: the narrow power of 1 is 1 - 2^-16, so 255 W pow / 256 is just below 127.5.
+constexpr std::array<int, 3> HandShade{255, 227, 177};
+#else
+#define SUITE RtlCompactPhongShader
+using Dut = Vcompact_phong_shader;
+using Timing = CompactPhongShaderTiming;
+std::array<int, 3> twin_shade(const PhongShader::Pixel& p, const Vec& l, const Vec& e) {
+  return PhongShader::shade(p, l, e);
+}
+PhongShader::Terms twin_terms(const PhongShader::Pixel& p, const Vec& l, const Vec& e) {
+  return PhongShader::terms(p, l, e);
+}
+// N = L = E: cos(i) = cos(s) = 1, so each level is Cp + 255 W / 256 = Cp + 127.5, saturated.
+constexpr std::array<int, 3> HandShade{255, 228, 178};
+#endif
 
 constexpr int UB = fmt::UnitBits;
 constexpr int PayloadBits = WATKINS_RTL_PARAM_PayloadBits;  // PARAMS in tests/rtl/CMakeLists.txt
@@ -91,11 +125,11 @@ Frame random_frame(std::mt19937_64& rng, int count, int light_eye) {
 }
 
 struct Bench {
-  Harness<Vcompact_phong_shader> h;
+  Harness<Dut> h;
   std::mt19937_64 rng;
   StreamBench<std::size_t> b;  // the index of each output's pixel
   const StreamPorts ports{h.dut.valid_i, h.dut.ready_o, h.dut.valid_o, h.dut.ready_i};
-  CompactPhongShaderTiming timing;
+  Timing timing;
   std::uint64_t cycle_mismatches = 0, total = 0;
 
   Bench(std::uint64_t seed, int gap, int bp) : rng(seed), b(rng, gap, bp) {
@@ -137,10 +171,10 @@ struct Bench {
         [&](std::deque<std::size_t>& inflight) { inflight.push_back(next++); },
         [&](std::size_t k) {
           const auto& p = f.px[k];
-          const std::uint32_t want = rgb(PhongShader::shade(p, f.light, f.eye));
+          const std::uint32_t want = rgb(twin_shade(p, f.light, f.eye));
           const std::uint64_t tag = (k * 0x9E3779B97F4A7C15ull >> 17) & mask;
           if (h.dut.rgb_o == want && h.dut.payload_o == tag) return std::string();
-          const auto t = PhongShader::terms(p, f.light, f.eye);
+          const auto t = twin_terms(p, f.light, f.eye);
           std::ostringstream d;
           d << "pixel " << k << " n " << p.shininess << " d " << p.d << " W " << p.w << ": rtl rgb 0x" << std::hex
             << h.dut.rgb_o << " model 0x" << want << std::dec << " payload " << h.dut.payload_o << "/" << tag
@@ -158,19 +192,19 @@ struct Bench {
 
 }  // namespace
 
-TEST(RtlCompactPhongShader, RandomFramesUnderStalls) {
+TEST(SUITE, RandomFramesUnderStalls) {
   Bench b(41, 25, 25);
   for (int f = 0; f < 20; ++f) b.frame(random_frame(b.rng, 20000, f % 6 == 1 ? 1 : f % 6 == 2 ? 2 : 0));
   b.expect_clean();
 }
 
-TEST(RtlCompactPhongShader, HeavyBackPressure) {
+TEST(SUITE, HeavyBackPressure) {
   Bench b(42, 0, 90);
   for (int f = 0; f < 2; ++f) b.frame(random_frame(b.rng, 3000, 0));
   b.expect_clean();
 }
 
-TEST(RtlCompactPhongShader, EveryExponentFullRate) {
+TEST(SUITE, EveryExponentFullRate) {
   Bench b(43, 0, 0);
   for (int f = 0; f < 2; ++f) {
     Frame fr = random_frame(b.rng, 256 * 40, f);
@@ -178,14 +212,14 @@ TEST(RtlCompactPhongShader, EveryExponentFullRate) {
     const std::uint64_t start = b.h.cycles;
     b.frame(fr);
     // One pixel per period once the first is in, the first offered Latency clocks after its take.
-    EXPECT_LE(b.h.cycles - start, 12 + std::uint64_t{CompactPhongShaderTiming::Period} * (fr.px.size() + 1) +
-                                      CompactPhongShaderTiming::Latency);
+    EXPECT_LE(b.h.cycles - start, 12 + std::uint64_t{Timing::Period} * (fr.px.size() + 1) +
+                                      Timing::Latency);
   }
   b.expect_clean();
 }
 
-TEST(RtlCompactPhongShader, LatencyByHand) {
-  Harness<Vcompact_phong_shader> h;
+TEST(SUITE, LatencyByHand) {
+  Harness<Dut> h;
   const StreamPorts ports{h.dut.valid_i, h.dut.ready_o, h.dut.valid_o, h.dut.ready_i};
   reset_stream(h, ports);
   const Vec L{0, 0, 16384}, E{0, 0, 16384};
@@ -205,8 +239,7 @@ TEST(RtlCompactPhongShader, LatencyByHand) {
   h.dut.shininess_i = static_cast<std::uint8_t>(p.shininess);
   const auto [taken, offered] = take_and_offer(h, ports, 100);
   EXPECT_GE(taken, 0);
-  EXPECT_EQ(offered - taken, CompactPhongShaderTiming::Latency);
-  // N = L = E: cos(i) = cos(s) = 1, so each level is Cp + 255 W / 256 = Cp + 127.5, saturated.
-  EXPECT_EQ(h.dut.rgb_o, rgb(PhongShader::shade(p, L, E)));
-  EXPECT_EQ(h.dut.rgb_o, rgb({255, 228, 178}));
+  EXPECT_EQ(offered - taken, Timing::Latency);
+  EXPECT_EQ(h.dut.rgb_o, rgb(twin_shade(p, L, E)));
+  EXPECT_EQ(h.dut.rgb_o, rgb(HandShade));
 }
