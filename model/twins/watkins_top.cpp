@@ -22,13 +22,13 @@ namespace {
 // The Phong blocks' frame constants: light, eye, L.E (PhongShader::frame_le) and each material's
 // terms (PhongShader::material_terms), worked out once per frame instead of per pixel. The narrow
 // formats (Config::phong) shade each pixel through Normalizer::normalize_narrow and
-// PhongShader::shade_narrow, from the materials as given (narrow_materials).
+// PhongShader::shade_narrow, from the materials as given (phong_narrow_materials).
 struct PhongFrame {
   PhongShader::Vec light{}, eye{};
   PhongFormat format = PhongFormat::Model;
   i64 le = 0;
   std::vector<PhongShader::MaterialTerms> materials;  // by material id, as frame.materials
-  std::vector<PhongShader::Pixel> narrow_materials;   // Cp, d, W, n by material id (the narrow set)
+  std::vector<PhongShader::Pixel> phong_narrow_materials;   // Cp, d, W, n by material id (the narrow set)
   // The material terms by field (by material id), for a line kernel's gathers: Cp per channel,
   // 1 - d, the d term, the specular scale and n's NBits bits.
   std::vector<i64> cp[3], one_minus_d, d_term, spec_scale, shininess;
@@ -49,7 +49,7 @@ struct PhongFrame {
       PhongShader::Pixel px;
       for (int c = 0; c < 3; ++c) px.cp[static_cast<std::size_t>(c)] = m.cp[static_cast<std::size_t>(c)];
       px.d = m.d, px.w = m.w, px.shininess = m.shininess;
-      narrow_materials.push_back(px);
+      phong_narrow_materials.push_back(px);
     }
     for (int c = 0; c < 3; ++c)
       narrow_vectors &= light[static_cast<std::size_t>(c)] == static_cast<std::int32_t>(light[static_cast<std::size_t>(c)]) &&
@@ -60,7 +60,7 @@ struct PhongFrame {
   // normalizer → phong_shader on one normal of material `id` (checked by the caller).
   std::array<int, 3> shade(const std::array<i64, 3>& normal, int id) const {
     if (format == PhongFormat::Narrow) {
-      PhongShader::Pixel px = narrow_materials[static_cast<std::size_t>(id)];
+      PhongShader::Pixel px = phong_narrow_materials[static_cast<std::size_t>(id)];
       px.n = Normalizer::normalize_narrow(normal[0], normal[1], normal[2]).n;
       return PhongShader::shade_narrow(px, light, eye, le);
     }
