@@ -514,13 +514,19 @@ __attribute__((target(WATKINS_AVX512 ",avx512cd"))) void phong_line_avx512(const
   }
 }
 
-// SegmentInterpolator::setup's 64-bit path for slots Z, R, G, B in the four lanes of one vector,
-// then PixelPath::in_range<Shade>: the same formulas, products and roundings, so the same words.
-// round_shift62(v, s) of a product |v| < 2^61 is (v + 2^(s-1)) >> s, the shift arithmetic
-// (flooring); wrap_signed64 is a left shift by 64 - bits and an arithmetic shift back. Whatever
-// the scalar path takes 128 bits or a range check for, this hands to the general path.
-__attribute__((target(WATKINS_AVX512), always_inline)) inline FusedSetup gouraud_setup_avx512(
-    const Segment& s, const GouraudSetupConsts& k, GouraudSpan& g) {
+// The fused setups' common head: the span's pixels, its reciprocal, the step's rounding shift and
+// alpha0, as PixelPath::in_range's scalar path works them out. Span when the setup goes on (h
+// filled), else Empty or General.
+struct SetupHead {
+  // Channel deltas and offsets below it keep every product of the setup below 2^61.
+  static constexpr i64 Limit = i64{1} << (62 - std::max(fmt::RecipBits, fmt::AlphaBits) - 1);
+  i64 pixels = 0;  // x_end - x_start
+  i64 recip = 0;   // SpanReciprocal::recip
+  int shift = 0;   // the step's rounding: p + RecipBits - x.frac_bits
+  i64 alpha0 = 0;  // AlphaBits fraction bits
+};
+[[gnu::always_inline]] inline FusedSetup setup_head(const Segment& s, const GouraudSetupConsts& k, GouraudSpan& g,
+                                                    SetupHead& h) {
   const int fx = k.fx;
   const i64 xe = s.e[fmt::ChanX], xf = s.f[fmt::ChanX];
   const i64 centre = (i64{1} << fx) - 1 - (i64{1} << (fx - 1));  // first_centre_at_or_after's offset
@@ -529,13 +535,28 @@ __attribute__((target(WATKINS_AVX512), always_inline)) inline FusedSetup gouraud
   g.x0 = static_cast<int>(x_start), g.x1 = static_cast<int>(x_end), g.poly = s.poly;
   if (x_end == x_start) return FusedSetup::Empty;
   const SpanReciprocal r = SpanReciprocal::of(xf - xe);
-  constexpr int Small = 62 - std::max(fmt::RecipBits, fmt::AlphaBits) - 1;
-  constexpr i64 Limit = i64{1} << Small;
+  constexpr i64 Limit = SetupHead::Limit;
   const i64 offset = x_start * (i64{1} << fx) + (i64{1} << (fx - 1)) - xe;
   const int shift = r.p + fmt::RecipBits - fx;  // the step's rounding
   if (offset >= Limit || shift < 1 || shift > 61 || x_end - x_start > (i64{1} << 21)) return FusedSetup::General;
   const i64 alpha0 = std::min<i64>(round_shift64(offset * r.recip, r.p + fmt::RecipBits - fmt::AlphaBits),
                                    i64{1} << fmt::AlphaBits);
+  h.pixels = x_end - x_start, h.recip = r.recip, h.shift = shift, h.alpha0 = alpha0;
+  return FusedSetup::Span;
+}
+
+// SegmentInterpolator::setup's 64-bit path for slots Z, R, G, B in the four lanes of one vector,
+// then PixelPath::in_range<Shade>: the same formulas, products and roundings, so the same words.
+// round_shift62(v, s) of a product |v| < 2^61 is (v + 2^(s-1)) >> s, the shift arithmetic
+// (flooring); wrap_signed64 is a left shift by 64 - bits and an arithmetic shift back. Whatever
+// the scalar path takes 128 bits or a range check for, this hands to the general path.
+__attribute__((target(WATKINS_AVX512), always_inline)) inline FusedSetup gouraud_setup_avx512(
+    const Segment& s, const GouraudSetupConsts& k, GouraudSpan& g) {
+  SetupHead h;
+  if (const FusedSetup head = setup_head(s, k, g, h); head != FusedSetup::Span) return head;
+  const i64 recip = h.recip, alpha0 = h.alpha0, pixels = h.pixels;
+  const int shift = h.shift;
+  constexpr i64 Limit = SetupHead::Limit;
   const __m256i e = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(&s.e[fmt::ChanZ]));
   const __m256i f = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(&s.f[fmt::ChanZ]));
   const __m256i delta = _mm256_sub_epi64(f, e);
@@ -549,7 +570,7 @@ __attribute__((target(WATKINS_AVX512), always_inline)) inline FusedSetup gouraud
   const __m128i step_count = _mm_cvtsi32_si128(shift), alpha_count = _mm_cvtsi32_si128(fmt::AlphaBits);
   const __m256i hi = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(k.step_hi));
   __m256i step = _mm256_sra_epi64(
-      _mm256_add_epi64(_mm256_mullo_epi64(delta, _mm256_set1_epi64x(r.recip)), _mm256_set1_epi64x(i64{1} << (shift - 1))),
+      _mm256_add_epi64(_mm256_mullo_epi64(delta, _mm256_set1_epi64x(recip)), _mm256_set1_epi64x(i64{1} << (shift - 1))),
       step_count);
   step = _mm256_max_epi64(_mm256_min_epi64(step, hi), _mm256_sub_epi64(_mm256_set1_epi64x(-1), hi));
   const __m256i wrap = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(k.wrap_shift));
@@ -561,7 +582,7 @@ __attribute__((target(WATKINS_AVX512), always_inline)) inline FusedSetup gouraud
   // last is value + (n - 1) step in 64 bits: |step| < 2^41 and n <= 2^21 keep it from overflowing.
   const __m256i step_biased = _mm256_add_epi64(step, _mm256_set1_epi64x(i64{1} << 41));
   if (_mm256_cmplt_epu64_mask(step_biased, _mm256_set1_epi64x(i64{1} << 42)) != 0xf) return FusedSetup::General;
-  const __m256i last = _mm256_add_epi64(value, _mm256_mullo_epi64(_mm256_set1_epi64x(x_end - x_start - 1), step));
+  const __m256i last = _mm256_add_epi64(value, _mm256_mullo_epi64(_mm256_set1_epi64x(pixels - 1), step));
   const __m256i lo = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(k.read_lo));
   const __m256i span = _mm256_sub_epi64(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(k.read_hi)), lo);
   const __mmask8 inside = _mm256_cmple_epu64_mask(_mm256_sub_epi64(value, lo), span) &
@@ -584,31 +605,21 @@ __attribute__((target(WATKINS_AVX512))) void gouraud_setups_avx512(const Segment
 // unsigned, as the vector lanes compute them.
 inline FusedSetup gouraud_setup_scalar(const Segment& s, const GouraudSetupConsts& k, GouraudSpan& g) {
   using u64 = std::uint64_t;
-  const int fx = k.fx;
-  const i64 xe = s.e[fmt::ChanX], xf = s.f[fmt::ChanX];
-  const i64 centre = (i64{1} << fx) - 1 - (i64{1} << (fx - 1));  // first_centre_at_or_after's offset
-  const i64 x_start = std::max<i64>(floor_shift64(xe + centre, fx), 0);
-  const i64 x_end = std::max(std::min<i64>(floor_shift64(xf + centre, fx), k.width), x_start);
-  g.x0 = static_cast<int>(x_start), g.x1 = static_cast<int>(x_end), g.poly = s.poly;
-  if (x_end == x_start) return FusedSetup::Empty;
-  const SpanReciprocal r = SpanReciprocal::of(xf - xe);
-  constexpr int Small = 62 - std::max(fmt::RecipBits, fmt::AlphaBits) - 1;
-  constexpr i64 Limit = i64{1} << Small;
-  const i64 offset = x_start * (i64{1} << fx) + (i64{1} << (fx - 1)) - xe;
-  const int shift = r.p + fmt::RecipBits - fx;  // the step's rounding
-  if (offset >= Limit || shift < 1 || shift > 61 || x_end - x_start > (i64{1} << 21)) return FusedSetup::General;
-  const i64 alpha0 = std::min<i64>(round_shift64(offset * r.recip, r.p + fmt::RecipBits - fmt::AlphaBits),
-                                   i64{1} << fmt::AlphaBits);
+  SetupHead h;
+  if (const FusedSetup head = setup_head(s, k, g, h); head != FusedSetup::Span) return head;
+  const i64 recip = h.recip, alpha0 = h.alpha0, pixels = h.pixels;
+  const int shift = h.shift;
+  constexpr i64 Limit = SetupHead::Limit;
   i64 delta[4];
   for (int c = 0; c < 4; ++c)
     if (__builtin_sub_overflow(s.f[fmt::ChanZ + c], s.e[fmt::ChanZ + c], &delta[c]) || delta[c] <= -Limit ||
         delta[c] >= Limit)
       return FusedSetup::General;
-  const u64 count = static_cast<u64>(x_end - x_start - 1);
+  const u64 count = static_cast<u64>(pixels - 1);
   u64 value[4], step[4];
   for (int c = 0; c < 4; ++c) {
     // Products below 2^61 in magnitude (|delta| < Limit, recip and alpha0 <= 2^24): no overflow.
-    const i64 st = std::clamp<i64>((delta[c] * r.recip + (i64{1} << (shift - 1))) >> shift, -1 - k.step_hi[c], k.step_hi[c]);
+    const i64 st = std::clamp<i64>((delta[c] * recip + (i64{1} << (shift - 1))) >> shift, -1 - k.step_hi[c], k.step_hi[c]);
     if (st < -(i64{1} << 41) || st >= (i64{1} << 41)) return FusedSetup::General;
     const i64 moved = (delta[c] * alpha0 + (i64{1} << (fmt::AlphaBits - 1))) >> fmt::AlphaBits;
     const u64 w = k.wrap_shift[c];
