@@ -163,7 +163,7 @@ module compact_phong_power (
   assign pow_o   = pow_q;
   assign valid_o = vp_q[3];
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
+  always_ff @(posedge clk_i) begin
     if (!rst_ni) vp_q <= '0;
     else if (en_i && p4) vp_q <= {vp_q[2:0], take_i};
   end

@@ -40,9 +40,7 @@ module compact_phong_shader_narrow #(
   localparam int ShininessBits   = watkins_pkg::ShininessBits
 ) (
   input  logic                     clk_i,
-  /* verilator lint_off SYNCASYNCNET */
-  input  logic                     rst_ni,       // the power resets asynchronously, the rest not
-  /* verilator lint_on SYNCASYNCNET */
+  input  logic                     rst_ni,
   input  logic [3*UnitBits-1:0]    light_i,      // {Lz, Ly, Lx}: unit, Q2.14, constant per frame
   input  logic [3*UnitBits-1:0]    eye_i,        // {Ez, Ey, Ex}: unit, Q2.14, constant per frame
   input  logic [3*UnitBits-1:0]    normal_i,     // {Nz, Ny, Nx}: unit normal, Q2.14 (normalizer)
